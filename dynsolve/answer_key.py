@@ -1,0 +1,193 @@
+"""Compare computed answers with a spec's answer key: unit-aware, with tolerances and directions.
+
+Values are compared in the problem's base units; a direction word gives the expected
+value its sign under the textbook convention (ccw, up, right positive). A formula key
+is compared for equivalence: exactly when sympy can decide, else numerically at
+random positive values of the free symbols.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy
+
+from dynsolve.dimensions import check_dimensions
+from dynsolve.errors import Position, SpecError
+from dynsolve.expressions import to_sympy
+from dynsolve.format import quantity as format_quantity
+from dynsolve.quantities import resolve_quantity, resolve_unit
+from dynsolve.spec.ast import Answer, EquationStmt, Name, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.units import Dim, System, from_base
+
+DEFAULT_RELATIVE = Fraction(1, 200)  # 0.5 %: three significant figures
+ZERO_ABSOLUTE = Fraction(1, 10**9)  # for an expected zero, in the answer's unit
+NEGATIVE = ("cw", "down", "left")
+EQUIVALENCE_POINTS = 4
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The comparison of one key entry: pass or fail and a sentence saying why."""
+
+    passed: bool
+    expected: str
+    detail: str
+
+
+def compare(
+    answer: Answer,
+    computed: sympy.Expr | None,
+    dim: Dim,
+    unit: str,
+    spec: Spec,
+    symbols: Mapping[str, sympy.Symbol],
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+    known_dims: Mapping[str, Dim],
+) -> Verdict:
+    """Judge ``computed`` (in base units; None when not determined) against ``answer``."""
+    if answer.formula is not None:
+        return _compare_formula(answer, computed, dim, spec, symbols, knowns, known_dims)
+    assert answer.quantity is not None
+    expected, expected_dim = resolve_quantity(answer.quantity, spec.system, spec.file)
+    shown = _expected_text(answer)
+    if expected_dim != dim:
+        return Verdict(
+            False, shown, f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}"
+        )
+    if answer.direction:
+        if answer.quantity.value < 0:
+            raise SpecError(
+                "give a magnitude with a direction, or a signed value, not both",
+                Position(spec.file, answer.quantity.line, answer.quantity.column),
+                hint=f"write {answer.quantity.text.lstrip('-')} … {answer.direction}",
+            )
+        if answer.direction in NEGATIVE:
+            expected = -expected
+    if computed is None:
+        return Verdict(False, shown, "not determined by the equations")
+    value = _number(computed.subs(knowns))
+    if value is None:
+        return Verdict(False, shown, f"the answer is a formula: {computed}")
+    target = float(expected)
+    tolerance = _tolerance(answer, target, dim, spec.system, spec.file)
+    error = abs(value - target)
+    got = format_quantity(from_base(value, dim, unit, spec.system), unit, 4)
+    if error <= tolerance:
+        return Verdict(True, shown, f"got {got}{_relative(error, target)}")
+    hint = ""
+    if abs(value + target) <= tolerance:
+        hint = "; the sign is opposite: check the sign convention (ccw, up, right positive)"
+    return Verdict(False, shown, f"got {got}{_relative(error, target)}{hint}")
+
+
+def _expected_text(answer: Answer) -> str:
+    assert answer.quantity is not None
+    unit = answer.quantity.unit.text if answer.quantity.unit else ""
+    parts = [answer.quantity.text, unit]
+    if answer.tolerance:
+        parts.append(answer.tolerance.text + (answer.tolerance.unit.text if answer.tolerance.unit else ""))
+    if answer.direction:
+        parts.append(answer.direction)
+    return " ".join(p for p in parts if p)
+
+
+def _relative(error: float, target: float) -> str:
+    if target == 0:
+        return ""
+    return f" (off by {100 * error / abs(target):.3g} %)"
+
+
+def _tolerance(answer: Answer, target: float, dim: Dim, system: System, file: str) -> float:
+    tolerance = answer.tolerance
+    assert answer.quantity is not None
+    if tolerance is None:
+        if target != 0:
+            return float(DEFAULT_RELATIVE) * abs(target)
+        tolerance_value, tolerance_unit = ZERO_ABSOLUTE, answer.quantity.unit
+    elif tolerance.kind == "rel":
+        return float(tolerance.value) * abs(target)
+    else:
+        tolerance_value = tolerance.value
+        tolerance_unit = tolerance.unit or answer.quantity.unit
+    if tolerance_unit is None:
+        return float(tolerance_value)
+    _, tolerance_dim = resolve_unit(tolerance_unit, file)
+    if tolerance_dim != dim:
+        raise SpecError(
+            f"tolerance unit {tolerance_unit.text} is {tolerance_dim.name}, the answer is {dim.name}",
+            Position(file, tolerance_unit.line, tolerance_unit.column),
+            hint="give the tolerance in the answer's unit, or as a percentage",
+        )
+    value, _ = resolve_quantity(
+        _as_quantity(tolerance_value, tolerance_unit, answer), system, file
+    )
+    return float(value)
+
+
+def _as_quantity(value: Fraction, unit: object, answer: Answer) -> object:
+    from dynsolve.spec.ast import Quantity
+
+    assert answer.quantity is not None
+    return Quantity(value, str(value), unit, answer.line, answer.column)  # type: ignore[arg-type]
+
+
+def _number(expr: sympy.Expr) -> float | None:
+    if expr.free_symbols:
+        return None
+    value = complex(expr.evalf(30))
+    return value.real if abs(value.imag) <= 1e-12 * max(1.0, abs(value.real)) else None
+
+
+def _compare_formula(
+    answer: Answer,
+    computed: sympy.Expr | None,
+    dim: Dim,
+    spec: Spec,
+    symbols: Mapping[str, sympy.Symbol],
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+    known_dims: Mapping[str, Dim],
+) -> Verdict:
+    assert answer.formula is not None
+    for name in iter_names(answer.formula):
+        if name.text != "pi" and name.text not in known_dims:
+            raise SpecError(
+                f"the answer formula for {answer.name} uses '{name.text}', which is not a given",
+                Position(spec.file, name.line, name.column),
+                hint="write formulas in terms of the givens",
+            )
+    statement = EquationStmt(
+        Name(answer.name, answer.line, answer.column), "=", answer.formula, "", "",
+        answer.line, answer.column,
+    )  # fmt: skip
+    check_dimensions((statement,), {**known_dims, answer.name: dim}, spec.file, spec.system)
+    expected = to_sympy(answer.formula, symbols)
+    shown = str(answer.formula)
+    if computed is None:
+        return Verdict(False, shown, "not determined by the equations")
+    if computed.free_symbols:
+        return _equivalent(expected, computed, shown)
+    value = _number(computed)
+    target = _number(expected.subs(knowns))
+    if value is None or target is None:
+        return Verdict(False, shown, "the formula cannot be evaluated with the givens")
+    passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) + 1e-12
+    return Verdict(passed, shown, f"formula gives {target:.6g}, computed {value:.6g} (base units)")
+
+
+def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdict:
+    difference = expected - computed
+    if difference == 0 or sympy.simplify(difference) == 0:
+        return Verdict(True, shown, "equivalent (exactly)")
+    rng = random.Random(20261121)
+    free = sorted(difference.free_symbols, key=lambda s: s.name)
+    for _ in range(EQUIVALENCE_POINTS):
+        point = {s: sympy.Rational(rng.randint(50, 400), 100) for s in free}
+        a, b = complex(expected.subs(point).evalf(30)), complex(computed.subs(point).evalf(30))
+        if abs(a - b) > 1e-9 * max(abs(a), abs(b), 1e-300):
+            return Verdict(False, shown, f"not equivalent: computed {computed}")
+    return Verdict(True, shown, f"equivalent (numerically, at {EQUIVALENCE_POINTS} points)")

@@ -1,0 +1,204 @@
+"""Turn an equation-mode spec into a checked :class:`Problem`: symbols, exact givens, dimensions.
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> problem = build_problem(parse_spec('''
+... given:
+...   m = 2 kg
+... equations:
+...   W = m*g
+... find: W
+... ''', "w.dyn"))
+>>> [t.name for t in problem.targets], problem.targets[0].unit
+(['W'], 'N')
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.dimensions import DimensionReport, check_dimensions
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.expressions import relation, to_sympy
+from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
+from dynsolve.spec.ast import EquationStmt, Given, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.system import Constraint, Equation, EquationSystem
+from dynsolve.units import GRAVITY, Dim, natural_unit
+
+
+@dataclass(frozen=True)
+class GivenInfo:
+    """A given resolved: its symbol, exact value in base units (None if symbolic), dimension."""
+
+    name: str
+    symbol: sympy.Symbol
+    value: sympy.Expr | None
+    dim: Dim
+    given: Given | None  # None for the default g
+
+
+@dataclass(frozen=True)
+class Target:
+    """A name in ``find`` with its display unit."""
+
+    name: str
+    symbol: sympy.Symbol
+    dim: Dim
+    unit: str  # pint-parsable; "" for a pure number
+    requested: bool
+    is_given: bool
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A spec ready to solve: the equation system plus what is needed to report it."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+
+
+def build_problem(spec: Spec) -> Problem:
+    """Resolve givens, infer and check dimensions, and build the sympy equation system."""
+    file = spec.file
+    if not spec.finds:
+        raise SpecError(
+            "nothing to find", Position(file, 1, 1), hint="add a 'find:' line, e.g. 'find: alpha'"
+        )
+    equations = [s for s in spec.equations if s.relation == "="]
+    if not equations:
+        raise SpecError(
+            "no equations to solve",
+            Position(file, 1, 1),
+            hint="add an 'equations:' section with one equation per indented line",
+        )
+    givens = _givens(spec)
+    given_names = {g.name for g in givens}
+    unknown_names = _unknown_names(spec.equations, given_names)
+    _check_finds(spec, unknown_names, given_names)
+    requested = {
+        f.name: resolve_unit(f.unit, file)[1] for f in spec.finds if f.unit is not None
+    }
+    known_dims = {g.name: g.dim for g in givens} | {"pi": Dim()}
+    report = check_dimensions(spec.equations, known_dims, file, spec.system, requested)
+    symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
+    symbols.update({n: sympy.Symbol(n, real=True) for n in unknown_names})
+    targets = tuple(_target(f, report, symbols, given_names, spec) for f in spec.finds)
+    system = EquationSystem(
+        equations=tuple(_equation(s, symbols) for s in equations),
+        unknowns=tuple(symbols[n] for n in unknown_names),
+        knowns={g.symbol: g.value for g in givens if g.value is not None},
+        constraints=tuple(
+            Constraint(
+                relation(s.relation, to_sympy(s.lhs, symbols), to_sympy(s.rhs, symbols)),
+                _plain(s),
+                s.line,
+            )
+            for s in spec.equations
+            if s.relation != "="
+        ),
+        wanted=(),
+    )
+    return Problem(spec, tuple(givens), system, report, targets, symbols)
+
+
+def _plain(statement: EquationStmt) -> str:
+    return f"{statement.lhs} {statement.relation} {statement.rhs}"
+
+
+def _givens(spec: Spec) -> list[GivenInfo]:
+    out: list[GivenInfo] = []
+    for given in spec.givens:
+        symbol = sympy.Symbol(given.name, positive=True)
+        if given.quantity is not None:
+            value, dim = resolve_quantity(given.quantity, spec.system, spec.file)
+            if value.is_zero or value.is_negative:  # magnitudes may be zero or signed
+                symbol = sympy.Symbol(given.name, real=True)
+            out.append(GivenInfo(given.name, symbol, value, dim, given))
+        else:
+            assert given.dimension is not None
+            dim = resolve_dimension(given.dimension, spec.file)
+            out.append(GivenInfo(given.name, symbol, None, dim, given))
+    if not any(g.name == "g" for g in out):
+        number, unit = GRAVITY[spec.system]
+        value = sympy.Rational(number)
+        out.append(GivenInfo("g", sympy.Symbol("g", positive=True), value, Dim(1, 0, -2), None))
+    return out
+
+
+def _unknown_names(statements: tuple[EquationStmt, ...], given: set[str]) -> list[str]:
+    seen: dict[str, None] = {}
+    for statement in statements:
+        for side in (statement.lhs, statement.rhs):
+            for name in iter_names(side):
+                if name.text not in given and name.text != "pi":
+                    seen.setdefault(name.text, None)
+    return list(seen)
+
+
+def _check_finds(spec: Spec, unknowns: list[str], given: set[str]) -> None:
+    seen: set[str] = set()
+    for item in spec.finds:
+        where = Position(spec.file, item.line, item.column)
+        if item.name in seen:
+            raise SpecError(f"'{item.name}' is listed twice in find", where, "remove one")
+        seen.add(item.name)
+        if item.name not in unknowns and item.name not in given:
+            close = difflib.get_close_matches(item.name, unknowns + sorted(given), n=1)
+            hint = f"did you mean '{close[0]}'?" if close else "use a name from the equations"
+            raise SpecError(f"'{item.name}' in find appears in no equation", where, hint)
+    for answer in spec.answers:
+        if answer.name not in seen:
+            close = difflib.get_close_matches(answer.name, sorted(seen), n=1)
+            hint = f"did you mean '{close[0]}'?" if close else f"add '{answer.name}' to find"
+            raise SpecError(
+                f"answer '{answer.name}' is not in find",
+                Position(spec.file, answer.line, answer.column),
+                hint,
+            )
+
+
+def _target(
+    item: object, report: DimensionReport, symbols: Mapping[str, sympy.Symbol],
+    given: set[str], spec: Spec,
+) -> Target:  # fmt: skip
+    from dynsolve.spec.ast import FindItem
+
+    assert isinstance(item, FindItem)
+    dim = report.dims[item.name]
+    if item.unit is not None:
+        unit_dim = resolve_unit(item.unit, spec.file)[1]
+        if unit_dim != dim:
+            raise DimensionError(
+                f"find asks for {item.name} in {item.unit.text} ({unit_dim.name}), "
+                f"but the equations make it {_article(dim.name)}",
+                Position(spec.file, item.unit.line, item.unit.column),
+                hint=f"use a unit of {dim.name}, e.g. '{natural_unit(dim, spec.system) or '1'}'",
+            )
+        unit = item.unit.text
+    elif dim.dimensionless and item.name in report.angles:
+        unit = "deg"
+    else:
+        unit = natural_unit(dim, spec.system, item.name)
+    return Target(item.name, symbols[item.name], dim, unit, item.unit is not None, item.name in given)
+
+
+def _article(text: str) -> str:
+    return ("an " if text[:1] in "aeiou" else "a ") + text
+
+
+def _equation(statement: EquationStmt, symbols: Mapping[str, sympy.Symbol]) -> Equation:
+    return Equation(
+        lhs=to_sympy(statement.lhs, symbols),
+        rhs=to_sympy(statement.rhs, symbols),
+        label=f"line {statement.line}",
+        line=statement.line,
+        note=statement.note,
+    )

@@ -1,0 +1,74 @@
+"""Build sympy objects from spec AST nodes: the only place spec text becomes sympy.
+
+Each node is mapped by hand to a sympy constructor from a fixed table; nothing is
+evaluated, sympified or parsed from a string.
+
+>>> import sympy
+>>> from dynsolve.spec.parser import parse_spec
+>>> eq = parse_spec("equations:\\n  y = sqrt(x^2 + 1)*pi", "e.dyn").equations[0]
+>>> x, y = sympy.symbols("x y")
+>>> to_sympy(eq.rhs, {"x": x, "y": y})
+pi*sqrt(x**2 + 1)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+import sympy
+
+from dynsolve.spec.ast import Call, Expr, Name, Num, Unary
+
+_FUNCTIONS: dict[str, Callable[..., sympy.Expr]] = {
+    "sin": sympy.sin,
+    "cos": sympy.cos,
+    "tan": sympy.tan,
+    "asin": sympy.asin,
+    "acos": sympy.acos,
+    "atan": sympy.atan,
+    "atan2": sympy.atan2,
+    "sqrt": sympy.sqrt,
+    "exp": sympy.exp,
+    "log": sympy.log,
+    "abs": sympy.Abs,
+}
+
+_RELATIONS: dict[str, Callable[[sympy.Expr, sympy.Expr], sympy.Basic]] = {
+    ">=": sympy.Ge,
+    "<=": sympy.Le,
+    ">": sympy.Gt,
+    "<": sympy.Lt,
+}
+
+
+def to_sympy(expr: Expr, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
+    """The sympy expression of ``expr``; ``symbols`` maps every name but ``pi``."""
+    if isinstance(expr, Num):
+        return sympy.Rational(expr.value.numerator, expr.value.denominator)
+    if isinstance(expr, Name):
+        return sympy.pi if expr.text == "pi" else symbols[expr.text]
+    if isinstance(expr, Unary):
+        return -to_sympy(expr.operand, symbols)
+    if isinstance(expr, Call):
+        args = [to_sympy(a, symbols) for a in expr.args]
+        return _FUNCTIONS[expr.function](*args)
+    left, right = to_sympy(expr.left, symbols), to_sympy(expr.right, symbols)
+    if expr.op == "+":
+        return left + right
+    if expr.op == "-":
+        return left - right
+    if expr.op == "*":
+        return left * right
+    if expr.op == "/":
+        return left / right
+    return left**right
+
+
+def relation(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> sympy.Basic:
+    """A sympy relational for a constraint operator (``>=``, ``<=``, ``>``, ``<``).
+
+    >>> relation(">=", sympy.Symbol("w"), sympy.Integer(0))
+    w >= 0
+    """
+    return _RELATIONS[op](lhs, rhs)
+

@@ -1,0 +1,332 @@
+"""The one-way flow for a spec file: parse → build → solve → check → a :class:`Solution`.
+
+>>> import pathlib, tempfile
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "w.dyn"
+>>> _ = path.write_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\nanswers:\\n  W = 19.6 N\\n")
+>>> solution = solve_file(path)
+>>> solution.answers[0].shown, solution.passed
+('19.6 N', True)
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import sympy
+
+from dynsolve.answer_key import compare
+from dynsolve.equation_mode import GivenInfo, Problem, build_problem
+from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
+from dynsolve.format import quantity as format_quantity
+from dynsolve.names import latex_name, pretty
+from dynsolve.results import (
+    AnswerRow,
+    Check,
+    EquationRow,
+    Formula,
+    GivenRow,
+    KeyComparison,
+    Solution,
+    Step,
+)
+from dynsolve.solve import solve_system
+from dynsolve.solve.outcome import Outcome
+from dynsolve.spec.parser import parse_file
+from dynsolve.spec.printing import statement_latex, statement_text
+from dynsolve.system import SolveOptions
+from dynsolve.units import Dim, from_base, natural_unit
+
+RESIDUAL_LIMIT = 1e-9
+
+
+def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solution:
+    """Parse, solve and check one ``.dyn`` file."""
+    return solve_problem(build_problem(parse_file(path)), options or SolveOptions())
+
+
+def solve_problem(problem: Problem, options: SolveOptions) -> Solution:
+    """Solve a built problem and assemble everything a renderer shows."""
+    outcome = solve_system(problem.system, options)
+    view = _View(problem, outcome)
+    answers = tuple(view.answer(t) for t in problem.targets)
+    key = tuple(view.key())
+    checks = view.checks() + tuple(
+        Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key
+    )
+    spec = problem.spec
+    return Solution(
+        file=spec.file,
+        title=spec.title,
+        source=spec.source,
+        system=spec.system,
+        mode="equations",
+        givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
+        equations=view.equation_rows(),
+        steps=tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+        answers=answers,
+        checks=checks,
+        key=key,
+        status=outcome.status,
+        messages=outcome.messages,
+    )
+
+
+class _View:
+    """Formats one solved problem; holds the lookups shared by the row builders."""
+
+    def __init__(self, problem: Problem, outcome: Outcome) -> None:
+        self.problem = problem
+        self.outcome = outcome
+        self.system = problem.spec.system
+        self.knowns = problem.system.knowns
+        self.units = {t.name: t.unit for t in problem.targets}
+        self.dims = problem.dims.dims
+        self.pretty_symbols = {s: sympy.Symbol(pretty(n)) for n, s in problem.symbols.items()}
+        self.latex_symbols = {s: latex_name(n) for n, s in problem.symbols.items()}
+
+    # ---- helpers
+    def used(self, given: GivenInfo) -> bool:
+        return given.given is not None or any(
+            given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
+            for e in self.problem.system.equations
+        )
+
+    def unit_of(self, name: str) -> str:
+        if name in self.units:
+            return self.units[name]
+        dim = self.dims.get(name, Dim())
+        if dim.dimensionless and name in self.problem.dims.angles:
+            return "deg"
+        return natural_unit(dim, self.system, name)
+
+    def text(self, expr: sympy.Expr) -> str:
+        return sympy.sstr(expr.xreplace(self.pretty_symbols))
+
+    def latex(self, expr: sympy.Expr) -> str:
+        return sympy.latex(expr, symbol_names=self.latex_symbols)
+
+    def number(self, expr: sympy.Expr) -> float | None:
+        if expr.free_symbols:
+            return None
+        value = complex(expr.evalf(30))
+        return value.real if abs(value.imag) <= 1e-12 * max(1.0, abs(value.real)) else None
+
+    def shown(self, name: str, expr: sympy.Expr) -> tuple[str, str, float | None]:
+        """(text, latex, full value in display unit) of a value in base units."""
+        value = self.number(expr)
+        if value is None:
+            return self.text(expr), self.latex(expr), None
+        unit = self.unit_of(name)
+        converted = from_base(value, self.dims.get(name, Dim()), unit, self.system)
+        latex = latex_number(converted) + (f"\\,{latex_unit(unit)}" if unit else "")
+        return format_quantity(converted, unit), latex, converted
+
+    # ---- rows
+    def given_row(self, info: GivenInfo) -> GivenRow:
+        given = info.given
+        if info.value is None:
+            assert given is not None and given.dimension is not None
+            written = f"symbolic ({given.dimension.text.replace('_', ' ')})"
+            return GivenRow(info.name, written, "—", given.description, True,
+                            latex_name(info.name), "\\text{symbolic}")  # fmt: skip
+        if given is None:
+            written, description = f"{sig(float(info.value))} {pretty_unit(self._g_unit())}", (
+                f"standard gravity ({self.system} default)"
+            )
+            unit_text = self._g_unit()
+            number_text = sig(float(info.value))
+        else:
+            assert given.quantity is not None
+            unit_text = given.quantity.unit.text if given.quantity.unit else ""
+            number_text = given.quantity.text
+            written = f"{number_text} {pretty_unit(unit_text)}".strip()
+            description = given.description
+        si_unit = natural_unit(info.dim, "SI", info.name)
+        if info.dim.dimensionless and unit_text:
+            si_unit = "rad"
+        si_value = from_base(float(info.value), info.dim, si_unit, self.system)
+        si = format_quantity(si_value, si_unit, 4, trim=True)
+        latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
+        return GivenRow(info.name, written, si, description, False, latex_name(info.name),
+                        latex_value)  # fmt: skip
+
+    def _g_unit(self) -> str:
+        return "m/s^2" if self.system == "SI" else "ft/s^2"
+
+    def equation_rows(self) -> tuple[EquationRow, ...]:
+        rows = []
+        for check in self.problem.dims.checks:
+            statement = check.statement
+            unit = natural_unit(check.dim, self.system) or "1"
+            rows.append(
+                EquationRow(
+                    line=statement.line,
+                    text=statement_text(statement),
+                    latex=statement_latex(statement),
+                    note=statement.note,
+                    dimension=f"{check.dim.name} [{pretty_unit(unit)}]",
+                    dimension_ok=check.ok,
+                    constraint=statement.relation != "=",
+                )
+            )
+        return tuple(rows)
+
+    def step(self, index: int, block: object) -> Step:
+        from dynsolve.solve.outcome import Block
+
+        assert isinstance(block, Block)
+        equations = self.problem.system.equations
+        results = []
+        for symbol in block.unknowns:
+            formula = block.formulas.get(symbol)
+            value_text, value_latex, _ = self.shown(symbol.name, block.values[symbol])
+            show_formula = formula is not None and formula.free_symbols
+            results.append(
+                Formula(
+                    name=symbol.name,
+                    formula=self.text(formula) if show_formula else "",
+                    formula_latex=self.latex(formula) if show_formula else "",
+                    value=value_text,
+                    value_latex=value_latex,
+                )
+            )
+        discarded = tuple(
+            ", ".join(f"{pretty(s.name)} = {self.shown(s.name, v)[0]}" for s, v in d.values.items())
+            + f": {d.reason}"
+            for d in block.discarded
+        )
+        return Step(
+            index=index,
+            lines=tuple(equations[i].line for i in block.equations),
+            unknowns=tuple(s.name for s in block.unknowns),
+            method=block.method,
+            results=tuple(results),
+            discarded=discarded,
+            note=block.note,
+        )
+
+    def computed(self, name: str) -> sympy.Expr | None:
+        symbol = self.problem.symbols[name]
+        if symbol in self.outcome.values:
+            return self.outcome.values[symbol]
+        if symbol in self.knowns:
+            return self.knowns[symbol]
+        if any(g.name == name for g in self.problem.givens):
+            return symbol  # a symbolic given asked for: its own formula
+        return None
+
+    def answer(self, target: object) -> AnswerRow:
+        from dynsolve.equation_mode import Target
+
+        assert isinstance(target, Target)
+        value = self.computed(target.name)
+        direction = next(
+            (a.direction or "" for a in self.problem.spec.answers if a.name == target.name), ""
+        )
+        if value is None:
+            return AnswerRow(target.name, None, target.unit, "not determined", "", "", direction)
+        text, latex, number = self.shown(target.name, value)
+        exact = self.text(_tidy(value)) if number is None else sympy.sstr(value)
+        if number is None:
+            latex = self.latex(_tidy(value))
+            text = exact
+        return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
+
+    def key(self) -> list[KeyComparison]:
+        spec = self.problem.spec
+        targets = {t.name: t for t in self.problem.targets}
+        known_dims = {g.name: g.dim for g in self.problem.givens}
+        out = []
+        for answer in spec.answers:
+            target = targets[answer.name]
+            verdict = compare(
+                answer, self.computed(answer.name), target.dim, target.unit, spec,
+                self.problem.symbols, self.knowns, known_dims,
+            )  # fmt: skip
+            row = next(a for a in (self.answer(target),))
+            out.append(KeyComparison(answer.name, verdict.expected, row.shown, verdict.passed,
+                                     verdict.detail))  # fmt: skip
+        return out
+
+    # ---- checks
+    def checks(self) -> tuple[Check, ...]:
+        outcome = self.outcome
+        equations = self.problem.system.equations
+        n = len(self.problem.dims.checks)
+        checks = [Check("dimensions", True, f"all {n} equations and constraints are homogeneous")]
+        checks.append(self._structure_check())
+        evaluated = [r for r in outcome.residuals if r.evaluated]
+        if evaluated:
+            worst = max(evaluated, key=lambda r: r.relative)
+            checks.append(
+                Check(
+                    "substitution",
+                    worst.relative <= RESIDUAL_LIMIT,
+                    f"every answer substituted back into {len(evaluated)} equation(s); largest "
+                    f"relative residual {worst.relative:.1e} ({equations[worst.equation].label})",
+                )
+            )
+        unevaluated = len(outcome.residuals) - len(evaluated)
+        if unevaluated and outcome.status == "solved":
+            checks.append(Check("substitution (symbolic)", True,
+                                f"{unevaluated} equation(s) hold identically"))  # fmt: skip
+        for constraint in self.problem.system.constraints:
+            checks.append(self._constraint_check(constraint))
+        if outcome.ambiguous:
+            names = ", ".join(pretty(s.name) for s in outcome.ambiguous)
+            checks.append(Check("root choice", False,
+                                f"several roots remain for {names}: declare a constraint"))  # fmt: skip
+        return tuple(checks)
+
+    def _structure_check(self) -> Check:
+        outcome = self.outcome
+        lines = {i: e.label for i, e in enumerate(self.problem.system.equations)}
+        if outcome.status == "underdetermined":
+            names = ", ".join(pretty(s.name) for s in outcome.undetermined)
+            detail = (
+                f"cannot determine {names}: {outcome.missing_equations} equation(s) missing"
+                + self._typo_hint()
+            )
+            return Check("structure", False, detail)
+        if outcome.status == "inconsistent":
+            which = ", ".join(lines[i] for i in outcome.conflicting)
+            return Check("structure", False, f"the equations conflict: {which}")
+        if outcome.status == "no_valid_root":
+            return Check("structure", False, "no root satisfies the constraints")
+        if outcome.status == "failed":
+            return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
+        detail = f"{len(self.problem.system.unknowns)} unknowns from {len(lines)} equations"
+        if outcome.redundant:
+            detail += "; redundant and consistent: " + ", ".join(lines[i] for i in outcome.redundant)
+        return Check("structure", True, detail)
+
+    def _typo_hint(self) -> str:
+        import difflib
+
+        given = [g.name for g in self.problem.givens]
+        hints = []
+        for symbol in self.outcome.undetermined:
+            close = difflib.get_close_matches(symbol.name, given, n=1, cutoff=0.6)
+            if close:
+                hints.append(f"'{symbol.name}' may be a typo for given '{close[0]}'")
+        return ("; " + "; ".join(hints)) if hints else ""
+
+    def _constraint_check(self, constraint: object) -> Check:
+        from dynsolve.system import Constraint
+
+        assert isinstance(constraint, Constraint)
+        name = f"constraint {constraint.text} (line {constraint.line})"
+        substituted = constraint.relation.subs(self.outcome.values).subs(self.knowns)
+        if substituted in (sympy.true, True):
+            return Check(name, True, "holds")
+        if substituted in (sympy.false, False):
+            return Check(name, False, "violated by the solution")
+        return Check(name, True, "cannot be decided for symbolic givens")
+
+
+def _tidy(expr: sympy.Expr) -> sympy.Expr:
+    """A readable form of a symbolic answer, simplified only when small."""
+    if sympy.count_ops(expr) > 80:
+        return expr
+    return sympy.simplify(expr)
+

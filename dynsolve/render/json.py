@@ -1,0 +1,54 @@
+"""Render a solution as JSON: full precision, every unit a string pint can parse.
+
+>>> from dynsolve.results import Solution
+>>> empty = Solution("f.dyn", "T", "", "SI", "equations", (), (), (), (), (), (), "solved")
+>>> render_json(empty).splitlines()[1]
+'  "title": "T",'
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict
+from typing import Any
+
+from dynsolve.results import Solution
+
+SCHEMA_VERSION = 1
+
+
+def solution_dict(solution: Solution) -> dict[str, Any]:
+    """The solution as plain JSON-ready data (``value`` keeps full float precision)."""
+    return {
+        "title": solution.title,
+        "file": solution.file,
+        "source": solution.source,
+        "units": solution.system,
+        "mode": solution.mode,
+        "status": solution.status,
+        "passed": solution.passed,
+        "givens": [asdict(g) for g in solution.givens],
+        "equations": [asdict(e) for e in solution.equations],
+        "steps": [asdict(s) for s in solution.steps],
+        "answers": [
+            {
+                "name": a.name,
+                "value": a.value,
+                "unit": a.unit,
+                "shown": a.shown,
+                "exact": a.formula,
+                "latex": a.latex,
+                "direction": a.direction,
+            }
+            for a in solution.answers
+        ],
+        "checks": [asdict(c) for c in solution.checks],
+        "key": [asdict(k) for k in solution.key],
+        "messages": list(solution.messages),
+        "schema": SCHEMA_VERSION,
+    }
+
+
+def render_json(solution: Solution) -> str:
+    """The solution as an indented JSON document."""
+    return json.dumps(solution_dict(solution), indent=2, ensure_ascii=False) + "\n"

@@ -1,0 +1,115 @@
+"""The solution as plain data: what every renderer shows and what ``check`` compares.
+
+Built by :mod:`dynsolve.pipeline`; frozen, no sympy objects, so renderers stay pure.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class GivenRow:
+    """A given as written and in SI."""
+
+    name: str
+    written: str  # "40 lb", or "mass" for a symbolic given
+    si: str  # "177.9 N"
+    description: str
+    symbolic: bool
+    latex_name: str
+    latex_value: str
+
+
+@dataclass(frozen=True)
+class EquationRow:
+    """An equation or constraint as written, with its dimension check."""
+
+    line: int
+    text: str  # as written, with Greek letters
+    latex: str
+    note: str  # the principle, from the trailing comment
+    dimension: str  # "force [N]"
+    dimension_ok: bool
+    constraint: bool
+
+
+@dataclass(frozen=True)
+class Formula:
+    """One unknown's result within a step: symbolic formula (optional) and value."""
+
+    name: str
+    formula: str  # "" when not shown
+    formula_latex: str
+    value: str  # 3 s.f. with unit, or the formula for symbolic problems
+    value_latex: str
+
+
+@dataclass(frozen=True)
+class Step:
+    """One block of the solve order: which equations give which unknowns, and how."""
+
+    index: int
+    lines: tuple[int, ...]
+    unknowns: tuple[str, ...]
+    method: str  # "linear", "symbolic" or "numeric"
+    results: tuple[Formula, ...]
+    discarded: tuple[str, ...]  # "ω = -3.00 rad/s: violates omega >= 0 (line 9)"
+    note: str
+
+
+@dataclass(frozen=True)
+class AnswerRow:
+    """A found quantity: full-precision value in its display unit, or a formula."""
+
+    name: str
+    value: float | None  # None for a symbolic answer
+    unit: str  # pint-parsable, lb = pound-force
+    shown: str  # 3 significant figures with the unit, e.g. "-5.91 rad/s²"
+    formula: str  # exact form, e.g. "15696/3475" or "sqrt(2*g*h)"
+    latex: str
+    direction: str  # "cw", "ccw" … when the answer key states one, else ""
+
+
+@dataclass(frozen=True)
+class Check:
+    """A check that passed or failed: dimensions, residuals, roots, answer key."""
+
+    name: str
+    passed: bool
+    detail: str
+
+
+@dataclass(frozen=True)
+class KeyComparison:
+    """One answer-key entry compared with the computed answer."""
+
+    name: str
+    expected: str
+    got: str
+    passed: bool
+    detail: str
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Everything about one solved spec."""
+
+    file: str
+    title: str
+    source: str
+    system: str
+    mode: str
+    givens: tuple[GivenRow, ...]
+    equations: tuple[EquationRow, ...]
+    steps: tuple[Step, ...]
+    answers: tuple[AnswerRow, ...]
+    checks: tuple[Check, ...]
+    key: tuple[KeyComparison, ...]
+    status: str
+    messages: tuple[str, ...] = ()
+
+    @property
+    def passed(self) -> bool:
+        """True when every check (answer key included) passed."""
+        return all(c.passed for c in self.checks)

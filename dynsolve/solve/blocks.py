@@ -1,0 +1,453 @@
+"""Solving one block: linear exactly, nonlinear symbolically within a time budget, else numerically.
+
+A block is a square set of equations (residuals ``lhs - rhs``) in its own unknowns;
+knowns and the values of earlier blocks are given. The result is every candidate
+root found, each with its values and, when shown, its formulas in terms of the
+knowns and earlier unknowns kept as symbols. Choosing among the candidates is
+:mod:`dynsolve.solve.roots`'s job.
+
+* linear blocks: ``linear_eq_to_matrix`` + ``linsolve`` — exact, method ``linear``;
+  a singular matrix leaves the dependent unknowns *free* (under-determined);
+* nonlinear blocks: ``sympy.solve`` under ``options.time_budget`` seconds (SIGALRM,
+  main thread only; a budget <= 0 skips it), method ``symbolic``; when it times
+  out, cannot solve or finds nothing: Newton/secant root finding (mpmath, as
+  ``sympy.nsolve`` does) from several starting points, method ``numeric``.
+
+>>> import sympy
+>>> x, y = sympy.symbols("x y")
+>>> solution = solve_block([x + y - 3, x - y - 1], [x, y], {})
+>>> solution.method, dict(solution.candidates[0].values)
+('linear', {x: 2, y: 1})
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import threading
+import time
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass, field, replace
+from typing import TypeVar
+
+import mpmath
+import sympy
+from sympy.solvers.solveset import NonlinearError
+
+from dynsolve.solve.outcome import Method
+from dynsolve.system import SolveOptions
+
+FORMULA_MAX_OPS = 60  # formulas longer than this (sympy.count_ops) are not shown
+FORMULA_MAX_UNKNOWNS = 8  # bigger linear blocks are solved with the numbers substituted
+START_FACTORS = (1, 0.5, 2, 10, -1, 0.1, -0.5, -2, 100, -10, 0.01, 1000, -100)
+NUMERIC_DIGITS = 15
+DEFAULT_OPTIONS = SolveOptions()
+_TIMEOUT = "symbolic solve exceeded the time budget"
+
+_Result = TypeVar("_Result")
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """One root of a block: its values and, when shown, its formulas."""
+
+    values: Mapping[sympy.Symbol, sympy.Expr]
+    formulas: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class BlockSolution:
+    """Every root found for one block, before any is chosen."""
+
+    unknowns: tuple[sympy.Symbol, ...]
+    method: Method
+    candidates: tuple[Candidate, ...]
+    note: str = ""
+    free: tuple[sympy.Symbol, ...] = ()  # unknowns the block leaves undetermined
+    missing_equations: int = 0  # independent equations the block lacks
+    inconsistent: bool = False  # the block's equations contradict each other
+    exhaustive: bool = True  # False when the roots come from a numeric search
+
+
+class _BudgetExceeded(BaseException):
+    """The symbolic time budget ran out (BaseException so sympy cannot swallow it)."""
+
+
+@contextmanager
+def time_budget(seconds: float) -> Iterator[None]:
+    """Raise a private exception inside the ``with`` body once ``seconds`` have passed.
+
+    Uses ``SIGALRM``/``setitimer``, so it only arms in the main thread (elsewhere
+    there is no budget); the previous handler and timer are always restored.
+
+    >>> with time_budget(5.0):
+    ...     total = sum(range(10))
+    >>> total
+    45
+    """
+    if seconds <= 0 or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    armed = [True]
+
+    def expire(signum: int, frame: object) -> None:
+        if armed[0]:
+            armed[0] = False
+            raise _BudgetExceeded
+
+    previous_handler = signal.signal(signal.SIGALRM, expire)
+    previous_delay, previous_interval = signal.setitimer(signal.ITIMER_REAL, seconds)
+    started = time.monotonic()
+    try:
+        yield
+    finally:
+        armed[0] = False
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous_handler)
+        if previous_delay > 0:
+            left = max(previous_delay - (time.monotonic() - started), 1e-6)
+            signal.setitimer(signal.ITIMER_REAL, left, previous_interval)
+
+
+def _within_budget(work: Callable[[], _Result], seconds: float) -> tuple[_Result | None, bool]:
+    """Run ``work`` under a time budget: ``(result, False)`` or ``(None, True)`` on timeout."""
+    if seconds <= 0:
+        return None, True
+    try:
+        with time_budget(seconds):
+            return work(), False
+    except _BudgetExceeded:
+        return None, True
+
+
+def substitute(expr: sympy.Expr, given: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """Replace given symbols by their values (structural replacement, evaluated).
+
+    >>> import sympy
+    >>> m, g = sympy.symbols("m g")
+    >>> substitute(m * g, {m: 2, g: sympy.Rational(981, 100)})
+    981/50
+    """
+    return sympy.sympify(expr).xreplace({k: sympy.sympify(v) for k, v in given.items()})
+
+
+def is_finite(value: sympy.Expr) -> bool:
+    """False when ``value`` holds an infinity or ``nan`` (e.g. after dividing by zero).
+
+    >>> import sympy
+    >>> is_finite(sympy.Rational(1, 2)), is_finite(sympy.zoo)
+    (True, False)
+    """
+    return not value.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo)
+
+
+def solve_block(
+    residuals: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions = DEFAULT_OPTIONS,
+) -> BlockSolution:
+    """Find every root of ``residuals = 0`` for ``unknowns``, with ``given`` values substituted.
+
+    >>> import sympy
+    >>> v, g, h = sympy.symbols("v g h")
+    >>> solution = solve_block([v**2 - 2 * g * h], [v], {g: 10, h: 5})
+    >>> solution.method, [c.values[v] for c in solution.candidates]
+    ('symbolic', [-10, 10])
+    >>> [c.formulas[v] for c in solution.candidates]
+    [-sqrt(2)*sqrt(g*h), sqrt(2)*sqrt(g*h)]
+    """
+    unknowns = tuple(unknowns)
+    given = {k: sympy.sympify(v) for k, v in given.items()}
+    try:
+        matrix, rhs = sympy.linear_eq_to_matrix(list(residuals), list(unknowns))
+    except NonlinearError:
+        return _solve_nonlinear(list(residuals), unknowns, given, options)
+    return _solve_linear(matrix, rhs, unknowns, given, options)
+
+
+# --- linear blocks -----------------------------------------------------------------
+
+
+def _solve_linear(
+    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions,
+) -> BlockSolution:
+    """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown."""
+    if options.show_formulas and len(unknowns) <= FORMULA_MAX_UNKNOWNS:
+        formulas, _ = _within_budget(
+            lambda: _unique_linear_solution(matrix, rhs, unknowns), options.time_budget
+        )
+        if formulas is not None:
+            values = {u: substitute(f, given) for u, f in formulas.items()}
+            if all(is_finite(v) for v in values.values()):
+                candidate = Candidate(_in_mode(values, options), shown_formulas(formulas))
+                return BlockSolution(unknowns, "linear", (candidate,))
+    return _solve_linear_values(matrix.xreplace(given), rhs.xreplace(given), unknowns, options)
+
+
+def _unique_linear_solution(
+    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...]
+) -> dict[sympy.Symbol, sympy.Expr] | None:
+    """The unique (generic) solution of a linear system, or None if there is none."""
+    solutions = sympy.linsolve((matrix, rhs), list(unknowns))
+    if not isinstance(solutions, sympy.FiniteSet) or not solutions:
+        return None
+    (solution,) = solutions.args
+    if any(set(unknowns) & expr.free_symbols for expr in solution):
+        return None
+    return dict(zip(unknowns, solution, strict=True))
+
+
+def _solve_linear_values(
+    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...],
+    options: SolveOptions,
+) -> BlockSolution:
+    """Solve the substituted linear system; report dependent or contradictory equations."""
+    solutions = sympy.linsolve((matrix, rhs), list(unknowns))
+    if not isinstance(solutions, sympy.FiniteSet) or not solutions:
+        note = "the equations of this block contradict each other"
+        return BlockSolution(unknowns, "linear", (), note=note, inconsistent=True)
+    (solution,) = solutions.args
+    parameters = set(unknowns) & set().union(*(e.free_symbols for e in solution))
+    pairs = list(zip(unknowns, solution, strict=True))
+    free = tuple(u for u, e in pairs if set(unknowns) & e.free_symbols)
+    values = {u: e for u, e in pairs if u not in free}
+    note = ""
+    if free:
+        names = ", ".join(map(str, free))
+        note = f"the equations of this block are dependent: {names} not determined"
+    return BlockSolution(
+        unknowns, "linear", (Candidate(_in_mode(values, options)),), note=note,
+        free=free, missing_equations=len(parameters),
+    )
+
+
+def _in_mode(
+    values: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """Exact values as they are; in numeric mode, floating point ones."""
+    if options.mode == "numeric":
+        return {u: v.evalf(NUMERIC_DIGITS) for u, v in values.items()}
+    return dict(values)
+
+
+def shown_formulas(
+    formulas: Mapping[sympy.Symbol, sympy.Expr],
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """The formulas worth showing: empty when any of them is too long to read.
+
+    >>> import sympy
+    >>> a, b = sympy.symbols("a b")
+    >>> shown_formulas({a: 2 * b})
+    {a: 2*b}
+    """
+    if any(sympy.count_ops(f) > FORMULA_MAX_OPS for f in formulas.values()):
+        return {}
+    return dict(formulas)
+
+
+# --- nonlinear blocks: symbolic ----------------------------------------------------
+
+
+def _solve_nonlinear(
+    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions,
+) -> BlockSolution:
+    """Symbolic solve within the time budget, else numeric root finding.
+
+    With formulas shown, the first half of the budget goes to solving with the knowns
+    as letters; if that fails, the rest to solving with the numbers substituted.
+    """
+    substituted = [substitute(r, given) for r in residuals]
+    letters = set().union(*(r.free_symbols for r in substituted)) - set(unknowns)
+    if options.mode == "numeric" and not letters:
+        return solve_numerically(substituted, unknowns, "numeric mode")
+    deadline = time.monotonic() + options.time_budget
+    reasons: list[str] = []
+    if options.show_formulas:
+        attempt, reason = _symbolic_candidates(residuals, unknowns, options.time_budget / 2, given)
+        if attempt is not None:
+            return attempt
+        reasons.append(reason)
+    attempt, reason = _symbolic_candidates(substituted, unknowns, deadline - time.monotonic(), None)
+    if attempt is not None:
+        return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else "")
+    reasons.append(reason)
+    if _TIMEOUT in reasons:
+        reason = f"symbolic solve exceeded {options.time_budget:g} s budget"
+    if letters:
+        names = ", ".join(sorted(map(str, letters)))
+        note = f"{reason}; numeric root finding needs values for {names}"
+        return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
+    if options.mode == "numeric":
+        reason = "numeric mode"
+    return solve_numerically(substituted, unknowns, f"{reason}; solved numerically")
+
+
+def _symbolic_candidates(
+    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...], seconds: float,
+    given: Mapping[sympy.Symbol, sympy.Expr] | None,
+) -> tuple[BlockSolution | None, str]:
+    """``sympy.solve`` within ``seconds``; with ``given``, roots are formulas to substitute into.
+
+    Returns the solution, or None and the reason it could not be used.
+    """
+    if len(unknowns) == 1:  # a lone equation solves about twice as fast as a one-item list
+        problem: object = residuals[0]
+        targets: object = unknowns[0]
+    else:
+        problem, targets = residuals, list(unknowns)
+    try:
+        roots, timed_out = _within_budget(
+            lambda: sympy.solve(problem, targets, dict=True), seconds
+        )
+    except (NotImplementedError, ValueError, TypeError, RecursionError, ZeroDivisionError):
+        return None, "sympy found no closed form"
+    if timed_out or roots is None:
+        return None, _TIMEOUT
+    complete = [r for r in roots if _determines(r, unknowns)]
+    if roots and not complete:
+        free = tuple(u for u in unknowns if all(u not in r for r in roots))
+        note = "the equations of this block are dependent"
+        return BlockSolution(unknowns, "symbolic", (), note=note, free=free or unknowns,
+                             missing_equations=max(len(free), 1)), ""
+    candidates = [_candidate(r, unknowns, given) for r in complete]
+    candidates = [c for c in candidates if c is not None]
+    if not candidates:
+        return None, "sympy found no solution" if not roots else "formulas undefined here"
+    return BlockSolution(unknowns, "symbolic", tuple(candidates)), ""
+
+
+def _determines(root: Mapping[sympy.Symbol, sympy.Expr], unknowns: Sequence[sympy.Symbol]) -> bool:
+    """True when ``root`` gives every unknown a value free of the block's unknowns."""
+    return all(u in root and not set(unknowns) & root[u].free_symbols for u in unknowns)
+
+
+def _candidate(
+    root: Mapping[sympy.Symbol, sympy.Expr], unknowns: Sequence[sympy.Symbol],
+    given: Mapping[sympy.Symbol, sympy.Expr] | None,
+) -> Candidate | None:
+    """A candidate from a sympy root: substitute ``given`` into formulas, if any."""
+    if given is None:
+        return Candidate({u: root[u] for u in unknowns})
+    values = {u: substitute(root[u], given) for u in unknowns}
+    if not all(is_finite(v) for v in values.values()):
+        return None
+    return Candidate(values, shown_formulas({u: root[u] for u in unknowns}))
+
+
+# --- nonlinear blocks: numeric -----------------------------------------------------
+
+
+def solve_numerically(
+    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], note: str
+) -> BlockSolution:
+    """Root finding from several starting points; the residuals must hold only ``unknowns``.
+
+    >>> import sympy
+    >>> x = sympy.Symbol("x")
+    >>> solution = solve_numerically([x - sympy.cos(x)], [x], "transcendental")
+    >>> [round(float(c.values[x]), 6) for c in solution.candidates]
+    [0.739085]
+    """
+    roots = numeric_roots(residuals, unknowns)
+    candidates = tuple(Candidate(dict(zip(unknowns, r, strict=True))) for r in roots)
+    if not candidates:
+        note = f"{note}; no root found from {len(START_FACTORS)} starting points"
+    return BlockSolution(tuple(unknowns), "numeric", candidates, note=note, exhaustive=False)
+
+
+def numeric_roots(
+    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol]
+) -> list[tuple[sympy.Expr, ...]]:
+    """Distinct roots found by mpmath ``findroot`` from scaled starting points.
+
+    >>> import sympy
+    >>> x = sympy.Symbol("x")
+    >>> sorted(float(r[0]) for r in numeric_roots([x**2 - 4], [x]))
+    [-2.0, 2.0]
+    """
+    unknowns = list(unknowns)
+    function = sympy.lambdify(unknowns, list(residuals), modules="mpmath")
+    size = sympy.lambdify(unknowns, [_term_size(r) for r in residuals], modules="mpmath")
+    jacobian = sympy.lambdify(
+        unknowns, sympy.Matrix(residuals).jacobian(unknowns), modules="mpmath"
+    )
+    found: list[list[mpmath.mpc | mpmath.mpf]] = []
+    for start in _starting_points(residuals, len(unknowns)):
+        root = _find_root(function, jacobian, start)
+        if root is not None and _converged(function, size, root) and not _seen(root, found):
+            found.append(root)
+    return [tuple(_to_sympy(x) for x in root) for root in found]
+
+
+def _term_size(residual: sympy.Expr) -> sympy.Expr:
+    """Sum of the magnitudes of the residual's terms: the scale its zero is judged on."""
+    terms = sympy.Add.make_args(sympy.expand(residual)) if residual.is_Add else (residual,)
+    return sympy.Add(*(sympy.Abs(t) for t in terms))
+
+
+def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float]]:
+    """Starting vectors: each factor of START_FACTORS times 1 and times the data's scale.
+
+    In several unknowns the entries are spread a little (1, 1.13, 1.26, ...) so a
+    symmetric system does not start on its singular diagonal.
+    """
+    scales = [1.0]
+    numbers = [abs(float(a)) for r in residuals for a in r.atoms(sympy.Number) if a != 0]
+    if numbers:
+        typical = math.exp(sum(math.log(x) for x in numbers) / len(numbers))
+        if not 0.3 < typical < 3:
+            scales.append(typical)
+    return [[s * f * (1 + 0.13 * i) for i in range(n)] for s in scales for f in START_FACTORS]
+
+
+def _find_root(
+    function: Callable[..., list[object]], jacobian: Callable[..., object], start: list[float]
+) -> list[mpmath.mpc | mpmath.mpf] | None:
+    """One mpmath ``findroot`` run (secant in 1-D, Newton with Jacobian otherwise)."""
+    try:
+        with mpmath.workdps(NUMERIC_DIGITS + 5):
+            if len(start) == 1:
+                root = mpmath.findroot(lambda x: function(x)[0], start[0], verify=False)
+                return [root]
+            root = mpmath.findroot(
+                lambda *x: function(*x), start, J=lambda *x: jacobian(*x), verify=False
+            )
+            return [root[i] for i in range(len(start))]
+    except (ArithmeticError, ValueError, TypeError):
+        return None
+
+
+def _converged(
+    function: Callable[..., list[object]], size: Callable[..., list[object]],
+    root: Sequence[mpmath.mpc | mpmath.mpf],
+) -> bool:
+    """True when every residual is tiny compared with the size of its terms."""
+    try:
+        with mpmath.workdps(NUMERIC_DIGITS + 5):
+            values, sizes = function(*root), size(*root)
+            return all(
+                abs(v) <= 1e-10 * max(abs(s), 1e-30) or abs(v) == 0
+                for v, s in zip(values, sizes, strict=True)
+            )
+    except (ArithmeticError, ValueError, TypeError):
+        return False
+
+
+def _seen(root: Sequence[object], found: list[list[mpmath.mpc | mpmath.mpf]]) -> bool:
+    """True when ``root`` equals an earlier root to about nine digits."""
+    return any(
+        all(abs(a - b) <= 1e-9 * max(1, abs(a), abs(b)) for a, b in zip(root, old, strict=True))
+        for old in found
+    )
+
+
+def _to_sympy(x: mpmath.mpc | mpmath.mpf) -> sympy.Expr:
+    """An mpmath number as a sympy Float (complex when its imaginary part is not negligible)."""
+    real, imag = mpmath.re(x), mpmath.im(x)
+    if abs(imag) <= 1e-12 * max(1, abs(real)):
+        return sympy.Float(real, NUMERIC_DIGITS)
+    return sympy.Float(real, NUMERIC_DIGITS) + sympy.I * sympy.Float(imag, NUMERIC_DIGITS)

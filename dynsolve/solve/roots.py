@@ -1,0 +1,295 @@
+"""Root selection: keep the one physically meaningful root of a block and say why others went.
+
+Filters, in order, each recording a :class:`DiscardedRoot` with its reason:
+
+1. values undefined for the given numbers (a formula divided by zero);
+2. roots that are not real (``"not real"``);
+3. roots breaking a declared constraint (``"violates omega >= 0 (line 12)"``);
+4. roots that fail a surplus (over-determined) equation, when another root passes it;
+5. the physical-sense rule: an unknown entering the block only through even powers
+   (``±x`` both satisfy) keeps its non-negative root;
+6. if several roots still remain, the first is kept (preferring all unknowns
+   non-negative) and the unknowns are reported ambiguous.
+
+Sign and realness questions about symbolic values (free given symbols, created
+``positive=True``) are put to sympy's assumptions; when they are undecidable the
+root is kept, never discarded.
+
+>>> import sympy
+>>> from dynsolve.solve.blocks import Candidate
+>>> v = sympy.Symbol("v")
+>>> choice = choose_root([Candidate({v: -3}), Candidate({v: 3})], [v], [v**2 - 9], {})
+>>> dict(choice.values), [d.reason for d in choice.discarded]
+({v: 3}, ['v enters only squared; its magnitude is taken positive'])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+
+import sympy
+from sympy.logic.boolalg import Boolean, BooleanAtom
+
+from dynsolve.solve.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, is_finite
+from dynsolve.solve.outcome import DiscardedRoot
+from dynsolve.solve.residuals import equation_residual, is_satisfied
+from dynsolve.system import Constraint, Equation
+
+AMBIGUOUS = "ambiguous: declare a constraint to choose"
+_IMAGINARY_TOLERANCE = 1e-12
+
+
+@dataclass(frozen=True)
+class RootChoice:
+    """The root kept for a block (empty when none survives) and the roots discarded."""
+
+    values: Mapping[sympy.Symbol, sympy.Expr]
+    formulas: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    discarded: tuple[DiscardedRoot, ...] = ()
+    ambiguous: tuple[sympy.Symbol, ...] = ()
+
+
+_Filter = Callable[[Candidate], str]  # "" keeps the candidate, else the reason to discard
+
+
+def choose_root(
+    candidates: Sequence[Candidate],
+    unknowns: Sequence[sympy.Symbol],
+    residuals: Sequence[sympy.Expr],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    constraints: Sequence[Constraint] = (),
+    checks: Sequence[tuple[int, Equation]] = (),
+) -> RootChoice:
+    """Pick the root of a block; ``constraints`` and ``checks`` must only involve solved names.
+
+    ``residuals`` are the block's equations (``lhs - rhs``) for the even-power rule;
+    ``checks`` are surplus equations, with their indices, that also judge the roots.
+
+    >>> import sympy
+    >>> from dynsolve.solve.blocks import Candidate
+    >>> from dynsolve.system import Constraint
+    >>> w = sympy.Symbol("omega")
+    >>> positive = Constraint(w >= 0, "omega >= 0", 12)
+    >>> choice = choose_root([Candidate({w: -2}), Candidate({w: 2})], [w], [w**3 - 4 * w],
+    ...                      {}, [positive])
+    >>> dict(choice.values), choice.discarded[0].reason
+    ({omega: 2}, 'violates omega >= 0 (line 12)')
+    """
+    discarded: list[DiscardedRoot] = []
+    remaining = _distinct([_realised(c) for c in candidates])
+    for keep in (_defined, _real, _within(constraints, given)):
+        remaining = _apply(keep, remaining, discarded)
+    remaining = _apply_if_any_passes(_satisfying(checks, given), remaining, discarded)
+    for unknown in unknowns:
+        if enters_only_squared(residuals, unknown):
+            remaining = _apply_if_any_passes(_non_negative(unknown), remaining, discarded)
+    if not remaining:
+        return RootChoice({}, {}, tuple(discarded))
+    remaining.sort(key=lambda c: not all(_is_non_negative(v) for v in c.values.values()))
+    kept, others = remaining[0], remaining[1:]
+    discarded.extend(DiscardedRoot(c.values, AMBIGUOUS) for c in others)
+    ambiguous = tuple(u for u in unknowns if any(c.values[u] != kept.values[u] for c in others))
+    return RootChoice(_tidy(kept.values), kept.formulas, tuple(discarded), ambiguous)
+
+
+def _apply(
+    keep: _Filter, candidates: list[Candidate], discarded: list[DiscardedRoot]
+) -> list[Candidate]:
+    """Keep the candidates ``keep`` has no objection to; record the others."""
+    kept = []
+    for candidate in candidates:
+        reason = keep(candidate)
+        if reason:
+            discarded.append(DiscardedRoot(candidate.values, reason))
+        else:
+            kept.append(candidate)
+    return kept
+
+
+def _apply_if_any_passes(
+    keep: _Filter, candidates: list[Candidate], discarded: list[DiscardedRoot]
+) -> list[Candidate]:
+    """Like :func:`_apply`, but only when at least one candidate passes (a preference)."""
+    if not any(not keep(c) for c in candidates):
+        return candidates
+    return _apply(keep, candidates, discarded)
+
+
+def _distinct(candidates: list[Candidate]) -> list[Candidate]:
+    """Drop candidates whose values repeat an earlier candidate's."""
+    seen: list[Mapping[sympy.Symbol, sympy.Expr]] = []
+    result = []
+    for candidate in candidates:
+        if dict(candidate.values) not in seen:
+            seen.append(dict(candidate.values))
+            result.append(candidate)
+    return result
+
+
+def _defined(candidate: Candidate) -> str:
+    return "" if all(is_finite(v) for v in candidate.values.values()) else "undefined here"
+
+
+def _real(candidate: Candidate) -> str:
+    return "not real" if any(is_real(v) is False for v in candidate.values.values()) else ""
+
+
+def _within(constraints: Sequence[Constraint], given: Mapping[sympy.Symbol, sympy.Expr]) -> _Filter:
+    def keep(candidate: Candidate) -> str:
+        substitution = {**given, **candidate.values}
+        for constraint in constraints:
+            if truth(constraint.relation, substitution) is False:
+                where = f" (line {constraint.line})" if constraint.line else ""
+                return f"violates {constraint.text}{where}"
+        return ""
+
+    return keep
+
+
+def _satisfying(
+    checks: Sequence[tuple[int, Equation]], given: Mapping[sympy.Symbol, sympy.Expr]
+) -> _Filter:
+    def keep(candidate: Candidate) -> str:
+        substitution = {**given, **candidate.values}
+        for index, equation in checks:
+            if is_satisfied(equation_residual(index, equation, substitution)) is False:
+                return f"does not satisfy {equation.label}"
+        return ""
+
+    return keep
+
+
+def _non_negative(unknown: sympy.Symbol) -> _Filter:
+    reason = f"{unknown} enters only squared; its magnitude is taken positive"
+
+    def keep(candidate: Candidate) -> str:
+        return reason if _is_negative(candidate.values[unknown]) else ""
+
+    return keep
+
+
+def enters_only_squared(residuals: Sequence[sympy.Expr], unknown: sympy.Symbol) -> bool:
+    """True when ``unknown`` occurs in the residuals only as even powers (so ``±x`` both fit).
+
+    >>> import sympy
+    >>> v, h = sympy.symbols("v h")
+    >>> enters_only_squared([v**2 / 2 - 9 * h], v), enters_only_squared([v**2 + v], v)
+    (True, False)
+    """
+    square = sympy.Dummy("square")
+
+    def is_even_power(e: sympy.Basic) -> bool:
+        return bool(e.is_Pow and e.base == unknown and e.exp.is_even)
+
+    occurs = False
+    for residual in residuals:
+        if unknown in residual.free_symbols:
+            occurs = True
+            replaced = residual.replace(is_even_power, lambda e: square ** (e.exp / 2))
+            if unknown in replaced.free_symbols:
+                return False
+    return occurs
+
+
+def is_real(value: sympy.Expr) -> bool | None:
+    """Whether ``value`` is real: by assumptions for symbolic values, numerically for numbers.
+
+    >>> import sympy
+    >>> is_real(sympy.sqrt(2)), is_real(1 + sympy.I), is_real(sympy.Symbol("x"))
+    (True, False, None)
+    """
+    if value.free_symbols:
+        return value.is_real
+    try:
+        number = complex(sympy.N(value, NUMERIC_DIGITS + 5))
+    except (TypeError, ValueError):
+        return value.is_real
+    return abs(number.imag) <= _IMAGINARY_TOLERANCE * max(1.0, abs(number.real))
+
+
+def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) -> bool | None:
+    """Evaluate a constraint after substitution: True, False, or None when undecidable.
+
+    >>> import sympy
+    >>> th, g = sympy.Symbol("th"), sympy.Symbol("g", positive=True)
+    >>> truth(th < sympy.pi / 2, {th: sympy.acos(sympy.Rational(1, 7))})
+    True
+    >>> truth(th >= 0, {th: -sympy.sqrt(g)}), truth(th > 1, {th: g})
+    (False, None)
+    """
+    try:
+        result = relation.xreplace({k: sympy.sympify(v) for k, v in substitution.items()})
+    except (TypeError, ValueError):
+        return None
+    return _decide(result)
+
+
+def _decide(result: sympy.Basic) -> bool | None:
+    """Three-valued truth of a substituted relation or combination of relations."""
+    if isinstance(result, BooleanAtom):
+        return bool(result)
+    if isinstance(result, sympy.core.relational.Relational):
+        return _decide_numerically(result)
+    parts = [_decide(arg) for arg in result.args]
+    if isinstance(result, sympy.And):
+        return False if False in parts else (None if None in parts else True)
+    if isinstance(result, sympy.Or):
+        return True if True in parts else (None if None in parts else False)
+    if isinstance(result, sympy.Not) and parts[0] is not None:
+        return not parts[0]
+    return None
+
+
+def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | None:
+    """Compare the two sides of a relation between numbers numerically."""
+    difference = relation.lhs - relation.rhs
+    if not difference.is_number:
+        return None
+    try:
+        number = complex(sympy.N(difference, NUMERIC_DIGITS + 5))
+    except (TypeError, ValueError):
+        return None
+    if abs(number.imag) > _IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
+        return None
+    compare = {
+        ">": number.real > 0, ">=": number.real >= 0, "<": number.real < 0,
+        "<=": number.real <= 0, "==": number.real == 0, "!=": number.real != 0,
+    }
+    return compare.get(relation.rel_op)
+
+
+def _is_negative(value: sympy.Expr) -> bool:
+    """True only when ``value`` is decidably negative."""
+    if value.free_symbols:
+        return bool(value.is_negative)
+    try:
+        return complex(sympy.N(value, NUMERIC_DIGITS + 5)).real < 0
+    except (TypeError, ValueError):
+        return bool(value.is_negative)
+
+
+def _is_non_negative(value: sympy.Expr) -> bool:
+    """True only when ``value`` is decidably non-negative."""
+    if value.free_symbols:
+        return bool(value.is_nonnegative)
+    return not _is_negative(value)
+
+
+def _realised(candidate: Candidate) -> Candidate:
+    """Replace numbers that are real but written with ``I`` (casus irreducibilis) by Floats."""
+    values = {u: sympy.sympify(v) for u, v in candidate.values.items()}
+    for unknown, value in values.items():
+        if is_finite(value) and not value.free_symbols and value.has(sympy.I) and is_real(value):
+            values[unknown] = sympy.re(sympy.N(value, NUMERIC_DIGITS))
+    return Candidate(values, candidate.formulas)
+
+
+def _tidy(values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+    """Numbers too long to read (nested radicals) become Floats; the rest stay exact."""
+    return {
+        u: sympy.N(v, NUMERIC_DIGITS)
+        if not v.free_symbols and sympy.count_ops(v) > FORMULA_MAX_OPS
+        else v
+        for u, v in values.items()
+    }

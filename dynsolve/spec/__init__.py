@@ -1,0 +1,1 @@
+"""Safe parsing of spec text into immutable statements (never evaluated)."""

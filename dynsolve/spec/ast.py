@@ -1,0 +1,213 @@
+"""The parsed spec as immutable data: expressions, quantities and section statements.
+
+Nothing here evaluates anything; :mod:`dynsolve.spec.parser` builds these nodes from
+text and later stages turn them into sympy objects.
+
+>>> Name("alpha", 3, 5).text
+'alpha'
+>>> str(Binary("*", Num(Fraction(2), "2", 1, 1), Name("m", 1, 3), 1, 2))
+'2*m'
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Literal
+
+__all__ = [
+    "Answer",
+    "Binary",
+    "Call",
+    "EquationStmt",
+    "Expr",
+    "FindItem",
+    "Fraction",
+    "Given",
+    "Name",
+    "Num",
+    "Quantity",
+    "Spec",
+    "Tolerance",
+    "Unary",
+    "UnitExpr",
+    "UnitFactor",
+]
+
+
+def _as_written(node: object) -> str:
+    """The node printed as written, names unchanged."""
+    from dynsolve.spec.printing import expr_text
+
+    return expr_text(node, str)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class Num:
+    """A number literal, kept exact."""
+
+    value: Fraction
+    text: str
+    line: int
+    column: int
+
+    def __str__(self) -> str:
+        return self.text
+
+
+@dataclass(frozen=True)
+class Name:
+    """A name: a given, an unknown, or the constants ``g`` and ``pi``."""
+
+    text: str
+    line: int
+    column: int
+
+    def __str__(self) -> str:
+        return self.text
+
+
+@dataclass(frozen=True)
+class Unary:
+    """``-operand`` (a leading ``+`` is dropped by the parser)."""
+
+    op: Literal["-"]
+    operand: Expr
+    line: int
+    column: int
+
+    __str__ = _as_written
+
+
+@dataclass(frozen=True)
+class Binary:
+    """``left op right`` for ``+ - * / ^``."""
+
+    op: Literal["+", "-", "*", "/", "^"]
+    left: Expr
+    right: Expr
+    line: int
+    column: int
+
+    __str__ = _as_written
+
+
+@dataclass(frozen=True)
+class Call:
+    """A function call such as ``sin(theta)``."""
+
+    function: str
+    args: tuple[Expr, ...]
+    line: int
+    column: int
+
+    __str__ = _as_written
+
+
+Expr = Num | Name | Unary | Binary | Call
+
+@dataclass(frozen=True)
+class UnitFactor:
+    """One unit name raised to a power inside a unit expression (``s^-2``)."""
+
+    name: str
+    exponent: Fraction
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class UnitExpr:
+    """A unit expression as written (``kg*m^2``), flattened into factors."""
+
+    text: str
+    factors: tuple[UnitFactor, ...]
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A number with an optional unit: ``60 kg``, ``0.6`` (dimensionless)."""
+
+    value: Fraction
+    text: str
+    unit: UnitExpr | None
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class Given:
+    """A ``given`` line: a value (``m = 60 kg``) or only a dimension (``m: mass``)."""
+
+    name: str
+    quantity: Quantity | None
+    dimension: UnitExpr | None  # a dimension name or a unit, for symbolic givens
+    description: str
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class EquationStmt:
+    """An ``equations`` line: an equation (``=``) or a constraint (``>=``, ``<`` …)."""
+
+    lhs: Expr
+    relation: Literal["=", ">=", "<=", ">", "<"]
+    rhs: Expr
+    text: str
+    note: str  # the trailing comment: the principle it states
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class FindItem:
+    """A name to solve for, with an optional output unit."""
+
+    name: str
+    unit: UnitExpr | None
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """How close an answer must be: relative (``± 0.5%``) or absolute (``± 0.01 N``)."""
+
+    kind: Literal["rel", "abs"]
+    value: Fraction
+    unit: UnitExpr | None
+    text: str
+
+
+Direction = Literal["cw", "ccw", "up", "down", "left", "right"]
+
+
+@dataclass(frozen=True)
+class Answer:
+    """An ``answers`` line: the expected value or formula of one found name."""
+
+    name: str
+    quantity: Quantity | None
+    formula: Expr | None
+    tolerance: Tolerance | None
+    direction: Direction | None
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class Spec:
+    """A whole parsed spec file."""
+
+    file: str
+    title: str
+    source: str
+    system: Literal["SI", "FPS"]
+    givens: tuple[Given, ...]
+    equations: tuple[EquationStmt, ...]
+    finds: tuple[FindItem, ...]
+    answers: tuple[Answer, ...]
+    system_line: int = 0

@@ -1,0 +1,668 @@
+"""Parse spec text into a :class:`~dynsolve.spec.ast.Spec`, with bounded, position-exact errors.
+
+Sections are read line by line here; each body line is parsed by the lark grammar in
+``spec.lark`` and turned into AST nodes by a transformer. Nothing is evaluated.
+
+>>> spec = parse_spec('''
+... problem: Falling block
+... given:
+...   m = 2 kg   # block mass
+... equations:
+...   F = m*g    # weight
+... find: F [N]
+... ''', "demo.dyn")
+>>> spec.title, spec.givens[0].description, str(spec.equations[0].rhs), spec.finds[0].unit.text
+('Falling block', 'block mass', 'm*g', 'N')
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, replace
+from fractions import Fraction
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import lark
+from lark import Token, Transformer_NonRecursive
+
+from dynsolve.errors import Position, SpecError
+from dynsolve.spec.ast import (
+    Answer,
+    Binary,
+    Call,
+    EquationStmt,
+    Expr,
+    FindItem,
+    Given,
+    Name,
+    Num,
+    Quantity,
+    Spec,
+    Tolerance,
+    Unary,
+    UnitExpr,
+    UnitFactor,
+)
+
+MAX_FILE_BYTES = 256 * 1024
+MAX_LINES = 5000
+MAX_LINE_LENGTH = 1000
+MAX_DEPTH = 40
+MAX_DIGITS = 40
+MAX_LITERAL_EXPONENT = 100
+MAX_POWER = 64
+MAX_STATEMENTS = 1000
+
+SECTIONS = ("problem", "source", "units", "given", "equations", "find", "answers")
+BLOCK_SECTIONS = ("given", "equations", "find", "answers")
+_FIELDS = {"given": "givens", "equations": "equations", "find": "finds", "answers": "answers"}
+SYSTEMS = {"si": "SI", "fps": "FPS"}
+SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
+FUNCTIONS = {
+    "sin": 1, "cos": 1, "tan": 1, "asin": 1, "acos": 1, "atan": 1, "atan2": 2,
+    "sqrt": 1, "exp": 1, "log": 1, "abs": 1,
+}  # fmt: skip
+CONSTANTS = ("pi", "g")
+
+_EXPECTED_WORDS = {
+    "NAME": "a name",
+    "NUMBER": "a number",
+    "REL": "'=' or a comparison",
+    "EQUAL": "'='",
+    "COLON": "':'",
+    "PLUSMINUS": "'+-'",
+    "DIRECTION": "a direction (cw, ccw, up, down, left, right)",
+    "RPAR": "')'",
+    "LPAR": "'('",
+    "RSQB": "']'",
+    "LSQB": "'['",
+    "COMMA": "','",
+    "POW": "'^'",
+    "MINUS": "'-'",
+    "PLUS": "'+'",
+    "STAR": "'*'",
+    "SLASH": "'/'",
+    "UMUL": "'*'",
+    "PERCENT": "'%'",
+}
+
+
+@functools.cache
+def _lark() -> lark.Lark:
+    grammar = resources.files("dynsolve.spec").joinpath("spec.lark").read_text("utf-8")
+    return lark.Lark(
+        grammar,
+        parser="lalr",
+        lexer="contextual",
+        start=["given_line", "equation_line", "find_line", "answer_line", "answer_formula"],
+        cache=True,
+    )
+
+
+def parse_file(path: str | Path) -> Spec:
+    """Read and parse a ``.dyn`` file, bounding its size and checking its encoding."""
+    path = Path(path)
+    shown = str(path)
+    try:
+        size = path.stat().st_size
+    except OSError as exc:
+        raise SpecError(f"cannot read {shown}: {exc.strerror}", hint="check the path") from None
+    if size > MAX_FILE_BYTES:
+        raise SpecError(
+            f"{shown} is {size} bytes; specs are limited to {MAX_FILE_BYTES} bytes",
+            Position(shown, 1, 1),
+            hint="split the problem into several files",
+        )
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
+        raise SpecError(
+            "the file is not valid UTF-8 text",
+            Position(shown, line, column),
+            hint="save it as UTF-8",
+        ) from None
+    return parse_spec(text, shown)
+
+
+@dataclass
+class _Sections:
+    """Section contents gathered while scanning, before they are frozen into a Spec."""
+
+    title: str = ""
+    source: str = ""
+    system: str = "SI"
+    system_line: int = 0
+    givens: list[Given] | None = None
+    equations: list[EquationStmt] | None = None
+    finds: list[FindItem] | None = None
+    answers: list[Answer] | None = None
+
+
+def parse_spec(text: str, file: str = "<spec>") -> Spec:
+    """Parse spec ``text``; ``file`` names it in error positions."""
+    if len(text.encode("utf-8")) > MAX_FILE_BYTES:
+        raise SpecError(
+            f"the spec exceeds {MAX_FILE_BYTES} bytes", Position(file, 1, 1), hint="split it"
+        )
+    lines = text.splitlines()
+    if len(lines) > MAX_LINES:
+        raise SpecError(f"the spec has more than {MAX_LINES} lines", Position(file, 1, 1))
+    parts = _Sections()
+    seen: dict[str, int] = {}
+    current: str | None = None
+    statements = 0
+    for number, raw in enumerate(lines, start=1):
+        content, comment = _split_comment(raw)
+        if not content.strip():
+            continue
+        if len(raw) > MAX_LINE_LENGTH:
+            raise SpecError(
+                f"line is {len(raw)} characters long; the limit is {MAX_LINE_LENGTH}",
+                Position(file, number, MAX_LINE_LENGTH + 1),
+                hint="break the expression into several equations",
+            )
+        _check_characters(content, file, number)
+        indent = len(content) - len(content.lstrip(" \t"))
+        if indent == 0:
+            current = _header(content, comment, file, number, parts, seen)
+            continue
+        if current is None:
+            raise SpecError(
+                "indented line outside a section",
+                Position(file, number, indent + 1),
+                hint=f"start a section first, one of: {', '.join(BLOCK_SECTIONS)}",
+            )
+        statements += 1
+        if statements > MAX_STATEMENTS:
+            raise SpecError(
+                f"more than {MAX_STATEMENTS} statements", Position(file, number, indent + 1)
+            )
+        _body_line(current, content.strip(), comment, file, number, indent, parts)
+    return _finish(parts, file)
+
+
+def _split_comment(raw: str) -> tuple[str, str]:
+    content, hash_, comment = raw.partition("#")
+    return content.rstrip(), comment.strip() if hash_ else ""
+
+
+def _check_characters(content: str, file: str, line: int) -> None:
+    depth = 0
+    for column, char in enumerate(content, start=1):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if depth > MAX_DEPTH:
+            raise SpecError(
+                f"parentheses nested more than {MAX_DEPTH} levels deep",
+                Position(file, line, column),
+                hint="split the expression into several equations",
+            )
+        if not char.isprintable() and char != "\t":
+            raise SpecError(
+                f"control character U+{ord(char):04X} in the spec",
+                Position(file, line, column),
+                hint="remove it",
+            )
+
+
+def _header(
+    content: str, comment: str, file: str, line: int, parts: _Sections, seen: dict[str, int]
+) -> str | None:
+    keyword, colon, rest = content.partition(":")
+    key = keyword.strip().lower()
+    if not colon or key not in SECTIONS:
+        word = keyword.strip().split()[0] if keyword.strip() else keyword
+        close = difflib.get_close_matches(word.lower(), SECTIONS, n=1)
+        hint = f"did you mean '{close[0]}:'?" if close else f"sections are {', '.join(SECTIONS)}"
+        if not colon and key in SECTIONS:
+            hint = f"write '{key}:' with a colon"
+        elif not colon and key not in SECTIONS and not close:
+            hint = "indent the lines that belong to a section"
+        raise SpecError(f"expected a section header, found '{word}'", Position(file, line, 1), hint)
+    if key in seen:
+        raise SpecError(
+            f"section '{key}' appears twice (first on line {seen[key]})",
+            Position(file, line, 1),
+            hint="merge the two sections",
+        )
+    seen[key] = line
+    rest_column = len(keyword) + 2 + (len(rest) - len(rest.lstrip()))
+    rest = rest.strip()
+    if key == "problem":
+        parts.title = rest
+    elif key == "source":
+        parts.source = rest
+    elif key == "units":
+        parts.system = _system(rest, file, line, rest_column)
+        parts.system_line = line
+    else:
+        setattr(parts, _FIELDS[key], [])
+        if rest:
+            if key != "find":
+                raise SpecError(
+                    f"'{key}:' takes its entries on the following, indented lines",
+                    Position(file, line, rest_column),
+                    hint=f"move '{rest}' to the next line and indent it",
+                )
+            _body_line(key, rest, comment, file, line, rest_column - 1, parts)
+        return key
+    return None
+
+
+def _system(word: str, file: str, line: int, column: int) -> str:
+    if word.lower() in SYSTEMS:
+        return SYSTEMS[word.lower()]
+    alias = SYSTEM_ALIASES.get(word.lower())
+    hint = f"write 'units: {alias}'" if alias else "use 'SI' or 'FPS' (US customary)"
+    raise SpecError(f"unknown unit system '{word}'", Position(file, line, column), hint)
+
+
+def _body_line(
+    section: str, text: str, comment: str, file: str, line: int, indent: int, parts: _Sections
+) -> None:
+    offset = indent  # columns before `text` on the line
+    if section == "given":
+        node = _parse(text, "given_line", file, line, offset)
+        assert parts.givens is not None
+        parts.givens.append(replace(node, description=comment))
+    elif section == "equations":
+        node = _parse(text, "equation_line", file, line, offset)
+        assert parts.equations is not None
+        lhs, relation, rhs = node
+        parts.equations.append(EquationStmt(lhs, relation, rhs, text, comment, line, offset + 1))
+    elif section == "find":
+        assert parts.finds is not None
+        parts.finds.extend(_parse(text, "find_line", file, line, offset))
+    else:
+        assert parts.answers is not None
+        parts.answers.append(_parse_answer(text, file, line, offset))
+
+
+def _parse_answer(text: str, file: str, line: int, offset: int) -> Answer:
+    try:
+        return _parse(text, "answer_line", file, line, offset)
+    except SpecError as as_quantity:
+        try:
+            return _parse(text, "answer_formula", file, line, offset)
+        except SpecError as as_formula:
+            assert as_quantity.position and as_formula.position
+            further = max(
+                (as_quantity, as_formula), key=lambda e: e.position.column if e.position else 0
+            )
+            raise further from None
+
+
+def _parse(text: str, start: str, file: str, line: int, offset: int) -> Any:
+    try:
+        tree = _lark().parse(text, start=start)
+    except lark.exceptions.UnexpectedInput as exc:
+        raise _syntax_error(exc, text, start, file, line, offset) from None
+    _check_depth(tree, file, line, offset)
+    try:
+        return _Builder(file, line, offset).transform(tree)
+    except lark.exceptions.VisitError as exc:
+        if isinstance(exc.orig_exc, SpecError):
+            raise exc.orig_exc from None
+        raise
+
+
+def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
+    stack: list[tuple[Any, int]] = [(tree, 1)]
+    while stack:
+        node, depth = stack.pop()
+        if not isinstance(node, lark.Tree):
+            continue
+        if depth > MAX_DEPTH:
+            token = next((t for t in node.scan_values(lambda v: isinstance(v, Token))), None)
+            column = offset + (token.column or 1) if token else offset + 1
+            raise SpecError(
+                f"expression nested more than {MAX_DEPTH} levels deep",
+                Position(file, line, column),
+                hint="split it into several equations with intermediate names",
+            )
+        stack.extend((child, depth + 1) for child in node.children)
+
+
+_LINE_KINDS = {
+    "given_line": ("a given", "'name = value unit' or 'name: dimension'"),
+    "equation_line": ("an equation", "'left = right', e.g. 'T*r = I_O*alpha'"),
+    "find_line": ("a find list", "names with optional units, e.g. 'alpha, T [N]'"),
+    "answer_line": ("an answer", "'name = value unit', e.g. 'T = 106 N +- 0.5%'"),
+    "answer_formula": ("an answer", "'name = value unit' or 'name = formula'"),
+}
+
+
+def _syntax_error(
+    exc: lark.exceptions.UnexpectedInput, text: str, start: str, file: str, line: int, offset: int
+) -> SpecError:
+    column = getattr(exc, "column", None)
+    if not isinstance(column, int) or column < 1:
+        column = len(text) + 1
+    position = Position(file, line, offset + column)
+    what, form = _LINE_KINDS[start]
+    if isinstance(exc, lark.exceptions.UnexpectedCharacters):
+        char = text[column - 1] if column - 1 < len(text) else ""
+        return SpecError(
+            f"unexpected character '{char}' in {what}", position, hint=f"write {form}"
+        )
+    token = getattr(exc, "token", None)
+    expected = sorted(getattr(exc, "expected", set()) or getattr(exc, "allowed", set()))
+    words = _expected_words(expected)
+    if token is None or token.type == "$END":
+        return SpecError(
+            f"{what} ends too early; expected {words}", Position(file, line, offset + len(text) + 1),
+            hint=f"write {form}",
+        )
+    return SpecError(
+        f"unexpected '{token}' in {what}; expected {words}",
+        position,
+        hint=_token_hint(str(token), token.type, expected, form),
+    )
+
+
+def _expected_words(expected: list[str]) -> str:
+    words = []
+    for name in expected:
+        word = _EXPECTED_WORDS.get(name)
+        if word is None and name.startswith("__ANON"):
+            continue
+        word = word or name.lower()
+        if word not in words:
+            words.append(word)
+    if not words:
+        return "something else"
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
+
+
+def _token_hint(token: str, kind: str, expected: list[str], form: str) -> str:
+    operator_expected = any(e in expected for e in ("STAR", "PLUS", "MINUS", "SLASH", "REL"))
+    if kind in ("NAME", "NUMBER", "LPAR") and operator_expected:
+        return f"write an operator before '{token}', e.g. '*' for a product"
+    if kind == "NUMBER" and "NAME" in expected:
+        return "names start with a letter"
+    return f"write {form}"
+
+
+class _Builder(Transformer_NonRecursive):
+    """Turns lark's tree into AST nodes, enforcing number and exponent bounds."""
+
+    def __init__(self, file: str, line: int, offset: int) -> None:
+        super().__init__()
+        self.file, self.line, self.offset = file, line, offset
+
+    def _at(self, token: Token) -> Position:
+        return Position(self.file, self.line, self.offset + (token.column or 1))
+
+    def _col(self, token: Token) -> int:
+        return self.offset + (token.column or 1)
+
+    # ---- numbers
+    def _fraction(self, token: Token) -> Fraction:
+        text = str(token)
+        mantissa, _, exponent = text.lower().partition("e")
+        if len(mantissa.replace(".", "").lstrip("0")) > MAX_DIGITS:
+            raise SpecError(
+                f"number has more than {MAX_DIGITS} digits", self._at(token), "round it"
+            )
+        if exponent and abs(int(exponent)) > MAX_LITERAL_EXPONENT:
+            raise SpecError(
+                f"exponent {exponent} is out of range (±{MAX_LITERAL_EXPONENT})",
+                self._at(token),
+                hint="choose units that keep numbers moderate",
+            )
+        return Fraction(text)
+
+    def number(self, children: list[Token]) -> Num:
+        (token,) = children
+        return Num(self._fraction(token), str(token), self.line, self._col(token))
+
+    def signed_number(self, children: list[Token]) -> tuple[Fraction, str, int]:
+        token = children[-1]
+        value = self._fraction(token)
+        negative = len(children) == 2
+        first = children[0]
+        return (-value if negative else value, ("-" if negative else "") + token, self._col(first))
+
+    # ---- expressions
+    def name(self, children: list[Token]) -> Name:
+        (token,) = children
+        if str(token) in FUNCTIONS:
+            raise SpecError(
+                f"'{token}' is a function and needs an argument",
+                self._at(token),
+                hint=f"write {token}(x)",
+            )
+        return Name(str(token), self.line, self._col(token))
+
+    def call(self, children: list[Any]) -> Call:
+        token, *args = children
+        function = str(token)
+        if function not in FUNCTIONS:
+            close = difflib.get_close_matches(function, FUNCTIONS, n=1)
+            hint = f"did you mean '{close[0]}'?" if close else "known functions: " + ", ".join(
+                FUNCTIONS
+            )
+            if not close:
+                hint += f"; for a product write {function}*(...)"
+            raise SpecError(f"unknown function '{function}'", self._at(token), hint)
+        if len(args) != FUNCTIONS[function]:
+            raise SpecError(
+                f"{function} takes {FUNCTIONS[function]} argument(s), got {len(args)}",
+                self._at(token),
+                hint="atan2 takes (y, x); the others take one argument",
+            )
+        return Call(function, tuple(args), self.line, self._col(token))
+
+    def _binary(self, op: str, left: Expr, right: Expr) -> Binary:
+        return Binary(op, left, right, left.line, left.column)  # type: ignore[arg-type]
+
+    def add(self, c: list[Any]) -> Binary:
+        return self._binary("+", c[0], c[2])
+
+    def sub(self, c: list[Any]) -> Binary:
+        return self._binary("-", c[0], c[2])
+
+    def mul(self, c: list[Any]) -> Binary:
+        return self._binary("*", c[0], c[1])
+
+    def div(self, c: list[Any]) -> Binary:
+        return self._binary("/", c[0], c[1])
+
+    def pow(self, c: list[Any]) -> Binary:
+        base, token, exponent = c
+        literal = _literal_value(exponent)
+        if literal is not None and abs(literal) > MAX_POWER:
+            raise SpecError(
+                f"exponent {literal} is too large (limit ±{MAX_POWER})",
+                self._at(token),
+                hint="dynamics needs small powers; check the expression",
+            )
+        return self._binary("^", base, exponent)
+
+    def neg(self, c: list[Any]) -> Expr:
+        token, operand = c
+        if isinstance(operand, Num):
+            return Num(-operand.value, "-" + operand.text, self.line, self._col(token))
+        return Unary("-", operand, self.line, self._col(token))
+
+    def pos(self, c: list[Any]) -> Expr:
+        return c[1]
+
+    # ---- units
+    def unit_name(self, c: list[Token]) -> tuple[UnitFactor, ...]:
+        (token,) = c
+        return (UnitFactor(str(token), Fraction(1), self.line, self._col(token)),)
+
+    def unit_number(self, c: list[Token]) -> tuple[UnitFactor, ...]:
+        (token,) = c
+        if str(token) != "1":
+            raise SpecError(
+                f"a number '{token}' inside a unit",
+                self._at(token),
+                hint="only '1' may appear in a unit, as in 1/s",
+            )
+        return ()
+
+    def unit_mul(self, c: list[Any]) -> tuple[UnitFactor, ...]:
+        return c[0] + c[2]
+
+    def unit_div(self, c: list[Any]) -> tuple[UnitFactor, ...]:
+        return c[0] + tuple(_power(f, Fraction(-1)) for f in c[1])
+
+    def unit_exponent(self, c: list[Token]) -> Fraction:
+        sign = -1 if str(c[0]) == "-" else 1
+        numbers = [t for t in c if t.type == "NUMBER"]
+        value = Fraction(str(numbers[0])) / (Fraction(str(numbers[1])) if len(numbers) > 1 else 1)
+        if abs(value) > 12:
+            raise SpecError(f"unit exponent {value} is out of range", self._at(numbers[0]))
+        return sign * value
+
+    def unit_pow(self, c: list[Any]) -> tuple[UnitFactor, ...]:
+        return tuple(_power(f, c[2]) for f in c[0])
+
+    def unit_expr(self, c: list[Any]) -> UnitExpr:
+        (factors,) = c
+        line, column = (factors[0].line, factors[0].column) if factors else (self.line, 0)
+        return UnitExpr(unit_text(factors), factors, line, column)
+
+    # ---- lines
+    def quantity(self, c: list[Any]) -> Quantity:
+        value, text, column = c[0]
+        unit = c[1] if len(c) > 1 else None
+        return Quantity(value, text, unit, self.line, column)
+
+    def given_value(self, c: list[Any]) -> Given:
+        token, quantity = c
+        return Given(str(token), quantity, None, "", self.line, self._col(token))
+
+    def given_symbolic(self, c: list[Any]) -> Given:
+        token, unit = c
+        return Given(str(token), None, unit, "", self.line, self._col(token))
+
+    def equation_line(self, c: list[Any]) -> tuple[Expr, str, Expr]:
+        lhs, relation, rhs = c
+        return lhs, str(relation), rhs
+
+    def find_item(self, c: list[Any]) -> FindItem:
+        token = c[0]
+        return FindItem(str(token), c[1] if len(c) > 1 else None, self.line, self._col(token))
+
+    def find_line(self, c: list[Any]) -> list[FindItem]:
+        return [item for item in c if isinstance(item, FindItem)]
+
+    def rel_tolerance(self, c: list[Any]) -> Tolerance:
+        value, text, _ = c[1]
+        return Tolerance("rel", abs(value) / 100, None, f"± {text.lstrip('-')}%")
+
+    def abs_tolerance(self, c: list[Any]) -> Tolerance:
+        value, text, _ = c[1]
+        unit = c[2] if len(c) > 2 else None
+        return Tolerance("abs", abs(value), unit, f"± {text.lstrip('-')}")
+
+    def answer_line(self, c: list[Any]) -> Answer:
+        token, quantity, *rest = c
+        tolerance = next((r for r in rest if isinstance(r, Tolerance)), None)
+        direction = next((str(r) for r in rest if isinstance(r, Token)), None)
+        return Answer(
+            str(token), quantity, None, tolerance, direction, self.line, self._col(token)  # type: ignore[arg-type]
+        )
+
+    def answer_formula(self, c: list[Any]) -> Answer:
+        token, formula = c
+        return Answer(str(token), None, formula, None, None, self.line, self._col(token))
+
+
+def unit_text(factors: tuple[UnitFactor, ...]) -> str:
+    """Canonical, pint-parsable text of unit factors: ``kg*m^2/s^2``.
+
+    >>> unit_text((UnitFactor("N", Fraction(1), 1, 1), UnitFactor("s", Fraction(-2), 1, 3)))
+    'N/s^2'
+    """
+
+    def power(name: str, exponent: Fraction) -> str:
+        if exponent == 1:
+            return name
+        shown = str(exponent) if exponent.denominator == 1 else f"({exponent})"
+        return f"{name}^{shown}"
+
+    top = [power(f.name, f.exponent) for f in factors if f.exponent > 0]
+    bottom = [power(f.name, -f.exponent) for f in factors if f.exponent < 0]
+    text = "*".join(top) or ("1" if bottom else "")
+    if bottom:
+        text += "/" + (bottom[0] if len(bottom) == 1 else "(" + "*".join(bottom) + ")")
+    return text
+
+
+def _power(factor: UnitFactor, exponent: Fraction) -> UnitFactor:
+    return UnitFactor(factor.name, factor.exponent * exponent, factor.line, factor.column)
+
+
+def _literal_value(expr: Expr) -> Fraction | None:
+    if isinstance(expr, Num):
+        return expr.value
+    if isinstance(expr, Unary) and isinstance(expr.operand, Num):
+        return -expr.operand.value
+    return None
+
+
+def _finish(parts: _Sections, file: str) -> Spec:
+    givens = tuple(parts.givens or ())
+    _check_given_names(givens, file)
+    return Spec(
+        file=file,
+        title=parts.title or Path(file).stem,
+        source=parts.source,
+        system=parts.system,  # type: ignore[arg-type]
+        givens=givens,
+        equations=tuple(parts.equations or ()),
+        finds=tuple(parts.finds or ()),
+        answers=tuple(parts.answers or ()),
+        system_line=parts.system_line,
+    )
+
+
+def _check_given_names(givens: tuple[Given, ...], file: str) -> None:
+    seen: dict[str, int] = {}
+    for given in givens:
+        where = Position(file, given.line, given.column)
+        if given.name in FUNCTIONS or given.name == "pi":
+            raise SpecError(
+                f"'{given.name}' is reserved (a function or constant)",
+                where,
+                hint="choose another name",
+            )
+        if given.name in seen:
+            raise SpecError(
+                f"'{given.name}' is given twice (first on line {seen[given.name]})",
+                where,
+                hint="remove one of them",
+            )
+        seen[given.name] = given.line
+
+
+def iter_names(expr: Expr) -> Iterator[Name]:
+    """Every :class:`Name` in ``expr``, left to right.
+
+    >>> [n.text for n in iter_names(Binary("*", Name("m", 1, 1), Name("g", 1, 3), 1, 1))]
+    ['m', 'g']
+    """
+    stack: list[Expr] = [expr]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, Name):
+            yield node
+        elif isinstance(node, Unary):
+            stack.append(node.operand)
+        elif isinstance(node, Binary):
+            stack.extend((node.right, node.left))
+        elif isinstance(node, Call):
+            stack.extend(reversed(node.args))
+
+
+Visitor = Callable[[Expr], Any]

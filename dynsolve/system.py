@@ -1,0 +1,77 @@
+"""The equation system handed to the solver: equations, unknowns, known values, constraints.
+
+It is plain, immutable data built by a front end (equation mode today, scene mode
+later) and consumed by :func:`dynsolve.solve.solve_system`.
+
+>>> import sympy
+>>> T, m, g = sympy.symbols("T m g", positive=True)
+>>> eq = Equation(lhs=T, rhs=m * g, label="line 3", line=3)
+>>> system = EquationSystem(equations=(eq,), unknowns=(T,), knowns={m: 2, g: 10})
+>>> system.unknowns
+(T,)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+import sympy
+
+
+@dataclass(frozen=True)
+class Equation:
+    """One governing equation ``lhs = rhs``, with where it came from."""
+
+    lhs: sympy.Expr
+    rhs: sympy.Expr
+    label: str  # how reports name it, e.g. "line 14" or "ΣF_y (drum)"
+    line: int = 0  # source line, 0 when generated
+    note: str = ""  # the principle it states, e.g. "ΣM_O = I_O α"
+
+    @property
+    def residual(self) -> sympy.Expr:
+        """``lhs - rhs``: zero when the equation holds."""
+        return self.lhs - self.rhs
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A declared sign or range condition on unknowns, e.g. ``omega >= 0``."""
+
+    relation: sympy.core.relational.Relational
+    text: str  # as the user wrote it
+    line: int = 0
+
+
+SolveMode = Literal["exact", "numeric"]
+
+
+@dataclass(frozen=True)
+class SolveOptions:
+    """How to solve: the seam for a later exact-vs-numeric choice.
+
+    ``exact`` keeps rationals and radicals and only falls back to numbers when a
+    nonlinear block exceeds ``time_budget`` seconds; ``numeric`` goes straight to
+    floating point root finding.
+    """
+
+    mode: SolveMode = "exact"
+    time_budget: float = 5.0
+    show_formulas: bool = True
+
+
+@dataclass(frozen=True)
+class EquationSystem:
+    """Equations to solve for ``unknowns``; ``knowns`` maps given symbols to values.
+
+    Symbols that are neither unknowns nor in ``knowns`` stay symbolic (a symbolic
+    problem); ``wanted`` lists the unknowns the user asked for (all when empty).
+    """
+
+    equations: tuple[Equation, ...]
+    unknowns: tuple[sympy.Symbol, ...]
+    knowns: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    constraints: tuple[Constraint, ...] = ()
+    wanted: tuple[sympy.Symbol, ...] = ()

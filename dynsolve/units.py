@@ -1,0 +1,327 @@
+"""The one pint registry, with the textbook conventions (lb is pound-force, g per system).
+
+Built once per process (and cached on disk by pint), it knows SI and US customary
+units; ``lb`` means pound-force and ``lbm`` pound-mass, as in every dynamics text.
+Dimensions are exponent vectors over length, mass and time (:class:`Dim`); angles
+are dimensionless.
+
+>>> q = registry().Quantity(40, "lb")
+>>> round(q.to("N").magnitude, 2)
+177.93
+>>> natural_unit(Dim.of("force"), "FPS")
+'lb'
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import TYPE_CHECKING, Literal
+
+if TYPE_CHECKING:
+    import pint
+    import sympy
+
+System = Literal["SI", "FPS"]
+
+# Base units of each system: every quantity is solved in these coherent units.
+BASE_UNITS: dict[System, tuple[str, str, str]] = {
+    "SI": ("m", "kg", "s"),
+    "FPS": ("ft", "slug", "s"),
+}
+GRAVITY: dict[System, tuple[str, str]] = {"SI": ("9.81", "m/s^2"), "FPS": ("32.2", "ft/s^2")}
+
+_EXTRA_DEFINITIONS = (
+    "lb = pound_force",  # textbook convention: lb is a force
+    "lbm = pound",
+    "rev = revolution",
+)
+_BASE_DIMENSIONS = ("[length]", "[mass]", "[time]")
+
+
+@dataclass(frozen=True)
+class Dim:
+    """A physical dimension as exponents of length, mass and time.
+
+    >>> Dim.of("force") / Dim.of("mass") == Dim.of("acceleration")
+    True
+    >>> str(Dim(1, 1, -2))
+    'force'
+    """
+
+    L: Fraction = Fraction(0)
+    M: Fraction = Fraction(0)
+    T: Fraction = Fraction(0)
+
+    def __post_init__(self) -> None:
+        for name in ("L", "M", "T"):
+            object.__setattr__(self, name, Fraction(getattr(self, name)))
+
+    @staticmethod
+    def of(name: str) -> Dim:
+        """The dimension called ``name`` in :data:`NAMED_DIMENSIONS`."""
+        return NAMED_DIMENSIONS[name]
+
+    def __mul__(self, other: Dim) -> Dim:
+        return Dim(self.L + other.L, self.M + other.M, self.T + other.T)
+
+    def __truediv__(self, other: Dim) -> Dim:
+        return Dim(self.L - other.L, self.M - other.M, self.T - other.T)
+
+    def __pow__(self, power: Fraction | int) -> Dim:
+        p = Fraction(power)
+        return Dim(self.L * p, self.M * p, self.T * p)
+
+    @property
+    def dimensionless(self) -> bool:
+        """True for pure numbers and angles."""
+        return self.L == self.M == self.T == 0
+
+    @property
+    def name(self) -> str:
+        """A textbook name (``force``), else the exponent form (``[length]^2/[time]``)."""
+        return DIMENSION_NAMES.get(self, self.formula)
+
+    @property
+    def formula(self) -> str:
+        """The exponent form, e.g. ``[mass]·[length]/[time]^2``."""
+        parts = []
+        for label, exp in (("mass", self.M), ("length", self.L), ("time", self.T)):
+            if exp == 1:
+                parts.append(f"[{label}]")
+            elif exp != 0:
+                parts.append(f"[{label}]^{exp}")
+        return "·".join(parts) or "dimensionless"
+
+    def __str__(self) -> str:
+        return self.name
+
+
+NAMED_DIMENSIONS: dict[str, Dim] = {
+    "dimensionless": Dim(),
+    "angle": Dim(),
+    "length": Dim(1),
+    "distance": Dim(1),
+    "mass": Dim(0, 1),
+    "time": Dim(0, 0, 1),
+    "velocity": Dim(1, 0, -1),
+    "speed": Dim(1, 0, -1),
+    "acceleration": Dim(1, 0, -2),
+    "angular_velocity": Dim(0, 0, -1),
+    "frequency": Dim(0, 0, -1),
+    "angular_acceleration": Dim(0, 0, -2),
+    "force": Dim(1, 1, -2),
+    "weight": Dim(1, 1, -2),
+    "moment": Dim(2, 1, -2),
+    "torque": Dim(2, 1, -2),
+    "energy": Dim(2, 1, -2),
+    "work": Dim(2, 1, -2),
+    "power": Dim(2, 1, -3),
+    "momentum": Dim(1, 1, -1),
+    "impulse": Dim(1, 1, -1),
+    "angular_momentum": Dim(2, 1, -1),
+    "moment_of_inertia": Dim(2, 1, 0),
+    "inertia": Dim(2, 1, 0),
+    "stiffness": Dim(0, 1, -2),
+    "torsional_stiffness": Dim(2, 1, -2),
+    "damping": Dim(0, 1, -1),
+    "pressure": Dim(-1, 1, -2),
+    "density": Dim(-3, 1, 0),
+    "area": Dim(2),
+    "volume": Dim(3),
+}
+
+# The name shown for a dimension in messages (first one wins for shared dimensions).
+DIMENSION_NAMES: dict[Dim, str] = {
+    Dim(): "dimensionless",
+    Dim(1): "length",
+    Dim(0, 1): "mass",
+    Dim(0, 0, 1): "time",
+    Dim(1, 0, -1): "velocity",
+    Dim(1, 0, -2): "acceleration",
+    Dim(0, 0, -1): "angular velocity",
+    Dim(0, 0, -2): "angular acceleration",
+    Dim(1, 1, -2): "force",
+    Dim(2, 1, -2): "moment or energy",
+    Dim(2, 1, -3): "power",
+    Dim(1, 1, -1): "momentum",
+    Dim(2, 1, -1): "angular momentum",
+    Dim(2, 1, 0): "moment of inertia",
+    Dim(0, 1, -2): "stiffness",
+    Dim(0, 1, -1): "mass flow or damping",
+    Dim(-1, 1, -2): "pressure",
+    Dim(-3, 1, 0): "density",
+    Dim(2): "area",
+    Dim(3): "volume",
+}
+
+# Natural output unit per dimension and system (pint-parsable; lb is pound-force).
+_NATURAL: dict[Dim, tuple[str, str]] = {
+    Dim(): ("", ""),
+    Dim(1): ("m", "ft"),
+    Dim(0, 1): ("kg", "slug"),
+    Dim(0, 0, 1): ("s", "s"),
+    Dim(1, 0, -1): ("m/s", "ft/s"),
+    Dim(1, 0, -2): ("m/s^2", "ft/s^2"),
+    Dim(0, 0, -1): ("rad/s", "rad/s"),
+    Dim(0, 0, -2): ("rad/s^2", "rad/s^2"),
+    Dim(1, 1, -2): ("N", "lb"),
+    Dim(2, 1, -2): ("N*m", "lb*ft"),
+    Dim(2, 1, -3): ("W", "ft*lb/s"),
+    Dim(1, 1, -1): ("kg*m/s", "slug*ft/s"),
+    Dim(2, 1, -1): ("kg*m^2/s", "slug*ft^2/s"),
+    Dim(2, 1, 0): ("kg*m^2", "slug*ft^2"),
+    Dim(0, 1, -2): ("N/m", "lb/ft"),
+    Dim(-1, 1, -2): ("Pa", "lb/ft^2"),
+    Dim(-3, 1, 0): ("kg/m^3", "slug/ft^3"),
+    Dim(2): ("m^2", "ft^2"),
+    Dim(3): ("m^3", "ft^3"),
+}
+_ENERGY_UNITS = ("J", "ft*lb")
+_ENERGY_NAMES = ("T", "U", "V", "E", "W", "K")  # kinetic/potential energy, work
+
+
+def natural_unit(dim: Dim, system: System, name: str = "") -> str:
+    """The unit an answer of dimension ``dim`` is shown in when none was requested.
+
+    Moments and energies share a dimension; an unknown whose name starts like an
+    energy (T, U, V, E, W) is shown in J (ft·lb), anything else in N·m (lb·ft).
+
+    >>> natural_unit(Dim(2, 1, -2), "SI", "T_1"), natural_unit(Dim(2, 1, -2), "SI", "M")
+    ('J', 'N*m')
+    """
+    column = 0 if system == "SI" else 1
+    if dim == Dim(2, 1, -2) and name[:1] in _ENERGY_NAMES:
+        return _ENERGY_UNITS[column]
+    if dim in _NATURAL:
+        return _NATURAL[dim][column]
+    base = BASE_UNITS[system]
+    parts = []
+    for unit, exp in zip(base, (dim.L, dim.M, dim.T), strict=True):
+        if exp == 1:
+            parts.append(unit)
+        elif exp != 0:
+            parts.append(f"{unit}^{exp}" if exp.denominator == 1 else f"{unit}^({exp})")
+    return "*".join(parts)
+
+
+def base_unit(dim: Dim, system: System) -> str:
+    """The coherent base-unit expression of ``dim`` in ``system`` (what the solver uses).
+
+    >>> base_unit(Dim(1, 1, -2), "FPS")
+    'ft*slug*s^-2'
+    """
+    parts = []
+    for unit, exp in zip(BASE_UNITS[system], (dim.L, dim.M, dim.T), strict=True):
+        if exp == 1:
+            parts.append(unit)
+        elif exp != 0:
+            parts.append(f"{unit}^({exp})" if exp.denominator != 1 else f"{unit}^{exp}")
+    return "*".join(parts) or "dimensionless"
+
+
+@functools.cache
+def registry() -> pint.UnitRegistry:
+    """The process-wide registry, built once; pint caches its parsed definitions on disk."""
+    import pint
+
+    try:
+        ureg = pint.UnitRegistry(cache_folder=":auto:", on_redefinition="ignore")
+    except OSError:  # unwritable cache folder: build without the disk cache
+        ureg = pint.UnitRegistry(on_redefinition="ignore")
+    for definition in _EXTRA_DEFINITIONS:
+        ureg.define(definition)
+    return ureg
+
+
+def dim_of_unit(unit: pint.Unit) -> Dim:
+    """The :class:`Dim` of a pint unit; raises ``ValueError`` for non-mechanical units.
+
+    >>> dim_of_unit(registry().Unit("ft*lb"))
+    Dim(L=Fraction(2, 1), M=Fraction(1, 1), T=Fraction(-2, 1))
+    """
+    dimensionality = unit.dimensionality
+    extra = [d for d in dimensionality if d not in _BASE_DIMENSIONS]
+    if extra:
+        raise ValueError(f"dimension {extra[0]} is outside mechanics (length, mass, time)")
+    return Dim(*(Fraction(dimensionality.get(d, 0)).limit_denominator(12) for d in _BASE_DIMENSIONS))
+
+
+def to_base(magnitude: Fraction, unit: pint.Unit, system: System) -> sympy.Expr:
+    """Convert ``magnitude unit`` to the system's coherent base units, exactly.
+
+    Conversion factors come from pint as floats; they are rounded to 15 significant
+    figures so that exact inputs stay exact (40 lb is 40 slug·ft/s², not 39.99…), and
+    angle factors that are rational multiples of π are kept as such (30 rpm is π rad/s).
+
+    >>> to_base(Fraction(30), registry().Unit("rpm"), "SI")
+    pi
+    """
+    import sympy
+
+    ureg = registry()
+    target = base_unit(dim_of_unit(unit), system)
+    if target == "dimensionless":
+        target = "radian"  # angles go to radians; pure numbers are unchanged by this
+    factor = ureg.Quantity(1.0, unit).to(target).magnitude
+    return sympy.Rational(magnitude) * _exact(factor)
+
+
+def from_base(value: float, dim: Dim, unit: str, system: System) -> float:
+    """Convert a value in the system's base units to ``unit``.
+
+    >>> round(from_base(1.0, Dim(1, 1, -2), "N", "FPS"), 4)
+    4.4482
+    """
+    ureg = registry()
+    source = base_unit(dim, system)
+    if source == "dimensionless":
+        source = "radian"
+    return float(ureg.Quantity(value, source).to(unit or "radian").magnitude)
+
+
+def _exact(factor: float) -> sympy.Expr:
+    """A float conversion factor as an exact number: a short decimal or a rational times π.
+
+    >>> _exact(0.017453292519943295), _exact(0.3048)
+    (pi/180, 381/1250)
+    """
+    import sympy
+
+    decimal = Fraction(f"{factor:.15g}")
+    if len(f"{factor:.15g}".replace(".", "").lstrip("0")) <= 10:
+        return sympy.Rational(decimal.numerator, decimal.denominator)
+    over_pi = Fraction(factor / math.pi).limit_denominator(100_000)
+    if abs(float(over_pi) * math.pi - factor) <= 1e-13 * abs(factor):
+        return sympy.Rational(over_pi.numerator, over_pi.denominator) * sympy.pi
+    return sympy.Rational(decimal.numerator, decimal.denominator)
+
+
+def known_unit_names() -> list[str]:
+    """Names and symbols the registry knows, common engineering units first."""
+    ureg = registry()
+    names = list(COMMON_UNITS)
+    names += [n for n in ureg._units if n not in COMMON_UNITS]  # noqa: SLF001
+    return names
+
+
+COMMON_UNITS = (
+    "m", "mm", "cm", "km", "kg", "g", "Mg", "s", "min", "h", "N", "kN", "J", "kJ", "W", "kW",
+    "Pa", "kPa", "MPa", "rad", "deg", "rev", "rpm", "ft", "in", "mi", "yd", "slug", "lb", "lbf",
+    "lbm", "kip", "psi", "hp", "Hz",
+)  # fmt: skip
+
+
+def suggest_unit(name: str) -> str:
+    """A "did you mean" hint for an unknown unit name, or an empty string.
+
+    >>> suggest_unit("kgs")
+    "did you mean 'kg'?"
+    """
+    matches = difflib.get_close_matches(name, COMMON_UNITS, n=1, cutoff=0.6)
+    if not matches:
+        matches = difflib.get_close_matches(name, known_unit_names(), n=1, cutoff=0.75)
+    return f"did you mean '{matches[0]}'?" if matches else ""
