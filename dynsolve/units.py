@@ -284,20 +284,23 @@ def from_base(value: float, dim: Dim, unit: str, system: System) -> float:
 
 
 def _exact(factor: float) -> sympy.Expr:
-    """A float conversion factor as an exact number: a short decimal or a rational times π.
+    """A float conversion factor as an exact number: a short decimal, a simple fraction,
+    a rational multiple of π, or else the decimal to 15 significant figures.
 
-    >>> _exact(0.017453292519943295), _exact(0.3048)
-    (pi/180, 381/1250)
+    >>> _exact(0.017453292519943295), _exact(0.3048), _exact(1 / 12)
+    (pi/180, 381/1250, 1/12)
     """
     import sympy
 
-    decimal = Fraction(f"{factor:.15g}")
-    if len(f"{factor:.15g}".replace(".", "").lstrip("0")) <= 10:
-        return sympy.Rational(decimal.numerator, decimal.denominator)
-    over_pi = Fraction(factor / math.pi).limit_denominator(100_000)
-    if abs(float(over_pi) * math.pi - factor) <= 1e-13 * abs(factor):
-        return sympy.Rational(over_pi.numerator, over_pi.denominator) * sympy.pi
-    return sympy.Rational(decimal.numerator, decimal.denominator)
+    decimal = f"{factor:.15g}"
+    if len(decimal.replace(".", "").replace("-", "").lstrip("0")) <= 10:
+        return sympy.Rational(decimal)
+    for multiple, limit, tolerance in ((1, 1_000_000, 1e-14), (math.pi, 100_000, 1e-13)):
+        ratio = Fraction(factor / multiple).limit_denominator(limit)
+        if abs(float(ratio) * multiple - factor) <= tolerance * abs(factor):
+            exact = sympy.Rational(ratio.numerator, ratio.denominator)
+            return exact * sympy.pi if multiple != 1 else exact
+    return sympy.Rational(decimal)
 
 
 def known_unit_names() -> list[str]:

@@ -12,7 +12,11 @@ from dynsolve.system import Equation, EquationSystem
 x, y, z, w = sympy.symbols("x y z w")
 
 
-def system_of(*pairs: tuple[sympy.Expr, sympy.Expr], unknowns=(x, y, z), wanted=()) -> EquationSystem:
+def system_of(
+    *pairs: tuple[sympy.Expr, sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...] = (x, y, z),
+    wanted: tuple[sympy.Symbol, ...] = (),
+) -> EquationSystem:
     equations = tuple(Equation(lhs, rhs, f"eq {i}") for i, (lhs, rhs) in enumerate(pairs))
     return EquationSystem(equations, tuple(unknowns), wanted=tuple(wanted))
 

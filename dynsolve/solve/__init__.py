@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.solve.blocks import DEFAULT_OPTIONS, BlockSolution, solve_block
+from dynsolve.solve.blocks import DEFAULT_OPTIONS, BlockSolution, as_expr, solve_block
 from dynsolve.solve.outcome import Block, Outcome, Status
 from dynsolve.solve.residuals import all_residuals, equation_residual, is_satisfied
 from dynsolve.solve.roots import RootChoice, choose_root
@@ -60,7 +60,7 @@ def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS
     ('inconsistent', (2,))
     """
     structure = analyse_structure(system)
-    progress = _Progress(given={k: sympy.sympify(v) for k, v in system.knowns.items()})
+    progress = _Progress(given={k: as_expr(v) for k, v in system.knowns.items()})
     progress.undetermined |= set(structure.undetermined)
     progress.unsolved |= set(structure.undetermined)
     progress.missing_equations = structure.missing_equations
@@ -112,7 +112,7 @@ def _skip(block: StructuralBlock, blocked: list[sympy.Symbol], progress: _Progre
     progress.unsolved |= set(block.unknowns)
     if set(blocked) & progress.undetermined:
         progress.undetermined |= set(block.unknowns)
-    progress.messages.append(f"{names} not solved: they depend on {causes}, which is not solved")
+    progress.messages.append(f"{names}: not solved, needs {causes}, which is not solved")
 
 
 def _block(block: StructuralBlock, solution: BlockSolution, choice: RootChoice) -> Block:

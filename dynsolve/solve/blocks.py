@@ -29,10 +29,12 @@ import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
+from fractions import Fraction
 from typing import TypeVar
 
 import mpmath
 import sympy
+from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.solve.outcome import Method
@@ -43,6 +45,10 @@ FORMULA_MAX_UNKNOWNS = 8  # bigger linear blocks are solved with the numbers sub
 START_FACTORS = (1, 0.5, 2, 10, -1, 0.1, -0.5, -2, 100, -10, 0.01, 1000, -100)
 NUMERIC_DIGITS = 15
 DEFAULT_OPTIONS = SolveOptions()
+_SYMPY_GAVE_UP = (
+    NotImplementedError, ValueError, TypeError, ArithmeticError, RecursionError,
+    BasePolynomialError,
+)
 _TIMEOUT = "symbolic solve exceeded the time budget"
 
 _Result = TypeVar("_Result")
@@ -72,6 +78,23 @@ class BlockSolution:
 
 class _BudgetExceeded(BaseException):
     """The symbolic time budget ran out (BaseException so sympy cannot swallow it)."""
+
+
+def as_expr(value: object) -> sympy.Expr:
+    """An internal number or expression as sympy, without parsing (never from text).
+
+    >>> as_expr(3), as_expr(Fraction(1, 4)), as_expr(sympy.pi)
+    (3, 1/4, pi)
+    """
+    if isinstance(value, sympy.Basic):
+        return value  # type: ignore[return-value]
+    if isinstance(value, int) and not isinstance(value, bool):
+        return sympy.Integer(value)
+    if isinstance(value, Fraction):
+        return sympy.Rational(value.numerator, value.denominator)
+    if isinstance(value, float):
+        return sympy.Float(value)
+    raise TypeError(f"not a number or sympy expression: {value!r}")
 
 
 @contextmanager
@@ -104,7 +127,7 @@ def time_budget(seconds: float) -> Iterator[None]:
     finally:
         armed[0] = False
         signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous_handler)
+        signal.signal(signal.SIGALRM, previous_handler or signal.SIG_DFL)
         if previous_delay > 0:
             left = max(previous_delay - (time.monotonic() - started), 1e-6)
             signal.setitimer(signal.ITIMER_REAL, left, previous_interval)
@@ -129,7 +152,7 @@ def substitute(expr: sympy.Expr, given: Mapping[sympy.Symbol, sympy.Expr]) -> sy
     >>> substitute(m * g, {m: 2, g: sympy.Rational(981, 100)})
     981/50
     """
-    return sympy.sympify(expr).xreplace({k: sympy.sympify(v) for k, v in given.items()})
+    return as_expr(expr).xreplace({k: as_expr(v) for k, v in given.items()})
 
 
 def is_finite(value: sympy.Expr) -> bool:
@@ -159,7 +182,7 @@ def solve_block(
     [-sqrt(2)*sqrt(g*h), sqrt(2)*sqrt(g*h)]
     """
     unknowns = tuple(unknowns)
-    given = {k: sympy.sympify(v) for k, v in given.items()}
+    given = {k: as_expr(v) for k, v in given.items()}
     try:
         matrix, rhs = sympy.linear_eq_to_matrix(list(residuals), list(unknowns))
     except NonlinearError:
@@ -255,35 +278,53 @@ def _solve_nonlinear(
     residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...],
     given: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions,
 ) -> BlockSolution:
-    """Symbolic solve within the time budget, else numeric root finding.
-
-    With formulas shown, the first half of the budget goes to solving with the knowns
-    as letters; if that fails, the rest to solving with the numbers substituted.
-    """
+    """Symbolic solve within the time budget, else numeric root finding."""
     substituted = [substitute(r, given) for r in residuals]
     letters = set().union(*(r.free_symbols for r in substituted)) - set(unknowns)
+    names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
         return solve_numerically(substituted, unknowns, "numeric mode")
-    deadline = time.monotonic() + options.time_budget
-    reasons: list[str] = []
-    if options.show_formulas:
-        attempt, reason = _symbolic_candidates(residuals, unknowns, options.time_budget / 2, given)
-        if attempt is not None:
-            return attempt
-        reasons.append(reason)
-    attempt, reason = _symbolic_candidates(substituted, unknowns, deadline - time.monotonic(), None)
-    if attempt is not None:
-        return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else "")
-    reasons.append(reason)
-    if _TIMEOUT in reasons:
-        reason = f"symbolic solve exceeded {options.time_budget:g} s budget"
+    solution, reason = _solve_symbolically(residuals, substituted, unknowns, given, options)
+    if solution is not None and options.mode == "numeric":
+        note = f"numeric mode needs values for {names}; solved symbolically"
+        return replace(solution, note=f"{note}. {solution.note}" if solution.note else note)
+    if solution is not None:
+        return solution
     if letters:
-        names = ", ".join(sorted(map(str, letters)))
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
-    if options.mode == "numeric":
-        reason = "numeric mode"
-    return solve_numerically(substituted, unknowns, f"{reason}; solved numerically")
+    return solve_numerically(substituted, unknowns, reason)
+
+
+def _solve_symbolically(
+    residuals: list[sympy.Expr], substituted: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...], given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions,
+) -> tuple[BlockSolution | None, str]:
+    """``sympy.solve`` within the budget: the solution, or None and why not.
+
+    With formulas shown, the first half of the budget goes to solving with the knowns
+    as letters; if that fails, the rest to solving with the numbers substituted (a
+    block without knowns gets one attempt with the whole budget).
+    """
+    deadline = time.monotonic() + options.time_budget
+    reasons: list[str] = []
+    nothing_given = substituted == residuals  # then one symbolic attempt says it all
+    if options.show_formulas:
+        share = options.time_budget if nothing_given else options.time_budget / 2
+        attempt, reason = _symbolic_candidates(residuals, unknowns, share, given)
+        if attempt is not None:
+            return attempt, ""
+        reasons.append(reason)
+    if not (reasons and nothing_given):
+        seconds = deadline - time.monotonic()
+        attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None)
+        if attempt is not None:
+            return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else ""), ""
+        reasons.append(reason)
+    if _TIMEOUT in reasons:
+        return None, f"symbolic solve exceeded {options.time_budget:g} s budget"
+    return None, reasons[-1]
 
 
 def _symbolic_candidates(
@@ -303,16 +344,16 @@ def _symbolic_candidates(
         roots, timed_out = _within_budget(
             lambda: sympy.solve(problem, targets, dict=True), seconds
         )
-    except (NotImplementedError, ValueError, TypeError, RecursionError, ZeroDivisionError):
+    except _SYMPY_GAVE_UP:
         return None, "sympy found no closed form"
     if timed_out or roots is None:
         return None, _TIMEOUT
     complete = [r for r in roots if _determines(r, unknowns)]
     if roots and not complete:
-        free = tuple(u for u in unknowns if all(u not in r for r in roots))
+        missing = sum(all(u not in r for r in roots) for u in unknowns)
         note = "the equations of this block are dependent"
-        return BlockSolution(unknowns, "symbolic", (), note=note, free=free or unknowns,
-                             missing_equations=max(len(free), 1)), ""
+        return BlockSolution(unknowns, "symbolic", (), note=note, free=unknowns,
+                             missing_equations=max(missing, 1)), ""
     candidates = [_candidate(r, unknowns, given) for r in complete]
     candidates = [c for c in candidates if c is not None]
     if not candidates:
@@ -342,20 +383,25 @@ def _candidate(
 
 
 def solve_numerically(
-    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], note: str
+    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol], reason: str
 ) -> BlockSolution:
     """Root finding from several starting points; the residuals must hold only ``unknowns``.
+
+    ``reason`` says why the numeric path was taken; it starts the block's note.
 
     >>> import sympy
     >>> x = sympy.Symbol("x")
     >>> solution = solve_numerically([x - sympy.cos(x)], [x], "transcendental")
-    >>> [round(float(c.values[x]), 6) for c in solution.candidates]
-    [0.739085]
+    >>> [round(float(c.values[x]), 6) for c in solution.candidates], solution.note
+    ([0.739085], 'transcendental; solved numerically')
     """
     roots = numeric_roots(residuals, unknowns)
     candidates = tuple(Candidate(dict(zip(unknowns, r, strict=True))) for r in roots)
-    if not candidates:
-        note = f"{note}; no root found from {len(START_FACTORS)} starting points"
+    if candidates:
+        note = f"{reason}; solved numerically"
+    else:
+        starts = len(_starting_points(residuals, len(unknowns)))
+        note = f"{reason}; numeric search from {starts} starting points found no root"
     return BlockSolution(tuple(unknowns), "numeric", candidates, note=note, exhaustive=False)
 
 
@@ -378,7 +424,9 @@ def numeric_roots(
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
     for start in _starting_points(residuals, len(unknowns)):
         root = _find_root(function, jacobian, start)
-        if root is not None and _converged(function, size, root) and not _seen(root, found):
+        if root is None or _seen(root, found):
+            continue
+        if _converged(function, size, jacobian, root):
             found.append(root)
     return [tuple(_to_sympy(x) for x in root) for root in found]
 
@@ -423,16 +471,22 @@ def _find_root(
 
 def _converged(
     function: Callable[..., list[object]], size: Callable[..., list[object]],
-    root: Sequence[mpmath.mpc | mpmath.mpf],
+    jacobian: Callable[..., object], root: Sequence[mpmath.mpc | mpmath.mpf],
 ) -> bool:
-    """True when every residual is tiny compared with the size of its terms."""
+    """True when ``root`` really is a root, not a point where the residuals merely fade.
+
+    Either every residual is tiny next to the size of its terms (catches sums like
+    ``x**2 - 2*x + 1``), or one more Newton step would barely move ``root`` (catches
+    products like ``sin(x)``, while ``exp(x) = 0`` far out on the left fails both).
+    """
     try:
         with mpmath.workdps(NUMERIC_DIGITS + 5):
             values, sizes = function(*root), size(*root)
-            return all(
-                abs(v) <= 1e-10 * max(abs(s), 1e-30) or abs(v) == 0
-                for v, s in zip(values, sizes, strict=True)
-            )
+            if all(abs(v) == 0 or abs(v) <= 1e-10 * abs(s)
+                   for v, s in zip(values, sizes, strict=True)):
+                return True
+            step = mpmath.lu_solve(jacobian(*root), mpmath.matrix(values))
+            return all(abs(step[i]) <= 1e-9 * max(1, abs(x)) for i, x in enumerate(root))
     except (ArithmeticError, ValueError, TypeError):
         return False
 

@@ -34,7 +34,7 @@ from collections.abc import Collection, Mapping, Sequence
 
 import sympy
 
-from dynsolve.solve.blocks import substitute
+from dynsolve.solve.blocks import as_expr, substitute
 from dynsolve.solve.outcome import Residual
 from dynsolve.system import Equation
 
@@ -62,7 +62,7 @@ def equation_residual(
     sides = [substitute(equation.lhs, substitution), substitute(equation.rhs, substitution)]
     terms = [
         substitute(t, substitution) for side in (equation.lhs, equation.rhs)
-        for t in sympy.Add.make_args(sympy.sympify(side))
+        for t in sympy.Add.make_args(as_expr(side))
     ]
     letters = set().union(*(e.free_symbols for e in sides + terms))
     if letters:

@@ -4,7 +4,8 @@ Filters, in order, each recording a :class:`DiscardedRoot` with its reason:
 
 1. values undefined for the given numbers (a formula divided by zero);
 2. roots that are not real (``"not real"``);
-3. roots breaking a declared constraint (``"violates omega >= 0 (line 12)"``);
+3. roots against the sign declared on the unknown's symbol (``positive=True``) or
+   breaking a declared constraint (``"violates omega >= 0 (line 12)"``);
 4. roots that fail a surplus (over-determined) equation, when another root passes it;
 5. the physical-sense rule: an unknown entering the block only through even powers
    (``±x`` both satisfy) keeps its non-negative root;
@@ -25,18 +26,23 @@ root is kept, never discarded.
 
 from __future__ import annotations
 
+import math
+import random
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
-from dynsolve.solve.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, is_finite
+from dynsolve.solve.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
 from dynsolve.solve.outcome import DiscardedRoot
 from dynsolve.solve.residuals import equation_residual, is_satisfied
 from dynsolve.system import Constraint, Equation
 
 AMBIGUOUS = "ambiguous: declare a constraint to choose"
+SAMPLE_POINTS = 12
+SAMPLES_NEEDED = 3
+SAMPLE_SEED = 1729
 _IMAGINARY_TOLERANCE = 1e-12
 
 
@@ -78,7 +84,7 @@ def choose_root(
     """
     discarded: list[DiscardedRoot] = []
     remaining = _distinct([_realised(c) for c in candidates])
-    for keep in (_defined, _real, _within(constraints, given)):
+    for keep in (_defined, _real, _as_declared, _within(constraints, given)):
         remaining = _apply(keep, remaining, discarded)
     remaining = _apply_if_any_passes(_satisfying(checks, given), remaining, discarded)
     for unknown in unknowns:
@@ -133,6 +139,16 @@ def _defined(candidate: Candidate) -> str:
 
 def _real(candidate: Candidate) -> str:
     return "not real" if any(is_real(v) is False for v in candidate.values.values()) else ""
+
+
+def _as_declared(candidate: Candidate) -> str:
+    """Respect a sign declared on the unknown's symbol itself (``positive=True``)."""
+    for unknown, value in candidate.values.items():
+        if unknown.is_positive and (_is_negative(value) or value.is_zero):
+            return f"{unknown} is declared positive"
+        if unknown.is_nonnegative and _is_negative(value):
+            return f"{unknown} is declared non-negative"
+    return ""
 
 
 def _within(constraints: Sequence[Constraint], given: Mapping[sympy.Symbol, sympy.Expr]) -> _Filter:
@@ -219,7 +235,7 @@ def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) ->
     (False, None)
     """
     try:
-        result = relation.xreplace({k: sympy.sympify(v) for k, v in substitution.items()})
+        result = relation.xreplace({k: as_expr(v) for k, v in substitution.items()})
     except (TypeError, ValueError):
         return None
     return _decide(result)
@@ -242,27 +258,69 @@ def _decide(result: sympy.Basic) -> bool | None:
 
 
 def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | None:
-    """Compare the two sides of a relation between numbers numerically."""
+    """Compare the two sides of a relation numerically.
+
+    Between numbers the comparison is direct. With free (positive, given) symbols
+    left, sympy's assumptions come first; when they cannot decide, the difference is
+    sampled at seeded random positive values, and the relation is decided only when
+    every real sample agrees.
+    """
+    compare = {
+        ">": lambda d: d > 0, ">=": lambda d: d >= 0, "<": lambda d: d < 0,
+        "<=": lambda d: d <= 0, "==": lambda d: d == 0, "!=": lambda d: d != 0,
+    }  # fmt: skip
+    test = compare.get(relation.rel_op)
+    if test is None:
+        return None
     difference = relation.lhs - relation.rhs
     if not difference.is_number:
-        return None
+        verdicts = {test(d) for d in sampled(difference)}
+        return verdicts.pop() if len(verdicts) == 1 else None
     try:
         number = complex(sympy.N(difference, NUMERIC_DIGITS + 5))
     except (TypeError, ValueError):
         return None
     if abs(number.imag) > _IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
         return None
-    compare = {
-        ">": number.real > 0, ">=": number.real >= 0, "<": number.real < 0,
-        "<=": number.real <= 0, "==": number.real == 0, "!=": number.real != 0,
-    }
-    return compare.get(relation.rel_op)
+    return bool(test(number.real))
+
+
+def sampled(expr: sympy.Expr) -> list[float]:
+    """``expr`` at seeded random positive values of its free symbols: the real results.
+
+    Only symbols declared positive (given magnitudes) are sampled; fewer than
+    :data:`SAMPLES_NEEDED` real values means no verdict (an empty list).
+
+    >>> import sympy
+    >>> L, s = sympy.symbols("L s", positive=True)
+    >>> all(v > 0 for v in sampled(sympy.sqrt(L**2 + s**2) - L))
+    True
+    """
+    free = sorted(expr.free_symbols, key=lambda symbol: symbol.name)
+    if not all(symbol.is_positive for symbol in free):
+        return []
+    rng = random.Random(SAMPLE_SEED)
+    values = []
+    for _ in range(SAMPLE_POINTS):
+        point = {symbol: sympy.Rational(rng.randint(10, 1000), 100) for symbol in free}
+        try:
+            number = complex(sympy.N(expr.xreplace(point), 20))
+        except (TypeError, ValueError):
+            continue
+        if math.isfinite(number.real) and abs(number.imag) <= _IMAGINARY_TOLERANCE * max(
+            1.0, abs(number.real)
+        ):
+            values.append(number.real)
+    return values if len(values) >= SAMPLES_NEEDED else []
 
 
 def _is_negative(value: sympy.Expr) -> bool:
-    """True only when ``value`` is decidably negative."""
+    """True only when ``value`` is decidably negative (by assumptions, else by sampling)."""
     if value.free_symbols:
-        return bool(value.is_negative)
+        if value.is_negative is not None:
+            return bool(value.is_negative)
+        samples = sampled(value)
+        return bool(samples) and all(v < 0 for v in samples)
     try:
         return complex(sympy.N(value, NUMERIC_DIGITS + 5)).real < 0
     except (TypeError, ValueError):
@@ -270,15 +328,18 @@ def _is_negative(value: sympy.Expr) -> bool:
 
 
 def _is_non_negative(value: sympy.Expr) -> bool:
-    """True only when ``value`` is decidably non-negative."""
+    """True only when ``value`` is decidably non-negative (by assumptions, else by sampling)."""
     if value.free_symbols:
-        return bool(value.is_nonnegative)
+        if value.is_nonnegative is not None:
+            return bool(value.is_nonnegative)
+        samples = sampled(value)
+        return bool(samples) and all(v >= 0 for v in samples)
     return not _is_negative(value)
 
 
 def _realised(candidate: Candidate) -> Candidate:
     """Replace numbers that are real but written with ``I`` (casus irreducibilis) by Floats."""
-    values = {u: sympy.sympify(v) for u, v in candidate.values.items()}
+    values = {u: as_expr(v) for u, v in candidate.values.items()}
     for unknown, value in values.items():
         if is_finite(value) and not value.free_symbols and value.has(sympy.I) and is_real(value):
             values[unknown] = sympy.re(sympy.N(value, NUMERIC_DIGITS))

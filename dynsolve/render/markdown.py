@@ -1,0 +1,245 @@
+"""Render a :class:`~dynsolve.results.Solution` as GitHub-flavoured Markdown.
+
+Sections and wording follow the LaTeX renderer: title, Given, Equations, Solution,
+Answers, Checks. Math goes in ``$...$`` (inline) and ``$$...$$`` (display) using the
+solution's LaTeX fragments; plain text goes through :func:`escape_markdown`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from pathlib import PurePath
+
+from dynsolve.format import pretty_unit
+from dynsolve.names import latex_name
+from dynsolve.results import (
+    AnswerRow,
+    Check,
+    EquationRow,
+    Formula,
+    GivenRow,
+    KeyComparison,
+    Solution,
+    Step,
+)
+
+_SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
+_LEADING_MARKER = re.compile(r"^(\d+)([.)])|^([-+=])")
+_SPACE = re.compile(r"\s+")
+
+
+def escape_markdown(text: str) -> str:
+    """Plain text safe inside a Markdown paragraph, heading or table cell.
+
+    Markdown punctuation is backslash-escaped, a leading list marker too, and line
+    breaks become spaces; Unicode is kept as it is.
+
+    >>> print(escape_markdown("ΣF_y = m a_y | *note* $5"))
+    ΣF\\_y = m a\\_y \\| \\*note\\* \\$5
+    >>> print(escape_markdown("- 3 rad/s\\n1. x"))
+    \\- 3 rad/s 1. x
+    """
+    text = _SPACE.sub(" ", text).strip()
+    text = _SPECIAL.sub(r"\\\1", text)
+    return _LEADING_MARKER.sub(_escape_marker, text, count=1)
+
+
+def _escape_marker(match: re.Match[str]) -> str:
+    if match.group(3):
+        return "\\" + match.group(3)
+    return f"{match.group(1)}\\{match.group(2)}"
+
+
+def render_markdown(solution: Solution) -> str:
+    """The solution as a GitHub-flavoured Markdown document.
+
+    >>> from dynsolve.results import AnswerRow, Solution
+    >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
+    >>> doc = render_markdown(Solution("d.dyn", "Drum & block", "Hibbeler 17.11", "SI",
+    ...                                "equations", (), (), (), (answer,), (), (), "solved"))
+    >>> doc.splitlines()[0]
+    '# Drum \\\\& block'
+    >>> "| $T$ | $106\\\\,\\\\mathrm{N}$ |" in doc
+    True
+    """
+    sections = [
+        _title(solution),
+        _givens_section(solution.givens),
+        _equations_section(solution.equations),
+        _solution_section(solution.steps),
+        _answers_section(solution.answers, solution.key),
+        _checks_section(solution.checks),
+    ]
+    return "\n\n".join(sections) + "\n"
+
+
+# ---- pieces
+
+
+def _math(fragment: str) -> str:
+    """Inline math, or nothing for an empty fragment."""
+    fragment = _SPACE.sub(" ", fragment).strip()
+    return f"${fragment}$" if fragment else ""
+
+
+def _display(fragment: str) -> str:
+    return f"$${_SPACE.sub(' ', fragment).strip()}$$"
+
+
+def _name(name: str) -> str:
+    return _math(latex_name(name))
+
+
+def _cell_math(fragment: str) -> str:
+    """Inline math for a table cell: GFM splits cells at every unescaped pipe, even in math."""
+    return _math(fragment).replace("|", "\\|")
+
+
+def _table(header: Sequence[str], align: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "| " + " | ".join(align) + " |"]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def _mark(passed: bool) -> str:
+    return "✓" if passed else "✗"
+
+
+# ---- sections
+
+
+def _title(solution: Solution) -> str:
+    title = solution.title.strip() or PurePath(solution.file).name or "Problem"
+    lines = [f"# {escape_markdown(title)}", ""]
+    if solution.source.strip():
+        lines += [f"*{escape_markdown(solution.source)}*", ""]
+    spec = PurePath(solution.file).name
+    facts = [f"Spec `{spec.replace('`', '')}`", f"units {escape_markdown(solution.system)}"]
+    facts.append(f"status **{escape_markdown(solution.status)}**")
+    lines.append(" · ".join(facts))
+    if solution.messages:
+        lines += ["", *(f"- {escape_markdown(m)}" for m in solution.messages)]
+    return "\n".join(lines)
+
+
+def _givens_section(givens: Sequence[GivenRow]) -> str:
+    if not givens:
+        return "## Given\n\nNo givens."
+    rows = [_given_cells(g) for g in givens]
+    header = ["Symbol", "Value", "SI value", "Description"]
+    return "## Given\n\n" + _table(header, [":--"] * 4, rows)
+
+
+def _given_cells(given: GivenRow) -> list[str]:
+    value = escape_markdown(given.written) if given.symbolic else _cell_math(given.latex_value)
+    si = escape_markdown(given.si)
+    return [_cell_math(given.latex_name), value, si, escape_markdown(given.description)]
+
+
+def _equations_section(equations: Sequence[EquationRow]) -> str:
+    if not equations:
+        return "## Equations\n\nNo equations."
+    rows = [_equation_cells(e) for e in equations]
+    header = ["Line", "Equation", "Principle", "Dimensions"]
+    return "## Equations\n\n" + _table(header, ["--:", ":--", ":--", ":--"], rows)
+
+
+def _equation_cells(row: EquationRow) -> list[str]:
+    note = escape_markdown(row.note)
+    if row.constraint:
+        note = "constraint" + (f": {note}" if note else "")
+    return [str(row.line), _cell_math(row.latex) or "?", note, _dimension(row)]
+
+
+_DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
+
+
+def _dimension(row: EquationRow) -> str:
+    """``force, N ✓`` from ``force [N]``, or a marked mismatch."""
+    match = _DIMENSION.match(row.dimension.strip())
+    text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
+    shown = escape_markdown(text)
+    return f"{shown} ✓" if row.dimension_ok else f"**dimensions differ**: {shown} ✗"
+
+
+def _solution_section(steps: Sequence[Step]) -> str:
+    if not steps:
+        return "## Solution\n\nNo solve steps."
+    return "\n\n".join(["## Solution", *(_step(s) for s in steps)])
+
+
+def _step(step: Step) -> str:
+    names = _and_list([_name(n) for n in step.unknowns])
+    lead = f"**Step {step.index}.** {_lines_phrase(step.lines)} {names}"
+    blocks = [f"{lead} ({escape_markdown(step.method)}):"]
+    blocks += [_display(_result(r)) for r in step.results]
+    if step.discarded:
+        items = "\n".join(f"- {escape_markdown(d)}" for d in step.discarded)
+        blocks.append(f"Discarded roots:\n\n{items}")
+    if step.note.strip():
+        blocks.append(f"*{escape_markdown(step.note)}*")
+    return "\n\n".join(blocks)
+
+
+def _lines_phrase(lines: Sequence[int]) -> str:
+    """``Equation (line 10) gives`` or ``Equations (lines 11–13) give``."""
+    if not lines:
+        return "The solver gives"
+    if len(lines) == 1:
+        return f"Equation (line {lines[0]}) gives"
+    ordered = sorted(lines)
+    if ordered == list(range(ordered[0], ordered[-1] + 1)):
+        return f"Equations (lines {ordered[0]}–{ordered[-1]}) give"
+    return f"Equations (lines {', '.join(str(n) for n in lines)}) give"
+
+
+def _and_list(items: Sequence[str]) -> str:
+    if len(items) <= 1:
+        return "".join(items)
+    return ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _result(result: Formula) -> str:
+    """``T = \\frac{...}{...} = 106\\,\\mathrm{N}``; the value alone when no formula."""
+    formula, value = result.formula_latex.strip(), result.value_latex.strip()
+    parts = [p for p in (formula, value) if p]
+    if len(parts) == 2 and formula == value:
+        parts = [formula]
+    return f"{latex_name(result.name)} = " + " = ".join(parts or ["?"])
+
+
+def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison]) -> str:
+    if not answers:
+        return "## Answers\n\nNo answers."
+    expected = {k.name: k for k in key}
+    header = ["Quantity", "Value"] + (["Answer key", ""] if expected else [])
+    rows = [_answer_cells(a, expected.get(a.name), bool(expected)) for a in answers]
+    return "## Answers\n\n" + _table(header, [":--"] * len(header), rows)
+
+
+def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:
+    value = _cell_math(answer.latex) or f"*{escape_markdown(answer.shown)}*"
+    cells = [_cell_math(latex_name(answer.name)), value]
+    if keyed:
+        cells += (
+            [escape_markdown(pretty_unit(key.expected)), _mark(key.passed)] if key else ["", ""]
+        )
+    return cells
+
+
+def _checks_section(checks: Sequence[Check]) -> str:
+    if not checks:
+        return "## Checks\n\nNo checks."
+    failed = sum(not c.passed for c in checks)
+    verdict = f"All {len(checks)} checks passed."
+    if failed:
+        verdict = f"**{failed} of {len(checks)} checks failed.**"
+    rows = [[_mark(c.passed), escape_markdown(c.name), _check_detail(c)] for c in checks]
+    return f"## Checks\n\n{verdict}\n\n" + _table(
+        ["", "Check", "Detail"], [":-:", ":--", ":--"], rows
+    )
+
+
+def _check_detail(check: Check) -> str:
+    return escape_markdown(pretty_unit(check.detail))

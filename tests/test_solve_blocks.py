@@ -1,0 +1,238 @@
+"""Tests for solving one block, choosing its root, the time budget and residuals."""
+
+from __future__ import annotations
+
+import math
+import signal
+
+import pytest
+import sympy
+from sympy import Rational
+
+from dynsolve.solve.blocks import Candidate, solve_block, time_budget
+from dynsolve.solve.residuals import equation_residual
+from dynsolve.solve.roots import AMBIGUOUS, choose_root, enters_only_squared, truth
+from dynsolve.system import Constraint, Equation, SolveOptions
+
+x, y, v = sympy.symbols("x y v")
+g, h, m = sympy.symbols("g h m", positive=True)
+
+
+# --- linear blocks -------------------------------------------------------------------
+
+
+def test_linear_block_gives_exact_rationals_and_symbolic_formulas():
+    # m*a = m*g - T and T = k*a with m = 2, g = 981/100, k = 3:
+    # a = m*g/(m + k) = (981/50)/5 = 981/250, T = 3a = 2943/250.
+    a, T, k = sympy.symbols("a T k")
+    solution = solve_block([m * a - (m * g - T), T - k * a], [a, T],
+                           {m: 2, g: Rational(981, 100), k: 3})
+    (candidate,) = solution.candidates
+    assert solution.method == "linear"
+    assert candidate.values == {a: Rational(981, 250), T: Rational(2943, 250)}
+    assert sympy.simplify(candidate.formulas[a] - g * m / (k + m)) == 0
+
+
+def test_numeric_mode_linear_block_gives_floats():
+    solution = solve_block([3 * x - 1], [x], {}, SolveOptions(mode="numeric"))
+    value = solution.candidates[0].values[x]
+    assert isinstance(value, sympy.Float)
+    assert float(value) == pytest.approx(1 / 3)
+
+
+def test_singular_linear_block_leaves_its_unknowns_free():
+    # x + y = 1 and 2x + 2y = 2 are the same equation twice.
+    solution = solve_block([x + y - 1, 2 * x + 2 * y - 2], [x, y], {})
+    assert set(solution.free) == {x, y}
+    assert solution.missing_equations == 1
+    assert not solution.inconsistent
+
+
+def test_contradictory_linear_block_is_inconsistent():
+    solution = solve_block([x + y - 1, 2 * x + 2 * y - 3], [x, y], {})
+    assert solution.inconsistent
+    assert solution.candidates == ()
+
+
+def test_linear_block_singular_only_for_the_given_numbers_is_detected():
+    # Generically k*x = 1 gives x = 1/k, which is undefined for k = 0.
+    k = sympy.Symbol("k")
+    solution = solve_block([k * x - 1], [x], {k: 0})
+    assert solution.inconsistent
+
+
+# --- nonlinear blocks ----------------------------------------------------------------
+
+
+def test_symbolic_block_returns_every_root_with_formulas():
+    # v**2 = 2*g*h with g = 10, h = 5: v = ±10, formula ±sqrt(2 g h).
+    solution = solve_block([v**2 - 2 * g * h], [v], {g: 10, h: 5})
+    assert solution.method == "symbolic"
+    assert sorted(c.values[v] for c in solution.candidates) == [-10, 10]
+    assert {c.formulas[v] for c in solution.candidates} == {
+        sympy.sqrt(2 * g * h), -sympy.sqrt(2 * g * h)
+    }
+
+
+def test_transcendental_block_falls_back_to_numeric():
+    # x = cos(x) has no closed form; its one real root is the Dottie number 0.7390851332.
+    solution = solve_block([x - sympy.cos(x)], [x], {})
+    assert solution.method == "numeric"
+    assert "solved numerically" in solution.note
+    (candidate,) = solution.candidates
+    assert float(candidate.values[x]) == pytest.approx(0.7390851332151607, rel=1e-12)
+
+
+def test_tiny_time_budget_forces_numeric_with_a_note():
+    # x**5 + x = 3 is solvable by sympy (CRootOf) but not within a microsecond.
+    # f(1) = -1 < 0 < f(1.2) = 0.689, and f is increasing: one real root near 1.133.
+    solution = solve_block([x**5 + x - 3], [x], {}, SolveOptions(time_budget=1e-6))
+    assert solution.method == "numeric"
+    assert "budget" in solution.note
+    (candidate,) = solution.candidates
+    assert 1.0 < float(candidate.values[x]) < 1.2
+    assert float(candidate.values[x] ** 5 + candidate.values[x]) == pytest.approx(3)
+
+
+def test_numeric_mode_finds_roots_of_a_coupled_block():
+    # x**2 + y**2 = 25, x*y = 12 has the real roots (3, 4), (4, 3) and their negatives.
+    solution = solve_block([x**2 + y**2 - 25, x * y - 12], [x, y], {},
+                           SolveOptions(mode="numeric"))
+    roots = {(round(float(c.values[x]), 9), round(float(c.values[y]), 9))
+             for c in solution.candidates}
+    assert roots and roots <= {(3, 4), (4, 3), (-3, -4), (-4, -3)}
+    assert not solution.exhaustive
+
+
+def test_numeric_mode_with_free_symbols_stays_symbolic():
+    solution = solve_block([v**2 - 2 * g * h], [v], {}, SolveOptions(mode="numeric"))
+    assert solution.method == "symbolic"
+    assert len(solution.candidates) == 2
+
+
+# --- time budget ---------------------------------------------------------------------
+
+
+def test_time_budget_restores_the_previous_handler_and_timer():
+    def previous(signum: int, frame: object) -> None:
+        raise AssertionError("the outer alarm must not fire during the test")
+
+    old = signal.signal(signal.SIGALRM, previous)
+    signal.setitimer(signal.ITIMER_REAL, 100.0)
+    try:
+        with time_budget(1.0):
+            pass
+        assert signal.getsignal(signal.SIGALRM) is previous
+        remaining, _ = signal.getitimer(signal.ITIMER_REAL)
+        assert 90.0 < remaining <= 100.0
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+# --- root choice ---------------------------------------------------------------------
+
+
+def candidates(*values: object, unknown: sympy.Symbol = v) -> list[Candidate]:
+    return [Candidate({unknown: sympy.sympify(value)}) for value in values]
+
+
+def test_constraint_discards_the_violating_root_with_its_line():
+    constraint = Constraint(v >= 0, "v >= 0", 12)
+    choice = choose_root(candidates(-3, 3), [v], [v**2 - 9], {}, [constraint])
+    assert choice.values == {v: 3}
+    assert [d.reason for d in choice.discarded] == ["violates v >= 0 (line 12)"]
+
+
+def test_even_power_rule_keeps_the_positive_magnitude():
+    choice = choose_root(candidates(-3, 3), [v], [v**2 - 9], {})
+    assert choice.values == {v: 3}
+    assert choice.discarded[0].reason == "v enters only squared; its magnitude is taken positive"
+    assert choice.ambiguous == ()
+
+
+def test_several_valid_roots_are_ambiguous():
+    # x**2 - 3x + 2 = (x - 1)(x - 2): both roots positive, x enters linearly too.
+    choice = choose_root(candidates(1, 2, unknown=x), [x], [x**2 - 3 * x + 2], {})
+    assert choice.values == {x: 1}
+    assert choice.ambiguous == (x,)
+    assert [d.reason for d in choice.discarded] == [AMBIGUOUS]
+
+
+def test_complex_roots_are_discarded_as_not_real():
+    choice = choose_root(candidates(2 * sympy.I, -2 * sympy.I, 2, unknown=x), [x],
+                         [x**3 - 2 * x**2 + 4 * x - 8], {})
+    assert choice.values == {x: 2}
+    assert [d.reason for d in choice.discarded] == ["not real", "not real"]
+
+
+def test_no_root_survives():
+    choice = choose_root(candidates(-1, unknown=x), [x], [x + 1], {},
+                         [Constraint(x > 0, "x > 0", 3)])
+    assert choice.values == {}
+
+
+def test_undecidable_symbolic_constraint_keeps_the_root():
+    # sqrt(g) - h may have either sign for positive g, h: sympy cannot decide x > 0.
+    value = sympy.sqrt(g) - h
+    choice = choose_root(candidates(value, unknown=x), [x], [x - value], {},
+                         [Constraint(x > 0, "x > 0", 3)])
+    assert choice.values == {x: value}
+
+
+def test_symbolic_negative_root_is_discarded_by_assumptions():
+    root = sympy.sqrt(2 * g * h)
+    constraint = Constraint(v >= 0, "v >= 0", 2)
+    choice = choose_root(candidates(-root, root), [v], [v**2 - 2 * g * h], {}, [constraint])
+    assert choice.values == {v: root}
+
+
+def test_enters_only_squared_sees_through_even_powers_only():
+    assert enters_only_squared([m * v**2 / 2 - m * g * h, v**4 - 1], v)
+    assert not enters_only_squared([v**2 + v], v)
+    assert not enters_only_squared([sympy.sqrt(v) - 1], v)
+
+
+def test_truth_compares_numbers_numerically():
+    th = sympy.Symbol("theta")
+    assert truth(th < sympy.pi / 2, {th: sympy.acos(Rational(1, 7))}) is True
+    assert truth(th < sympy.pi / 2, {th: 2}) is False
+
+
+# --- residuals -----------------------------------------------------------------------
+
+
+def test_relative_residual_is_judged_against_the_terms():
+    # T - m*g = 0 with T a float root: one side is exactly 0, the other ~1e-15;
+    # the relative residual compares that with the 19.62 N terms, not with 0.
+    T = sympy.Symbol("T")
+    root = sympy.Float(19.62, 15) + sympy.Float(1e-14, 15)
+    residual = equation_residual(0, Equation(T - m * g, 0, "ΣF"), {T: root, m: 2,
+                                                                 g: Rational(981, 100)})
+    assert residual.evaluated
+    assert residual.relative < 1e-12
+
+
+def test_residual_of_a_wrong_answer():
+    # 2x = 3 with x = 1: |2 - 3| = 1, scale max(2, 3) = 3.
+    residual = equation_residual(0, Equation(2 * x, 3, "a"), {x: 1})
+    assert residual.absolute == pytest.approx(1)
+    assert residual.relative == pytest.approx(1 / 3)
+
+
+def test_residual_with_unsolved_unknown_is_not_evaluated():
+    residual = equation_residual(0, Equation(x + y, 3, "a"), {x: 1}, unsolved={y})
+    assert not residual.evaluated
+    assert math.isnan(residual.absolute)
+
+
+def test_symbolic_residual_is_spot_checked():
+    residual = equation_residual(0, Equation(m * v**2 / 2, m * g * h, "E"),
+                                 {v: sympy.sqrt(2 * g * h)})
+    assert not residual.evaluated
+    assert residual.relative < 1e-20
+
+
+def test_numeric_mode_with_free_symbols_notes_why_it_stayed_symbolic():
+    solution = solve_block([v**2 - 2 * g * h], [v], {}, SolveOptions(mode="numeric"))
+    assert solution.note == "numeric mode needs values for g, h; solved symbolically"

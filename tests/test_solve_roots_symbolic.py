@@ -1,0 +1,39 @@
+"""Root choice in symbolic problems when sympy's assumptions cannot decide a sign.
+
+Regression: the collar problem (seed we_seed_collar-symbolic) kept both roots
+v_0 = ±sqrt(k/W * g)*(sqrt(L^2 + s^2) - L), because sympy cannot tell that
+sqrt(L^2 + s^2) - L > 0; the constraint v_0 >= 0 is now decided by sampling
+positive values of the givens.
+"""
+
+import sympy
+
+from dynsolve.solve import solve_system
+from dynsolve.solve.roots import sampled, truth
+from dynsolve.system import Constraint, Equation, EquationSystem
+
+k, W, g, L, s = sympy.symbols("k W g L s", positive=True)
+v = sympy.Symbol("v_0", real=True)
+
+
+def test_spring_energy_root_is_chosen_by_the_declared_sign():
+    # (W/g) v^2 / 2 = k (sqrt(s^2 + L^2) - L)^2 / 2  (seed 001, Sec. 4.4; gravity does no work)
+    stretch = sympy.sqrt(s**2 + L**2) - L
+    energy = Equation(W / g * v**2 / 2, k * stretch**2 / 2, "line 1", 1)
+    system = EquationSystem(
+        equations=(energy,), unknowns=(v,), constraints=(Constraint(v >= 0, "v_0 >= 0", 2),)
+    )
+    outcome = solve_system(system)
+    assert outcome.status == "solved"
+    expected = sympy.sqrt(k * g / W) * stretch
+    value = outcome.values[v]
+    point = {k: 5, W: 2, g: sympy.Rational(322, 10), L: 1, s: 2}
+    assert abs(float((value - expected).subs(point))) < 1e-12
+    assert not outcome.ambiguous
+
+
+def test_sampling_decides_only_when_every_sample_agrees():
+    x = sympy.Symbol("x", real=True)
+    assert truth(x >= 0, {x: sympy.sqrt(L**2 + s**2) - L}) is True
+    assert truth(x >= 0, {x: L - s}) is None  # sign depends on the givens
+    assert sampled(x + L) == []  # x is not a positive given: no sampling
