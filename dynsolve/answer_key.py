@@ -49,7 +49,11 @@ def compare(
     knowns: Mapping[sympy.Symbol, sympy.Expr],
     known_dims: Mapping[str, Dim],
 ) -> Verdict:
-    """Judge ``computed`` (in base units; None when not determined) against ``answer``."""
+    """Judge ``computed`` (in base units; None when not determined) against ``answer``.
+
+    ``knowns`` holds the givens' values and the solved unknowns; ``known_dims`` the
+    dimension of every name a formula key may use (givens and solved unknowns).
+    """
     if answer.formula is not None:
         return _compare_formula(answer, computed, dim, spec, symbols, knowns, known_dims)
     assert answer.quantity is not None
@@ -156,16 +160,18 @@ def _compare_formula(
     for name in iter_names(answer.formula):
         if name.text != "pi" and name.text not in known_dims:
             raise SpecError(
-                f"the answer formula for {answer.name} uses '{name.text}', which is not a given",
+                f"the answer formula for {answer.name} uses '{name.text}', which is neither "
+                "a given nor a solved unknown",
                 Position(spec.file, name.line, name.column),
-                hint="write formulas in terms of the givens",
+                hint="write formulas in terms of the givens and the other answers",
             )
     statement = EquationStmt(
         Name(answer.name, answer.line, answer.column), "=", answer.formula, "", "",
         answer.line, answer.column,
     )  # fmt: skip
     check_dimensions((statement,), {**known_dims, answer.name: dim}, spec.file, spec.system)
-    expected = to_sympy(answer.formula, symbols)
+    solved = {s: v for s, v in knowns.items() if s.name not in spec_given_names(spec)}
+    expected = to_sympy(answer.formula, symbols).xreplace(solved)
     shown = str(answer.formula)
     if computed is None:
         return Verdict(False, shown, "not determined by the equations")
@@ -177,6 +183,11 @@ def _compare_formula(
         return Verdict(False, shown, "the formula cannot be evaluated with the givens")
     passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) + 1e-12
     return Verdict(passed, shown, f"formula gives {target:.6g}, computed {value:.6g} (base units)")
+
+
+def spec_given_names(spec: Spec) -> set[str]:
+    """The names a spec gives (they stay symbols in a symbolic formula key)."""
+    return {g.name for g in spec.givens} | {"g"}
 
 
 def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdict:

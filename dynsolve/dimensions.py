@@ -72,6 +72,7 @@ class DimensionReport:
     dims: Mapping[str, Dim]
     checks: tuple[EquationCheck, ...]
     angles: frozenset[str] = field(default_factory=frozenset)  # names used as angles
+    free: tuple[str, ...] = ()  # unknowns whose dimension the equations leave open
 
 
 def check_dimensions(
@@ -80,11 +81,15 @@ def check_dimensions(
     file: str,
     system: System = "SI",
     requested: Mapping[str, Dim] | None = None,
+    wanted: tuple[str, ...] = (),
 ) -> DimensionReport:
     """Infer unknown dimensions and check every statement; raise on any conflict.
 
     ``known`` maps given names (and ``g``, ``pi``) to dimensions; ``requested`` maps
-    unknowns to the dimension of the unit asked for in ``find``.
+    unknowns to the dimension of the unit asked for in ``find``. An unknown whose
+    dimension the equations leave open is an error when it is ``wanted``; otherwise
+    it is taken as dimensionless (the equations hold for any choice) and listed in
+    the report's ``free``.
     """
     dims: dict[str, Dim] = dict(known)
     for name, dim in (requested or {}).items():
@@ -94,16 +99,15 @@ def check_dimensions(
     for statement in statements:
         constraints.extend(collector.equation(statement))
     _infer(constraints, dims)
-    undetermined = sorted(
-        {n for c in constraints for n, _ in c.left_mono.powers + c.right_mono.powers} - set(dims)
-    )
-    if undetermined:
-        first = next(s for s in statements if any(n in undetermined for n in _names(s)))
-        shown = ", ".join(undetermined)
+    names = {n for s in statements for n in _names(s)}
+    free = _fix_free_dimensions(constraints, dims, names, set(requested or ()) | set(wanted))
+    if free.asked:
+        first = next(s for s in statements if any(n in free.asked for n in _names(s)))
+        shown = ", ".join(free.asked)
         raise DimensionError(
             f"cannot infer the dimension of {shown} from the equations",
             Position(file, first.line, first.column),
-            hint=f"give it an output unit in find, e.g. '{undetermined[0]} [N]'",
+            hint=f"give it an output unit in find, e.g. '{free.asked[0]} [N]'",
         )
     errors = [_describe(c, dims, file, system) for c in constraints if not _holds(c, dims)]
     if errors:
@@ -113,7 +117,7 @@ def check_dimensions(
     checks = tuple(
         EquationCheck(s, _resolve(collector.side_mono[id(s)], dims), True) for s in statements
     )
-    return DimensionReport(dims, checks, frozenset(collector.angles))
+    return DimensionReport(dims, checks, frozenset(collector.angles), tuple(free.unasked))
 
 
 class _Collector:
@@ -255,6 +259,30 @@ def _infer(constraints: list[_Constraint], dims: dict[str, Dim]) -> None:
             # rest · D(name)^exponent = 1
             dims[name] = (Dim() / rest) ** (1 / exponent)
             progress = True
+
+
+@dataclass(frozen=True)
+class _Free:
+    asked: list[str]
+    unasked: list[str]
+
+
+def _fix_free_dimensions(
+    constraints: list[_Constraint], dims: dict[str, Dim], names: set[str], wanted: set[str]
+) -> _Free:
+    """Pin unknowns the constraints leave open: one at a time, to dimensionless."""
+    free: list[str] = []
+    while True:
+        open_names = sorted(names - set(dims))
+        if not open_names:
+            break
+        asked = [n for n in open_names if n in wanted]
+        if asked:
+            return _Free(asked, free)
+        dims[open_names[0]] = Dim()
+        free.append(open_names[0])
+        _infer(constraints, dims)
+    return _Free([], free)
 
 
 def _resolve(mono: _Mono, dims: Mapping[str, Dim]) -> Dim:

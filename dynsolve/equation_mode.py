@@ -83,11 +83,12 @@ def build_problem(spec: Spec) -> Problem:
     given_names = {g.name for g in givens}
     unknown_names = _unknown_names(spec.equations, given_names)
     _check_finds(spec, unknown_names, given_names)
-    requested = {
-        f.name: resolve_unit(f.unit, file)[1] for f in spec.finds if f.unit is not None
-    }
+    requested = _requested_dimensions(spec)
     known_dims = {g.name: g.dim for g in givens} | {"pi": Dim()}
-    report = check_dimensions(spec.equations, known_dims, file, spec.system, requested)
+    report = check_dimensions(
+        spec.equations, known_dims, file, spec.system, requested,
+        wanted=tuple(f.name for f in spec.finds),
+    )  # fmt: skip
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     symbols.update({n: sympy.Symbol(n, real=True) for n in unknown_names})
     targets = tuple(_target(f, report, symbols, given_names, spec) for f in spec.finds)
@@ -107,6 +108,19 @@ def build_problem(spec: Spec) -> Problem:
         wanted=(),
     )
     return Problem(spec, tuple(givens), system, report, targets, symbols)
+
+
+def _requested_dimensions(spec: Spec) -> dict[str, Dim]:
+    """Dimensions the user stated for unknowns: units in find, else in the answer key."""
+    requested = {
+        a.name: resolve_unit(a.quantity.unit, spec.file)[1]
+        for a in spec.answers
+        if a.quantity is not None and a.quantity.unit is not None
+    }
+    requested.update(
+        {f.name: resolve_unit(f.unit, spec.file)[1] for f in spec.finds if f.unit is not None}
+    )
+    return requested
 
 
 def _plain(statement: EquationStmt) -> str:

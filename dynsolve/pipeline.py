@@ -31,6 +31,7 @@ from dynsolve.results import (
 )
 from dynsolve.solve import solve_system
 from dynsolve.solve.outcome import Outcome
+from dynsolve.solve.roots import truth
 from dynsolve.spec.parser import parse_file
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import SolveOptions
@@ -100,7 +101,7 @@ class _View:
         return natural_unit(dim, self.system, name)
 
     def text(self, expr: sympy.Expr) -> str:
-        return sympy.sstr(expr.xreplace(self.pretty_symbols))
+        return sympy.sstr(expr.xreplace(self.pretty_symbols)).replace("**", "^")
 
     def latex(self, expr: sympy.Expr) -> str:
         return sympy.latex(expr, symbol_names=self.latex_symbols)
@@ -180,7 +181,9 @@ class _View:
         for symbol in block.unknowns:
             formula = block.formulas.get(symbol)
             value_text, value_latex, _ = self.shown(symbol.name, block.values[symbol])
-            show_formula = formula is not None and formula.free_symbols
+            show_formula = (
+                formula is not None and formula.free_symbols and formula != block.values[symbol]
+            )
             results.append(
                 Formula(
                     name=symbol.name,
@@ -235,13 +238,16 @@ class _View:
     def key(self) -> list[KeyComparison]:
         spec = self.problem.spec
         targets = {t.name: t for t in self.problem.targets}
-        known_dims = {g.name: g.dim for g in self.problem.givens}
+        known_dims = {g.name: g.dim for g in self.problem.givens} | {
+            s.name: self.dims[s.name] for s in self.outcome.values
+        }
+        solved = {**self.knowns, **self.outcome.values}
         out = []
         for answer in spec.answers:
             target = targets[answer.name]
             verdict = compare(
                 answer, self.computed(answer.name), target.dim, target.unit, spec,
-                self.problem.symbols, self.knowns, known_dims,
+                self.problem.symbols, solved, known_dims,
             )  # fmt: skip
             row = next(a for a in (self.answer(target),))
             out.append(KeyComparison(answer.name, verdict.expected, row.shown, verdict.passed,
@@ -253,7 +259,11 @@ class _View:
         outcome = self.outcome
         equations = self.problem.system.equations
         n = len(self.problem.dims.checks)
-        checks = [Check("dimensions", True, f"all {n} equations and constraints are homogeneous")]
+        detail = f"all {n} equations and constraints are homogeneous"
+        if self.problem.dims.free:
+            names = ", ".join(pretty(name) for name in self.problem.dims.free)
+            detail += f"; the dimension of {names} is left open by the equations (not asked for)"
+        checks = [Check("dimensions", True, detail)]
         checks.append(self._structure_check())
         evaluated = [r for r in outcome.residuals if r.evaluated]
         if evaluated:
@@ -316,12 +326,12 @@ class _View:
 
         assert isinstance(constraint, Constraint)
         name = f"constraint {constraint.text} (line {constraint.line})"
-        substituted = constraint.relation.subs(self.outcome.values).subs(self.knowns)
-        if substituted in (sympy.true, True):
-            return Check(name, True, "holds")
-        if substituted in (sympy.false, False):
-            return Check(name, False, "violated by the solution")
-        return Check(name, True, "cannot be decided for symbolic givens")
+        verdict = truth(constraint.relation, {**self.knowns, **self.outcome.values})
+        if verdict is None:
+            return Check(name, True, "cannot be decided for symbolic givens")
+        symbolic = any(v.free_symbols for v in self.outcome.values.values())
+        how = " (at sampled values of the givens)" if symbolic else ""
+        return Check(name, verdict, ("holds" if verdict else "violated by the solution") + how)
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:

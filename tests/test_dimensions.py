@@ -19,10 +19,10 @@ KNOWN = {
 }
 
 
-def check(*lines, requested=None):
+def check(*lines, requested=None, wanted=()):
     text = "equations:\n" + "".join(f"  {line}\n" for line in lines)
     spec = parse_spec(text, "d.dyn")
-    return check_dimensions(spec.equations, KNOWN, "d.dyn", "SI", requested)
+    return check_dimensions(spec.equations, KNOWN, "d.dyn", "SI", requested, wanted)
 
 
 def test_infers_unknowns_through_a_chain():
@@ -89,11 +89,20 @@ def test_all_conflicts_are_collected():
     assert len(caught.value.others) == 1
 
 
-def test_undeterminable_dimension_asks_for_a_unit():
+def test_undeterminable_dimension_asks_for_a_unit_when_wanted():
     with pytest.raises(DimensionError) as caught:
-        check("q = z*w")
-    assert "cannot infer the dimension of q, w, z" in caught.value.message
+        check("q = z*w", wanted=("q",))
+    assert "cannot infer the dimension of q" in caught.value.message
     assert "find" in caught.value.hint
+
+
+def test_open_dimensions_of_unasked_unknowns_are_pinned_and_reported():
+    # A_lat + B_lat = 0 and A_lat*r = B_lat*r hold whatever A_lat's dimension is
+    report = check("A_up = m*g", "A_lat + B_lat = 0", "A_lat*r - B_lat*r = 0", "A_axial = 0",
+                   wanted=("A_up",))  # fmt: skip
+    assert report.dims["A_up"] == Dim.of("force")
+    assert set(report.free) == {"A_lat", "A_axial"}
+    assert report.dims["B_lat"] == Dim()
 
 
 def test_a_bare_number_where_g_belongs():

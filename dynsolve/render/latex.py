@@ -1,7 +1,7 @@
 """Render a :class:`~dynsolve.results.Solution` as a standalone LaTeX document for pdflatex.
 
 The document needs only Debian's ``texlive-latex-base`` and ``texlive-latex-recommended``
-(article, amsmath, amssymb, booktabs, array, geometry). It is pure ASCII and uses
+(article, amsmath, amssymb, booktabs, geometry). It is pure ASCII and uses
 the default OT1 encoding, so the Computer Modern Type 1 fonts are used and no font has to be
 generated. Plain text goes through :func:`escape_latex`; the LaTeX fragments of the solution
 (``latex``, ``latex_name``, ``latex_value``, ``formula_latex``, ``value_latex``) go through
@@ -33,9 +33,9 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage[a4paper,margin=2.5cm]{geometry}
 \usepackage{amsmath}
 \usepackage{amssymb}
-\usepackage{array}
 \usepackage{booktabs}
 \allowdisplaybreaks
+\renewcommand{\arraystretch}{1.25}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex}"""
 
@@ -55,8 +55,8 @@ _TEXT_SPECIAL = {
 _TEXT_UNICODE = {
     "\u2014": "---", "\u2013": "--", "\u2010": "-", "\u2011": "-", "\u2012": "-",
     "\u2018": "`", "\u2019": "'", "\u201a": ",", "\u201c": "``", "\u201d": "''",
-    "\u201e": "''", "\u00ab": "''", "\u00bb": "''", "\u2026": r"\ldots{}", "\u00a0": "~",
-    "\u202f": "~", "\u00df": r"\ss{}", "\u00e6": r"\ae{}", "\u00c6": r"\AE{}",
+    "\u201e": "''", "\u00ab": "''", "\u00bb": "''", "\u2026": r"\ldots{}",
+    "\u00df": r"\ss{}", "\u00e6": r"\ae{}", "\u00c6": r"\AE{}",
     "\u0153": r"\oe{}", "\u0152": r"\OE{}", "\u00f8": r"\o{}", "\u00d8": r"\O{}",
     "\u0142": r"\l{}", "\u0141": r"\L{}", "\u0131": r"\i{}", "\u0237": r"\j{}",
     "\u00a1": "!", "\u00bf": "?", "\u00a9": "(c)", "\u00ae": "(R)", "\u2122": "(TM)",
@@ -155,7 +155,7 @@ def _char_pieces(char: str, decompose: bool = True) -> list[Piece]:
     if char in _TEXT_SPECIAL:
         return [("text", _TEXT_SPECIAL[char])]
     if char.isascii():
-        return [("text", char if char.isprintable() else " ")]
+        return [("text", char)] if char.isprintable() else _other_pieces(char, decompose)
     for table, kind in ((_TEXT_UNICODE, "text"), (_SUPERSCRIPTS, "sup"), (_SUBSCRIPTS, "sub")):
         if char in table:
             return [(kind, table[char])]
@@ -402,7 +402,7 @@ def _result(result: Formula) -> str:
 def _discarded(discarded: Sequence[str]) -> list[str]:
     if not discarded:
         return []
-    items = [f"\\item {escape_latex(d)}" for d in discarded]
+    items = [f"\\item {escape_latex(pretty_unit(d))}" for d in discarded]
     return ["Discarded roots:", r"\begin{itemize}", *items, r"\end{itemize}"]
 
 

@@ -25,7 +25,7 @@ from dynsolve.results import (
 )
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
-_LEADING_MARKER = re.compile(r"^(\d+)([.)])|^([-+=])")
+_LEADING_MARKER = re.compile(r"^(\d+)([.)])(?=\s|$)|^([-+])(?=\s|$)")
 _SPACE = re.compile(r"\s+")
 
 
@@ -37,8 +37,8 @@ def escape_markdown(text: str) -> str:
 
     >>> print(escape_markdown("ΣF_y = m a_y | *note* $5"))
     ΣF\\_y = m a\\_y \\| \\*note\\* \\$5
-    >>> print(escape_markdown("- 3 rad/s\\n1. x"))
-    \\- 3 rad/s 1. x
+    >>> print(escape_markdown("- 3 rad/s\\n1. x"), escape_markdown("-0.5 N"))
+    \\- 3 rad/s 1. x -0.5 N
     """
     text = _SPACE.sub(" ", text).strip()
     text = _SPECIAL.sub(r"\\\1", text)
@@ -175,7 +175,7 @@ def _step(step: Step) -> str:
     blocks = [f"{lead} ({escape_markdown(step.method)}):"]
     blocks += [_display(_result(r)) for r in step.results]
     if step.discarded:
-        items = "\n".join(f"- {escape_markdown(d)}" for d in step.discarded)
+        items = "\n".join(f"- {escape_markdown(pretty_unit(d))}" for d in step.discarded)
         blocks.append(f"Discarded roots:\n\n{items}")
     if step.note.strip():
         blocks.append(f"*{escape_markdown(step.note)}*")
