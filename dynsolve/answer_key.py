@@ -61,7 +61,9 @@ def compare(
     shown = _expected_text(answer)
     if expected_dim != dim:
         return Verdict(
-            False, shown, f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}"
+            False,
+            shown,
+            f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}",
         )
     if answer.direction:
         if answer.quantity.value < 0:
@@ -94,7 +96,9 @@ def _expected_text(answer: Answer) -> str:
     unit = answer.quantity.unit.text if answer.quantity.unit else ""
     parts = [answer.quantity.text, unit]
     if answer.tolerance:
-        parts.append(answer.tolerance.text + (answer.tolerance.unit.text if answer.tolerance.unit else ""))
+        parts.append(
+            answer.tolerance.text + (answer.tolerance.unit.text if answer.tolerance.unit else "")
+        )
     if answer.direction:
         parts.append(answer.direction)
     return " ".join(p for p in parts if p)
@@ -123,13 +127,12 @@ def _tolerance(answer: Answer, target: float, dim: Dim, system: System, file: st
     _, tolerance_dim = resolve_unit(tolerance_unit, file)
     if tolerance_dim != dim:
         raise SpecError(
-            f"tolerance unit {tolerance_unit.text} is {tolerance_dim.name}, the answer is {dim.name}",
+            f"tolerance unit {tolerance_unit.text} is {tolerance_dim.name}, "
+            f"the answer is {dim.name}",
             Position(file, tolerance_unit.line, tolerance_unit.column),
             hint="give the tolerance in the answer's unit, or as a percentage",
         )
-    value, _ = resolve_quantity(
-        _as_quantity(tolerance_value, tolerance_unit, answer), system, file
-    )
+    value, _ = resolve_quantity(_as_quantity(tolerance_value, tolerance_unit, answer), system, file)
     return float(value)
 
 

@@ -27,7 +27,7 @@ class ExitCode(enum.IntEnum):
     BAD_INPUT = 2  # the input or the command line is wrong
 
 
-class OutputFormat(str, enum.Enum):
+class OutputFormat(enum.StrEnum):
     """Formats of ``dynsolve solve``."""
 
     text = "text"
@@ -36,7 +36,7 @@ class OutputFormat(str, enum.Enum):
     latex = "latex"
 
 
-class Mode(str, enum.Enum):
+class Mode(enum.StrEnum):
     """Solve modes: exact (rationals, radicals, formulas) or numeric (floating point)."""
 
     exact = "exact"
@@ -97,7 +97,8 @@ def solve(
     """Solve one spec and show its unit-checked derivation.
 
     Shows the givens, each equation with its unit check, the solve order, the
-    answers to 3 significant figures and the checks. Exit code 0 when every check and answer passes, 1 when one fails, 2 for bad input.
+    answers to 3 significant figures and the checks. Exit code 0 when every check
+    and answer passes, 1 when one fails, 2 for bad input.
     """
     from dynsolve.errors import DynsolveError
     from dynsolve.pipeline import solve_file

@@ -7,7 +7,8 @@ line, the two sides or terms, their dimensions and a likely cause.
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec("equations:\\n  F = m*a", "f.dyn")
->>> report = check_dimensions(spec.equations, {"m": Dim.of("mass"), "a": Dim.of("acceleration")}, "f.dyn")
+>>> known = {"m": Dim.of("mass"), "a": Dim.of("acceleration")}
+>>> report = check_dimensions(spec.equations, known, "f.dyn")
 >>> report.dims["F"].name
 'force'
 """
@@ -197,7 +198,9 @@ class _Collector:
     def dimensionless(self, expr: Expr, context: str) -> None:
         assert self.statement is not None
         self.constraints.append(
-            _Constraint("argument", expr, None, self.mono(expr), _Mono(Dim()), self.statement, context)
+            _Constraint(
+                "argument", expr, None, self.mono(expr), _Mono(Dim()), self.statement, context
+            )
         )
 
 

@@ -141,8 +141,7 @@ def _givens(spec: Spec) -> list[GivenInfo]:
             dim = resolve_dimension(given.dimension, spec.file)
             out.append(GivenInfo(given.name, symbol, None, dim, given))
     if not any(g.name == "g" for g in out):
-        number, unit = GRAVITY[spec.system]
-        value = sympy.Rational(number)
+        value = sympy.Rational(GRAVITY[spec.system][0])
         out.append(GivenInfo("g", sympy.Symbol("g", positive=True), value, Dim(1, 0, -2), None))
     return out
 
@@ -201,7 +200,9 @@ def _target(
         unit = "deg"
     else:
         unit = natural_unit(dim, spec.system, item.name)
-    return Target(item.name, symbols[item.name], dim, unit, item.unit is not None, item.name in given)
+    return Target(
+        item.name, symbols[item.name], dim, unit, item.unit is not None, item.name in given
+    )
 
 
 def _article(text: str) -> str:

@@ -71,4 +71,3 @@ def relation(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> sympy.Basic:
     w >= 0
     """
     return _RELATIONS[op](lhs, rhs)
-

@@ -2,7 +2,8 @@
 
 >>> import pathlib, tempfile
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "w.dyn"
->>> _ = path.write_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\nanswers:\\n  W = 19.6 N\\n")
+>>> text = "given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\nanswers:\\n  W = 19.6 N\\n"
+>>> _ = path.write_text(text)
 >>> solution = solve_file(path)
 >>> solution.answers[0].shown, solution.passed
 ('19.6 N', True)
@@ -131,8 +132,9 @@ class _View:
             return GivenRow(info.name, written, "—", given.description, True,
                             latex_name(info.name), "\\text{symbolic}")  # fmt: skip
         if given is None:
-            written, description = f"{sig(float(info.value))} {pretty_unit(self._g_unit())}", (
-                f"standard gravity ({self.system} default)"
+            written, description = (
+                f"{sig(float(info.value))} {pretty_unit(self._g_unit())}",
+                (f"standard gravity ({self.system} default)"),
             )
             unit_text = self._g_unit()
             number_text = sig(float(info.value))
@@ -259,7 +261,7 @@ class _View:
         outcome = self.outcome
         equations = self.problem.system.equations
         n = len(self.problem.dims.checks)
-        detail = f"all {n} equations and constraints are homogeneous"
+        detail = f"every equation and constraint is homogeneous ({n} checked)"
         if self.problem.dims.free:
             names = ", ".join(pretty(name) for name in self.problem.dims.free)
             detail += f"; the dimension of {names} is left open by the equations (not asked for)"
@@ -272,20 +274,21 @@ class _View:
                 Check(
                     "substitution",
                     worst.relative <= RESIDUAL_LIMIT,
-                    f"every answer substituted back into {len(evaluated)} equation(s); largest "
+                    "every answer substituted back into "
+                    f"{_count(len(evaluated), 'equation')}; largest "
                     f"relative residual {worst.relative:.1e} ({equations[worst.equation].label})",
                 )
             )
         unevaluated = len(outcome.residuals) - len(evaluated)
         if unevaluated and outcome.status == "solved":
             checks.append(Check("substitution (symbolic)", True,
-                                f"{unevaluated} equation(s) hold identically"))  # fmt: skip
+                                f"{_count(unevaluated, 'equation')} hold identically"))  # fmt: skip
         for constraint in self.problem.system.constraints:
             checks.append(self._constraint_check(constraint))
         if outcome.ambiguous:
             names = ", ".join(pretty(s.name) for s in outcome.ambiguous)
-            checks.append(Check("root choice", False,
-                                f"several roots remain for {names}: declare a constraint"))  # fmt: skip
+            detail = f"several roots remain for {names}: declare a constraint"
+            checks.append(Check("root choice", False, detail))
         return tuple(checks)
 
     def _structure_check(self) -> Check:
@@ -294,7 +297,7 @@ class _View:
         if outcome.status == "underdetermined":
             names = ", ".join(pretty(s.name) for s in outcome.undetermined)
             detail = (
-                f"cannot determine {names}: {outcome.missing_equations} equation(s) missing"
+                f"cannot determine {names}: {_count(outcome.missing_equations, 'equation')} missing"
                 + self._typo_hint()
             )
             return Check("structure", False, detail)
@@ -305,9 +308,12 @@ class _View:
             return Check("structure", False, "no root satisfies the constraints")
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
-        detail = f"{len(self.problem.system.unknowns)} unknowns from {len(lines)} equations"
+        unknowns = len(self.problem.system.unknowns)
+        detail = f"{_count(unknowns, 'unknown')} from {_count(len(lines), 'equation')}"
         if outcome.redundant:
-            detail += "; redundant and consistent: " + ", ".join(lines[i] for i in outcome.redundant)
+            detail += "; redundant and consistent: " + ", ".join(
+                lines[i] for i in outcome.redundant
+            )
         return Check("structure", True, detail)
 
     def _typo_hint(self) -> str:
@@ -334,9 +340,13 @@ class _View:
         return Check(name, verdict, ("holds" if verdict else "violated by the solution") + how)
 
 
+def _count(n: int, noun: str) -> str:
+    """``3 equations``, ``1 equation``."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
     """A readable form of a symbolic answer, simplified only when small."""
     if sympy.count_ops(expr) > 80:
         return expr
     return sympy.simplify(expr)
-

@@ -247,7 +247,9 @@ def dim_of_unit(unit: pint.Unit) -> Dim:
     extra = [d for d in dimensionality if d not in _BASE_DIMENSIONS]
     if extra:
         raise ValueError(f"dimension {extra[0]} is outside mechanics (length, mass, time)")
-    return Dim(*(Fraction(dimensionality.get(d, 0)).limit_denominator(12) for d in _BASE_DIMENSIONS))
+    return Dim(
+        *(Fraction(dimensionality.get(d, 0)).limit_denominator(12) for d in _BASE_DIMENSIONS)
+    )
 
 
 def to_base(magnitude: Fraction, unit: pint.Unit, system: System) -> sympy.Expr:
@@ -307,7 +309,7 @@ def known_unit_names() -> list[str]:
     """Names and symbols the registry knows, common engineering units first."""
     ureg = registry()
     names = list(COMMON_UNITS)
-    names += [n for n in ureg._units if n not in COMMON_UNITS]  # noqa: SLF001
+    names += [n for n in ureg._units if n not in COMMON_UNITS]
     return names
 
 

@@ -46,7 +46,9 @@ def close(a: dict[str, float], b: dict[str, float], rel: float) -> bool:
 @given(m_d=magnitudes, k_O=magnitudes, r=magnitudes, m_b=magnitudes)
 def test_same_givens_in_si_or_fps_problem_give_the_same_answers(tmp_path_factory, m_d, k_O, r, m_b):
     # Only the base system used for solving changes; the givens are the same text.
-    values = dict(m_d=f"{m_d!r} kg", k_O=f"{k_O!r} m", r=f"{r!r} m", m_b=f"{m_b!r} kg", g="9.81 m/s^2")
+    values = dict(
+        m_d=f"{m_d!r} kg", k_O=f"{k_O!r} m", r=f"{r!r} m", m_b=f"{m_b!r} kg", g="9.81 m/s^2"
+    )
     tmp = tmp_path_factory.mktemp("units")
     si = solve(tmp, "si", DRUM.format(system="SI", **values))
     fps = solve(tmp, "fps", DRUM.format(system="FPS", **values))

@@ -25,8 +25,9 @@ def test_linear_block_gives_exact_rationals_and_symbolic_formulas():
     # m*a = m*g - T and T = k*a with m = 2, g = 981/100, k = 3:
     # a = m*g/(m + k) = (981/50)/5 = 981/250, T = 3a = 2943/250.
     a, T, k = sympy.symbols("a T k")
-    solution = solve_block([m * a - (m * g - T), T - k * a], [a, T],
-                           {m: 2, g: Rational(981, 100), k: 3})
+    solution = solve_block(
+        [m * a - (m * g - T), T - k * a], [a, T], {m: 2, g: Rational(981, 100), k: 3}
+    )
     (candidate,) = solution.candidates
     assert solution.method == "linear"
     assert candidate.values == {a: Rational(981, 250), T: Rational(2943, 250)}
@@ -70,7 +71,8 @@ def test_symbolic_block_returns_every_root_with_formulas():
     assert solution.method == "symbolic"
     assert sorted(c.values[v] for c in solution.candidates) == [-10, 10]
     assert {c.formulas[v] for c in solution.candidates} == {
-        sympy.sqrt(2 * g * h), -sympy.sqrt(2 * g * h)
+        sympy.sqrt(2 * g * h),
+        -sympy.sqrt(2 * g * h),
     }
 
 
@@ -96,10 +98,10 @@ def test_tiny_time_budget_forces_numeric_with_a_note():
 
 def test_numeric_mode_finds_roots_of_a_coupled_block():
     # x**2 + y**2 = 25, x*y = 12 has the real roots (3, 4), (4, 3) and their negatives.
-    solution = solve_block([x**2 + y**2 - 25, x * y - 12], [x, y], {},
-                           SolveOptions(mode="numeric"))
-    roots = {(round(float(c.values[x]), 9), round(float(c.values[y]), 9))
-             for c in solution.candidates}
+    solution = solve_block([x**2 + y**2 - 25, x * y - 12], [x, y], {}, SolveOptions(mode="numeric"))
+    roots = {
+        (round(float(c.values[x]), 9), round(float(c.values[y]), 9)) for c in solution.candidates
+    }
     assert roots and roots <= {(3, 4), (4, 3), (-3, -4), (-4, -3)}
     assert not solution.exhaustive
 
@@ -160,23 +162,26 @@ def test_several_valid_roots_are_ambiguous():
 
 
 def test_complex_roots_are_discarded_as_not_real():
-    choice = choose_root(candidates(2 * sympy.I, -2 * sympy.I, 2, unknown=x), [x],
-                         [x**3 - 2 * x**2 + 4 * x - 8], {})
+    choice = choose_root(
+        candidates(2 * sympy.I, -2 * sympy.I, 2, unknown=x), [x], [x**3 - 2 * x**2 + 4 * x - 8], {}
+    )
     assert choice.values == {x: 2}
     assert [d.reason for d in choice.discarded] == ["not real", "not real"]
 
 
 def test_no_root_survives():
-    choice = choose_root(candidates(-1, unknown=x), [x], [x + 1], {},
-                         [Constraint(x > 0, "x > 0", 3)])
+    choice = choose_root(
+        candidates(-1, unknown=x), [x], [x + 1], {}, [Constraint(x > 0, "x > 0", 3)]
+    )
     assert choice.values == {}
 
 
 def test_undecidable_symbolic_constraint_keeps_the_root():
     # sqrt(g) - h may have either sign for positive g, h: sympy cannot decide x > 0.
     value = sympy.sqrt(g) - h
-    choice = choose_root(candidates(value, unknown=x), [x], [x - value], {},
-                         [Constraint(x > 0, "x > 0", 3)])
+    choice = choose_root(
+        candidates(value, unknown=x), [x], [x - value], {}, [Constraint(x > 0, "x > 0", 3)]
+    )
     assert choice.values == {x: value}
 
 
@@ -207,8 +212,9 @@ def test_relative_residual_is_judged_against_the_terms():
     # the relative residual compares that with the 19.62 N terms, not with 0.
     T = sympy.Symbol("T")
     root = sympy.Float(19.62, 15) + sympy.Float(1e-14, 15)
-    residual = equation_residual(0, Equation(T - m * g, 0, "ΣF"), {T: root, m: 2,
-                                                                 g: Rational(981, 100)})
+    residual = equation_residual(
+        0, Equation(T - m * g, 0, "ΣF"), {T: root, m: 2, g: Rational(981, 100)}
+    )
     assert residual.evaluated
     assert residual.relative < 1e-12
 
@@ -227,8 +233,9 @@ def test_residual_with_unsolved_unknown_is_not_evaluated():
 
 
 def test_symbolic_residual_is_spot_checked():
-    residual = equation_residual(0, Equation(m * v**2 / 2, m * g * h, "E"),
-                                 {v: sympy.sqrt(2 * g * h)})
+    residual = equation_residual(
+        0, Equation(m * v**2 / 2, m * g * h, "E"), {v: sympy.sqrt(2 * g * h)}
+    )
     assert not residual.evaluated
     assert residual.relative < 1e-20
 

@@ -40,9 +40,7 @@ def test_coupled_equations_form_one_block():
 def test_underdetermined_part_names_free_unknowns_and_missing_count():
     # x = 1 is fine; y + z = x leaves y and z with one equation for two unknowns;
     # w appears nowhere.
-    structure = analyse_structure(
-        system_of((x, 1), (y + z, x), unknowns=(x, y, z, w))
-    )
+    structure = analyse_structure(system_of((x, 1), (y + z, x), unknowns=(x, y, z, w)))
     assert structure.undetermined == (y, z, w)
     assert structure.underdetermined_equations == (1,)
     assert structure.missing_equations == 2

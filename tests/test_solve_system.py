@@ -159,8 +159,9 @@ def test_wanted_ignores_an_unneeded_underdetermined_part():
 
 def test_constraint_selects_the_root():
     # v² = 9 -> v = ±3; the declared v >= 0 keeps 3.
-    system = EquationSystem(equations((v**2, 9)), (v,),
-                            constraints=(Constraint(v >= 0, "v >= 0", 7),))
+    system = EquationSystem(
+        equations((v**2, 9)), (v,), constraints=(Constraint(v >= 0, "v >= 0", 7),)
+    )
     outcome = solve_system(system)
     assert outcome.values == {v: 3}
     assert outcome.blocks[0].discarded[0].reason == "violates v >= 0 (line 7)"
@@ -216,8 +217,10 @@ def spinning_rod(options: SolveOptions | None = None) -> tuple[sympy.Expr, objec
         equations((omega**2 * sympy.sin(th) * sympy.cos(th), 3 * g / (2 * length) * sympy.sin(th))),
         unknowns=(th,),
         knowns={omega: 10, length: 1, g: Rational(981, 100)},
-        constraints=(Constraint(th > 0, "theta > 0", 4),
-                     Constraint(th < sympy.pi / 2, "theta < pi/2", 5)),
+        constraints=(
+            Constraint(th > 0, "theta > 0", 4),
+            Constraint(th < sympy.pi / 2, "theta < pi/2", 5),
+        ),
     )
     return th, solve_system(system, options or SolveOptions())
 
@@ -244,16 +247,18 @@ def test_trig_block_in_numeric_mode():
 
 def test_transcendental_equation_in_numeric_mode():
     # x = cos x: the Dottie number 0.7390851332151607.
-    outcome = solve_system(EquationSystem(equations((x, sympy.cos(x))), (x,)),
-                           SolveOptions(mode="numeric"))
+    outcome = solve_system(
+        EquationSystem(equations((x, sympy.cos(x))), (x,)), SolveOptions(mode="numeric")
+    )
     assert outcome.blocks[0].method == "numeric"
     assert float(outcome.values[x]) == pytest.approx(0.7390851332151607, rel=1e-12)
     assert outcome.max_residual < 1e-12
 
 
 def test_tiny_time_budget_falls_back_to_numeric_with_a_note():
-    outcome = solve_system(EquationSystem(equations((x, sympy.cos(x))), (x,)),
-                           SolveOptions(time_budget=1e-6))
+    outcome = solve_system(
+        EquationSystem(equations((x, sympy.cos(x))), (x,)), SolveOptions(time_budget=1e-6)
+    )
     block = outcome.blocks[0]
     assert block.method == "numeric"
     assert "budget" in block.note and "numerically" in block.note
@@ -267,8 +272,9 @@ def test_tiny_time_budget_falls_back_to_numeric_with_a_note():
 def test_symbolic_problem_gives_a_formula():
     # m v²/2 = m g h with v >= 0  ->  v = sqrt(2 g h).
     m, g, h = sympy.symbols("m g h", positive=True)
-    system = EquationSystem(equations((m * v**2 / 2, m * g * h)), (v,),
-                            constraints=(Constraint(v >= 0, "v >= 0", 3),))
+    system = EquationSystem(
+        equations((m * v**2 / 2, m * g * h)), (v,), constraints=(Constraint(v >= 0, "v >= 0", 3),)
+    )
     outcome = solve_system(system)
     assert outcome.status == "solved"
     assert sympy.simplify(outcome.values[v] - sympy.sqrt(2 * g * h)) == 0
@@ -293,7 +299,8 @@ def test_sign_declared_on_the_unknown_discards_a_negative_root():
 
 def test_no_root_found_numerically_is_failed():
     # exp(x) = 0 has no root at all; the numeric search must give up, not invent one.
-    outcome = solve_system(EquationSystem(equations((sympy.exp(x), 0)), (x,)),
-                           SolveOptions(mode="numeric"))
+    outcome = solve_system(
+        EquationSystem(equations((sympy.exp(x), 0)), (x,)), SolveOptions(mode="numeric")
+    )
     assert outcome.status == "failed"
     assert "found no root" in outcome.blocks[0].note

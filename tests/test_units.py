@@ -5,7 +5,15 @@ from fractions import Fraction
 import pytest
 import sympy
 
-from dynsolve.units import Dim, dim_of_unit, from_base, natural_unit, registry, suggest_unit, to_base
+from dynsolve.units import (
+    Dim,
+    dim_of_unit,
+    from_base,
+    natural_unit,
+    registry,
+    suggest_unit,
+    to_base,
+)
 
 
 def test_registry_is_built_once():

@@ -66,7 +66,9 @@ def _table(*columns: str) -> Table:
 def _givens(solution: Solution) -> Table:
     table = _table("", "as written", "in SI", "")
     for g in solution.givens:
-        table.add_row(Text(pretty(g.name), style="bold"), g.written, g.si, Text(g.description, style="dim"))
+        table.add_row(
+            Text(pretty(g.name), style="bold"), g.written, g.si, Text(g.description, style="dim")
+        )
     return table
 
 
@@ -95,7 +97,9 @@ def _step(step: Step) -> RenderableType:
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
-        rows.append(Text(f"     {pretty(result.name)}{formula} = ") + Text(result.value, style="bold"))
+        rows.append(
+            Text(f"     {pretty(result.name)}{formula} = ") + Text(result.value, style="bold")
+        )
     for discarded in step.discarded:
         rows.append(Text(f"     discarded {discarded}", style="yellow"))
     if step.note:

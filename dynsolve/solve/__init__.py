@@ -84,8 +84,11 @@ def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS
 
 
 def _solve_structural_block(
-    block: StructuralBlock, system: EquationSystem, structure: Structure,
-    options: SolveOptions, progress: _Progress,
+    block: StructuralBlock,
+    system: EquationSystem,
+    structure: Structure,
+    options: SolveOptions,
+    progress: _Progress,
 ) -> None:
     """Solve one block with everything earlier substituted, choose its root, record it."""
     residuals = [system.equations[i].residual for i in block.equations]
@@ -97,7 +100,10 @@ def _solve_structural_block(
     solution = solve_block(residuals, block.unknowns, progress.given, options)
     determined = [u for u in block.unknowns if u not in solution.free]
     choice = choose_root(
-        solution.candidates, determined, residuals, progress.given,
+        solution.candidates,
+        determined,
+        residuals,
+        progress.given,
         _constraints_for(determined, system, progress),
         _checks_for(determined, structure.surplus, system, progress),
     )
@@ -158,13 +164,16 @@ def _constraints_for(
     """Declared constraints on these unknowns whose other unknowns are already solved."""
     mine, pending = set(unknowns), set(system.unknowns) - set(progress.solved) - set(unknowns)
     return [
-        c for c in system.constraints
+        c
+        for c in system.constraints
         if c.relation.free_symbols & mine and not c.relation.free_symbols & pending
     ]
 
 
 def _checks_for(
-    unknowns: list[sympy.Symbol], surplus: tuple[int, ...], system: EquationSystem,
+    unknowns: list[sympy.Symbol],
+    surplus: tuple[int, ...],
+    system: EquationSystem,
     progress: _Progress,
 ) -> list[tuple[int, Equation]]:
     """Surplus equations on these unknowns whose other unknowns are already solved."""

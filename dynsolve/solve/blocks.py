@@ -46,7 +46,11 @@ START_FACTORS = (1, 0.5, 2, 10, -1, 0.1, -0.5, -2, 100, -10, 0.01, 1000, -100)
 NUMERIC_DIGITS = 15
 DEFAULT_OPTIONS = SolveOptions()
 _SYMPY_GAVE_UP = (
-    NotImplementedError, ValueError, TypeError, ArithmeticError, RecursionError,
+    NotImplementedError,
+    ValueError,
+    TypeError,
+    ArithmeticError,
+    RecursionError,
     BasePolynomialError,
 )
 _TIMEOUT = "symbolic solve exceeded the time budget"
@@ -194,8 +198,11 @@ def solve_block(
 
 
 def _solve_linear(
-    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...],
-    given: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions,
+    matrix: sympy.Matrix,
+    rhs: sympy.Matrix,
+    unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions,
 ) -> BlockSolution:
     """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown."""
     if options.show_formulas and len(unknowns) <= FORMULA_MAX_UNKNOWNS:
@@ -224,7 +231,9 @@ def _unique_linear_solution(
 
 
 def _solve_linear_values(
-    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...],
+    matrix: sympy.Matrix,
+    rhs: sympy.Matrix,
+    unknowns: tuple[sympy.Symbol, ...],
     options: SolveOptions,
 ) -> BlockSolution:
     """Solve the substituted linear system; report dependent or contradictory equations."""
@@ -242,8 +251,12 @@ def _solve_linear_values(
         names = ", ".join(map(str, free))
         note = f"the equations of this block are dependent: {names} not determined"
     return BlockSolution(
-        unknowns, "linear", (Candidate(_in_mode(values, options)),), note=note,
-        free=free, missing_equations=len(parameters),
+        unknowns,
+        "linear",
+        (Candidate(_in_mode(values, options)),),
+        note=note,
+        free=free,
+        missing_equations=len(parameters),
     )
 
 
@@ -275,8 +288,10 @@ def shown_formulas(
 
 
 def _solve_nonlinear(
-    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...],
-    given: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions,
+    residuals: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions,
 ) -> BlockSolution:
     """Symbolic solve within the time budget, else numeric root finding."""
     substituted = [substitute(r, given) for r in residuals]
@@ -297,8 +312,10 @@ def _solve_nonlinear(
 
 
 def _solve_symbolically(
-    residuals: list[sympy.Expr], substituted: list[sympy.Expr],
-    unknowns: tuple[sympy.Symbol, ...], given: Mapping[sympy.Symbol, sympy.Expr],
+    residuals: list[sympy.Expr],
+    substituted: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr],
     options: SolveOptions,
 ) -> tuple[BlockSolution | None, str]:
     """``sympy.solve`` within the budget: the solution, or None and why not.
@@ -328,7 +345,9 @@ def _solve_symbolically(
 
 
 def _symbolic_candidates(
-    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...], seconds: float,
+    residuals: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    seconds: float,
     given: Mapping[sympy.Symbol, sympy.Expr] | None,
 ) -> tuple[BlockSolution | None, str]:
     """``sympy.solve`` within ``seconds``; with ``given``, roots are formulas to substitute into.
@@ -341,9 +360,7 @@ def _symbolic_candidates(
     else:
         problem, targets = residuals, list(unknowns)
     try:
-        roots, timed_out = _within_budget(
-            lambda: sympy.solve(problem, targets, dict=True), seconds
-        )
+        roots, timed_out = _within_budget(lambda: sympy.solve(problem, targets, dict=True), seconds)
     except _SYMPY_GAVE_UP:
         return None, "sympy found no closed form"
     if timed_out or roots is None:
@@ -352,8 +369,9 @@ def _symbolic_candidates(
     if roots and not complete:
         missing = sum(all(u not in r for r in roots) for u in unknowns)
         note = "the equations of this block are dependent"
-        return BlockSolution(unknowns, "symbolic", (), note=note, free=unknowns,
-                             missing_equations=max(missing, 1)), ""
+        return BlockSolution(
+            unknowns, "symbolic", (), note=note, free=unknowns, missing_equations=max(missing, 1)
+        ), ""
     candidates = [_candidate(r, unknowns, given) for r in complete]
     candidates = [c for c in candidates if c is not None]
     if not candidates:
@@ -367,7 +385,8 @@ def _determines(root: Mapping[sympy.Symbol, sympy.Expr], unknowns: Sequence[symp
 
 
 def _candidate(
-    root: Mapping[sympy.Symbol, sympy.Expr], unknowns: Sequence[sympy.Symbol],
+    root: Mapping[sympy.Symbol, sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
     given: Mapping[sympy.Symbol, sympy.Expr] | None,
 ) -> Candidate | None:
     """A candidate from a sympy root: substitute ``given`` into formulas, if any."""
@@ -470,8 +489,10 @@ def _find_root(
 
 
 def _converged(
-    function: Callable[..., list[object]], size: Callable[..., list[object]],
-    jacobian: Callable[..., object], root: Sequence[mpmath.mpc | mpmath.mpf],
+    function: Callable[..., list[object]],
+    size: Callable[..., list[object]],
+    jacobian: Callable[..., object],
+    root: Sequence[mpmath.mpc | mpmath.mpf],
 ) -> bool:
     """True when ``root`` really is a root, not a point where the residuals merely fade.
 
@@ -482,8 +503,9 @@ def _converged(
     try:
         with mpmath.workdps(NUMERIC_DIGITS + 5):
             values, sizes = function(*root), size(*root)
-            if all(abs(v) == 0 or abs(v) <= 1e-10 * abs(s)
-                   for v, s in zip(values, sizes, strict=True)):
+            if all(
+                abs(v) == 0 or abs(v) <= 1e-10 * abs(s) for v, s in zip(values, sizes, strict=True)
+            ):
                 return True
             step = mpmath.lu_solve(jacobian(*root), mpmath.matrix(values))
             return all(abs(step[i]) <= 1e-9 * max(1, abs(x)) for i, x in enumerate(root))

@@ -61,7 +61,8 @@ def equation_residual(
         return Residual(index, math.nan, math.nan, evaluated=False)
     sides = [substitute(equation.lhs, substitution), substitute(equation.rhs, substitution)]
     terms = [
-        substitute(t, substitution) for side in (equation.lhs, equation.rhs)
+        substitute(t, substitution)
+        for side in (equation.lhs, equation.rhs)
         for t in sympy.Add.make_args(as_expr(side))
     ]
     letters = set().union(*(e.free_symbols for e in sides + terms))

@@ -229,8 +229,9 @@ def _needed_blocks(blocks: Sequence[StructuralBlock], wanted: set[sympy.Symbol])
     return needed
 
 
-def _prune_to_wanted(structure: Structure, system: EquationSystem,
-                     rows: Sequence[frozenset[int]]) -> Structure:
+def _prune_to_wanted(
+    structure: Structure, system: EquationSystem, rows: Sequence[frozenset[int]]
+) -> Structure:
     """Keep only what the wanted unknowns depend on; the rest becomes ``unneeded``."""
     wanted = set(system.wanted)
     needed = _needed_blocks(structure.blocks, wanted)

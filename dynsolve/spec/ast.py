@@ -106,6 +106,7 @@ class Call:
 
 Expr = Num | Name | Unary | Binary | Call
 
+
 @dataclass(frozen=True)
 class UnitFactor:
     """One unit name raised to a power inside a unit expression (``s^-2``)."""

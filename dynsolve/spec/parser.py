@@ -348,15 +348,14 @@ def _syntax_error(
     what, form = _LINE_KINDS[start]
     if isinstance(exc, lark.exceptions.UnexpectedCharacters):
         char = text[column - 1] if column - 1 < len(text) else ""
-        return SpecError(
-            f"unexpected character '{char}' in {what}", position, hint=f"write {form}"
-        )
+        return SpecError(f"unexpected character '{char}' in {what}", position, hint=f"write {form}")
     token = getattr(exc, "token", None)
     expected = sorted(getattr(exc, "expected", set()) or getattr(exc, "allowed", set()))
     words = _expected_words(expected)
     if token is None or token.type == "$END":
         return SpecError(
-            f"{what} ends too early; expected {words}", Position(file, line, offset + len(text) + 1),
+            f"{what} ends too early; expected {words}",
+            Position(file, line, offset + len(text) + 1),
             hint=f"write {form}",
         )
     return SpecError(
@@ -445,8 +444,10 @@ class _Builder(Transformer_NonRecursive):
         function = str(token)
         if function not in FUNCTIONS:
             close = difflib.get_close_matches(function, FUNCTIONS, n=1)
-            hint = f"did you mean '{close[0]}'?" if close else "known functions: " + ", ".join(
-                FUNCTIONS
+            hint = (
+                f"did you mean '{close[0]}'?"
+                if close
+                else "known functions: " + ", ".join(FUNCTIONS)
             )
             if not close:
                 hint += f"; for a product write {function}*(...)"
@@ -570,7 +571,13 @@ class _Builder(Transformer_NonRecursive):
         tolerance = next((r for r in rest if isinstance(r, Tolerance)), None)
         direction = next((str(r) for r in rest if isinstance(r, Token)), None)
         return Answer(
-            str(token), quantity, None, tolerance, direction, self.line, self._col(token)  # type: ignore[arg-type]
+            str(token),
+            quantity,
+            None,
+            tolerance,
+            direction,
+            self.line,
+            self._col(token),  # type: ignore[arg-type]
         )
 
     def answer_formula(self, c: list[Any]) -> Answer:
