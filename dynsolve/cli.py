@@ -166,11 +166,9 @@ def _collect(paths: list[Path]) -> list[Path]:
         elif path.is_file():
             files.append(path)
         else:
-            stderr.print(f"[red]error:[/] {path}: no such file or folder")
-            raise typer.Exit(ExitCode.BAD_INPUT)
+            _fail(f"{path}: no such file or folder", "check the path")
     if not files:
-        stderr.print("[red]error:[/] no .dyn files found (hint: pass spec files or folders)")
-        raise typer.Exit(ExitCode.BAD_INPUT)
+        _fail("no .dyn files found", "pass spec files or folders that hold them")
     return files
 
 
@@ -201,28 +199,40 @@ def _emit(solution: Solution, format: OutputFormat, output: Path | None) -> None
 
 def _refuse_overwriting_input(spec: Path, output: Path) -> None:
     same = output.exists() and spec.exists() and output.resolve() == spec.resolve()
-    if same or output.suffix == ".dyn":
-        stderr.print(
-            f"[red]error:[/] refusing to write output to {output}: it is a spec file "
-            "(hint: choose another -o path)"
-        )
-        raise typer.Exit(ExitCode.BAD_INPUT)
+    if same or output.suffix.lower() == ".dyn":
+        _fail(f"refusing to write output to {output}: it is a spec file", "choose another -o path")
+    if output.is_dir():
+        _fail(f"cannot write {output}: it is a folder", "give a file name, e.g. -o out.tex")
+
+
+def _fail(message: str, hint: str) -> None:
+    stderr.out(f"error: {message} (hint: {hint})", highlight=False)
+    raise typer.Exit(ExitCode.BAD_INPUT)
 
 
 def _write_atomically(path: Path, text: str) -> None:
     """Write via a temporary file and rename, so a failure never leaves half a file."""
     directory = path.resolve().parent
     if not directory.is_dir():
-        stderr.print(f"[red]error:[/] cannot write {path}: folder {directory} does not exist")
-        raise typer.Exit(ExitCode.BAD_INPUT)
+        _fail(f"cannot write {path}: folder {directory} does not exist", "create it first")
     handle, temporary = tempfile.mkstemp(dir=directory, prefix=f".{path.name}.", suffix=".tmp")
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as stream:
             stream.write(text)
+        os.chmod(temporary, _file_mode(path))
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
+
+
+def _file_mode(path: Path) -> int:
+    """The mode an ordinary new file gets (or the existing file's), not mkstemp's 0600."""
+    if path.exists():
+        return path.stat().st_mode & 0o777
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
 
 
 def _report(error: Exception) -> None:

@@ -93,13 +93,17 @@ def check_dimensions(
     the report's ``free``.
     """
     dims: dict[str, Dim] = dict(known)
-    for name, dim in (requested or {}).items():
-        dims.setdefault(name, dim)
     collector = _Collector(dims)
     constraints: list[_Constraint] = []
     for statement in statements:
         constraints.extend(collector.equation(statement))
     _infer(constraints, dims)
+    # requested units fill in only what the equations leave open; a requested unit
+    # that contradicts the equations is reported at the find line by the caller
+    for name, dim in (requested or {}).items():
+        if name not in dims:
+            dims[name] = dim
+            _infer(constraints, dims)
     names = {n for s in statements for n in _names(s)}
     free = _fix_free_dimensions(constraints, dims, names, set(requested or ()) | set(wanted))
     if free.asked:
@@ -108,7 +112,7 @@ def check_dimensions(
         raise DimensionError(
             f"cannot infer the dimension of {shown} from the equations",
             Position(file, first.line, first.column),
-            hint=f"give it an output unit in find, e.g. '{free.asked[0]} [N]'",
+            hint=f"give it an output unit in find: '{free.asked[0]} [unit]'",
         )
     errors = [_describe(c, dims, file, system) for c in constraints if not _holds(c, dims)]
     if errors:
@@ -327,7 +331,9 @@ def _describe(c: _Constraint, dims: Mapping[str, Dim], file: str, system: System
         )
         where = Position(file, c.right.line, c.right.column) if c.right else where
     else:
-        what = "angle or a pure number" if c.context in _DIMENSIONLESS_ARGUMENT else "pure number"
+        what = (
+            "an angle or a pure number" if c.context in _DIMENSIONLESS_ARGUMENT else "a pure number"
+        )
         if c.context == "atan2":
             message = (
                 f"line {statement.line}: atan2 needs both arguments of one dimension, "
@@ -335,7 +341,7 @@ def _describe(c: _Constraint, dims: Mapping[str, Dim], file: str, system: System
             )
         else:
             message = (
-                f"line {statement.line}: the {_context(c.context)} must be an {what}, "
+                f"line {statement.line}: the {_context(c.context)} must be {what}, "
                 f"but '{c.left}' is {_article(_shown(left, system))}"
             )
             hint = "divide by a reference quantity, or check the units of the givens"

@@ -140,6 +140,14 @@ def _givens(spec: Spec) -> list[GivenInfo]:
             assert given.dimension is not None
             dim = resolve_dimension(given.dimension, spec.file)
             out.append(GivenInfo(given.name, symbol, None, dim, given))
+    for info in out:
+        if info.name == "g" and info.dim != Dim(1, 0, -2):
+            assert info.given is not None
+            raise DimensionError(
+                f"g is the gravitational acceleration, but it is given as {info.dim.name}",
+                Position(spec.file, info.given.line, info.given.column),
+                hint="give it a unit, e.g. 'g = 9.81 m/s^2' or 'g = 32.2 ft/s^2'",
+            )
     if not any(g.name == "g" for g in out):
         value = sympy.Rational(GRAVITY[spec.system][0])
         out.append(GivenInfo("g", sympy.Symbol("g", positive=True), value, Dim(1, 0, -2), None))

@@ -182,6 +182,11 @@ class _View:
         results = []
         for symbol in block.unknowns:
             formula = block.formulas.get(symbol)
+            if symbol not in block.values:
+                results.append(
+                    Formula(symbol.name, "", "", "no valid root", "\\text{no valid root}")
+                )
+                continue
             value_text, value_latex, _ = self.shown(symbol.name, block.values[symbol])
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
@@ -281,8 +286,9 @@ class _View:
             )
         unevaluated = len(outcome.residuals) - len(evaluated)
         if unevaluated and outcome.status == "solved":
-            checks.append(Check("substitution (symbolic)", True,
-                                f"{_count(unevaluated, 'equation')} hold identically"))  # fmt: skip
+            verb = "holds" if unevaluated == 1 else "hold"
+            detail = f"{_count(unevaluated, 'equation')} {verb} identically"
+            checks.append(Check("substitution (symbolic)", True, detail))
         for constraint in self.problem.system.constraints:
             checks.append(self._constraint_check(constraint))
         if outcome.ambiguous:

@@ -26,12 +26,17 @@ def resolve_unit(unit: UnitExpr, file: str) -> tuple[pint.Unit, Dim]:
     result = ureg.dimensionless
     for factor in unit.factors:
         where = Position(file, factor.line, factor.column)
+        if factor.name in NAMED_DIMENSIONS:
+            raise UnitError(
+                f"'{factor.name}' is a dimension, not a unit",
+                where,
+                hint=f"write a unit such as {_example_unit(factor.name)}, "
+                f"or 'name: {factor.name}' for a symbolic given",
+            )
         try:
             named = ureg.Unit(factor.name)
         except Exception:  # pint raises several types for unknown names
             hint = suggest_unit(factor.name)
-            if factor.name in NAMED_DIMENSIONS:
-                hint = f"'{factor.name}' is a dimension: write it as 'name: {factor.name}'"
             raise UnitError(f"unknown unit '{factor.name}'", where, hint or "see docs") from None
         result = result * named ** float(factor.exponent)
     try:
@@ -40,6 +45,12 @@ def resolve_unit(unit: UnitExpr, file: str) -> tuple[pint.Unit, Dim]:
         where = Position(file, unit.line, unit.column)
         raise UnitError(str(exc), where, hint="dynsolve handles mechanical units") from None
     return result, dim
+
+
+def _example_unit(dimension: str) -> str:
+    from dynsolve.units import natural_unit
+
+    return f"'{natural_unit(NAMED_DIMENSIONS[dimension], 'SI') or 'rad'}'"
 
 
 def resolve_dimension(unit: UnitExpr, file: str) -> Dim:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import difflib
 import functools
+import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from fractions import Fraction
@@ -49,12 +50,15 @@ from dynsolve.spec.ast import (
 )
 
 MAX_FILE_BYTES = 256 * 1024
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")  # only these end a line (not \f, \v, \u2028 …)
+_SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " ", "\u2007": " "})
 MAX_LINES = 5000
 MAX_LINE_LENGTH = 1000
 MAX_DEPTH = 40
 MAX_DIGITS = 40
 MAX_LITERAL_EXPONENT = 100
 MAX_POWER = 64
+MAX_UNIT_EXPONENT = 12
 MAX_STATEMENTS = 1000
 
 SECTIONS = ("problem", "source", "units", "given", "equations", "find", "answers")
@@ -88,6 +92,7 @@ _EXPECTED_WORDS = {
     "SLASH": "'/'",
     "UMUL": "'*'",
     "PERCENT": "'%'",
+    "$END": "the end of the line",
 }
 
 
@@ -122,7 +127,8 @@ def parse_file(path: str | Path) -> Spec:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         line = raw[: exc.start].count(b"\n") + 1
-        column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
+        line_start = raw.rfind(b"\n", 0, exc.start) + 1
+        column = len(raw[line_start : exc.start].decode("utf-8", errors="replace")) + 1
         raise SpecError(
             "the file is not valid UTF-8 text",
             Position(shown, line, column),
@@ -151,15 +157,21 @@ def parse_spec(text: str, file: str = "<spec>") -> Spec:
         raise SpecError(
             f"the spec exceeds {MAX_FILE_BYTES} bytes", Position(file, 1, 1), hint="split it"
         )
-    lines = text.splitlines()
+    lines = _LINE_BREAK.split(text)
+    if lines and lines[-1] == "":
+        lines.pop()
     if len(lines) > MAX_LINES:
-        raise SpecError(f"the spec has more than {MAX_LINES} lines", Position(file, 1, 1))
+        raise SpecError(
+            f"the spec has more than {MAX_LINES} lines",
+            Position(file, MAX_LINES + 1, 1),
+            hint="split the problem into several files",
+        )
     parts = _Sections()
     seen: dict[str, int] = {}
     current: str | None = None
     statements = 0
     for number, raw in enumerate(lines, start=1):
-        content, comment = _split_comment(raw)
+        content, comment = _split_comment(raw.translate(_SPACES))
         if not content.strip():
             continue
         if len(raw) > MAX_LINE_LENGTH:
@@ -182,7 +194,9 @@ def parse_spec(text: str, file: str = "<spec>") -> Spec:
         statements += 1
         if statements > MAX_STATEMENTS:
             raise SpecError(
-                f"more than {MAX_STATEMENTS} statements", Position(file, number, indent + 1)
+                f"more than {MAX_STATEMENTS} statements",
+                Position(file, number, indent + 1),
+                hint="split the problem into several files",
             )
         _body_line(current, content.strip(), comment, file, number, indent, parts)
     return _finish(parts, file)
@@ -312,21 +326,29 @@ def _parse(text: str, start: str, file: str, line: int, offset: int) -> Any:
         raise
 
 
+_OPERATIONS = frozenset(("add", "sub", "mul", "div", "pow", "neg", "pos", "call"))
+
+
 def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
-    stack: list[tuple[Any, int]] = [(tree, 1)]
+    """Bound the nesting of operations (each operator or call is one level)."""
+    stack: list[tuple[Any, int]] = [(tree, 0)]
     while stack:
         node, depth = stack.pop()
         if not isinstance(node, lark.Tree):
             continue
+        if node.data in _OPERATIONS:
+            depth += 1
         if depth > MAX_DEPTH:
-            token = next((t for t in node.scan_values(lambda v: isinstance(v, Token))), None)
+            token = next((c for c in node.children if isinstance(c, Token)), None)
+            token = token or next(node.scan_values(lambda v: isinstance(v, Token)), None)
             column = offset + (token.column or 1) if token else offset + 1
             raise SpecError(
-                f"expression nested more than {MAX_DEPTH} levels deep",
+                f"expression nested more than {MAX_DEPTH} levels deep "
+                "(nested operations or a very long chain)",
                 Position(file, line, column),
                 hint="split it into several equations with intermediate names",
             )
-        stack.extend((child, depth + 1) for child in node.children)
+        stack.extend((child, depth) for child in node.children)
 
 
 _LINE_KINDS = {
@@ -350,7 +372,7 @@ def _syntax_error(
         char = text[column - 1] if column - 1 < len(text) else ""
         return SpecError(f"unexpected character '{char}' in {what}", position, hint=f"write {form}")
     token = getattr(exc, "token", None)
-    expected = sorted(getattr(exc, "expected", set()) or getattr(exc, "allowed", set()))
+    expected = sorted(_acceptable(exc))
     words = _expected_words(expected)
     if token is None or token.type == "$END":
         return SpecError(
@@ -363,6 +385,18 @@ def _syntax_error(
         position,
         hint=_token_hint(str(token), token.type, expected, form),
     )
+
+
+def _acceptable(exc: lark.exceptions.UnexpectedInput) -> set[str]:
+    """The terminals that could really come next (LALR's lookahead sets are wider)."""
+    expected = set(getattr(exc, "expected", set()) or getattr(exc, "allowed", set()))
+    interactive = getattr(exc, "interactive_parser", None)
+    if interactive is not None:
+        try:
+            return set(interactive.accepts()) or expected
+        except lark.exceptions.LarkError:
+            return expected
+    return expected
 
 
 def _expected_words(expected: list[str]) -> str:
@@ -380,6 +414,8 @@ def _expected_words(expected: list[str]) -> str:
 
 
 def _token_hint(token: str, kind: str, expected: list[str], form: str) -> str:
+    if kind == "NAME" and "NUMBER" in expected and "NAME" not in expected:
+        return f"a value comes before its unit: write a number before '{token}', e.g. 'm = 60 kg'"
     operator_expected = any(e in expected for e in ("STAR", "PLUS", "MINUS", "SLASH", "REL"))
     if kind in ("NAME", "NUMBER", "LPAR") and operator_expected:
         return f"write an operator before '{token}', e.g. '*' for a product"
@@ -519,9 +555,18 @@ class _Builder(Transformer_NonRecursive):
     def unit_exponent(self, c: list[Token]) -> Fraction:
         sign = -1 if str(c[0]) == "-" else 1
         numbers = [t for t in c if t.type == "NUMBER"]
-        value = Fraction(str(numbers[0])) / (Fraction(str(numbers[1])) if len(numbers) > 1 else 1)
-        if abs(value) > 12:
-            raise SpecError(f"unit exponent {value} is out of range", self._at(numbers[0]))
+        denominator = Fraction(str(numbers[1])) if len(numbers) > 1 else Fraction(1)
+        if denominator == 0:
+            raise SpecError(
+                "unit exponent divides by zero", self._at(numbers[1]), "fix the fraction"
+            )
+        value = Fraction(str(numbers[0])) / denominator
+        if abs(value) > MAX_UNIT_EXPONENT:
+            raise SpecError(
+                f"unit exponent {value} is out of range (limit ±{MAX_UNIT_EXPONENT})",
+                self._at(numbers[0]),
+                hint="units in dynamics need small powers such as m/s^2",
+            )
         return sign * value
 
     def unit_pow(self, c: list[Any]) -> tuple[UnitFactor, ...]:
@@ -557,14 +602,24 @@ class _Builder(Transformer_NonRecursive):
     def find_line(self, c: list[Any]) -> list[FindItem]:
         return [item for item in c if isinstance(item, FindItem)]
 
+    def _tolerance_value(self, c: list[Any]) -> tuple[Fraction, str]:
+        value, text, column = c[1]
+        if value < 0:
+            raise SpecError(
+                "a tolerance cannot be negative",
+                Position(self.file, self.line, column),
+                hint=f"write '+- {text.lstrip('-')}'",
+            )
+        return value, text
+
     def rel_tolerance(self, c: list[Any]) -> Tolerance:
-        value, text, _ = c[1]
-        return Tolerance("rel", abs(value) / 100, None, f"± {text.lstrip('-')}%")
+        value, text = self._tolerance_value(c)
+        return Tolerance("rel", value / 100, None, f"± {text}%")
 
     def abs_tolerance(self, c: list[Any]) -> Tolerance:
-        value, text, _ = c[1]
+        value, text = self._tolerance_value(c)
         unit = c[2] if len(c) > 2 else None
-        return Tolerance("abs", abs(value), unit, f"± {text.lstrip('-')}")
+        return Tolerance("abs", value, unit, f"± {text}")
 
     def answer_line(self, c: list[Any]) -> Answer:
         token, quantity, *rest = c
