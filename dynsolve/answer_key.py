@@ -19,10 +19,10 @@ from dynsolve.dimensions import check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import quantity as format_quantity
-from dynsolve.quantities import resolve_quantity, resolve_unit
+from dynsolve.quantities import convert, resolve_quantity, resolve_unit
 from dynsolve.spec.ast import Answer, EquationStmt, Name, Spec
 from dynsolve.spec.parser import iter_names
-from dynsolve.units import Dim, System, from_base
+from dynsolve.units import Dim, System
 
 DEFAULT_RELATIVE = Fraction(1, 200)  # 0.5 %: three significant figures
 ZERO_ABSOLUTE = Fraction(1, 10**9)  # for an expected zero, in the answer's unit
@@ -82,7 +82,7 @@ def compare(
     target = float(expected)
     tolerance = _tolerance(answer, target, dim, spec.system, spec.file)
     error = abs(value - target)
-    got = format_quantity(from_base(value, dim, unit, spec.system), unit, 4)
+    got = format_quantity(convert(value, unit, spec.system), unit, 4)
     if error <= tolerance:
         return Verdict(True, shown, f"got {got}{_relative(error, target)}")
     hint = ""
@@ -124,7 +124,7 @@ def _tolerance(answer: Answer, target: float, dim: Dim, system: System, file: st
         tolerance_unit = tolerance.unit or answer.quantity.unit
     if tolerance_unit is None:
         return float(tolerance_value)
-    _, tolerance_dim = resolve_unit(tolerance_unit, file)
+    tolerance_dim = resolve_unit(tolerance_unit, file).dim
     if tolerance_dim != dim:
         raise SpecError(
             f"tolerance unit {tolerance_unit.text} is {tolerance_dim.name}, "

@@ -113,12 +113,12 @@ def build_problem(spec: Spec) -> Problem:
 def _requested_dimensions(spec: Spec) -> dict[str, Dim]:
     """Dimensions the user stated for unknowns: units in find, else in the answer key."""
     requested = {
-        a.name: resolve_unit(a.quantity.unit, spec.file)[1]
+        a.name: resolve_unit(a.quantity.unit, spec.file).dim
         for a in spec.answers
         if a.quantity is not None and a.quantity.unit is not None
     }
     requested.update(
-        {f.name: resolve_unit(f.unit, spec.file)[1] for f in spec.finds if f.unit is not None}
+        {f.name: resolve_unit(f.unit, spec.file).dim for f in spec.finds if f.unit is not None}
     )
     return requested
 
@@ -195,7 +195,7 @@ def _target(
     assert isinstance(item, FindItem)
     dim = report.dims[item.name]
     if item.unit is not None:
-        unit_dim = resolve_unit(item.unit, spec.file)[1]
+        unit_dim = resolve_unit(item.unit, spec.file).dim
         if unit_dim != dim:
             raise DimensionError(
                 f"find asks for {item.name} in {item.unit.text} ({unit_dim.name}), "

@@ -20,6 +20,7 @@ from dynsolve.equation_mode import GivenInfo, Problem, build_problem
 from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.names import latex_name, pretty
+from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
     Check,
@@ -36,7 +37,7 @@ from dynsolve.solve.roots import truth
 from dynsolve.spec.parser import parse_file
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import SolveOptions
-from dynsolve.units import Dim, from_base, natural_unit
+from dynsolve.units import Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
 
@@ -119,7 +120,7 @@ class _View:
         if value is None:
             return self.text(expr), self.latex(expr), None
         unit = self.unit_of(name)
-        converted = from_base(value, self.dims.get(name, Dim()), unit, self.system)
+        converted = convert(value, unit, self.system)
         latex = latex_number(converted) + (f"\\,{latex_unit(unit)}" if unit else "")
         return format_quantity(converted, unit), latex, converted
 
@@ -147,7 +148,7 @@ class _View:
         si_unit = natural_unit(info.dim, "SI", info.name)
         if info.dim.dimensionless and unit_text:
             si_unit = "rad"
-        si_value = from_base(float(info.value), info.dim, si_unit, self.system)
+        si_value = convert(float(info.value), si_unit, self.system)
         si = format_quantity(si_value, si_unit, 4, trim=True)
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
         return GivenRow(info.name, written, si, description, False, latex_name(info.name),

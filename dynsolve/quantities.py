@@ -1,29 +1,41 @@
-"""Resolve parsed units and quantities against the registry, with positioned errors.
+"""Resolve parsed units and quantities against the unit table, with positioned errors.
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> given = parse_spec("given:\\n  W = 40 lb", "w.dyn").givens[0]
 >>> resolve_quantity(given.quantity, "FPS", "w.dyn")
 (40, Dim(L=Fraction(1, 1), M=Fraction(1, 1), T=Fraction(-2, 1)))
+>>> round(convert(1.0, "N", "FPS"), 4)
+4.4482
 """
 
 from __future__ import annotations
 
+import functools
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from dynsolve.errors import Position, UnitError
 from dynsolve.spec.ast import Quantity, UnitExpr
-from dynsolve.units import NAMED_DIMENSIONS, Dim, System, dim_of_unit, registry, suggest_unit
+from dynsolve.units import (
+    NAMED_DIMENSIONS,
+    ONE,
+    Dim,
+    System,
+    UnitInfo,
+    from_base,
+    natural_unit,
+    suggest_unit,
+    to_base,
+    unit_named,
+)
 
 if TYPE_CHECKING:
-    import pint
     import sympy
 
 
-def resolve_unit(unit: UnitExpr, file: str) -> tuple[pint.Unit, Dim]:
-    """The pint unit and dimension of a unit expression; each name is looked up alone."""
-    ureg = registry()
-    result = ureg.dimensionless
+def resolve_unit(unit: UnitExpr, file: str) -> UnitInfo:
+    """The size and dimension of a unit expression; each name is looked up alone."""
+    result = ONE
     for factor in unit.factors:
         where = Position(file, factor.line, factor.column)
         if factor.name in NAMED_DIMENSIONS:
@@ -34,22 +46,18 @@ def resolve_unit(unit: UnitExpr, file: str) -> tuple[pint.Unit, Dim]:
                 f"or 'name: {factor.name}' for a symbolic given",
             )
         try:
-            named = ureg.Unit(factor.name)
-        except Exception:  # pint raises several types for unknown names
-            hint = suggest_unit(factor.name)
-            raise UnitError(f"unknown unit '{factor.name}'", where, hint or "see docs") from None
-        result = result * named ** float(factor.exponent)
-    try:
-        dim = dim_of_unit(result)
-    except ValueError as exc:
-        where = Position(file, unit.line, unit.column)
-        raise UnitError(str(exc), where, hint="dynsolve handles mechanical units") from None
-    return result, dim
+            named = unit_named(factor.name)
+        except ValueError as exc:
+            raise UnitError(str(exc), where, hint="dynsolve handles mechanical units") from None
+        if named is None:
+            raise UnitError(
+                f"unknown unit '{factor.name}'", where, suggest_unit(factor.name) or "see docs"
+            )
+        result = result * named**factor.exponent
+    return result
 
 
 def _example_unit(dimension: str) -> str:
-    from dynsolve.units import natural_unit
-
     return f"'{natural_unit(NAMED_DIMENSIONS[dimension], 'SI') or 'rad'}'"
 
 
@@ -60,7 +68,7 @@ def resolve_dimension(unit: UnitExpr, file: str) -> Dim:
         if name in NAMED_DIMENSIONS:
             return NAMED_DIMENSIONS[name]
     try:
-        return resolve_unit(unit, file)[1]
+        return resolve_unit(unit, file).dim
     except UnitError as exc:
         names = ", ".join(list(NAMED_DIMENSIONS)[:8])
         raise UnitError(
@@ -72,11 +80,24 @@ def resolve_dimension(unit: UnitExpr, file: str) -> Dim:
 
 def resolve_quantity(quantity: Quantity, system: System, file: str) -> tuple[sympy.Expr, Dim]:
     """A quantity's exact value in the system's base units, and its dimension."""
-    from dynsolve.units import to_base
-
     if quantity.unit is None:
         import sympy
 
         return sympy.Rational(quantity.value.numerator, quantity.value.denominator), Dim()
-    unit, dim = resolve_unit(quantity.unit, file)
-    return to_base(Fraction(quantity.value), unit, system), dim
+    unit = resolve_unit(quantity.unit, file)
+    return to_base(Fraction(quantity.value), unit, system), unit.dim
+
+
+@functools.cache
+def unit_info(text: str) -> UnitInfo:
+    """A unit written as text (``m/s^2``, ``lb*ft``; ``""`` is a pure number)."""
+    if not text:
+        return ONE
+    from dynsolve.spec.parser import parse_unit
+
+    return resolve_unit(parse_unit(text), "<unit>")
+
+
+def convert(value: float, unit: str, system: System) -> float:
+    """A value in the system's base units expressed in ``unit`` (angles: ``""`` is rad)."""
+    return from_base(value, unit_info(unit), system)

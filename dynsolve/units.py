@@ -1,9 +1,10 @@
 """The one pint registry, with the textbook conventions (lb is pound-force, g per system).
 
-Built once per process (and cached on disk by pint), it knows SI and US customary
-units; ``lb`` means pound-force and ``lbm`` pound-mass, as in every dynamics text.
-Dimensions are exponent vectors over length, mass and time (:class:`Dim`); angles
-are dimensionless.
+Built once per process (pint caches its parsed definitions on disk), it knows SI and
+US customary units; ``lb`` means pound-force and ``lbm`` pound-mass, as in every
+dynamics text. Each unit name looked up is also kept in a small on-disk cache, so a
+warm run does not import pint at all. Dimensions are exponent vectors over length,
+mass and time (:class:`Dim`); angles are dimensionless.
 
 >>> q = registry().Quantity(40, "lb")
 >>> round(q.to("N").magnitude, 2)
@@ -16,9 +17,13 @@ from __future__ import annotations
 
 import difflib
 import functools
+import hashlib
+import json
 import math
+import os
 from dataclasses import dataclass
 from fractions import Fraction
+from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 if TYPE_CHECKING:
@@ -223,6 +228,94 @@ def base_unit(dim: Dim, system: System) -> str:
     return "*".join(parts) or "dimensionless"
 
 
+@dataclass(frozen=True)
+class UnitInfo:
+    """A unit as its size in SI base units (m, kg, s; radian counted as 1) and dimension.
+
+    >>> (unit_named("ft") * unit_named("lb")).dim == Dim.of("moment")
+    True
+    """
+
+    factor: float
+    dim: Dim
+
+    def __mul__(self, other: UnitInfo) -> UnitInfo:
+        return UnitInfo(self.factor * other.factor, self.dim * other.dim)
+
+    def __pow__(self, power: Fraction) -> UnitInfo:
+        return UnitInfo(self.factor ** float(power), self.dim**power)
+
+
+ONE = UnitInfo(1.0, Dim())
+
+
+def unit_named(name: str) -> UnitInfo | None:
+    """One unit name (``lb``, ``rpm``, ``kN``) looked up: in this process's memory, then
+    in the on-disk cache, then in pint (whose import and registry are paid only on a
+    miss). ``None`` when pint does not know the name; ``ValueError`` for a unit
+    outside mechanics (a temperature, a current).
+
+    >>> unit_named("kip").factor == 1000 * unit_named("lb").factor
+    True
+    """
+    cache = _unit_cache()
+    if name in cache.entries:
+        return cache.entries[name]
+    info = _pint_lookup(name)
+    if info is not None:
+        cache.store(name, info)
+    return info
+
+
+def _pint_lookup(name: str) -> UnitInfo | None:
+    ureg = registry()
+    try:
+        quantity = ureg.Quantity(1.0, ureg.Unit(name)).to_base_units()
+    except Exception:  # pint raises several types (UndefinedUnitError, …) for unknown names
+        return None
+    return UnitInfo(float(quantity.magnitude), dim_of_unit(quantity.units))
+
+
+def system_factor(dim: Dim, system: System) -> float:
+    """The size, in SI base units, of the system's coherent unit of ``dim``.
+
+    >>> round(system_factor(Dim.of("force"), "FPS"), 6)
+    4.448222
+    """
+    factor = 1.0
+    for name, exp in zip(BASE_UNITS[system], (dim.L, dim.M, dim.T), strict=True):
+        if exp:
+            info = unit_named(name)
+            assert info is not None
+            factor *= info.factor ** float(exp)
+    return factor
+
+
+def to_base(magnitude: Fraction, unit: UnitInfo, system: System) -> sympy.Expr:
+    """Convert ``magnitude unit`` to the system's coherent base units, exactly.
+
+    Conversion factors are floats (from pint); they are made exact by :func:`_exact`,
+    so that exact inputs stay exact (40 lb is 40 slug·ft/s², not 39.99…), and angle
+    factors that are rational multiples of π are kept as such (30 rpm is π rad/s).
+
+    >>> to_base(Fraction(30), unit_named("rpm"), "SI")
+    pi
+    """
+    import sympy
+
+    factor = unit.factor / system_factor(unit.dim, system)
+    return sympy.Rational(magnitude.numerator, magnitude.denominator) * _exact(factor)
+
+
+def from_base(value: float, unit: UnitInfo, system: System) -> float:
+    """Convert a value in the system's base units into ``unit`` (of the same dimension).
+
+    >>> round(from_base(1.0, unit_named("N"), "FPS"), 4)
+    4.4482
+    """
+    return value * system_factor(unit.dim, system) / unit.factor
+
+
 @functools.cache
 def registry() -> pint.UnitRegistry:
     """The process-wide registry, built once; pint caches its parsed definitions on disk."""
@@ -252,37 +345,60 @@ def dim_of_unit(unit: pint.Unit) -> Dim:
     )
 
 
-def to_base(magnitude: Fraction, unit: pint.Unit, system: System) -> sympy.Expr:
-    """Convert ``magnitude unit`` to the system's coherent base units, exactly.
+class _UnitCache:
+    """Unit lookups kept on disk between runs, so a warm run need not import pint.
 
-    Conversion factors come from pint as floats; they are rounded to 15 significant
-    figures so that exact inputs stay exact (40 lb is 40 slug·ft/s², not 39.99…), and
-    angle factors that are rational multiples of π are kept as such (30 rpm is π rad/s).
-
-    >>> to_base(Fraction(30), registry().Unit("rpm"), "SI")
-    pi
+    The file holds plain JSON (name → factor and dimension exponents), keyed by the
+    pint version and dynsolve's own definitions; a missing, unreadable or corrupt file
+    is simply rebuilt, and an unwritable folder only costs speed.
     """
-    import sympy
 
-    ureg = registry()
-    target = base_unit(dim_of_unit(unit), system)
-    if target == "dimensionless":
-        target = "radian"  # angles go to radians; pure numbers are unchanged by this
-    factor = ureg.Quantity(1.0, unit).to(target).magnitude
-    return sympy.Rational(magnitude) * _exact(factor)
+    def __init__(self, path: Path | None) -> None:
+        self.path = path
+        self.entries: dict[str, UnitInfo] = {}
+        if path is not None:
+            self.entries = _read_cache(path)
+
+    def store(self, name: str, info: UnitInfo) -> None:
+        self.entries[name] = info
+        if self.path is None:
+            return
+        data = {
+            n: [i.factor, str(i.dim.L), str(i.dim.M), str(i.dim.T)] for n, i in self.entries.items()
+        }
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            temporary = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
+            temporary.write_text(json.dumps(data), encoding="utf-8")
+            os.replace(temporary, self.path)
+        except OSError:
+            self.path = None  # read-only cache folder: keep working without it
 
 
-def from_base(value: float, dim: Dim, unit: str, system: System) -> float:
-    """Convert a value in the system's base units to ``unit``.
+def _read_cache(path: Path) -> dict[str, UnitInfo]:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        return {
+            str(name): UnitInfo(float(factor), Dim(Fraction(L), Fraction(M), Fraction(T)))
+            for name, (factor, L, M, T) in data.items()
+        }
+    except (OSError, ValueError, TypeError, AttributeError):
+        return {}
 
-    >>> round(from_base(1.0, Dim(1, 1, -2), "N", "FPS"), 4)
-    4.4482
-    """
-    ureg = registry()
-    source = base_unit(dim, system)
-    if source == "dimensionless":
-        source = "radian"
-    return float(ureg.Quantity(value, source).to(unit or "radian").magnitude)
+
+@functools.cache
+def _unit_cache() -> _UnitCache:
+    folder = os.environ.get("DYNSOLVE_CACHE_DIR")
+    if folder == "":
+        return _UnitCache(None)  # DYNSOLVE_CACHE_DIR= (empty) turns the cache off
+    if folder is None:
+        import platformdirs
+
+        folder = platformdirs.user_cache_dir("dynsolve")
+    from importlib.metadata import version
+
+    key = hashlib.sha256("\n".join(_EXTRA_DEFINITIONS).encode()).hexdigest()[:12]
+    return _UnitCache(Path(folder) / f"units-v1-pint{version('pint')}-{key}.json")
 
 
 def _exact(factor: float) -> sympy.Expr:

@@ -5,14 +5,16 @@ from fractions import Fraction
 import pytest
 import sympy
 
+from dynsolve.quantities import convert, unit_info
 from dynsolve.units import (
     Dim,
+    _UnitCache,
     dim_of_unit,
-    from_base,
     natural_unit,
     registry,
     suggest_unit,
     to_base,
+    unit_named,
 )
 
 
@@ -31,22 +33,22 @@ def test_lb_is_pound_force_and_lbm_pound_mass():
 
 def test_a_40_lb_weight_is_1_242_slug():
     # m = W/g = 40 lb / 32.2 ft/s^2 = 1.2422 slug (textbook convention g = 32.2 ft/s^2).
-    weight = to_base(Fraction(40), registry().Unit("lb"), "FPS")
+    weight = to_base(Fraction(40), unit_info("lb"), "FPS")
     assert weight == 40  # exact: lb is the FPS force unit slug*ft/s^2
     assert float(weight / sympy.Rational("32.2")) == pytest.approx(1.242, abs=5e-4)
 
 
 def test_15_ft_lb_is_20_34_joule():
     # 15 ft*lb = 15 * 0.3048 m * 4.4482216152605 N = 20.337 J.
-    value = to_base(Fraction(15), registry().Unit("ft*lb"), "SI")
+    value = to_base(Fraction(15), unit_info("ft*lb"), "SI")
     assert float(value) == pytest.approx(20.34, abs=5e-3)
-    assert float(to_base(Fraction(15), registry().Unit("lb*ft"), "SI")) == float(value)
+    assert float(to_base(Fraction(15), unit_info("lb*ft"), "SI")) == float(value)
 
 
 def test_30_rpm_is_pi_rad_per_s_exactly():
     # 30 rev/min = 30 * 2*pi / 60 rad/s = pi rad/s.
-    assert to_base(Fraction(30), registry().Unit("rpm"), "SI") == sympy.pi
-    assert to_base(Fraction(30), registry().Unit("rev/min"), "FPS") == sympy.pi
+    assert to_base(Fraction(30), unit_info("rpm"), "SI") == sympy.pi
+    assert to_base(Fraction(30), unit_info("rev/min"), "FPS") == sympy.pi
 
 
 @pytest.mark.parametrize(
@@ -64,14 +66,14 @@ def test_30_rpm_is_pi_rad_per_s_exactly():
     ],
 )
 def test_exact_conversions(value, unit, system, expected):
-    assert sympy.nsimplify(to_base(Fraction(value), registry().Unit(unit), system) - expected) == 0
+    assert sympy.nsimplify(to_base(Fraction(value), unit_info(unit), system) - expected) == 0
 
 
 def test_mixed_systems_convert_both_ways():
     # 1 slug = 14.5939 kg; a slug in SI base units and back.
-    kg = float(to_base(Fraction(1), registry().Unit("slug"), "SI"))
+    kg = float(to_base(Fraction(1), unit_info("slug"), "SI"))
     assert kg == pytest.approx(14.5939029, rel=1e-8)
-    assert from_base(kg, Dim.of("mass"), "slug", "SI") == pytest.approx(1.0, rel=1e-12)
+    assert convert(kg, "slug", "SI") == pytest.approx(1.0, rel=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -99,3 +101,30 @@ def test_unknown_unit_suggestion():
     assert suggest_unit("kgs") == "did you mean 'kg'?"
     assert suggest_unit("slugs") == "did you mean 'slug'?"
     assert suggest_unit("qqqqqq") == ""
+
+
+def test_unit_lookups_agree_with_pint_and_survive_a_cache_round_trip(tmp_path):
+    # The on-disk lookup cache must give exactly what pint gives.
+    cache_file = tmp_path / "units.json"
+    cache = _UnitCache(cache_file)
+    for name in ("lb", "slug", "rpm", "deg", "kip", "ft", "N", "mi"):
+        info = unit_named(name)
+        assert info is not None
+        quantity = registry().Quantity(1.0, name).to_base_units()
+        assert info.factor == pytest.approx(quantity.magnitude, rel=1e-15)
+        assert info.dim == dim_of_unit(quantity.units)
+        cache.store(name, info)
+    reread = _UnitCache(cache_file)
+    assert reread.entries == cache.entries
+
+
+def test_a_corrupt_cache_file_is_ignored(tmp_path):
+    cache_file = tmp_path / "units.json"
+    cache_file.write_text("{not json")
+    assert _UnitCache(cache_file).entries == {}
+    cache_file.write_text('{"lb": [1, "x", 0, 0]}')
+    assert _UnitCache(cache_file).entries == {}
+
+
+def test_an_unknown_unit_is_none():
+    assert unit_named("kgs") is None

@@ -103,7 +103,14 @@ def _lark() -> lark.Lark:
         grammar,
         parser="lalr",
         lexer="contextual",
-        start=["given_line", "equation_line", "find_line", "answer_line", "answer_formula"],
+        start=[
+            "given_line",
+            "equation_line",
+            "find_line",
+            "answer_line",
+            "answer_formula",
+            "unit_line",
+        ],
         cache=True,
     )
 
@@ -329,6 +336,15 @@ def _parse(text: str, start: str, file: str, line: int, offset: int) -> Any:
 _OPERATIONS = frozenset(("add", "sub", "mul", "div", "pow", "neg", "pos", "call"))
 
 
+def parse_unit(text: str, file: str = "<unit>") -> UnitExpr:
+    """Parse a unit expression on its own (``kg*m^2/s``), e.g. an output unit.
+
+    >>> [(f.name, int(f.exponent)) for f in parse_unit("N*m/s^2").factors]
+    [('N', 1), ('m', 1), ('s', -2)]
+    """
+    return _parse(text, "unit_line", file, 1, 0)
+
+
 def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
     """Bound the nesting of operations (each operator or call is one level)."""
     stack: list[tuple[Any, int]] = [(tree, 0)]
@@ -357,6 +373,7 @@ _LINE_KINDS = {
     "find_line": ("a find list", "names with optional units, e.g. 'alpha, T [N]'"),
     "answer_line": ("an answer", "'name = value unit', e.g. 'T = 106 N +- 0.5%'"),
     "answer_formula": ("an answer", "'name = value unit' or 'name = formula'"),
+    "unit_line": ("a unit", "a unit such as 'm/s^2' or 'N*m'"),
 }
 
 
@@ -571,6 +588,9 @@ class _Builder(Transformer_NonRecursive):
 
     def unit_pow(self, c: list[Any]) -> tuple[UnitFactor, ...]:
         return tuple(_power(f, c[2]) for f in c[0])
+
+    def unit_line(self, c: list[Any]) -> UnitExpr:
+        return c[0]
 
     def unit_expr(self, c: list[Any]) -> UnitExpr:
         (factors,) = c
