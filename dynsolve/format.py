@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 
 _POWER = re.compile(r"\^(?:\((-?\d+/\d+)\)|(-?\d+))")
 _SUPERSCRIPT = str.maketrans("0123456789-/()", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻ᐟ⁽⁾")
@@ -71,3 +72,30 @@ def latex_number(value: float, figures: int = 3) -> str:
         mantissa, exponent = text.split("e")
         return f"{mantissa}\\times 10^{{{exponent}}}"
     return text
+
+
+def lines_phrase(lines: Sequence[int], dash: str = "–") -> str:
+    """How a derivation step names its equations.
+
+    >>> lines_phrase([10]), lines_phrase([11, 12, 13]), lines_phrase([4, 9], "--")
+    ('Equation (line 10) gives', 'Equations (lines 11–13) give', 'Equations (lines 4, 9) give')
+    """
+    if not lines:
+        return "The solver gives"
+    if len(lines) == 1:
+        return f"Equation (line {lines[0]}) gives"
+    ordered = sorted(lines)
+    if ordered == list(range(ordered[0], ordered[-1] + 1)):
+        return f"Equations (lines {ordered[0]}{dash}{ordered[-1]}) give"
+    return f"Equations (lines {', '.join(str(n) for n in lines)}) give"
+
+
+def and_list(items: Sequence[str]) -> str:
+    """``a, b and c``.
+
+    >>> and_list(["T", "α", "a"])
+    'T, α and a'
+    """
+    if len(items) <= 1:
+        return "".join(items)
+    return ", ".join(items[:-1]) + " and " + items[-1]

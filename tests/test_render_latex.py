@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from specs import DRUM
 
 from dynsolve.pipeline import solve_file
 from dynsolve.render import latex
@@ -30,26 +31,8 @@ from dynsolve.results import (
 REPO = Path(__file__).resolve().parents[1]
 
 SPECS = {
-    "drum": """\
-problem: Drum and hanging block
-source: Hibbeler 12e Example 17.11
-units: SI
-given:
-  m_d = 60 kg       # drum mass
-  k_O = 0.25 m      # radius of gyration about O
-  r   = 0.4 m       # drum radius
-  m_b = 20 kg       # block mass
-equations:
-  I_O = m_d*k_O^2          # radius of gyration: I_O = m k_O²
-  T*r = I_O*alpha          # ΣM_O = I_O α (drum) & 100% of the torque
-  m_b*g - T = m_b*a        # ΣF_y = m a_y (block), downward positive
-  a = alpha*r              # cord does not slip: a = α r
-find: alpha, T [N], a [m/s^2]
-answers:
-  alpha = 11.3 rad/s^2 +- 0.5%
-  T     = 106 N        +- 0.5%
-  a     = 4.52 m/s^2   +- 0.5%
-""",
+    # the drum with LaTeX-special characters in a note
+    "drum": DRUM.replace("(drum), CCW positive", "(drum) & 100% of the torque"),
     "roots": """\
 problem: Positive root of a quadratic {with $ and #}
 source: made up_for_tests ~ ^
@@ -295,10 +278,10 @@ def test_drum_reads_like_a_solution(tmp_path: Path) -> None:
     tex = render_latex(solve_spec(tmp_path, "drum"))
     assert "Hibbeler 12e Example 17.11" in tex
     assert r"$m_{d}$ & $60\,\mathrm{kg}$ & 60" in tex
-    assert r"I_{O} = m_{d} k_{O}^{2} \tag*{(line 10)}" in tex
+    assert r"I_{O} = m_{d} k_{O}^{2} \tag*{(line 12)}" in tex
     assert r"$\Sigma$M\_O = I\_O $\alpha$ (drum) \& 100\% of the torque" in tex
     assert r"{[}force, N{]}~$\checkmark$" in tex
-    assert r"Equations (lines 11--13) give $T$, $\alpha$ and $a$ (linear):" in tex
+    assert r"Equations (lines 13--15) give $T$, $\alpha$ and $a$ (linear):" in tex
     assert r"T &= \frac{I_{O} g m_{b}}{I_{O} + m_{b} r^{2}} = 106\,\mathrm{N}" in tex
     assert "11.3 rad/s${}^{2}$ $\\pm$ 0.5\\%" in tex  # the answer key, units prettified
     assert "All 6 checks passed." in tex

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from specs import DRUM as SHARED_DRUM
 
 from dynsolve.pipeline import solve_file
 from dynsolve.render.markdown import escape_markdown, render_markdown
@@ -23,26 +24,8 @@ from dynsolve.results import (
     Step,
 )
 
-DRUM = """\
-problem: Drum and hanging block
-source: Hibbeler 12e Example 17.11
-units: SI
-given:
-  m_d = 60 kg       # drum mass
-  k_O = 0.25 m      # radius of gyration about O
-  r   = 0.4 m       # drum radius
-  m_b = 20 kg       # block mass
-equations:
-  I_O = m_d*k_O^2          # radius of gyration: I_O = m k_O²
-  T*r = I_O*alpha          # ΣM_O = I_O α (drum) | 100% *of* the torque
-  m_b*g - T = m_b*a        # ΣF_y = m a_y (block), downward positive
-  a = alpha*r              # cord does not slip: a = α r
-find: alpha, T [N], a [m/s^2]
-answers:
-  alpha = 11.3 rad/s^2 +- 0.5%
-  T     = 106 N        +- 0.5%
-  a     = 4.52 m/s^2   +- 0.5%
-"""
+# the drum with Markdown-special characters in a note
+DRUM = SHARED_DRUM.replace("(drum), CCW positive", "(drum) | 100% *of* the torque")
 
 ROOTS = """\
 problem: Positive root of a quadratic
@@ -165,10 +148,10 @@ def test_sections_and_content(tmp_path: Path) -> None:
 def test_tables_and_math(tmp_path: Path) -> None:
     document = render_markdown(solve_spec(tmp_path, DRUM))
     assert "| $m_{d}$ | $60\\,\\mathrm{kg}$ | 60" in document
-    assert "| 10 | $I_{O} = m_{d} k_{O}^{2}$ | radius of gyration: I\\_O = m k\\_O² |" in document
+    assert "| 12 | $I_{O} = m_{d} k_{O}^{2}$ | radius of gyration: I\\_O = m k\\_O² |" in document
     assert "ΣM\\_O = I\\_O α (drum) \\| 100% \\*of\\* the torque" in document
     assert "| moment of inertia, kg·m² ✓ |" in document
-    assert "**Step 2.** Equations (lines 11–13) give $T$, $\\alpha$ and $a$ (linear):" in document
+    assert "**Step 2.** Equations (lines 13–15) give $T$, $\\alpha$ and $a$ (linear):" in document
     assert "$$T = \\frac{I_{O} g m_{b}}{I_{O} + m_{b} r^{2}} = 106\\,\\mathrm{N}$$" in document
     assert "| $\\alpha$ | $11.3\\,\\mathrm{rad/s^{2}}$ | 11.3 rad/s² ± 0.5% | ✓ |" in document
     assert "All 6 checks passed." in document

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import time
-
 import pytest
 import sympy
 from sympy import Rational
@@ -79,14 +77,6 @@ def test_drum_formulas_with_letters_read_like_the_textbook():
     outcome = solve_system(system)
     assert sympy.simplify(outcome.blocks[0].formulas[T] - m_b * g * I_O / (I_O + m_b * r**2)) == 0
     assert outcome.values[T] == Rational(14715, 139)
-
-
-def test_drum_solves_in_well_under_100_ms():
-    solve_system(DRUM)  # first call warms sympy's caches and lazy imports
-    started = time.perf_counter()
-    solve_system(DRUM)
-    # Typically ~10 ms warm (~25 ms cold); the bound is loose to avoid flaky CI.
-    assert time.perf_counter() - started < 0.1
 
 
 # --- structure-level verdicts --------------------------------------------------------

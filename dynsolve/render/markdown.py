@@ -11,7 +11,7 @@ import re
 from collections.abc import Sequence
 from pathlib import PurePath
 
-from dynsolve.format import pretty_unit
+from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.results import (
     AnswerRow,
@@ -170,8 +170,8 @@ def _solution_section(steps: Sequence[Step]) -> str:
 
 
 def _step(step: Step) -> str:
-    names = _and_list([_name(n) for n in step.unknowns])
-    lead = f"**Step {step.index}.** {_lines_phrase(step.lines)} {names}"
+    names = and_list([_name(n) for n in step.unknowns])
+    lead = f"**Step {step.index}.** {lines_phrase(step.lines)} {names}"
     blocks = [f"{lead} ({escape_markdown(step.method)}):"]
     blocks += [_display(_result(r)) for r in step.results]
     if step.discarded:
@@ -180,24 +180,6 @@ def _step(step: Step) -> str:
     if step.note.strip():
         blocks.append(f"*{escape_markdown(step.note)}*")
     return "\n\n".join(blocks)
-
-
-def _lines_phrase(lines: Sequence[int]) -> str:
-    """``Equation (line 10) gives`` or ``Equations (lines 11–13) give``."""
-    if not lines:
-        return "The solver gives"
-    if len(lines) == 1:
-        return f"Equation (line {lines[0]}) gives"
-    ordered = sorted(lines)
-    if ordered == list(range(ordered[0], ordered[-1] + 1)):
-        return f"Equations (lines {ordered[0]}–{ordered[-1]}) give"
-    return f"Equations (lines {', '.join(str(n) for n in lines)}) give"
-
-
-def _and_list(items: Sequence[str]) -> str:
-    if len(items) <= 1:
-        return "".join(items)
-    return ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def _result(result: Formula) -> str:

@@ -18,6 +18,7 @@ from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
 
+from dynsolve.format import and_list, lines_phrase
 from dynsolve.names import pretty
 from dynsolve.results import Check, KeyComparison, Solution, Step
 
@@ -83,17 +84,9 @@ def _equations(solution: Solution) -> Table:
     return table
 
 
-def _lines(lines: tuple[int, ...]) -> str:
-    if len(lines) == 1:
-        return f"line {lines[0]}"
-    return "lines " + ", ".join(str(n) for n in lines)
-
-
 def _step(step: Step) -> RenderableType:
-    unknowns = ", ".join(pretty(u) for u in step.unknowns)
-    verb = "give" if len(step.lines) > 1 else "gives"
-    together = " together" if len(step.unknowns) > 1 else ""
-    head = Text(f"{step.index}. {_lines(step.lines)} {verb} {unknowns}{together} ({step.method})")
+    unknowns = and_list([pretty(u) for u in step.unknowns])
+    head = Text(f"{step.index}. {lines_phrase(step.lines)} {unknowns} ({step.method})")
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""

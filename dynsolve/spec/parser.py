@@ -20,7 +20,7 @@ from __future__ import annotations
 import difflib
 import functools
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from importlib import resources
@@ -745,6 +745,3 @@ def iter_names(expr: Expr) -> Iterator[Name]:
             stack.extend((node.right, node.left))
         elif isinstance(node, Call):
             stack.extend(reversed(node.args))
-
-
-Visitor = Callable[[Expr], Any]
