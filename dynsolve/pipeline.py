@@ -37,7 +37,7 @@ from dynsolve.solve.roots import truth
 from dynsolve.spec.parser import parse_file
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import SolveOptions
-from dynsolve.units import Dim, natural_unit
+from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
 
@@ -240,8 +240,17 @@ class _View:
         exact = self.text(_tidy(value)) if number is None else sympy.sstr(value)
         if number is None:
             latex = self.latex(_tidy(value))
-            text = exact
+            text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
+
+    def base_units_note(self) -> str:
+        """For a formula holding numbers of dimensional givens: which units they are in."""
+        numeric = [
+            g for g in self.problem.givens if g.value is not None and not g.dim.dimensionless
+        ]
+        if not any(self.used(g) for g in numeric):
+            return ""
+        return f"  (numbers in {', '.join(BASE_UNITS[self.system])})"
 
     def key(self) -> list[KeyComparison]:
         spec = self.problem.spec

@@ -458,3 +458,15 @@ def test_version_prints_the_package_version():
     assert result.exit_code == 0
     assert result.stdout.strip() == f"dynsolve {dynsolve.__version__}"
     assert dynsolve.__version__ == metadata.version("dynsolve")
+
+
+def test_a_partly_symbolic_answer_names_the_units_of_its_numbers(tmp_path: Path):
+    # regression: w = sqrt(k/m) with k = 100 N/m and m symbolic printed '10/sqrt(m)'
+    # without saying that 10 is in SI base units (sqrt(100 N/m) = 10 kg^(1/2)/s).
+    path = tmp_path / "mixed.dyn"
+    path.write_text("given:\n  m: mass\n  k = 100 N/m\nequations:\n  w = sqrt(k/m)\nfind: w\n")
+    result = CliRunner().invoke(app, ["solve", str(path), "--format", "json"])
+    assert result.exit_code == 0, result.output
+    answer = json.loads(result.stdout)["answers"][0]
+    assert answer["value"] is None
+    assert "10/sqrt(m)" in answer["shown"] and "(numbers in m, kg, s)" in answer["shown"]
