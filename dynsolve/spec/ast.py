@@ -19,14 +19,19 @@ __all__ = [
     "Answer",
     "Binary",
     "Call",
+    "Direction",
     "EquationStmt",
     "Expr",
     "FindItem",
     "Fraction",
     "Given",
+    "Location",
     "Name",
     "Num",
+    "Prop",
     "Quantity",
+    "QuantityRef",
+    "SceneStmt",
     "Spec",
     "Tolerance",
     "Unary",
@@ -164,13 +169,24 @@ class EquationStmt:
 
 
 @dataclass(frozen=True)
+class QuantityRef:
+    """A scene quantity named in find: ``alpha(drum)``, ``I(plate, O)``, ``trial(F_A)``."""
+
+    function: str
+    args: tuple[str, ...]
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
 class FindItem:
-    """A name to solve for, with an optional output unit."""
+    """A name to solve for, with an optional output unit and, in scene mode, what it names."""
 
     name: str
     unit: UnitExpr | None
     line: int
     column: int
+    ref: QuantityRef | None = None
 
 
 @dataclass(frozen=True)
@@ -183,7 +199,7 @@ class Tolerance:
     text: str
 
 
-Direction = Literal["cw", "ccw", "up", "down", "left", "right"]
+DirectionWord = Literal["cw", "ccw", "up", "down", "left", "right"]
 
 
 @dataclass(frozen=True)
@@ -194,9 +210,73 @@ class Answer:
     quantity: Quantity | None
     formula: Expr | None
     tolerance: Tolerance | None
-    direction: Direction | None
+    direction: DirectionWord | None
     line: int
     column: int
+
+
+Vector = tuple[Expr, Expr]
+
+
+@dataclass(frozen=True)
+class Direction:
+    """A direction: a word (``up``, ``cw``), an angle from +x, toward a point, or a vector."""
+
+    kind: Literal["word", "angle", "toward", "vector"]
+    word: str = ""
+    angle: Expr | None = None
+    point: str = ""
+    vector: Vector | None = None
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Location:
+    """Where something acts: a named point or a position relative to the body's G."""
+
+    point: str = ""
+    vector: Vector | None = None
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Prop:
+    """One ``key value`` property of a body or contact (``mass m``, ``mu_s 0.3``)."""
+
+    key: str
+    values: tuple[Expr, ...] = ()
+    about: str = ""  # for gyration/inertia about a point
+    direction: Direction | None = None
+    vector: Vector | None = None
+    word: str = ""  # a shape name or component axes
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class SceneStmt:
+    """One line of the ``scene`` section.
+
+    ``kind`` is the leading keyword (body, part, hole, point, pin, contact, rolls, base,
+    cord, force, couple, gravity, omega, motion); the other fields are filled as that
+    kind needs them.
+    """
+
+    kind: str
+    name: str = ""  # the body, point, load, cord or base being declared
+    body: str = ""  # the body it acts on or belongs to
+    props: tuple[Prop, ...] = ()
+    location: Location | None = None
+    direction: Direction | None = None
+    other: str = ""  # the second body of a cord
+    other_location: Location | None = None
+    vectors: tuple[Vector, ...] = ()
+    value: Expr | None = None
+    word: str = ""  # cw/ccw, a motion, "fixed"
+    line: int = 0
+    column: int = 0
 
 
 @dataclass(frozen=True)
@@ -212,3 +292,4 @@ class Spec:
     finds: tuple[FindItem, ...]
     answers: tuple[Answer, ...]
     system_line: int = 0
+    scene: tuple[SceneStmt, ...] = ()

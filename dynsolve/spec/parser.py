@@ -35,13 +35,18 @@ from dynsolve.spec.ast import (
     Answer,
     Binary,
     Call,
+    Direction,
     EquationStmt,
     Expr,
     FindItem,
     Given,
+    Location,
     Name,
     Num,
+    Prop,
     Quantity,
+    QuantityRef,
+    SceneStmt,
     Spec,
     Tolerance,
     Unary,
@@ -61,9 +66,12 @@ MAX_POWER = 64
 MAX_UNIT_EXPONENT = 12
 MAX_STATEMENTS = 1000
 
-SECTIONS = ("problem", "source", "units", "given", "equations", "find", "answers")
-BLOCK_SECTIONS = ("given", "equations", "find", "answers")
-_FIELDS = {"given": "givens", "equations": "equations", "find": "finds", "answers": "answers"}
+SECTIONS = ("problem", "source", "units", "given", "scene", "equations", "find", "answers")
+BLOCK_SECTIONS = ("given", "scene", "equations", "find", "answers")
+_FIELDS = {
+    "given": "givens", "scene": "scene", "equations": "equations", "find": "finds",
+    "answers": "answers",
+}  # fmt: skip
 SYSTEMS = {"si": "SI", "fps": "FPS"}
 SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
 FUNCTIONS = {
@@ -110,6 +118,7 @@ def _lark() -> lark.Lark:
             "answer_line",
             "answer_formula",
             "unit_line",
+            "scene_line",
         ],
         cache=True,
     )
@@ -156,6 +165,7 @@ class _Sections:
     equations: list[EquationStmt] | None = None
     finds: list[FindItem] | None = None
     answers: list[Answer] | None = None
+    scene: list[SceneStmt] | None = None
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -300,6 +310,9 @@ def _body_line(
     elif section == "find":
         assert parts.finds is not None
         parts.finds.extend(_parse(text, "find_line", file, line, offset))
+    elif section == "scene":
+        assert parts.scene is not None
+        parts.scene.append(_parse(text, "scene_line", file, line, offset))
     else:
         assert parts.answers is not None
         parts.answers.append(_parse_answer(text, file, line, offset))
@@ -374,6 +387,10 @@ _LINE_KINDS = {
     "answer_line": ("an answer", "'name = value unit', e.g. 'T = 106 N +- 0.5%'"),
     "answer_formula": ("an answer", "'name = value unit' or 'name = formula'"),
     "unit_line": ("a unit", "a unit such as 'm/s^2' or 'N*m'"),
+    "scene_line": (
+        "a scene line",
+        "e.g. 'body drum: mass m, gyration k_O' (see docs/scene-mode.md)",
+    ),
 }
 
 
@@ -617,7 +634,170 @@ class _Builder(Transformer_NonRecursive):
 
     def find_item(self, c: list[Any]) -> FindItem:
         token = c[0]
-        return FindItem(str(token), c[1] if len(c) > 1 else None, self.line, self._col(token))
+        ref = next((x for x in c[1:] if isinstance(x, QuantityRef)), None)
+        unit = next((x for x in c[1:] if isinstance(x, UnitExpr)), None)
+        return FindItem(str(token), unit, self.line, self._col(token), ref)
+
+    def quantity_ref(self, c: list[Token]) -> QuantityRef:
+        function, *args = c
+        return QuantityRef(
+            str(function), tuple(str(a) for a in args), self.line, self._col(function)
+        )
+
+    # ---- scene
+    def _stmt(self, kind: str, token: Token, **fields: Any) -> SceneStmt:
+        return SceneStmt(kind, line=self.line, column=self._col(token), **fields)
+
+    def body_stmt(self, c: list[Any]) -> SceneStmt:
+        return self._stmt("body", c[0], name=str(c[0]), props=tuple(c[1:]))
+
+    def part_stmt(self, c: list[Any]) -> SceneStmt:
+        kind, body, *props = c
+        return self._stmt(str(kind), body, body=str(body), props=tuple(props))
+
+    def point_stmt(self, c: list[Any]) -> SceneStmt:
+        name, *rest = c
+        body = str(rest[0]) if isinstance(rest[0], Token) else ""
+        return self._stmt("point", name, name=str(name), body=body, vectors=(rest[-1],))
+
+    def pin_stmt(self, c: list[Token]) -> SceneStmt:
+        body, point = c
+        return self._stmt("pin", body, body=str(body), name=str(point))
+
+    def contact_stmt(self, c: list[Any]) -> SceneStmt:
+        body, location, props = c
+        return self._stmt("contact", body, body=str(body), location=location, props=props)
+
+    def rolls_stmt(self, c: list[Any]) -> SceneStmt:
+        body, location, *props = c
+        props = props[0] if props else ()
+        return self._stmt("rolls", body, body=str(body), location=location, props=props)
+
+    def base_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, start, end, *props = c
+        props = props[0] if props else ()
+        return self._stmt(
+            "base", name, name=str(name), body=str(body), vectors=(start, end), props=props
+        )
+
+    def cord_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, location, *rest = c
+        fixed = bool(rest) and isinstance(rest[-1], Token) and rest[-1].type == "FIXED"
+        if fixed:
+            rest = rest[:-1]
+        direction = rest[-1]
+        other = str(rest[0]) if len(rest) > 1 else ""
+        other_location = rest[1] if len(rest) > 2 else None
+        return self._stmt(
+            "cord", name, name=str(name), body=str(body), location=location,
+            other=other, other_location=other_location, direction=direction,
+            word="fixed" if fixed else "",
+        )  # fmt: skip
+
+    def force_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, location, direction = c
+        return self._stmt(
+            "force", name, name=str(name), body=str(body), location=location, direction=direction
+        )
+
+    def couple_stmt(self, c: list[Token]) -> SceneStmt:
+        name, body, sense = c
+        self._sense(sense)
+        return self._stmt("couple", name, name=str(name), body=str(body), word=str(sense))
+
+    def gravity_stmt(self, c: list[Any]) -> SceneStmt:
+        direction = c[0] if c else None
+        return SceneStmt("gravity", direction=direction, line=self.line, column=self.offset + 1)
+
+    def omega_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value, *sense = c
+        word = str(sense[0]) if sense else "ccw"
+        if sense:
+            self._sense(sense[0])
+        return self._stmt("omega", body, body=str(body), value=value, word=word)
+
+    def motion_stmt(self, c: list[Token]) -> SceneStmt:
+        body, motion = c
+        return self._stmt("motion", body, body=str(body), word=str(motion))
+
+    def _sense(self, token: Token) -> None:
+        if str(token) not in ("cw", "ccw"):
+            raise SpecError(
+                f"'{token}' is not a sense of rotation", self._at(token), "write cw or ccw"
+            )
+
+    def _prop(self, key: str, c: list[Any], **fields: Any) -> Prop:
+        return Prop(key, line=self.line, column=self.offset + 1, **fields)
+
+    def prop_mass(self, c: list[Any]) -> Prop:
+        return self._prop("mass", c, values=(c[0],))
+
+    def prop_weight(self, c: list[Any]) -> Prop:
+        return self._prop("weight", c, values=(c[0],))
+
+    def prop_gyration(self, c: list[Any]) -> Prop:
+        return self._prop("gyration", c, values=(c[0],), about=str(c[1]) if len(c) > 1 else "")
+
+    def prop_inertia(self, c: list[Any]) -> Prop:
+        return self._prop("inertia", c, values=(c[0],), about=str(c[1]) if len(c) > 1 else "")
+
+    def prop_at(self, c: list[Any]) -> Prop:
+        return self._prop("at", c, vector=c[0])
+
+    def prop_density(self, c: list[Any]) -> Prop:
+        return self._prop("density", c, values=(c[0],))
+
+    def prop_thickness(self, c: list[Any]) -> Prop:
+        return self._prop("thickness", c, values=(c[0],))
+
+    def prop_composite(self, c: list[Any]) -> Prop:
+        return self._prop("composite", c)
+
+    def prop_shape(self, c: list[Any]) -> Prop:
+        shape, *sizes = c
+        return self._prop("shape", c, word=str(shape), values=tuple(sizes))
+
+    def prop_list(self, c: list[Prop]) -> tuple[Prop, ...]:
+        return tuple(c)
+
+    def prop_normal(self, c: list[Any]) -> Prop:
+        return self._prop("normal", c, direction=c[0])
+
+    def prop_smooth(self, c: list[Any]) -> Prop:
+        return self._prop("smooth", c)
+
+    def prop_mu_s(self, c: list[Any]) -> Prop:
+        return self._prop("mu_s", c, values=(c[0],))
+
+    def prop_mu_k(self, c: list[Any]) -> Prop:
+        return self._prop("mu_k", c, values=(c[0],))
+
+    def prop_slides(self, c: list[Any]) -> Prop:
+        return self._prop("slides", c, direction=c[0])
+
+    def prop_axes(self, c: list[Token]) -> Prop:
+        return self._prop("components", c, word=str(c[0]))
+
+    def at_point(self, c: list[Token]) -> Location:
+        return Location(point=str(c[0]), line=self.line, column=self._col(c[0]))
+
+    def at_vector(self, c: list[Any]) -> Location:
+        return Location(vector=c[0], line=self.line, column=self.offset + 1)
+
+    def vector(self, c: list[Any]) -> tuple[Expr, Expr]:
+        return (c[0], c[1])
+
+    def dir_word(self, c: list[Token]) -> Direction:
+        return Direction("word", word=str(c[0]), line=self.line, column=self._col(c[0]))
+
+    def dir_angle(self, c: list[Any]) -> Direction:
+        return Direction("angle", angle=c[0], line=self.line, column=self.offset + 1)
+
+    def dir_toward(self, c: list[Token]) -> Direction:
+        return Direction("toward", point=str(c[0]), line=self.line, column=self._col(c[0]))
+
+    def dir_vector(self, c: list[Any]) -> Direction:
+        return Direction("vector", vector=c[0], line=self.line, column=self.offset + 1)
 
     def find_line(self, c: list[Any]) -> list[FindItem]:
         return [item for item in c if isinstance(item, FindItem)]
@@ -706,6 +886,7 @@ def _finish(parts: _Sections, file: str) -> Spec:
         finds=tuple(parts.finds or ()),
         answers=tuple(parts.answers or ()),
         system_line=parts.system_line,
+        scene=tuple(parts.scene or ()),
     )
 
 

@@ -1,0 +1,1 @@
+"""The physical model of a scene: bodies, shapes and inertia, supports, loads."""
