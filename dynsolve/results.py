@@ -92,6 +92,44 @@ class KeyComparison:
 
 
 @dataclass(frozen=True)
+class ForceRow:
+    """One force or couple on a free-body diagram."""
+
+    name: str  # "T", "W_drum", "N_A", "M"
+    kind: str  # "weight", "reaction", "friction", "tension", "applied", "couple"
+    point: str  # where it acts: "G", "A", "(0.4, 0)"
+    x: float  # the point relative to the body's mass centre, SI metres (for drawing)
+    y: float
+    direction: str  # "down", "up", "angle 36.9°", "cw"
+    dx: float  # unit vector of the drawn arrow (0, 0 for a couple)
+    dy: float
+    known: bool  # False for an unknown reaction, tension or friction
+    value: str  # the magnitude, shown with its unit once solved ("" before)
+
+
+@dataclass(frozen=True)
+class FreeBody:
+    """A body's free-body and kinetic diagrams, as data."""
+
+    body: str
+    shape: str  # "disk", "rod", "block", "plate", "particle", "ring", "sphere", …
+    size: tuple[float, ...]  # the shape's sizes in SI metres (radius; length; width, height)
+    motion: str  # "translation", "rotation about O", "general plane motion"
+    forces: tuple[ForceRow, ...]
+    kinetic: tuple[str, ...]  # kinetic-diagram terms: "m a_Gx", "I_G α"
+    moment_point: str  # the point moments are taken about, and why
+
+
+@dataclass(frozen=True)
+class Assumption:
+    """An assumption made to solve (no slip, no tipping, contact kept, cord taut) and its check."""
+
+    name: str
+    holds: bool
+    detail: str
+
+
+@dataclass(frozen=True)
 class Solution:
     """Everything about one solved spec."""
 
@@ -108,6 +146,8 @@ class Solution:
     key: tuple[KeyComparison, ...]
     status: str
     messages: tuple[str, ...] = ()
+    free_body: tuple[FreeBody, ...] = ()
+    assumptions: tuple[Assumption, ...] = ()
 
     @property
     def passed(self) -> bool:
