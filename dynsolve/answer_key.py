@@ -91,6 +91,36 @@ def compare(
     return Verdict(False, shown, f"got {got}{_relative(error, target)}{hint}")
 
 
+def compare_magnitude(
+    answer: Answer, magnitude: float | None, direction: str, dim: Dim, unit: str, spec: Spec
+) -> Verdict:
+    """Judge a scene answer: its magnitude (base units) and, when the key gives one, its
+    direction word (cw/ccw, up/down/left/right)."""
+    assert answer.quantity is not None
+    expected, expected_dim = resolve_quantity(answer.quantity, spec.system, spec.file)
+    shown = _expected_text(answer)
+    if expected_dim != dim:
+        return Verdict(
+            False,
+            shown,
+            f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}",
+        )
+    if magnitude is None:
+        return Verdict(False, shown, "not determined by the scene")
+    target = abs(float(expected))
+    tolerance = _tolerance(answer, target, dim, spec.system, spec.file)
+    error = abs(magnitude - target)
+    got = format_quantity(convert(magnitude, unit, spec.system), unit, 4)
+    detail = f"got {got} {direction}".rstrip() + _relative(error, target)
+    if error > tolerance:
+        return Verdict(False, shown, detail)
+    if answer.direction and target > tolerance and answer.direction != direction:
+        return Verdict(
+            False, shown, f"{detail}; direction {direction or 'none'}, not {answer.direction}"
+        )
+    return Verdict(True, shown, detail)
+
+
 def _expected_text(answer: Answer) -> str:
     assert answer.quantity is not None
     unit = answer.quantity.unit.text if answer.quantity.unit else ""

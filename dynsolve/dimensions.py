@@ -19,6 +19,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import sympy
+
 from dynsolve.errors import DimensionError, Position
 from dynsolve.spec.ast import Binary, Call, EquationStmt, Expr, Name, Num, Unary
 from dynsolve.units import Dim, System, natural_unit
@@ -375,6 +377,52 @@ _CAUSES: dict[Dim, str] = {
     Dim(1, 0, -1): "a missing velocity factor (v or ω r)?",
     Dim(-1, 0, 1): "an extra velocity factor?",
 }
+
+
+def sympy_dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, Dim]) -> Dim:
+    """The dimension of a generated sympy expression; raises if a sum mixes dimensions.
+
+    Used to check the equations scene mode writes (its symbols all have known dimensions).
+
+    >>> import sympy
+    >>> m, a = sympy.symbols("m a")
+    >>> sympy_dimension(m * a, {m: Dim.of("mass"), a: Dim.of("acceleration")}).name
+    'force'
+    """
+    if expr.is_Number or expr.is_NumberSymbol or expr == 0:
+        return Dim()
+    if expr.is_Symbol:
+        return dims[expr]
+    if expr.is_Add:
+        terms = [t for t in expr.args if t != 0]
+        found = [sympy_dimension(t, dims) for t in terms]
+        for term, dim in zip(terms[1:], found[1:], strict=True):
+            if dim != found[0]:
+                raise DimensionError(
+                    f"terms '{terms[0]}' and '{term}' cannot be added: "
+                    f"{found[0].name} vs {dim.name}",
+                    hint=likely_cause(found[0], dim),
+                )
+        return found[0] if found else Dim()
+    if expr.is_Mul:
+        result = Dim()
+        for factor in expr.args:
+            result = result * sympy_dimension(factor, dims)
+        return result
+    if expr.is_Pow:
+        base = sympy_dimension(expr.base, dims)
+        if base.dimensionless:
+            return Dim()
+        exponent = expr.exp
+        if not exponent.is_Rational:
+            raise DimensionError(f"'{expr}' raises a dimensional quantity to a symbolic power")
+        return base ** Fraction(int(exponent.p), int(exponent.q))
+    if isinstance(expr, sympy.Function):
+        for arg in expr.args:
+            if expr.func is not sympy.Abs and not sympy_dimension(arg, dims).dimensionless:
+                raise DimensionError(f"the argument of {expr.func} in '{expr}' has a dimension")
+        return sympy_dimension(expr.args[0], dims) if expr.func is sympy.Abs else Dim()
+    return Dim()
 
 
 def likely_cause(left: Dim, right: Dim) -> str:

@@ -43,7 +43,15 @@ class GivenInfo:
 
 @dataclass(frozen=True)
 class Target:
-    """A name in ``find`` with its display unit."""
+    """A name in ``find`` with its display unit, and how its value is read.
+
+    ``kind`` is "signed" in equation mode (the value as solved, sign and all). Scene
+    mode reports magnitudes with a direction: "rotation" (ccw positive: cw/ccw),
+    "along" (signed along ``axis``: a direction word), "vector" (``vector``'s
+    magnitude and direction) or "magnitude" (a positive scalar). ``expr`` is the
+    value in terms of the unknowns and givens; ``trial`` reads it from the first
+    trial of a failed assumption.
+    """
 
     name: str
     symbol: sympy.Symbol
@@ -51,6 +59,11 @@ class Target:
     unit: str  # pint-parsable; "" for a pure number
     requested: bool
     is_given: bool
+    kind: str = "signed"
+    expr: sympy.Expr | None = None
+    axis: tuple[sympy.Expr, sympy.Expr] | None = None
+    vector: tuple[sympy.Expr, sympy.Expr] | None = None
+    trial: bool = False
 
 
 @dataclass(frozen=True)
@@ -79,7 +92,7 @@ def build_problem(spec: Spec) -> Problem:
             Position(file, 1, 1),
             hint="add an 'equations:' section with one equation per indented line",
         )
-    givens = _givens(spec)
+    givens = givens_of(spec)
     given_names = {g.name for g in givens}
     unknown_names = _unknown_names(spec.equations, given_names)
     _check_finds(spec, unknown_names, given_names)
@@ -127,7 +140,8 @@ def _plain(statement: EquationStmt) -> str:
     return f"{statement.lhs} {statement.relation} {statement.rhs}"
 
 
-def _givens(spec: Spec) -> list[GivenInfo]:
+def givens_of(spec: Spec) -> list[GivenInfo]:
+    """Every given resolved (and g, with its default value unless the spec gives it)."""
     out: list[GivenInfo] = []
     for given in spec.givens:
         symbol = sympy.Symbol(given.name, positive=True)

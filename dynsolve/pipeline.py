@@ -11,21 +11,25 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from dataclasses import replace
 from pathlib import Path
 
 import sympy
 
-from dynsolve.answer_key import compare
-from dynsolve.equation_mode import GivenInfo, Problem, build_problem
+from dynsolve.answer_key import compare, compare_magnitude
+from dynsolve.equation_mode import GivenInfo, Problem, Target, build_problem
 from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.names import latex_name, pretty
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
+    Assumption,
     Check,
     EquationRow,
     Formula,
+    FreeBody,
     GivenRow,
     KeyComparison,
     Solution,
@@ -34,6 +38,7 @@ from dynsolve.results import (
 from dynsolve.solve import solve_system
 from dynsolve.solve.outcome import Outcome
 from dynsolve.solve.roots import truth
+from dynsolve.spec.ast import Spec
 from dynsolve.spec.parser import parse_file
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import SolveOptions
@@ -43,18 +48,59 @@ RESIDUAL_LIMIT = 1e-9
 
 
 def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solution:
-    """Parse, solve and check one ``.dyn`` file."""
-    return solve_problem(build_problem(parse_file(path)), options or SolveOptions())
+    """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
+    spec = parse_file(path)
+    if spec.scene:
+        return solve_scene(spec, options or SolveOptions())
+    return solve_problem(build_problem(spec), options or SolveOptions())
 
 
-def solve_problem(problem: Problem, options: SolveOptions) -> Solution:
-    """Solve a built problem and assemble everything a renderer shows."""
+def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
+    """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
+    from dynsolve.scene_mode import assess, build_scene_problem, free_bodies
+
+    problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
-    view = _View(problem, outcome)
+    assumptions, slips = assess(problem, outcome.values)
+    trial: Mapping[sympy.Symbol, sympy.Expr] = {}
+    if slips:
+        trial = outcome.values
+        first = tuple(a for a in assumptions if a.name.startswith("no slip") and not a.holds)
+        trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
+        problem = build_scene_problem(spec, slips)
+        problem = replace(
+            problem,
+            targets=tuple(
+                old if old.trial else new
+                for old, new in zip(trial_targets, problem.targets, strict=True)
+            ),
+        )
+        outcome = solve_system(problem.system, options)
+        assumptions = first + assess(problem, outcome.values)[0]
+    return solve_problem(
+        problem, options, outcome, trial, assumptions, free_bodies(problem, outcome.values)
+    )
+
+
+def solve_problem(
+    problem: Problem,
+    options: SolveOptions,
+    outcome: Outcome | None = None,
+    trial: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+    assumptions: tuple[Assumption, ...] = (),
+    free_body: tuple[FreeBody, ...] = (),
+) -> Solution:
+    """Solve a built problem (unless ``outcome`` is given) and assemble what renderers show."""
+    outcome = outcome or solve_system(problem.system, options)
+    view = _View(problem, outcome, trial or {})
     answers = tuple(view.answer(t) for t in problem.targets)
     key = tuple(view.key())
-    checks = view.checks() + tuple(
-        Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key
+    checks = (
+        view.checks()
+        + _assumption_checks(assumptions)
+        + tuple(
+            Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key
+        )
     )
     spec = problem.spec
     return Solution(
@@ -62,7 +108,9 @@ def solve_problem(problem: Problem, options: SolveOptions) -> Solution:
         title=spec.title,
         source=spec.source,
         system=spec.system,
-        mode="equations",
+        mode=getattr(problem, "mode", "equations"),
+        free_body=free_body,
+        assumptions=assumptions,
         givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
         equations=view.equation_rows(),
         steps=tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
@@ -74,12 +122,24 @@ def solve_problem(problem: Problem, options: SolveOptions) -> Solution:
     )
 
 
+def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]:
+    """Final assumptions as checks; a failed no-slip trial that was re-solved passes."""
+    checks = []
+    for a in assumptions:
+        resolved = a.name.startswith("no slip") and "re-solved" in a.detail
+        checks.append(Check(f"assumption: {a.name}", a.holds or resolved, a.detail))
+    return tuple(checks)
+
+
 class _View:
     """Formats one solved problem; holds the lookups shared by the row builders."""
 
-    def __init__(self, problem: Problem, outcome: Outcome) -> None:
+    def __init__(
+        self, problem: Problem, outcome: Outcome, trial: Mapping[sympy.Symbol, sympy.Expr]
+    ) -> None:
         self.problem = problem
         self.outcome = outcome
+        self.trial = trial
         self.system = problem.spec.system
         self.knowns = problem.system.knowns
         self.units = {t.name: t.unit for t in problem.targets}
@@ -130,8 +190,15 @@ class _View:
         if info.value is None:
             assert given is not None and given.dimension is not None
             written = f"symbolic ({given.dimension.text.replace('_', ' ')})"
-            return GivenRow(info.name, written, "—", given.description, True,
-                            latex_name(info.name), "\\text{symbolic}")  # fmt: skip
+            return GivenRow(
+                info.name,
+                written,
+                "—",
+                given.description,
+                True,
+                latex_name(info.name),
+                "\\text{symbolic}",
+            )
         if given is None:
             written, description = (
                 f"{sig(float(info.value))} {pretty_unit(self._g_unit())}",
@@ -151,13 +218,16 @@ class _View:
         si_value = convert(float(info.value), si_unit, self.system)
         si = format_quantity(si_value, si_unit, 4, trim=True)
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
-        return GivenRow(info.name, written, si, description, False, latex_name(info.name),
-                        latex_value)  # fmt: skip
+        return GivenRow(
+            info.name, written, si, description, False, latex_name(info.name), latex_value
+        )
 
     def _g_unit(self) -> str:
         return "m/s^2" if self.system == "SI" else "ft/s^2"
 
     def equation_rows(self) -> tuple[EquationRow, ...]:
+        if hasattr(self.problem, "rows"):
+            return self.problem.rows
         rows = []
         for check in self.problem.dims.checks:
             statement = check.statement
@@ -217,6 +287,9 @@ class _View:
         )
 
     def computed(self, name: str) -> sympy.Expr | None:
+        target = next((t for t in self.problem.targets if t.name == name), None)
+        if target is not None and (target.expr is not None or target.vector is not None):
+            return self.scene_value(target)
         symbol = self.problem.symbols[name]
         if symbol in self.outcome.values:
             return self.outcome.values[symbol]
@@ -225,6 +298,40 @@ class _View:
         if any(g.name == name for g in self.problem.givens):
             return symbol  # a symbolic given asked for: its own formula
         return None
+
+    def scene_value(self, target: Target) -> sympy.Expr | None:
+        """A scene target's value: signed along its axis, or a vector's magnitude."""
+        values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
+        if target.vector is not None:
+            x, y = (sympy.Integer(0) + c for c in target.vector)
+            x, y = x.xreplace(values), y.xreplace(values)
+            if (x.free_symbols | y.free_symbols) - set(self.knowns) - set(values):
+                unsolved = (x.free_symbols | y.free_symbols) & set(self.problem.system.unknowns)
+                if unsolved:
+                    return None
+            return sympy.sqrt(x**2 + y**2)
+        assert target.expr is not None
+        value = (sympy.Integer(0) + target.expr).xreplace(values)
+        if value.free_symbols & set(self.problem.system.unknowns):
+            return None
+        return value
+
+    def direction(self, target: Target, value: float) -> str:
+        from dynsolve.scene_mode import direction_of
+
+        if target.kind == "vector" and target.vector is not None:
+            values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
+            x = self.number((sympy.Integer(0) + target.vector[0]).xreplace(values))
+            y = self.number((sympy.Integer(0) + target.vector[1]).xreplace(values))
+            if x is None or y is None or value == 0:
+                return ""
+            from dynsolve.scene_mode import _direction_word
+
+            return _direction_word(x / value, y / value)
+        axis = None
+        if target.axis is not None:
+            axis = (self.number(target.axis[0]) or 0.0, self.number(target.axis[1]) or 0.0)
+        return direction_of(target.kind, value, axis)
 
     def answer(self, target: object) -> AnswerRow:
         from dynsolve.equation_mode import Target
@@ -237,6 +344,9 @@ class _View:
         if value is None:
             return AnswerRow(target.name, None, target.unit, "not determined", "", "", direction)
         text, latex, number = self.shown(target.name, value)
+        if target.kind != "signed" and number is not None:
+            direction = self.direction(target, number) or direction
+            text, latex, number = self.shown(target.name, abs(value))
         exact = self.text(_tidy(value)) if number is None else sympy.sstr(value)
         if number is None:
             latex = self.latex(_tidy(value))
@@ -262,20 +372,41 @@ class _View:
         out = []
         for answer in spec.answers:
             target = targets[answer.name]
-            verdict = compare(
-                answer, self.computed(answer.name), target.dim, target.unit, spec,
-                self.problem.symbols, solved, known_dims,
-            )  # fmt: skip
-            row = next(a for a in (self.answer(target),))
-            out.append(KeyComparison(answer.name, verdict.expected, row.shown, verdict.passed,
-                                     verdict.detail))  # fmt: skip
+            row = self.answer(target)
+            if target.kind != "signed" and answer.formula is None:
+                value = self.computed(answer.name)
+                number = None if value is None else self.number(value)
+                verdict = compare_magnitude(
+                    answer,
+                    None if number is None else abs(number),
+                    row.direction,
+                    target.dim,
+                    target.unit,
+                    spec,
+                )
+            else:
+                verdict = compare(
+                    answer,
+                    self.computed(answer.name),
+                    target.dim,
+                    target.unit,
+                    spec,
+                    self.problem.symbols,
+                    solved,
+                    known_dims,
+                )
+            out.append(
+                KeyComparison(
+                    answer.name, verdict.expected, row.shown, verdict.passed, verdict.detail
+                )
+            )
         return out
 
     # ---- checks
     def checks(self) -> tuple[Check, ...]:
         outcome = self.outcome
         equations = self.problem.system.equations
-        n = len(self.problem.dims.checks)
+        n = len(self.equation_rows())
         detail = f"every equation and constraint is homogeneous ({n} checked)"
         if self.problem.dims.free:
             names = ", ".join(pretty(name) for name in self.problem.dims.free)
@@ -294,7 +425,18 @@ class _View:
                     f"relative residual {worst.relative:.1e} ({equations[worst.equation].label})",
                 )
             )
-        unevaluated = len(outcome.residuals) - len(evaluated)
+        if outcome.unneeded:
+            labels = ", ".join(equations[i].label for i in outcome.unneeded)
+            checks.append(
+                Check(
+                    "model only what is asked",
+                    True,
+                    f"not needed for the answers, so not solved: {labels}",
+                )
+            )
+        unevaluated = len(
+            [r for r in outcome.residuals if not r.evaluated and r.equation not in outcome.unneeded]
+        )
         if unevaluated and outcome.status == "solved":
             verb = "holds" if unevaluated == 1 else "hold"
             detail = f"{_count(unevaluated, 'equation')} {verb} identically"

@@ -1,16 +1,21 @@
 """Render a :class:`~dynsolve.results.Solution` as a standalone LaTeX document for pdflatex.
 
 The document needs only Debian's ``texlive-latex-base`` and ``texlive-latex-recommended``
-(article, amsmath, amssymb, booktabs, geometry). It is pure ASCII and uses
-the default OT1 encoding, so the Computer Modern Type 1 fonts are used and no font has to be
-generated. Plain text goes through :func:`escape_latex`; the LaTeX fragments of the solution
-(``latex``, ``latex_name``, ``latex_value``, ``formula_latex``, ``value_latex``) go through
-:func:`safe_math`.
+(article, amsmath, amssymb, booktabs, geometry; ``color`` when there are free-body diagrams).
+It is pure ASCII and uses the default OT1 encoding, so the Computer Modern Type 1 fonts are
+used and no font has to be generated. Plain text goes through :func:`escape_latex`; the LaTeX
+fragments of the solution (``latex``, ``latex_name``, ``latex_value``, ``formula_latex``,
+``value_latex``) go through :func:`safe_math`.
+
+Free-body diagrams (scene mode) are drawn with LaTeX's own ``picture`` environment: every
+line, arc and arrowhead is a ``\\qbezier`` curve, which the kernel draws at any slope.
+Neither TikZ/PGF nor ``pict2e`` is in those two Debian packages.
 """
 
 from __future__ import annotations
 
 import itertools
+import math
 import re
 import unicodedata
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -20,9 +25,12 @@ from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.results import (
     AnswerRow,
+    Assumption,
     Check,
     EquationRow,
+    ForceRow,
     Formula,
+    FreeBody,
     GivenRow,
     KeyComparison,
     Solution,
@@ -38,6 +46,9 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \renewcommand{\arraystretch}{1.25}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex}"""
+
+# Only documents with free-body diagrams load it (``color`` is in texlive-latex-base).
+DIAGRAM_PREAMBLE = r"\usepackage{color}"
 
 # ---- escaping -------------------------------------------------------------------------
 
@@ -242,16 +253,32 @@ def render_latex(solution: Solution) -> str:
     ('\\\\documentclass[11pt]{article}', '\\\\end{document}')
     >>> "\\\\section*{Drum \\\\& block}" in doc, "$106\\\\,\\\\mathrm{N}$" in doc
     (True, True)
+
+    In scene mode each body's free-body diagram is a ``picture`` (unknown forces in red):
+
+    >>> from dynsolve.results import Assumption, ForceRow, FreeBody
+    >>> pull = ForceRow("T", "tension", "A", 0.4, 0.0, "down", 0.0, -1.0, False, "")
+    >>> drum = FreeBody("drum", "disk", (0.4,), "rotation about O", (pull,), ("I_G α",), "O")
+    >>> scene = Solution("d.dyn", "Drum", "", "SI", "scene", (), (), (), (), (), (), "solved",
+    ...                  free_body=(drum,), assumptions=(Assumption("cord T taut", True, ""),))
+    >>> tex = render_latex(scene)
+    >>> "\\\\begin{picture}" in tex, "{\\\\color{red}" in tex, "$I_{G} \\\\, \\\\alpha$" in tex
+    (True, True, True)
+    >>> "\\\\item[$\\\\checkmark$] \\\\textbf{cord T taut} (holds)" in tex
+    True
     """
     body = [
         _title(solution),
         _givens_section(solution.givens),
+        *_free_body_section(solution.free_body),
+        *_assumptions_section(solution.assumptions),
         _equations_section(solution.equations),
         _solution_section(solution.steps),
         _answers_section(solution.answers, solution.key),
         _checks_section(solution.checks),
     ]
-    return "\n\n".join([PREAMBLE, r"\begin{document}", *body, r"\end{document}"]) + "\n"
+    preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if solution.free_body else "")
+    return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
 def _math(fragment: str) -> str:
@@ -429,3 +456,365 @@ def _check_text(check: Check) -> str:
     detail = f": {escape_latex(pretty_unit(check.detail))}" if check.detail.strip() else ""
     status = "" if check.passed else " (failed)"
     return f"\\textbf{{{escape_latex(check.name)}}}{status}{detail}"
+
+
+# ---- free-body diagrams (scene mode)
+
+Point = tuple[float, float]
+
+_ROUND_SHAPES = frozenset({"disk", "ring", "cylinder", "sphere", "shell", "hollow"})
+_BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart), any size
+_ARROW_MM = 10.0  # every force arrow, whatever its magnitude
+_HEAD_MM, _HEAD_HALF_MM = 2.4, 0.9  # arrowhead length and half-width
+_SQUARE_MM = 8.0  # the side of the square drawn for a shape without a footprint
+_COUPLE_MM = 6.0  # the radius of a body's first couple arrow; the next ones 3 mm wider
+_LABEL_GAP_MM = 1.5
+_IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _free_body_section(bodies: Sequence[FreeBody]) -> list[str]:
+    """The "Free-body diagrams" subsection, or nothing in equation mode."""
+    if not bodies:
+        return []
+    return ["\\subsection*{Free-body diagrams}", *(_free_body(b) for b in bodies)]
+
+
+def _free_body(body: FreeBody) -> str:
+    """One body: its picture, then the motion, the moment point and the kinetic terms."""
+    shape = f" ({escape_latex(body.shape)})" if body.shape.strip() else ""
+    facts = [f"\\textbf{{Motion:}} {escape_latex(body.motion) or '?'}."]
+    if body.moment_point.strip():
+        facts.append(f"\\textbf{{Moments about:}} {escape_latex(body.moment_point)}.")
+    if body.kinetic:
+        terms = ", ".join(_kinetic_term(t) for t in body.kinetic)
+        facts.append(f"\\textbf{{Kinetic diagram:}} {terms}.")
+    if any(not f.known for f in body.forces):
+        facts.append("{\\small Unknown forces are dashed and red; known forces solid.}")
+    return "\n".join([
+        r"\par\noindent\begin{minipage}{\linewidth}",
+        f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
+        r"\begin{center}",
+        _picture(body),
+        r"\end{center}",
+        " \\\\\n".join(facts),
+        r"\end{minipage}\par\medskip",
+    ])  # fmt: skip
+
+
+def _kinetic_term(term: str) -> str:
+    """``m a_Gx`` as ``$m\\,a_{Gx}$`` when every word is a name or Greek; else as text."""
+    words = term.split()
+    if words and all(_IDENTIFIER.fullmatch(w) or _greek(w) for w in words):
+        parts = [latex_name(w) if _IDENTIFIER.fullmatch(w) else safe_math(w).strip() for w in words]
+        return "$" + r" \, ".join(parts) + "$"
+    return escape_latex(term)
+
+
+def _greek(word: str) -> bool:
+    return all(char in _GREEK for char in word)
+
+
+def _force_label(force: ForceRow) -> str:
+    """The force's name as math (spec names) or escaped text (anything else)."""
+    if _IDENTIFIER.fullmatch(force.name):
+        return _name(force.name)
+    return escape_latex(force.name) or "?"
+
+
+def _finite(value: float) -> float:
+    return value if math.isfinite(value) else 0.0
+
+
+def _footprint(shape: str, size: Sequence[float]) -> Point | None:
+    """Half the width and height of the body's outline (metres), or None for a square."""
+    sizes = [abs(_finite(v)) for v in size]
+    first = sizes[0] if sizes else 0.0
+    shape = shape.strip().lower()
+    if shape == "particle":
+        return (0.0, 0.0)
+    if not first:
+        return None
+    if shape in _ROUND_SHAPES:
+        return (first, first)
+    if shape == "rod":
+        return (first / 2, 0.0)
+    if shape in ("block", "plate"):
+        height = sizes[1] if len(sizes) > 1 and sizes[1] else first
+        return (first / 2, height / 2)
+    return None
+
+
+class _Picture:
+    """Picture-mode commands in millimetres, and the box they cover."""
+
+    def __init__(self) -> None:
+        self.commands: list[str] = []
+        self.low = [-_SQUARE_MM / 2, -_SQUARE_MM / 2]
+        self.high = [_SQUARE_MM / 2, _SQUARE_MM / 2]
+
+    def cover(self, point: Point) -> None:
+        for axis in (0, 1):
+            self.low[axis] = min(self.low[axis], point[axis])
+            self.high[axis] = max(self.high[axis], point[axis])
+
+    def curve(self, start: Point, control: Point, end: Point) -> None:
+        self.commands.append(f"\\qbezier{_xy(start)}{_xy(control)}{_xy(end)}")
+        self.cover(start)
+        self.cover(end)
+
+    def line(self, start: Point, end: Point) -> None:
+        self.curve(start, _lerp(start, end, 0.5), end)
+
+    def dashed(self, start: Point, end: Point, dash: float = 1.6, gap: float = 1.0) -> None:
+        length = math.dist(start, end)
+        if length == 0:
+            return
+        count = max(1, round((length + gap) / (dash + gap)))
+        on = length / (count + (count - 1) * gap / dash)  # dashes at both ends
+        step = on * (1 + gap / dash)
+        for i in range(count):
+            a, b = i * step / length, (i * step + on) / length
+            self.line(_lerp(start, end, a), _lerp(start, end, min(b, 1.0)))
+
+    def put(self, at: Point, content: str) -> None:
+        self.commands.append(f"\\put{_xy(at)}{{{content}}}")
+        self.cover(at)
+
+    def label(self, at: Point, direction: Point, text: str, width: float) -> None:
+        """``text`` just beyond ``at`` in ``direction``, aligned so it stays clear of it."""
+        dx, dy = direction
+        height = 4.0
+        if abs(dx) >= abs(dy):
+            align = "l" if dx > 0 else "r"
+            left = at[0] if dx > 0 else at[0] - width
+            low, high = (left, at[1] - height / 2), (left + width, at[1] + height / 2)
+        else:
+            align = "b" if dy > 0 else "t"
+            bottom = at[1] if dy > 0 else at[1] - height
+            low, high = (at[0] - width / 2, bottom), (at[0] + width / 2, bottom + height)
+        self.put(at, f"\\makebox(0,0)[{align}]{{{text}}}")
+        self.cover(low)
+        self.cover(high)
+
+    def arrowhead(self, tip: Point, unit: Point) -> None:
+        """A filled arrowhead: a fan of lines from the tip to its base."""
+        normal = (-unit[1], unit[0])
+        base = (tip[0] - _HEAD_MM * unit[0], tip[1] - _HEAD_MM * unit[1])
+        for k in range(-3, 4):
+            offset = k / 3 * _HEAD_HALF_MM
+            self.line(tip, (base[0] + offset * normal[0], base[1] + offset * normal[1]))
+
+    def arc(self, centre: Point, radius: float, start: float, sweep: float, dashed: bool) -> None:
+        """A circular arc (degrees, counterclockwise positive) in pieces of at most 45 deg."""
+        pieces = max(1, math.ceil(abs(sweep) / (15 if dashed else 45)))
+        step = sweep / pieces
+        reach = radius / math.cos(math.radians(step / 2))
+        for i in range(pieces):
+            if dashed and i % 2 and i != pieces - 1:
+                continue
+            a = start + i * step
+            self.curve(
+                _polar(centre, radius, a),
+                _polar(centre, reach, a + step / 2),
+                _polar(centre, radius, a + step),
+            )
+
+    def render(self) -> str:
+        margin = 1.0
+        x0, y0 = self.low[0] - margin, self.low[1] - margin
+        width, height = self.high[0] + margin - x0, self.high[1] + margin - y0
+        return "\n".join([
+            r"{\setlength{\unitlength}{1mm}%",
+            f"\\begin{{picture}}({_num(width)},{_num(height)})({_num(x0)},{_num(y0)})",
+            *self.commands,
+            r"\end{picture}}",
+        ])  # fmt: skip
+
+
+def _num(value: float) -> str:
+    text = f"{value:.2f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _xy(point: Point) -> str:
+    return f"({_num(point[0])},{_num(point[1])})"
+
+
+def _lerp(a: Point, b: Point, t: float) -> Point:
+    return (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+
+
+def _polar(centre: Point, radius: float, degrees: float) -> Point:
+    angle = math.radians(degrees)
+    return (centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle))
+
+
+def _label_width(force: ForceRow) -> float:
+    """A rough width of the force's label (mm), to size the picture."""
+    return min(2.0 + 1.8 * len(force.name), 30.0) + (7.0 if force.kind == "couple" else 0.0)
+
+
+def _picture(body: FreeBody) -> str:
+    """The free-body diagram: outline, G, and an arrow per force, scaled to ~35 mm."""
+    footprint = _footprint(body.shape, body.size)
+    points = [(_finite(f.x), _finite(f.y)) for f in body.forces]
+    half = max([*(footprint or (0.0, 0.0)), *(abs(c) for p in points for c in p)])
+
+    def at(point: Point) -> Point:
+        """A body point (metres from G) on the page (mm from G): never beyond 17.5 mm."""
+        if half <= 0:
+            return (0.0, 0.0)
+        return (point[0] / half * _BODY_MM / 2, point[1] / half * _BODY_MM / 2)
+
+    picture = _Picture()
+    _outline(picture, body.shape, footprint, at)
+    picture.put((0.0, 0.0), r"\circle*{1.2}")
+    picture.put((-0.8, -0.8), r"\makebox(0,0)[rt]{$G$}")
+    couples = 0
+    for force, point in zip(body.forces, points, strict=True):
+        arrow = _Picture()
+        if force.kind == "couple":
+            _couple(arrow, force, at(point), _COUPLE_MM + 3.0 * couples)
+            couples += 1
+        else:
+            unit = _unit(force.dx, force.dy)
+            room = _room(body.shape, at(footprint) if footprint else None, unit)
+            _arrow(arrow, force, point, at(point), unit, room)
+        colour = "" if force.known else r"\color{red}"
+        picture.commands += [f"{{{colour}\\linethickness{{0.7pt}}", *arrow.commands, "}"]
+        picture.cover((arrow.low[0], arrow.low[1]))
+        picture.cover((arrow.high[0], arrow.high[1]))
+    return picture.render()
+
+
+def _outline(
+    picture: _Picture, shape: str, footprint: Point | None, at: Callable[[Point], Point]
+) -> None:
+    """The body outline: circle, thick line, rectangle, dot, or a small square."""
+    shape = shape.strip().lower()
+    if footprint == (0.0, 0.0):
+        picture.put((0.0, 0.0), r"\circle*{2.5}")
+        return
+    if footprint is None:
+        hx = hy = _SQUARE_MM / 2
+    else:
+        hx, hy = at(footprint)
+    if shape in _ROUND_SHAPES and footprint is not None:
+        picture.commands.append(r"\linethickness{0.8pt}")
+        picture.arc((0.0, 0.0), hx, 0.0, 360.0, dashed=False)
+        return
+    if shape == "rod" and footprint is not None:
+        picture.commands.append(r"\linethickness{3pt}")
+        picture.line((-hx, 0.0), (hx, 0.0))
+        return
+    picture.commands.append(r"\linethickness{0.8pt}")
+    corners = [(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)]
+    for a, b in itertools.pairwise([*corners, corners[0]]):
+        picture.line(a, b)
+
+
+def _arrow(
+    picture: _Picture, force: ForceRow, point: Point, start: Point, unit: Point | None, room: float
+) -> None:
+    """A force arrow at its point: from it, or into it when it pushes on the body there.
+
+    A force whose direction points back toward G from a point off G (a normal force under
+    a body) is drawn ending at the point, outside the outline, as textbooks draw pushes.
+    An arrow from G is shortened to stay inside the outline (``room`` mm away), if it can.
+    """
+    label = _force_label(force)
+    if unit is None:  # no direction: a small circle at the point
+        picture.put(start, r"\circle{1.6}")
+        picture.label((start[0], start[1] + 1.2), (0.0, 1.0), label, _label_width(force))
+        return
+    length = _ARROW_MM
+    if point == (0.0, 0.0) and room > 0:
+        length = max(6.0, min(_ARROW_MM, 0.8 * room))
+    pushes = point != (0.0, 0.0) and point[0] * unit[0] + point[1] * unit[1] < 0
+    outward = (-unit[0], -unit[1]) if pushes else unit
+    far = (start[0] + length * outward[0], start[1] + length * outward[1])
+    tail, tip = (far, start) if pushes else (start, far)
+    shaft_end = (tip[0] - _HEAD_MM * unit[0], tip[1] - _HEAD_MM * unit[1])
+    if force.known:
+        picture.line(tail, shaft_end)
+    else:
+        picture.dashed(tail, shaft_end)
+    picture.arrowhead(tip, unit)
+    _arrow_label(picture, far, outward, point, label, _label_width(force))
+
+
+def _arrow_label(
+    picture: _Picture, far: Point, outward: Point, point: Point, text: str, width: float
+) -> None:
+    """The label beside the far end of a vertical or horizontal arrow, else beyond it.
+
+    Beside means on the side away from G, so that collinear arrows (a weight at G and a
+    normal force under the body) keep their labels apart.
+    """
+    back = (far[0] - 2.5 * outward[0], far[1] - 2.5 * outward[1])
+    if abs(outward[1]) >= 0.9:
+        side = (1.0, 0.0) if point[0] >= 0 else (-1.0, 0.0)
+    elif abs(outward[0]) >= 0.9:
+        side = (0.0, 1.0) if point[1] >= 0 else (0.0, -1.0)
+    else:
+        gap = (far[0] + _LABEL_GAP_MM * outward[0], far[1] + _LABEL_GAP_MM * outward[1])
+        picture.label(gap, outward, text, width)
+        return
+    picture.label((back[0] + 1.2 * side[0], back[1] + 1.2 * side[1]), side, text, width)
+
+
+def _unit(dx: float, dy: float) -> Point | None:
+    """The direction as a unit vector, or None when there is none."""
+    dx, dy = _finite(dx), _finite(dy)
+    largest = max(abs(dx), abs(dy))
+    if largest == 0:
+        return None
+    dx, dy = dx / largest, dy / largest  # no overflow in hypot
+    norm = math.hypot(dx, dy)
+    return (dx / norm, dy / norm)
+
+
+def _room(shape: str, half: Point | None, unit: Point | None) -> float:
+    """How far (mm) the outline is from G in direction ``unit``; 0 for a rod or a dot."""
+    if half is None or not half[0] or not half[1] or unit is None:
+        return 0.0
+    if shape.strip().lower() in _ROUND_SHAPES:
+        return half[0]
+    return min(h / abs(u) for h, u in zip(half, unit, strict=True) if u)
+
+
+def _couple(picture: _Picture, force: ForceRow, centre: Point, radius: float) -> None:
+    """A couple: a 270-degree arrow around its point, open at the bottom.
+
+    The gap lets a weight at G through; the label sits outside the arc, upper right for
+    ccw and upper left for cw.
+    """
+    clockwise = force.direction.strip().lower() in ("cw", "clockwise")
+    start, sweep = (225.0, -270.0) if clockwise else (-45.0, 270.0)
+    end = math.radians(start + sweep)
+    sense = (math.sin(end), -math.cos(end)) if clockwise else (-math.sin(end), math.cos(end))
+    picture.arc(centre, radius, start, sweep, dashed=not force.known)
+    picture.arrowhead(_polar(centre, radius, start + sweep), sense)
+    text = f"{_force_label(force)} ({'cw' if clockwise else 'ccw'})"
+    corner = 135.0 if clockwise else 45.0
+    radial = (math.cos(math.radians(corner)), math.sin(math.radians(corner)))
+    picture.label(_polar(centre, radius + 1.0, corner), radial, text, _label_width(force))
+
+
+# ---- assumptions
+
+
+def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
+    """The "Assumptions" subsection: each assumption made to solve, and whether it held."""
+    if not assumptions:
+        return []
+    items = [f"\\item[{_mark(a.holds)}] {_assumption_text(a)}" for a in assumptions]
+    return ["\n".join(["\\subsection*{Assumptions}", r"\begin{itemize}", *items,
+                       r"\end{itemize}"])]  # fmt: skip
+
+
+def _assumption_text(assumption: Assumption) -> str:
+    detail = pretty_unit(assumption.detail)
+    detail = f": {escape_latex(detail)}" if detail.strip() else ""
+    status = "holds" if assumption.holds else "\\textbf{fails}"
+    return f"\\textbf{{{escape_latex(assumption.name) or '?'}}} ({status}){detail}"

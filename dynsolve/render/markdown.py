@@ -1,8 +1,10 @@
 """Render a :class:`~dynsolve.results.Solution` as GitHub-flavoured Markdown.
 
-Sections and wording follow the LaTeX renderer: title, Given, Equations, Solution,
-Answers, Checks. Math goes in ``$...$`` (inline) and ``$$...$$`` (display) using the
-solution's LaTeX fragments; plain text goes through :func:`escape_markdown`.
+Sections and wording follow the LaTeX renderer: title, Given, Free-body diagrams and
+Assumptions (scene mode only), Equations, Solution, Answers, Checks; a free-body diagram
+is a table of the body's forces here. Math goes in ``$...$`` (inline) and ``$$...$$``
+(display) using the solution's LaTeX fragments; plain text goes through
+:func:`escape_markdown`.
 """
 
 from __future__ import annotations
@@ -15,9 +17,12 @@ from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.results import (
     AnswerRow,
+    Assumption,
     Check,
     EquationRow,
+    ForceRow,
     Formula,
+    FreeBody,
     GivenRow,
     KeyComparison,
     Solution,
@@ -27,6 +32,7 @@ from dynsolve.results import (
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
 _LEADING_MARKER = re.compile(r"^(\d+)([.)])(?=\s|$)|^([-+])(?=\s|$)")
 _SPACE = re.compile(r"\s+")
+_IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
 def escape_markdown(text: str) -> str:
@@ -62,10 +68,24 @@ def render_markdown(solution: Solution) -> str:
     '# Drum \\\\& block'
     >>> "| $T$ | $106\\\\,\\\\mathrm{N}$ |" in doc
     True
+
+    In scene mode each body's forces are a table:
+
+    >>> from dynsolve.results import ForceRow, FreeBody
+    >>> pull = ForceRow("T", "tension", "A", 0.4, 0.0, "down", 0.0, -1.0, False, "")
+    >>> drum = FreeBody("drum", "disk", (0.4,), "rotation about O", (pull,), ("I_G α",), "O")
+    >>> doc = render_markdown(Solution("d.dyn", "Drum", "", "SI", "scene", (), (), (), (), (),
+    ...                                (), "solved", free_body=(drum,)))
+    >>> "| $T$ | tension | A | down | **no** |  |" in doc
+    True
+    >>> "- Kinetic diagram: $I_{G} \\\\, α$" in doc
+    True
     """
     sections = [
         _title(solution),
         _givens_section(solution.givens),
+        *_free_body_section(solution.free_body),
+        *_assumptions_section(solution.assumptions),
         _equations_section(solution.equations),
         _solution_section(solution.steps),
         _answers_section(solution.answers, solution.key),
@@ -223,5 +243,70 @@ def _checks_section(checks: Sequence[Check]) -> str:
     )
 
 
-def _check_detail(check: Check) -> str:
+def _check_detail(check: Check | Assumption) -> str:
     return escape_markdown(pretty_unit(check.detail))
+
+
+# ---- scene mode
+
+
+def _free_body_section(bodies: Sequence[FreeBody]) -> list[str]:
+    """The "Free-body diagrams" section, or nothing in equation mode."""
+    if not bodies:
+        return []
+    return ["\n\n".join(["## Free-body diagrams", *(_free_body(b) for b in bodies)])]
+
+
+def _free_body(body: FreeBody) -> str:
+    """A body: its forces as a table, then the motion, moment point and kinetic terms."""
+    shape = f" ({escape_markdown(body.shape)})" if body.shape.strip() else ""
+    blocks = [f"### {escape_markdown(body.body) or '?'}{shape}"]
+    if body.forces:
+        header = ["Force", "Kind", "Point", "Direction", "Known", "Value"]
+        rows = [_force_cells(f) for f in body.forces]
+        blocks.append(_table(header, [":--"] * len(header), rows))
+    else:
+        blocks.append("No forces.")
+    facts = [f"- Motion: {escape_markdown(body.motion) or '?'}"]
+    if body.moment_point.strip():
+        facts.append(f"- Moments about: {escape_markdown(body.moment_point)}")
+    if body.kinetic:
+        facts.append("- Kinetic diagram: " + ", ".join(_kinetic_term(t) for t in body.kinetic))
+    blocks.append("\n".join(facts))
+    return "\n\n".join(blocks)
+
+
+def _force_cells(force: ForceRow) -> list[str]:
+    name = _force_name(force.name)
+    known = "yes" if force.known else "**no**"
+    text = [escape_markdown(t) for t in (force.kind, force.point, force.direction)]
+    return [name, *text, known, escape_markdown(pretty_unit(force.value))]
+
+
+def _force_name(name: str) -> str:
+    """A spec name as math; anything else as escaped text."""
+    if _IDENTIFIER.fullmatch(name):
+        return _cell_math(latex_name(name))
+    return escape_markdown(name) or "?"
+
+
+def _kinetic_term(term: str) -> str:
+    """``m a_Gx`` as ``$m \\, a_{Gx}$`` when every word is a name or Greek; else as text."""
+    words = term.split()
+    if words and all(_IDENTIFIER.fullmatch(w) or _greek(w) for w in words):
+        parts = [latex_name(w) if _IDENTIFIER.fullmatch(w) else w for w in words]
+        return _math(" \\, ".join(parts))
+    return escape_markdown(term)
+
+
+def _greek(word: str) -> bool:
+    return all("\u0391" <= char <= "\u03c9" and char.isalpha() for char in word)
+
+
+def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
+    """The "Assumptions" table: each assumption made to solve, and whether it held."""
+    if not assumptions:
+        return []
+    rows = [[_mark(a.holds), escape_markdown(a.name) or "?", _check_detail(a)] for a in assumptions]
+    table = _table(["", "Assumption", "Detail"], [":-:", ":--", ":--"], rows)
+    return [f"## Assumptions\n\n{table}"]

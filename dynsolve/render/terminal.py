@@ -18,22 +18,46 @@ from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
 
-from dynsolve.format import and_list, lines_phrase
+from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import pretty
-from dynsolve.results import Check, KeyComparison, Solution, Step
+from dynsolve.results import Assumption, Check, FreeBody, KeyComparison, Solution, Step
 
 WIDTH = 100
 
 
 def solution_renderable(solution: Solution) -> RenderableType:
-    """The whole derivation as one rich renderable."""
+    """The whole derivation as one rich renderable.
+
+    Scene mode adds the free-body diagrams (as tables) after Given, the assumptions after
+    Answers:
+
+    >>> from dynsolve.results import Assumption, ForceRow, FreeBody
+    >>> pull = ForceRow("T", "tension", "A", 0.4, 0.0, "down", 0.0, -1.0, False, "")
+    >>> drum = FreeBody("drum", "disk", (0.4,), "rotation about O", (pull,), ("I_G α",), "O")
+    >>> scene = Solution("d.dyn", "Drum", "", "SI", "scene", (), (), (), (), (), (), "solved",
+    ...                  free_body=(drum,), assumptions=(Assumption("cord T taut", True, ""),))
+    >>> lines = [line.rstrip() for line in render_text(scene).splitlines()]
+    >>> lines.index("Free-body diagrams") < lines.index("Answers") < lines.index("Assumptions")
+    True
+    >>> first = lines.index("drum (disk)")
+    >>> print("\\n".join(lines[first : first + 5]))
+    drum (disk)
+    force  kind     at  direction  known  value
+    T      tension  A   down       no
+    motion: rotation about O · moments about O
+    kinetic diagram: I_G α
+    """
     parts: list[RenderableType] = [_title(solution)]
     if solution.givens:
         parts += [_heading("Given"), _givens(solution)]
+    if solution.free_body:
+        parts += [_heading("Free-body diagrams"), *(_free_body(b) for b in solution.free_body)]
     parts += [_heading("Equations (units checked)"), _equations(solution)]
     if solution.steps:
         parts += [_heading("Solve order"), *(_step(s) for s in solution.steps)]
     parts += [_heading("Answers"), _answers(solution)]
+    if solution.assumptions:
+        parts += [_heading("Assumptions"), _assumptions(solution.assumptions)]
     parts += [_heading("Checks"), _checks(solution.checks)]
     return Group(*parts)
 
@@ -112,6 +136,39 @@ def _checks(checks: tuple[Check, ...]) -> Table:
     for c in checks:
         mark = Text("✓", style="green") if c.passed else Text("✗", style="bold red")
         table.add_row(mark, c.name, c.detail)
+    return table
+
+
+def _free_body(body: FreeBody) -> RenderableType:
+    """A body's forces as a table, then its motion, moment point and kinetic terms."""
+    shape = f" ({body.shape})" if body.shape else ""
+    rows: list[RenderableType] = [Text(f"{body.body}{shape}", style="bold")]
+    table = _table("force", "kind", "at", "direction", "known", "value")
+    for f in body.forces:
+        known = Text("yes") if f.known else Text("no", style="yellow")
+        table.add_row(
+            Text(pretty(f.name), style="bold"),
+            Text(f.kind),
+            Text(f.point),
+            Text(f.direction),
+            known,
+            Text(pretty_unit(f.value)),
+        )
+    if body.forces:
+        rows.append(table)
+    about = f" · moments about {body.moment_point}" if body.moment_point else ""
+    rows.append(Text(f"motion: {body.motion}{about}", style="dim"))
+    if body.kinetic:
+        terms = ", ".join(" ".join(pretty(w) for w in t.split()) for t in body.kinetic)
+        rows.append(Text(f"kinetic diagram: {terms}", style="dim"))
+    return Group(*rows, Text(""))
+
+
+def _assumptions(assumptions: tuple[Assumption, ...]) -> Table:
+    table = _table("", "assumption", "detail")
+    for a in assumptions:
+        mark = Text("✓", style="green") if a.holds else Text("✗", style="bold red")
+        table.add_row(mark, Text(a.name), Text(pretty_unit(a.detail)))
     return table
 
 

@@ -1,0 +1,621 @@
+"""Build the physical model of a scene from its spec lines: bodies, points, supports, loads.
+
+Every expression is checked for its dimension (a mass is a mass, a position a length)
+and every name for existence, with the spec line and column in the error; positions
+become absolute scene coordinates (sympy, in terms of the givens).
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> from dynsolve.units import Dim
+>>> import sympy
+>>> m, r = sympy.symbols("m r", positive=True)
+>>> text = "scene:\\n  point O: (0, 0)\\n  body drum: mass m, disk r\\n  pin drum at O"
+>>> spec = parse_spec(text, "s.dyn")
+>>> scene = build_scene(spec, {"m": m, "r": r}, {"m": Dim.of("mass"), "r": Dim.of("length")})
+>>> scene.bodies["drum"].I_G
+m*r**2/2
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+
+import sympy
+
+from dynsolve.dimensions import check_dimensions, constant_value
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.expressions import to_sympy
+from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.units import Dim
+
+Vec = tuple[sympy.Expr, sympy.Expr]
+ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+WORDS: dict[str, Vec] = {
+    "up": (sympy.Integer(0), sympy.Integer(1)),
+    "down": (sympy.Integer(0), sympy.Integer(-1)),
+    "right": (sympy.Integer(1), sympy.Integer(0)),
+    "left": (sympy.Integer(-1), sympy.Integer(0)),
+}
+LENGTH, MASS, FORCE = Dim.of("length"), Dim.of("mass"), Dim.of("force")
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body or particle: mass, I about G (z axis), G and its named points."""
+
+    name: str
+    mass: sympy.Expr
+    I_G: sympy.Expr
+    G: Vec  # absolute
+    origin: Vec  # absolute: where body-relative positions are measured from ('at')
+    shape: str
+    sizes: tuple[sympy.Expr, ...]
+    points: Mapping[str, Vec]  # absolute positions of the body's named points
+    particle: bool
+    inertia_note: str  # how I_G was found (shape formula, gyration, composite lines)
+    line: int
+    column: int
+
+    @property
+    def radius(self) -> sympy.Expr | None:
+        """The radius of a round body (disk, ring, cylinder, sphere, shell, hollow)."""
+        if self.shape in ("disk", "ring", "hollow", "sphere", "shell") and self.sizes:
+            return self.sizes[0]
+        return None
+
+
+@dataclass(frozen=True)
+class Support:
+    """A pin, contact, rolling contact or flat base between a body and the fixed ground."""
+
+    kind: str  # "pin", "contact", "rolls", "base"
+    name: str  # the point's or base's name, used for the reactions (O_n, N_A, x_C)
+    body: str
+    point: Vec  # absolute position (a base: its start)
+    normal: Vec  # unit normal, pushing on the body
+    mu_s: sympy.Expr | None = None
+    mu_k: sympy.Expr | None = None
+    smooth: bool = False
+    slides: Vec | None = None  # the sliding direction of the body's contact point
+    end: Vec | None = None  # a base's end point
+    line: int = 0
+    column: int = 0
+
+    @property
+    def tangent(self) -> Vec:
+        """The normal turned 90° clockwise: the positive sense of the friction force."""
+        return (self.normal[1], -self.normal[0])
+
+
+@dataclass(frozen=True)
+class Cord:
+    """An inextensible massless cord pulling ``body`` at ``point`` along ``direction``."""
+
+    name: str
+    body: str
+    point: Vec
+    direction: Vec
+    other: str = ""  # the body at the other end ("" for a fixed support)
+    other_point: Vec | None = None
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Load:
+    """A force (magnitude along ``direction`` at ``point``) or a couple (``sense`` ±1)."""
+
+    kind: str  # "force" or "couple"
+    name: str
+    body: str
+    point: Vec = ZERO
+    point_name: str = ""
+    direction: Vec = ZERO
+    sense: int = 1  # +1 ccw, -1 cw (couples)
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Scene:
+    """The whole scene at the instant."""
+
+    bodies: Mapping[str, Body]
+    fixed_points: Mapping[str, Vec]
+    supports: tuple[Support, ...]
+    cords: tuple[Cord, ...]
+    loads: tuple[Load, ...]
+    gravity: Vec | None
+    omegas: Mapping[str, sympy.Expr]  # signed, ccw positive
+    motions: Mapping[str, str] = field(default_factory=dict)
+    point_names: Mapping[Vec, str] = field(default_factory=dict)
+
+
+class _Builder:
+    """Reads scene lines in two passes: bodies and points first, then what refers to them."""
+
+    def __init__(self, spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str, Dim]):
+        self.spec, self.symbols, self.dims = spec, symbols, dims
+        self.file = spec.file
+        self.bodies: dict[str, Body] = {}
+        self.fixed: dict[str, Vec] = {}
+        self.parts: dict[str, list[tuple[SceneStmt, Part]]] = {}
+
+    # ---- helpers
+    def where(self, line: int, column: int) -> Position:
+        return Position(self.file, line, column)
+
+    def value(self, expr: Expr, dim: Dim, what: str) -> sympy.Expr:
+        """An expression of the givens, checked to have dimension ``dim`` (0 fits any)."""
+        if constant_value(expr) == 0:
+            return sympy.Integer(0)
+        for name in iter_names(expr):
+            if name.text not in self.symbols and name.text != "pi":
+                close = difflib.get_close_matches(name.text, list(self.symbols), n=1)
+                hint = f"did you mean '{close[0]}'?" if close else "declare it under given:"
+                raise SpecError(
+                    f"'{name.text}' in the scene is not a given",
+                    self.where(name.line, name.column),
+                    hint,
+                )
+        probe = EquationStmt(
+            Name("__value__", expr.line, expr.column), "=", expr, "", "", expr.line, expr.column
+        )
+        report = check_dimensions((probe,), {**self.dims, "pi": Dim()}, self.file)
+        found = report.dims["__value__"]
+        if found != dim:
+            raise DimensionError(
+                f"{what} must be {_article(dim.name)}, but '{expr}' is {_article(found.name)}",
+                self.where(expr.line, expr.column),
+                hint="check the units of the givens it uses",
+            )
+        return to_sympy(expr, self.symbols)
+
+    def vector(self, vector: tuple[Expr, Expr], what: str) -> Vec:
+        return (self.value(vector[0], LENGTH, what), self.value(vector[1], LENGTH, what))
+
+    def body(self, name: str, line: int, column: int) -> Body:
+        if name not in self.bodies:
+            close = difflib.get_close_matches(name, list(self.bodies), n=1)
+            hint = f"did you mean '{close[0]}'?" if close else "declare it with 'body NAME: …'"
+            raise SpecError(f"there is no body '{name}'", self.where(line, column), hint)
+        return self.bodies[name]
+
+    def location(self, body: Body, location: Location) -> tuple[Vec, str]:
+        """An absolute point and its name for a location on ``body``."""
+        if location.vector is not None:
+            offset = self.vector(location.vector, "a position")
+            return (body.origin[0] + offset[0], body.origin[1] + offset[1]), ""
+        name = location.point
+        if name == "G":
+            return body.G, "G"
+        if name in body.points:
+            return body.points[name], name
+        if name in self.fixed:
+            return self.fixed[name], name
+        known = sorted({*body.points, *self.fixed, "G"})
+        close = difflib.get_close_matches(name, known, n=1)
+        hint = f"did you mean '{close[0]}'?" if close else "declare it with 'point NAME: (x, y)'"
+        raise SpecError(
+            f"there is no point '{name}' on {body.name}",
+            self.where(location.line, location.column),
+            hint,
+        )
+
+    def direction(self, direction: Direction, origin: Vec | None = None) -> Vec:
+        if direction.kind == "word":
+            if direction.word not in WORDS:
+                raise SpecError(
+                    f"'{direction.word}' is not a direction here",
+                    self.where(direction.line, direction.column),
+                    hint="use up, down, left, right, angle EXPR, toward POINT or (dx, dy)",
+                )
+            return WORDS[direction.word]
+        if direction.kind == "angle":
+            assert direction.angle is not None
+            angle = self.value(direction.angle, Dim(), "an angle")
+            return (sympy.cos(angle), sympy.sin(angle))
+        if direction.kind == "toward":
+            if direction.point not in self.fixed:
+                raise SpecError(
+                    f"there is no fixed point '{direction.point}'",
+                    self.where(direction.line, direction.column),
+                    hint="declare it with 'point NAME: (x, y)'",
+                )
+            assert origin is not None
+            target = self.fixed[direction.point]
+            return _unit((target[0] - origin[0], target[1] - origin[1]))
+        assert direction.vector is not None
+        x, y = (to_sympy(c, self.symbols) for c in direction.vector)
+        return _unit((x, y))
+
+    # ---- pass 1: bodies, parts, points
+    def declare(self, stmt: SceneStmt) -> None:
+        if stmt.kind == "body":
+            if stmt.name in self.bodies:
+                raise SpecError(
+                    f"body '{stmt.name}' is declared twice",
+                    self.where(stmt.line, stmt.column),
+                    hint="give each body its own name",
+                )
+            self.bodies[stmt.name] = self.simple_body(stmt)
+        elif stmt.kind in ("part", "hole"):
+            self.parts.setdefault(stmt.body, []).append((stmt, self.part(stmt)))
+        elif stmt.kind == "point" and not stmt.body:
+            self.fixed[stmt.name] = self.vector(stmt.vectors[0], "a point's position")
+
+    def props(self, stmt: SceneStmt) -> dict[str, Prop]:
+        found: dict[str, Prop] = {}
+        for prop in stmt.props:
+            if prop.key in found:
+                raise SpecError(
+                    f"'{prop.key}' is given twice for {stmt.name or stmt.body}",
+                    self.where(stmt.line, stmt.column),
+                    hint="keep one",
+                )
+            found[prop.key] = prop
+        return found
+
+    def mass(self, props: dict[str, Prop], stmt: SceneStmt) -> sympy.Expr | None:
+        if "mass" in props:
+            return self.value(props["mass"].values[0], MASS, "a mass")
+        if "weight" in props:
+            return self.value(props["weight"].values[0], FORCE, "a weight") / self.symbols["g"]
+        return None
+
+    def simple_body(self, stmt: SceneStmt) -> Body:
+        props = self.props(stmt)
+        at = self.vector(props["at"].vector, "a position") if "at" in props else ZERO
+        where = self.where(stmt.line, stmt.column)
+        if "composite" in props:
+            # filled in by finish_composites once its parts are known
+            return Body(
+                stmt.name,
+                sympy.Integer(0),
+                sympy.Integer(0),
+                at,
+                at,
+                "composite",
+                (),
+                {},
+                False,
+                "",
+                stmt.line,
+                stmt.column,
+            )
+        mass = self.mass(props, stmt)
+        if mass is None:
+            raise SpecError(
+                f"body '{stmt.name}' has no mass", where, hint="add 'mass m' or 'weight W'"
+            )
+        shape = props["shape"].word if "shape" in props else ""
+        sizes = tuple(
+            self.value(v, LENGTH, f"a size of the {shape}")
+            for v in props.get("shape", Prop("")).values
+        )
+        I_G, note = self.inertia(stmt, props, mass, shape, sizes, at)
+        particle = shape == "particle" or (
+            not shape and "gyration" not in props and "inertia" not in props
+        )
+        return Body(
+            stmt.name,
+            mass,
+            I_G,
+            at,
+            at,
+            shape or ("particle" if particle else "body"),
+            sizes,
+            {},
+            particle,
+            note,
+            stmt.line,
+            stmt.column,
+        )
+
+    def inertia(
+        self,
+        stmt: SceneStmt,
+        props: dict[str, Prop],
+        mass: sympy.Expr,
+        shape: str,
+        sizes: tuple[sympy.Expr, ...],
+        at: Vec,
+    ) -> tuple[sympy.Expr, str]:
+        where = self.where(stmt.line, stmt.column)
+        if "gyration" in props:
+            prop = props["gyration"]
+            k = self.value(prop.values[0], LENGTH, "a radius of gyration")
+            about = from_gyration(mass, k)
+            if not prop.about:
+                return about, "I_G = m k_G²"
+            return self.moved(about, mass, prop.about, at, where), f"I_{prop.about} = m k²"
+        if "inertia" in props:
+            prop = props["inertia"]
+            given = self.value(prop.values[0], Dim(2, 1, 0), "a moment of inertia")
+            if not prop.about:
+                return given, "I_G given"
+            return self.moved(given, mass, prop.about, at, where), f"I_{prop.about} given"
+        if shape and shape != "particle":
+            try:
+                return inertia_about_G(shape, mass, sizes), f"{shape} formula"
+            except ValueError as exc:
+                raise SpecError(str(exc), where, hint="see the shape table in docs") from None
+        return sympy.Integer(0), "particle"
+
+    def moved(
+        self, I_P: sympy.Expr, mass: sympy.Expr, point: str, at: Vec, where: Position
+    ) -> sympy.Expr:
+        """I about G from I about a fixed point (parallel-axis theorem)."""
+        if point not in self.fixed:
+            raise SpecError(
+                f"there is no fixed point '{point}' to take the inertia about",
+                where,
+                hint="declare it with 'point NAME: (x, y)' before the body",
+            )
+        P = self.fixed[point]
+        d = sympy.sqrt((at[0] - P[0]) ** 2 + (at[1] - P[1]) ** 2)
+        return to_G(I_P, mass, d)
+
+    def part(self, stmt: SceneStmt) -> Part:
+        props = self.props(stmt)
+        where = self.where(stmt.line, stmt.column)
+        shape = props["shape"].word if "shape" in props else "particle"
+        sizes = tuple(
+            self.value(v, LENGTH, f"a size of the {shape}")
+            for v in props.get("shape", Prop("")).values
+        )
+        at = self.vector(props["at"].vector, "a position") if "at" in props else ZERO
+        mass = self.mass(props, stmt)
+        if mass is None and "density" in props:
+            from dynsolve.model.inertia import mass_from_density
+
+            density = self.value(props["density"].values[0], Dim(-3, 1, 0), "a density")
+            thickness = (
+                self.value(props["thickness"].values[0], LENGTH, "a thickness")
+                if "thickness" in props
+                else None
+            )
+            try:
+                mass = mass_from_density(shape, density, sizes, thickness)
+            except ValueError as exc:
+                raise SpecError(str(exc), where, hint="give a mass instead") from None
+        if mass is None:
+            raise SpecError(
+                f"this {stmt.kind} of {stmt.body} has no mass",
+                where,
+                hint="add 'mass m', or 'density rho' (and 'thickness t' for flat shapes)",
+            )
+        name = f"{stmt.kind} {len(self.parts.get(stmt.body, [])) + 1} ({shape})"
+        try:
+            return Part(name, shape, mass, sizes, at, hole=stmt.kind == "hole")
+        except ValueError as exc:
+            raise SpecError(str(exc), where, hint="see the shape table in docs") from None
+
+    def finish_composites(self) -> None:
+        for name, body in list(self.bodies.items()):
+            parts = self.parts.pop(name, [])
+            if body.shape != "composite":
+                if parts:
+                    stmt = parts[0][0]
+                    raise SpecError(
+                        f"body '{name}' is not composite but has parts",
+                        self.where(stmt.line, stmt.column),
+                        hint=f"write 'body {name}: composite'",
+                    )
+                continue
+            if not parts:
+                raise SpecError(
+                    f"composite body '{name}' has no parts",
+                    self.where(body.line, body.column),
+                    hint=f"add lines 'part {name}: disk R, mass m, at (x, y)'",
+                )
+            try:
+                whole = composite(p for _, p in parts)
+            except ValueError as exc:
+                raise SpecError(
+                    str(exc), self.where(body.line, body.column), "check the parts"
+                ) from None
+            G = (body.origin[0] + whole.G[0], body.origin[1] + whole.G[1])
+            note = "composite: " + "; ".join(t.text() for t in whole.terms())
+            self.bodies[name] = Body(
+                name,
+                whole.mass,
+                whole.I_G,
+                G,
+                body.origin,
+                "composite",
+                (),
+                {},
+                False,
+                note,
+                body.line,
+                body.column,
+            )
+        for body_name, parts in self.parts.items():
+            stmt = parts[0][0]
+            raise SpecError(
+                f"there is no body '{body_name}' for this {stmt.kind}",
+                self.where(stmt.line, stmt.column),
+                hint=f"declare 'body {body_name}: composite' first",
+            )
+
+    def body_points(self) -> None:
+        """Attach ``point NAME on BODY`` points (relative to the body's origin)."""
+        for stmt in self.spec.scene:
+            if stmt.kind != "point" or not stmt.body:
+                continue
+            body = self.body(stmt.body, stmt.line, stmt.column)
+            offset = self.vector(stmt.vectors[0], "a point's position")
+            point = (body.origin[0] + offset[0], body.origin[1] + offset[1])
+            self.bodies[body.name] = replace(body, points={**body.points, stmt.name: point})
+
+
+def _unit(vector: Vec) -> Vec:
+    length = sympy.sqrt(vector[0] ** 2 + vector[1] ** 2)
+    return (sympy.simplify(vector[0] / length), sympy.simplify(vector[1] / length))
+
+
+def _article(text: str) -> str:
+    return ("an " if text[:1] in "aeiou" else "a ") + text
+
+
+def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str, Dim]) -> Scene:
+    """The scene model of ``spec``; ``symbols`` and ``dims`` cover every given (and g)."""
+    builder = _Builder(spec, symbols, dims)
+    for stmt in spec.scene:
+        builder.declare(stmt)
+    builder.finish_composites()
+    builder.body_points()
+    supports: list[Support] = []
+    cords: list[Cord] = []
+    loads: list[Load] = []
+    gravity: Vec | None = None
+    omegas: dict[str, sympy.Expr] = {}
+    motions: dict[str, str] = {}
+    for stmt in spec.scene:
+        if stmt.kind in ("pin", "contact", "rolls", "base"):
+            supports.append(_support(builder, stmt))
+        elif stmt.kind == "cord":
+            cords.append(_cord(builder, stmt))
+        elif stmt.kind in ("force", "couple"):
+            loads.append(_load(builder, stmt))
+        elif stmt.kind == "gravity":
+            gravity = builder.direction(stmt.direction) if stmt.direction else WORDS["down"]
+        elif stmt.kind == "omega":
+            builder.body(stmt.body, stmt.line, stmt.column)
+            assert stmt.value is not None
+            omega = builder.value(stmt.value, Dim(0, 0, -1), "an angular velocity")
+            omegas[stmt.body] = -omega if stmt.word == "cw" else omega
+        elif stmt.kind == "motion":
+            builder.body(stmt.body, stmt.line, stmt.column)
+            motions[stmt.body] = stmt.word
+    names = {v: k for k, v in builder.fixed.items()}
+    for body in builder.bodies.values():
+        names.update({v: k for k, v in body.points.items()})
+    return Scene(
+        builder.bodies,
+        builder.fixed,
+        tuple(supports),
+        tuple(cords),
+        tuple(loads),
+        gravity,
+        omegas,
+        motions,
+        names,
+    )
+
+
+def _support(builder: _Builder, stmt: SceneStmt) -> Support:
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    props = {p.key: p for p in stmt.props}
+    normal = builder.direction(props["normal"].direction) if "normal" in props else WORDS["up"]
+    mu_s = builder.value(props["mu_s"].values[0], Dim(), "μs") if "mu_s" in props else None
+    mu_k = builder.value(props["mu_k"].values[0], Dim(), "μk") if "mu_k" in props else None
+    slides = builder.direction(props["slides"].direction) if "slides" in props else None
+    smooth = "smooth" in props or (mu_s is None and mu_k is None and stmt.kind == "contact")
+    if stmt.kind == "pin":
+        if stmt.name not in builder.fixed:
+            raise SpecError(
+                f"there is no fixed point '{stmt.name}' to pin {body.name} at",
+                builder.where(stmt.line, stmt.column),
+                hint=f"declare it with 'point {stmt.name}: (x, y)'",
+            )
+        return Support(
+            "pin",
+            stmt.name,
+            body.name,
+            builder.fixed[stmt.name],
+            WORDS["up"],
+            line=stmt.line,
+            column=stmt.column,
+        )
+    if stmt.kind == "base":
+        start = builder.vector(stmt.vectors[0], "a base's end")
+        end = builder.vector(stmt.vectors[1], "a base's end")
+        start = (body.origin[0] + start[0], body.origin[1] + start[1])
+        end = (body.origin[0] + end[0], body.origin[1] + end[1])
+        along = _unit((end[0] - start[0], end[1] - start[1]))
+        normal = (-along[1], along[0])  # the base's left normal: into the body from below
+        return Support(
+            "base",
+            stmt.name,
+            body.name,
+            start,
+            normal,
+            mu_s,
+            mu_k,
+            smooth,
+            slides,
+            end,
+            stmt.line,
+            stmt.column,
+        )
+    assert stmt.location is not None
+    point, name = builder.location(body, stmt.location)
+    if not name:
+        name = f"{stmt.kind[0].upper()}{len(stmt.body)}"
+    if stmt.kind == "rolls" and body.radius is None:
+        raise SpecError(
+            f"{body.name} rolls but has no radius",
+            builder.where(stmt.line, stmt.column),
+            hint="give it a round shape, e.g. 'disk R'",
+        )
+    return Support(
+        stmt.kind,
+        name,
+        body.name,
+        point,
+        normal,
+        mu_s,
+        mu_k,
+        smooth,
+        slides,
+        None,
+        stmt.line,
+        stmt.column,
+    )
+
+
+def _cord(builder: _Builder, stmt: SceneStmt) -> Cord:
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    assert stmt.location is not None and stmt.direction is not None
+    point, _ = builder.location(body, stmt.location)
+    direction = builder.direction(stmt.direction, point)
+    other_point = None
+    if stmt.other:
+        other = builder.body(stmt.other, stmt.line, stmt.column)
+        if stmt.other_location is not None:
+            other_point, _ = builder.location(other, stmt.other_location)
+        else:
+            other_point = other.G
+    elif stmt.word != "fixed":
+        raise SpecError(
+            f"cord {stmt.name} has one end on {body.name} and no other end",
+            builder.where(stmt.line, stmt.column),
+            hint="add 'to BODY' or ', fixed'",
+        )
+    return Cord(
+        stmt.name, body.name, point, direction, stmt.other, other_point, stmt.line, stmt.column
+    )
+
+
+def _load(builder: _Builder, stmt: SceneStmt) -> Load:
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    if stmt.kind == "couple":
+        return Load(
+            "couple",
+            stmt.name,
+            body.name,
+            sense=-1 if stmt.word == "cw" else 1,
+            line=stmt.line,
+            column=stmt.column,
+        )
+    assert stmt.location is not None and stmt.direction is not None
+    point, name = builder.location(body, stmt.location)
+    direction = builder.direction(stmt.direction, point)
+    return Load(
+        "force", stmt.name, body.name, point, name, direction, line=stmt.line, column=stmt.column
+    )

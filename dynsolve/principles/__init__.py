@@ -1,0 +1,1 @@
+"""Principles: each turns a scene model into the textbook equations, nothing else."""

@@ -1,0 +1,557 @@
+"""Newton–Euler equations of a planar scene: free-body diagrams, ΣF = m a_G, ΣM, constraints.
+
+Each body gets the textbook's equations for its motion: translation (ΣF = m a_G,
+ΣM = 0 about G or a kinetic moment about a better point), fixed-axis rotation about a
+pin (n-t components and ΣM_O = I_O α) or general plane motion (ΣM_P = I_G α +
+(r_G/P × m a_G) with P chosen to eliminate unknown reactions, and said why). Kinematic
+constraints come from the supports: contact kept, no slip, rolling, taut cords.
+
+Nothing here solves; the result is an equation system and the diagrams as data.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import sympy
+
+from dynsolve.model.scene import Body, Scene, Support, Vec
+from dynsolve.names import pretty
+from dynsolve.system import Equation
+from dynsolve.units import Dim
+
+FORCE, ACCELERATION, LENGTH = Dim.of("force"), Dim.of("acceleration"), Dim.of("length")
+ANGULAR_ACCELERATION, MOMENT = Dim.of("angular_acceleration"), Dim.of("moment")
+
+
+@dataclass(frozen=True)
+class ForceTerm:
+    """A force on a body's free-body diagram: magnitude along a unit direction at a point."""
+
+    name: str
+    kind: str  # "weight", "reaction", "friction", "tension", "applied"
+    body: str
+    point: Vec
+    point_name: str
+    direction: Vec
+    magnitude: sympy.Expr  # a symbol (known or unknown) or an expression (μk N)
+    known: bool
+
+    @property
+    def vector(self) -> Vec:
+        """The force as a vector."""
+        return (self.magnitude * self.direction[0], self.magnitude * self.direction[1])
+
+
+@dataclass(frozen=True)
+class CoupleTerm:
+    """A couple moment on a body (signed, counterclockwise positive)."""
+
+    name: str
+    body: str
+    moment: sympy.Expr
+    known: bool
+
+
+@dataclass(frozen=True)
+class Kinematics:
+    """How a body moves at the instant: α, a_G and ω as expressions of the unknowns."""
+
+    motion: str  # "translation", "rotation", "general", "particle"
+    alpha: sympy.Expr
+    a_G: Vec
+    omega: sympy.Expr
+    pin: Support | None = None
+
+
+@dataclass(frozen=True)
+class Formulation:
+    """The scene's equations, unknowns (with dimensions), diagrams and named quantities."""
+
+    equations: tuple[Equation, ...]
+    unknowns: Mapping[sympy.Symbol, Dim]
+    forces: Mapping[str, tuple[ForceTerm, ...]]
+    couples: Mapping[str, tuple[CoupleTerm, ...]]
+    kinematics: Mapping[str, Kinematics]
+    moment_points: Mapping[str, str]
+    reactions: Mapping[str, tuple[sympy.Symbol, Vec]]  # unknown force name → (symbol, axis)
+    kinetic: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+
+
+def cross(r: Vec, f: Vec) -> sympy.Expr:
+    """The z component of r × f.
+
+    >>> cross((1, 0), (0, 2))
+    2
+    """
+    return r[0] * f[1] - r[1] * f[0]
+
+
+def dot(a: Vec, b: Vec) -> sympy.Expr:
+    """a · b.
+
+    >>> dot((1, 2), (3, 4))
+    11
+    """
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _minus(a: Vec, b: Vec) -> Vec:
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def _perp(r: Vec) -> Vec:
+    """k × r."""
+    return (-r[1], r[0])
+
+
+def _is_zero(expr: sympy.Expr) -> bool:
+    return bool(sympy.simplify(expr) == 0)
+
+
+class _Writer:
+    """Collects unknowns, forces and equations while walking the scene."""
+
+    def __init__(
+        self, scene: Scene, symbols: Mapping[str, sympy.Expr], slipping: Mapping[str, int]
+    ):
+        self.scene, self.symbols, self.slipping = scene, symbols, slipping
+        self.unknowns: dict[sympy.Symbol, Dim] = {}
+        self.equations: list[tuple[sympy.Expr, sympy.Expr, str]] = []
+        self.constraints: list[tuple[sympy.Expr, sympy.Expr, str]] = []
+        self.forces: dict[str, list[ForceTerm]] = {name: [] for name in scene.bodies}
+        self.couples: dict[str, list[CoupleTerm]] = {name: [] for name in scene.bodies}
+        self.reactions: dict[str, tuple[sympy.Symbol, Vec]] = {}
+        self.kinematics: dict[str, Kinematics] = {}
+        self.moment_points: dict[str, str] = {}
+        self.kinetic: dict[str, tuple[str, ...]] = {}
+        self.several = len(scene.bodies) > 1
+
+    # ---- names and symbols
+    def unknown(self, name: str, dim: Dim) -> sympy.Symbol:
+        symbol = sympy.Symbol(name, real=True)
+        if name in self.symbols:
+            raise ValueError(f"the unknown {name} would clash with a given of that name")
+        self.unknowns.setdefault(symbol, dim)
+        return symbol
+
+    def magnitude(self, name: str, dim: Dim) -> tuple[sympy.Expr, bool]:
+        """A load's magnitude: the given of that name, else a new unknown."""
+        if name in self.symbols:
+            return self.symbols[name], True
+        return self.unknown(name, dim), False
+
+    def suffix(self, name: str, body: str) -> str:
+        return f"{name}_{body}" if self.several else name
+
+    def equation(self, lhs: sympy.Expr, rhs: sympy.Expr, note: str) -> None:
+        self.equations.append((lhs, rhs, note))
+
+    def constraint(self, lhs: sympy.Expr, rhs: sympy.Expr, note: str) -> None:
+        self.constraints.append((lhs, rhs, note))
+
+    def numbered(self) -> tuple[Equation, ...]:
+        """Equations of motion first, then the kinematic constraints, numbered (1), (2), …"""
+        rows = self.equations + self.constraints
+        return tuple(
+            Equation(lhs, rhs, label=f"eq. {i}", line=i, note=note)
+            for i, (lhs, rhs, note) in enumerate(rows, start=1)
+        )
+
+    # ---- kinematics of each body
+    def motion(self, body: Body) -> str:
+        stated = self.scene.motions.get(body.name)
+        if stated:
+            return stated
+        if body.particle:
+            return "particle"
+        if any(s.kind == "pin" and s.body == body.name for s in self.scene.supports):
+            return "rotation"
+        if any(s.kind == "base" and s.body == body.name for s in self.scene.supports):
+            return "translation"
+        return "general"
+
+    def body_kinematics(self, body: Body) -> Kinematics:
+        motion = self.motion(body)
+        omega = self.scene.omegas.get(body.name, sympy.Integer(0))
+        if motion in ("translation", "particle"):
+            a_G = (
+                self.unknown(self.suffix("a_Gx", body.name), ACCELERATION),
+                self.unknown(self.suffix("a_Gy", body.name), ACCELERATION),
+            )
+            return Kinematics(motion, sympy.Integer(0), a_G, sympy.Integer(0))
+        alpha = self.unknown(self.suffix("alpha", body.name), ANGULAR_ACCELERATION)
+        if motion == "rotation":
+            pin = next(s for s in self.scene.supports if s.kind == "pin" and s.body == body.name)
+            r = _minus(body.G, pin.point)
+            a_G = (alpha * _perp(r)[0] - omega**2 * r[0], alpha * _perp(r)[1] - omega**2 * r[1])
+            return Kinematics(motion, alpha, a_G, omega, pin)
+        a_G = (
+            self.unknown(self.suffix("a_Gx", body.name), ACCELERATION),
+            self.unknown(self.suffix("a_Gy", body.name), ACCELERATION),
+        )
+        return Kinematics(motion, alpha, a_G, omega)
+
+    def point_acceleration(self, body: str, point: Vec) -> Vec:
+        k = self.kinematics[body]
+        r = _minus(point, self.scene.bodies[body].G)
+        return (
+            k.a_G[0] + k.alpha * _perp(r)[0] - k.omega**2 * r[0],
+            k.a_G[1] + k.alpha * _perp(r)[1] - k.omega**2 * r[1],
+        )
+
+    # ---- loads and reactions
+    def add_force(self, term: ForceTerm) -> None:
+        self.forces[term.body].append(term)
+
+    def loads(self) -> None:
+        scene = self.scene
+        if scene.gravity is not None:
+            g = self.symbols["g"]
+            for body in scene.bodies.values():
+                weight = body.mass * g
+                self.add_force(
+                    ForceTerm(
+                        f"W_{body.name}" if self.several else "W",
+                        "weight",
+                        body.name,
+                        body.G,
+                        "G",
+                        scene.gravity,
+                        weight,
+                        True,
+                    )
+                )
+        for load in scene.loads:
+            if load.kind == "couple":
+                moment, known = self.magnitude(load.name, MOMENT)
+                self.couples[load.body].append(
+                    CoupleTerm(load.name, load.body, load.sense * moment, known)
+                )
+                continue
+            magnitude, known = self.magnitude(load.name, FORCE)
+            self.add_force(
+                ForceTerm(
+                    load.name,
+                    "applied",
+                    load.body,
+                    load.point,
+                    load.point_name,
+                    load.direction,
+                    magnitude,
+                    known,
+                )
+            )
+
+    def supports(self) -> None:
+        for support in self.scene.supports:
+            getattr(self, f"_{support.kind}")(support)
+        for cord in self.scene.cords:
+            tension = self.unknown(cord.name, FORCE)
+            self.reactions[cord.name] = (tension, cord.direction)
+            self.add_force(
+                ForceTerm(
+                    cord.name,
+                    "tension",
+                    cord.body,
+                    cord.point,
+                    self._name_of(cord.point),
+                    cord.direction,
+                    tension,
+                    False,
+                )
+            )
+            a_1 = self.point_acceleration(cord.body, cord.point)
+            if cord.other:
+                assert cord.other_point is not None
+                back = (-cord.direction[0], -cord.direction[1])
+                self.add_force(
+                    ForceTerm(
+                        cord.name,
+                        "tension",
+                        cord.other,
+                        cord.other_point,
+                        self._name_of(cord.other_point),
+                        back,
+                        tension,
+                        False,
+                    )
+                )
+                a_2 = self.point_acceleration(cord.other, cord.other_point)
+                self.constraint(
+                    dot(a_1, cord.direction),
+                    dot(a_2, cord.direction),
+                    f"cord {cord.name} inextensible: equal accelerations along it",
+                )
+            else:
+                self.constraint(
+                    dot(a_1, cord.direction),
+                    sympy.Integer(0),
+                    f"cord {cord.name} fixed: its end on {cord.body} does not move along it",
+                )
+
+    def _name_of(self, point: Vec) -> str:
+        return self.scene.point_names.get(point, "")
+
+    def _pin(self, support: Support) -> None:
+        body = self.scene.bodies[support.body]
+        r = _minus(body.G, support.point)
+        if _is_zero(r[0]) and _is_zero(r[1]):
+            axes = {
+                "x": (sympy.Integer(1), sympy.Integer(0)),
+                "y": (sympy.Integer(0), sympy.Integer(1)),
+            }
+        else:
+            length = sympy.sqrt(r[0] ** 2 + r[1] ** 2)
+            e_r = (r[0] / length, r[1] / length)
+            axes = {"n": (-e_r[0], -e_r[1]), "t": _perp(e_r)}
+        for axis, direction in axes.items():
+            name = f"{support.name}_{axis}"
+            symbol = self.unknown(name, FORCE)
+            self.reactions[name] = (symbol, direction)
+            self.add_force(
+                ForceTerm(
+                    name,
+                    "reaction",
+                    body.name,
+                    support.point,
+                    support.name,
+                    direction,
+                    symbol,
+                    False,
+                )
+            )
+
+    def _contact(self, support: Support) -> None:
+        self._normal_and_friction(support)
+        a_P = self.point_acceleration(support.body, support.point)
+        self.constraint(
+            dot(a_P, support.normal),
+            sympy.Integer(0),
+            f"contact at {support.name} kept: no acceleration into the surface",
+        )
+        if self._static(support):
+            self.constraint(
+                dot(a_P, support.tangent),
+                sympy.Integer(0),
+                f"no slip at {support.name} (assumed; checked after solving)",
+            )
+
+    def _rolls(self, support: Support) -> None:
+        self._normal_and_friction(support)
+        kin = self.kinematics[support.body]
+        self.constraint(
+            dot(kin.a_G, support.normal),
+            sympy.Integer(0),
+            f"{support.body} rolls: its centre keeps its distance from the surface",
+        )
+        if self._static(support):
+            a_P = self.point_acceleration(support.body, support.point)
+            self.constraint(
+                dot(a_P, support.tangent),
+                sympy.Integer(0),
+                f"rolling without slip at {support.name}: a_G = α r",
+            )
+
+    def _base(self, support: Support) -> None:
+        body = self.scene.bodies[support.body]
+        assert support.end is not None
+        along = support.tangent
+        foot_distance = dot(_minus(body.G, support.point), along)
+        foot = (
+            support.point[0] + foot_distance * along[0],
+            support.point[1] + foot_distance * along[1],
+        )
+        x = self.unknown(f"x_{support.name}", LENGTH)
+        point = (foot[0] + x * along[0], foot[1] + x * along[1])
+        self._normal_and_friction(support, point)
+        kin = self.kinematics[support.body]
+        self.constraint(
+            dot(kin.a_G, support.normal),
+            sympy.Integer(0),
+            f"{support.body} stays on the surface at base {support.name}",
+        )
+
+    def _static(self, support: Support) -> bool:
+        """True when friction here is an unknown with a no-slip assumption."""
+        return not support.smooth and support.name not in self.slipping and support.slides is None
+
+    def _normal_and_friction(self, support: Support, point: Vec | None = None) -> None:
+        where = point if point is not None else support.point
+        normal = self.unknown(f"N_{support.name}", FORCE)
+        self.reactions[f"N_{support.name}"] = (normal, support.normal)
+        self.add_force(
+            ForceTerm(
+                f"N_{support.name}",
+                "reaction",
+                support.body,
+                where,
+                support.name,
+                support.normal,
+                normal,
+                False,
+            )
+        )
+        if support.smooth:
+            return
+        name = f"F_{support.name}"
+        sense = self._sliding_sense(support)
+        if sense is None:
+            friction: sympy.Expr = self.unknown(name, FORCE)
+            self.reactions[name] = (friction, support.tangent)
+        else:
+            if support.mu_k is None:
+                raise ValueError(f"{support.name} slides but has no mu_k")
+            friction = sense * support.mu_k * normal
+            self.reactions[name] = (friction, support.tangent)
+        self.add_force(
+            ForceTerm(
+                name,
+                "friction",
+                support.body,
+                where,
+                support.name,
+                support.tangent,
+                friction,
+                sense is not None,
+            )
+        )
+
+    def _sliding_sense(self, support: Support) -> int | None:
+        """+1/−1 along the tangent for kinetic friction, None for unknown static friction."""
+        if support.name in self.slipping:
+            return self.slipping[support.name]
+        if support.slides is not None:
+            along = dot(support.slides, support.tangent)
+            value = float(sympy.N(along.subs({s: 1 for s in along.free_symbols})))
+            return -1 if value > 0 else 1
+        return None
+
+    # ---- equations of motion
+    def newton_euler(self, body: Body) -> None:
+        kin = self.kinematics[body.name]
+        forces, couples = self.forces[body.name], self.couples[body.name]
+        m, tag = body.mass, f"({body.name})"
+        if kin.motion == "rotation" and kin.pin is not None:
+            self._rotation(body, kin, forces, couples)
+            return
+        sum_x = sympy.Add(*(f.vector[0] for f in forces))
+        sum_y = sympy.Add(*(f.vector[1] for f in forces))
+        self.equation(sum_x, m * kin.a_G[0], f"ΣF_x = m (a_G)_x {tag}")
+        self.equation(sum_y, m * kin.a_G[1], f"ΣF_y = m (a_G)_y {tag}")
+        self.kinetic[body.name] = ("m (a_G)_x", "m (a_G)_y")
+        if kin.motion == "particle":
+            self.moment_points[body.name] = "a particle: no moment equation"
+            return
+        P, why = self._moment_point(body, forces)
+        moment = sympy.Add(*(cross(_minus(f.point, P), f.vector) for f in forces))
+        moment += sympy.Add(*(c.moment for c in couples))
+        r_GP = _minus(body.G, P)
+        kinetic = body.I_G * kin.alpha + cross(r_GP, (m * kin.a_G[0], m * kin.a_G[1]))
+        name = self._point_label(P, body)
+        principle = f"ΣM_{name} = I_G α + (r_G/{name} × m a_G)" if name != "G" else "ΣM_G = I_G α"
+        if kin.motion == "translation":
+            principle = (
+                f"ΣM_{name} = (r_G/{name} × m a_G) (translation: α = 0)"
+                if name != "G"
+                else "ΣM_G = 0 (translation)"
+            )
+        self.equation(moment, kinetic, f"{principle} {tag}")
+        self.moment_points[body.name] = why
+        self.kinetic[body.name] = (*self.kinetic[body.name], "I_G α")
+
+    def _rotation(
+        self, body: Body, kin: Kinematics, forces: list[ForceTerm], couples: list[CoupleTerm]
+    ) -> None:
+        pin = kin.pin
+        assert pin is not None
+        m, tag = body.mass, f"({body.name})"
+        r = _minus(body.G, pin.point)
+        r_G = sympy.sqrt(r[0] ** 2 + r[1] ** 2)
+        I_O = body.I_G + m * r_G**2
+        pin_name = pin.name
+        if _is_zero(r_G):
+            self.equation(
+                sympy.Add(*(f.vector[0] for f in forces)),
+                sympy.Integer(0),
+                f"ΣF_x = m (a_G)_x = 0 (G on the axis) {tag}",
+            )
+            self.equation(
+                sympy.Add(*(f.vector[1] for f in forces)),
+                sympy.Integer(0),
+                f"ΣF_y = m (a_G)_y = 0 (G on the axis) {tag}",
+            )
+            self.kinetic[body.name] = ("I_G α",)
+        else:
+            e_r = (r[0] / r_G, r[1] / r_G)
+            e_n, e_t = (-e_r[0], -e_r[1]), _perp(e_r)
+            self.equation(
+                sympy.Add(*(dot(f.vector, e_n) for f in forces)),
+                m * kin.omega**2 * r_G,
+                f"ΣF_n = m ω² r_G {tag}",
+            )
+            self.equation(
+                sympy.Add(*(dot(f.vector, e_t) for f in forces)),
+                m * kin.alpha * r_G,
+                f"ΣF_t = m α r_G {tag}",
+            )
+            self.kinetic[body.name] = ("m ω² r_G", "m α r_G", "I_G α")
+        moment = sympy.Add(*(cross(_minus(f.point, pin.point), f.vector) for f in forces))
+        moment += sympy.Add(*(c.moment for c in couples))
+        note = (
+            f"ΣM_{pin_name} = I_{pin_name} α, I_{pin_name} = I_G + m r_G² {tag}"
+            if not _is_zero(r_G)
+            else f"ΣM_{pin_name} = I_G α {tag}"
+        )
+        self.equation(moment, I_O * kin.alpha, note)
+        self.moment_points[body.name] = (
+            f"about the pin {pin_name}: eliminates {pin_name}'s reaction components"
+        )
+
+    def _moment_point(self, body: Body, forces: list[ForceTerm]) -> tuple[Vec, str]:
+        unknown = [f for f in forces if not f.known]
+        candidates: list[Vec] = [body.G]
+        candidates += [f.point for f in unknown if f.point not in candidates]
+        best, best_names = body.G, []
+        for P in candidates:
+            names = [f.name for f in unknown if _is_zero(cross(_minus(f.point, P), f.direction))]
+            if len(names) > len(best_names):
+                best, best_names = P, names
+        if best == body.G:
+            return body.G, "about G: ΣM_G = I_G α"
+        label = self._point_label(best, body)
+        listed = " and ".join(pretty(n) for n in best_names)
+        return best, f"about {label}: eliminates {listed}, the unknowns acting there"
+
+    def _point_label(self, P: Vec, body: Body) -> str:
+        if P == body.G:
+            return "G"
+        return self.scene.point_names.get(P, "P")
+
+
+def formulate(
+    scene: Scene, symbols: Mapping[str, sympy.Expr], slipping: Mapping[str, int] | None = None
+) -> Formulation:
+    """The Newton–Euler equations and constraints of ``scene``.
+
+    ``slipping`` maps contacts whose no-slip assumption failed to the sense (±1 along
+    the contact tangent) of their kinetic friction.
+    """
+    writer = _Writer(scene, symbols, slipping or {})
+    for body in scene.bodies.values():
+        writer.kinematics[body.name] = writer.body_kinematics(body)
+    writer.loads()
+    writer.supports()
+    for body in scene.bodies.values():
+        writer.newton_euler(body)
+    return Formulation(
+        equations=writer.numbered(),
+        unknowns=writer.unknowns,
+        forces={k: tuple(v) for k, v in writer.forces.items()},
+        couples={k: tuple(v) for k, v in writer.couples.items()},
+        kinematics=writer.kinematics,
+        moment_points=writer.moment_points,
+        reactions=writer.reactions,
+        kinetic=writer.kinetic,
+    )

@@ -1,0 +1,470 @@
+"""Turn a scene-mode spec into a problem: model, Newton–Euler equations, targets, assumptions.
+
+The result has the same shape as an equation-mode :class:`~dynsolve.equation_mode.Problem`
+(givens, equation system, targets, dimensions), plus the scene's free-body diagrams
+and the assumptions to check once it is solved.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+
+import sympy
+
+from dynsolve.dimensions import DimensionReport, sympy_dimension
+from dynsolve.equation_mode import GivenInfo, Target, givens_of
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.format import quantity as format_quantity
+from dynsolve.model.inertia import parallel_axis
+from dynsolve.model.scene import Scene, Vec, build_scene
+from dynsolve.names import latex_name, pretty
+from dynsolve.principles.newton_euler import Formulation, dot, formulate
+from dynsolve.quantities import resolve_unit
+from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody
+from dynsolve.spec.ast import FindItem, Spec
+from dynsolve.system import EquationSystem
+from dynsolve.units import Dim, natural_unit
+
+IMPENDING = 1e-9  # |F| within this fraction of μs N counts as impending slip, not slip
+
+
+@dataclass(frozen=True)
+class SceneProblem:
+    """A scene ready to solve, with what is needed to report and re-check it."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+    scene: Scene
+    formulation: Formulation
+    rows: tuple[EquationRow, ...]
+    slipping: Mapping[str, int] = field(default_factory=dict)
+    mode: str = "scene"
+
+
+def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -> SceneProblem:
+    """Model the scene, write its equations and resolve the find list."""
+    if not spec.finds:
+        raise SpecError("nothing to find", Position(spec.file, 1, 1), hint="add a 'find:' line")
+    givens = givens_of(spec)
+    symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
+    given_dims = {g.name: g.dim for g in givens}
+    scene = build_scene(spec, symbols, given_dims)
+    try:
+        formulation = formulate(scene, symbols, slipping)
+    except ValueError as exc:
+        raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
+    symbols.update({s.name: s for s in formulation.unknowns})
+    dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
+    targets = tuple(_target(item, spec, scene, formulation, symbols, dims) for item in spec.finds)
+    _check_answers(spec)
+    wanted = _wanted(targets, formulation)
+    knowns = {g.symbol: g.value for g in givens if g.value is not None}
+    system = EquationSystem(
+        equations=formulation.equations,
+        unknowns=tuple(formulation.unknowns),
+        knowns=knowns,
+        wanted=wanted,
+    )
+    symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
+    rows = tuple(_row(e, symbol_dims, spec) for e in formulation.equations)
+    report = DimensionReport(dims, (), frozenset())
+    return SceneProblem(
+        spec,
+        tuple(givens),
+        system,
+        report,
+        targets,
+        symbols,
+        scene,
+        formulation,
+        rows,
+        dict(slipping or {}),
+    )
+
+
+def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[sympy.Symbol, ...]:
+    unknowns = set(formulation.unknowns)
+    wanted: list[sympy.Symbol] = []
+    for target in targets:
+        exprs = [target.expr] if target.expr is not None else []
+        if target.vector is not None:
+            exprs += list(target.vector)
+        for expr in exprs:
+            wanted += [s for s in expr.free_symbols if s in unknowns and s not in wanted]
+    return tuple(wanted)
+
+
+def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> EquationRow:
+    from dynsolve.system import Equation
+
+    assert isinstance(equation, Equation)
+    pretty_names = {s: sympy.Symbol(pretty(s.name)) for s in dims}
+    latex_names = {s: latex_name(s.name) for s in dims}
+    try:
+        dim = sympy_dimension(equation.lhs - equation.rhs, dims)
+        ok = True
+    except DimensionError as exc:  # a scene whose givens have the wrong units
+        raise DimensionError(
+            f"{equation.note}: {exc.message}", Position(spec.file, 1, 1), exc.hint
+        ) from None
+    lhs, rhs = equation.lhs, equation.rhs
+    text = f"{sympy.sstr(lhs.xreplace(pretty_names))} = {sympy.sstr(rhs.xreplace(pretty_names))}"
+    latex = sympy.latex(sympy.Eq(lhs, rhs, evaluate=False), symbol_names=latex_names)
+    unit = natural_unit(dim, spec.system) or "1"
+    return EquationRow(
+        equation.line,
+        text.replace("**", "^"),
+        latex,
+        equation.note,
+        f"{dim.name} [{unit}]",
+        ok,
+        False,
+    )
+
+
+# ---- targets
+_ROTATION = ("alpha", "omega")
+
+
+def _target(
+    item: FindItem,
+    spec: Spec,
+    scene: Scene,
+    formulation: Formulation,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+) -> Target:
+    ref = item.ref
+    where = Position(spec.file, item.line, item.column)
+    function = ref.function if ref else item.name
+    args = ref.args if ref else ()
+    trial = False
+    if function == "trial":
+        if len(args) != 1:
+            raise SpecError("trial takes one name: trial(F_A)", where, "write trial(NAME)")
+        function, args, trial = args[0], (), True
+    target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
+    unit, dim = _unit(item, target.dim, spec, where)
+    return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
+
+
+def _unit(item: FindItem, dim: Dim, spec: Spec, where: Position) -> tuple[str, Dim]:
+    if item.unit is None:
+        return natural_unit(dim, spec.system, item.name), dim
+    unit_dim = resolve_unit(item.unit, spec.file).dim
+    if unit_dim != dim:
+        raise DimensionError(
+            f"find asks for {item.name} in {item.unit.text} ({unit_dim.name}), "
+            f"but it is {dim.name}",
+            where,
+            hint=f"use a unit of {dim.name}",
+        )
+    return item.unit.text, dim
+
+
+def _quantity(
+    function: str,
+    args: tuple[str, ...],
+    item: FindItem,
+    scene: Scene,
+    formulation: Formulation,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+    where: Position,
+) -> Target:
+    name = item.name
+    symbol = sympy.Symbol(name)
+
+    def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
+        return Target(name, symbol, dim, "", False, False, kind, expr, **extra)  # type: ignore[arg-type]
+
+    if args:
+        body = _body(args[0], scene, where)
+        kin = formulation.kinematics[body]
+        if function == "alpha":
+            return target("rotation", Dim(0, 0, -2), kin.alpha)
+        if function == "omega":
+            return target("rotation", Dim(0, 0, -1), kin.omega)
+        if function in ("a_G", "a"):
+            return target("vector", Dim(1, 0, -2), vector=kin.a_G)
+        if function == "m":
+            return target("magnitude", Dim(0, 1), scene.bodies[body].mass)
+        if function == "I":
+            model = scene.bodies[body]
+            if len(args) == 1:
+                return target("magnitude", Dim(2, 1), model.I_G)
+            point = _point(args[1], scene, body, where)
+            d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
+            return target(
+                "magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2))
+            )
+        raise SpecError(
+            f"unknown scene quantity '{function}'",
+            where,
+            hint="use alpha(B), omega(B), a_G(B), m(B), I(B), I(B, P) or trial(X)",
+        )
+    if function in formulation.reactions:
+        reaction, axis = formulation.reactions[function]
+        if any(c.name == function for c in scene.cords):
+            return target("magnitude", Dim(1, 1, -2), reaction)  # a tension has no sense to state
+        return target("along", Dim(1, 1, -2), reaction, axis=axis)
+    pins = [s for s in scene.supports if s.kind == "pin" and s.name == function]
+    if pins:
+        parts = [v for k, v in formulation.reactions.items() if k.startswith(f"{function}_")]
+        vector = (
+            sympy.Add(*(s * a[0] for s, a in parts)),
+            sympy.Add(*(s * a[1] for s, a in parts)),
+        )
+        return target("vector", Dim(1, 1, -2), vector=vector)
+    if function in symbols and function in dims:
+        kind = "rotation" if function.startswith(_ROTATION) else "signed"
+        return target(kind, dims[function], symbols[function])
+    known = sorted({*formulation.reactions, *(s.name for s in formulation.unknowns)})
+    close = difflib.get_close_matches(function, known, n=1)
+    hint = (
+        f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
+    )
+    raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def _body(name: str, scene: Scene, where: Position) -> str:
+    if name not in scene.bodies:
+        close = difflib.get_close_matches(name, list(scene.bodies), n=1)
+        hint = f"did you mean '{close[0]}'?" if close else "name a body of the scene"
+        raise SpecError(f"there is no body '{name}'", where, hint)
+    return name
+
+
+def _point(name: str, scene: Scene, body: str, where: Position) -> Vec:
+    if name in scene.fixed_points:
+        return scene.fixed_points[name]
+    if name in scene.bodies[body].points:
+        return scene.bodies[body].points[name]
+    raise SpecError(
+        f"there is no point '{name}'", where, hint="declare it with 'point NAME: (x, y)'"
+    )
+
+
+def _check_answers(spec: Spec) -> None:
+    found = {f.name for f in spec.finds}
+    for answer in spec.answers:
+        if answer.name not in found:
+            raise SpecError(
+                f"answer '{answer.name}' is not in find",
+                Position(spec.file, answer.line, answer.column),
+                hint=f"add '{answer.name}' to find",
+            )
+
+
+# ---- after solving: assumptions and diagrams
+def assess(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """Check every assumption against a solution; return them and any contacts that slip.
+
+    A no-slip contact whose friction exceeds μs N, and that has a μk, is returned in
+    the second item with the sense of its (kinetic) friction along the tangent.
+    """
+    knowns = problem.system.knowns
+    substitution = {**knowns, **values}
+    checks: list[Assumption] = []
+    slips: dict[str, int] = {}
+    scene, formulation = problem.scene, problem.formulation
+    for support in scene.supports:
+        if support.kind == "pin":
+            continue
+        N = _number(formulation.reactions[f"N_{support.name}"][0], substitution)
+        if N is not None:
+            checks.append(
+                Assumption(
+                    f"contact at {support.name} kept",
+                    N >= 0,
+                    f"N_{support.name} = {N:.4g} {'≥' if N >= 0 else '<'} 0"
+                    + ("" if N >= 0 else ": the body leaves the surface"),
+                )
+            )
+        friction_name = f"F_{support.name}"
+        if support.name in problem.slipping:
+            checks.append(
+                Assumption(
+                    f"slip at {support.name}", True, "no-slip failed; F = μk N opposing the slip"
+                )
+            )
+        elif friction_name in formulation.reactions and support.mu_s is not None and N is not None:
+            F = _number(formulation.reactions[friction_name][0], substitution)
+            limit = (
+                _number(support.mu_s, knowns) * N
+                if _number(support.mu_s, knowns) is not None
+                else None
+            )
+            if F is None or limit is None:
+                continue
+            holds = abs(F) <= limit * (1 + IMPENDING)
+            impending = holds and abs(abs(F) - limit) <= IMPENDING * max(limit, 1e-300)
+            detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {limit:.4g}"
+            if impending:
+                detail += " (impending slip: still no slip)"
+            if not holds and support.mu_k is not None:
+                detail += "; re-solved with F = μk N opposing the slip"
+                slips[support.name] = 1 if F > 0 else -1
+            checks.append(Assumption(f"no slip at {support.name}", holds, detail))
+        if support.kind == "base":
+            x = _number(
+                formulation.reactions.get(
+                    f"x_{support.name}", (sympy.Symbol(f"x_{support.name}", real=True),)
+                )[0],
+                substitution,
+            )
+            checks.append(_tipping(support, problem, x, substitution))
+    for cord in scene.cords:
+        T = _number(formulation.reactions[cord.name][0], substitution)
+        if T is not None:
+            checks.append(
+                Assumption(
+                    f"cord {cord.name} taut",
+                    T >= 0,
+                    f"{cord.name} = {T:.4g} {'≥' if T >= 0 else '<'} 0"
+                    + ("" if T >= 0 else ": the cord goes slack"),
+                )
+            )
+    return tuple(checks), slips
+
+
+def _tipping(
+    support: object,
+    problem: SceneProblem,
+    x: float | None,
+    substitution: Mapping[sympy.Symbol, sympy.Expr],
+) -> Assumption:
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support) and support.end is not None
+    body = problem.scene.bodies[support.body]
+    along = support.tangent
+    foot = dot((body.G[0] - support.point[0], body.G[1] - support.point[1]), along)
+    length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), along)
+    low, high = _number(-foot, substitution), _number(length - foot, substitution)
+    if x is None or low is None or high is None:
+        return Assumption(f"no tipping on base {support.name}", True, "cannot be decided")
+    lo, hi = min(low, high), max(low, high)
+    holds = lo <= x <= hi
+    detail = f"N_{support.name} acts at x = {x:.4g} from G's line, within [{lo:.4g}, {hi:.4g}]"
+    if not holds:
+        detail = (
+            f"N_{support.name} would act at x = {x:.4g}, outside the base "
+            f"[{lo:.4g}, {hi:.4g}]: the body tips"
+        )
+    return Assumption(f"no tipping on base {support.name}", holds, detail)
+
+
+def _number(expr: sympy.Expr, substitution: Mapping[sympy.Symbol, sympy.Expr]) -> float | None:
+    value = (sympy.Integer(0) + expr).xreplace(dict(substitution))
+    if value.free_symbols:
+        return None
+    number = complex(sympy.N(value, 30))
+    return number.real if abs(number.imag) < 1e-12 * max(1.0, abs(number.real)) else None
+
+
+def free_bodies(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[FreeBody, ...]:
+    """Each body's free-body diagram as data, with solved magnitudes where known."""
+    knowns = problem.system.knowns
+    substitution = {**knowns, **values}
+    system = problem.spec.system
+    out = []
+    for name, body in problem.scene.bodies.items():
+        rows = []
+        G = body.G
+        for force in problem.formulation.forces[name]:
+            x = _number(force.point[0] - G[0], knowns) or 0.0
+            y = _number(force.point[1] - G[1], knowns) or 0.0
+            dx = _number(force.direction[0], knowns) or 0.0
+            dy = _number(force.direction[1], knowns) or 0.0
+            magnitude = _number(force.magnitude, substitution)
+            value = (
+                format_quantity(abs(magnitude), natural_unit(Dim.of("force"), system))
+                if magnitude is not None
+                else ""
+            )
+            if magnitude is not None and magnitude < 0:
+                dx, dy = -dx, -dy
+            rows.append(
+                ForceRow(
+                    force.name,
+                    force.kind,
+                    force.point_name or "P",
+                    x,
+                    y,
+                    _direction_word(dx, dy),
+                    dx,
+                    dy,
+                    force.known,
+                    value,
+                )
+            )
+        for couple in problem.formulation.couples[name]:
+            moment = _number(couple.moment, substitution)
+            sense = "ccw" if (moment or 0) >= 0 else "cw"
+            value = (
+                format_quantity(abs(moment), natural_unit(Dim.of("moment"), system))
+                if moment is not None
+                else ""
+            )
+            rows.append(
+                ForceRow(couple.name, "couple", "G", 0.0, 0.0, sense, 0.0, 0.0, couple.known, value)
+            )
+        sizes = tuple(_number(s, knowns) or 0.0 for s in body.sizes)
+        kin = problem.formulation.kinematics[name]
+        motion = {
+            "rotation": f"fixed-axis rotation about {kin.pin.name if kin.pin else 'O'}",
+            "translation": "translation",
+            "general": "general plane motion",
+            "particle": "particle",
+        }[kin.motion]
+        out.append(
+            FreeBody(
+                name,
+                body.shape,
+                sizes,
+                motion,
+                tuple(rows),
+                problem.formulation.kinetic.get(name, ()),
+                problem.formulation.moment_points.get(name, ""),
+            )
+        )
+    return tuple(out)
+
+
+def _direction_word(dx: float, dy: float) -> str:
+    import math
+
+    if abs(dx) < 1e-12 and abs(dy) < 1e-12:
+        return ""
+    if abs(dx) < 1e-12:
+        return "up" if dy > 0 else "down"
+    if abs(dy) < 1e-12:
+        return "right" if dx > 0 else "left"
+    return f"angle {math.degrees(math.atan2(dy, dx)):.1f}°"
+
+
+def direction_of(kind: str, value: float, axis: tuple[float, float] | None = None) -> str:
+    """The word for a signed value: cw/ccw for a rotation, up/down/… along an axis.
+
+    >>> direction_of("rotation", -2.0), direction_of("along", -1.0, (0.0, 1.0))
+    ('cw', 'down')
+    """
+    if kind == "rotation":
+        return "" if value == 0 else ("ccw" if value > 0 else "cw")
+    if kind == "along" and axis is not None:
+        if value == 0:
+            return ""
+        sign = 1 if value > 0 else -1
+        return _direction_word(sign * axis[0], sign * axis[1])
+    return ""
