@@ -477,12 +477,30 @@ class _View:
     def _typo_hint(self) -> str:
         import difflib
 
+        if getattr(self.problem, "mode", "") == "scene":
+            return self._support_hint()
         given = [g.name for g in self.problem.givens]
         hints = []
         for symbol in self.outcome.undetermined:
             close = difflib.get_close_matches(symbol.name, given, n=1, cutoff=0.6)
             if close:
                 hints.append(f"'{symbol.name}' may be a typo for given '{close[0]}'")
+        return ("; " + "; ".join(hints)) if hints else ""
+
+    def _support_hint(self) -> str:
+        """Which bodies the free unknowns belong to, and what would pin them down."""
+        bodies = self.problem.scene.bodies  # type: ignore[attr-defined]
+        free = [s.name for s in self.outcome.undetermined]
+        hints = []
+        for body in bodies:
+            mine = [n for n in free if n.endswith(f"_{body}") or (len(bodies) == 1 and n in
+                    ("a_Gx", "a_Gy", "alpha"))]  # fmt: skip
+            if mine:
+                hints.append(
+                    f"{body}'s {', '.join(pretty(n) for n in mine)} stay free: add a support "
+                    f"(pin, contact, rolls, base) or a cord that fixes {body}'s motion, "
+                    f"or state 'motion {body}: translation'"
+                )
         return ("; " + "; ".join(hints)) if hints else ""
 
     def _constraint_check(self, constraint: object) -> Check:

@@ -44,6 +44,8 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         ],
         "checks": [asdict(c) for c in solution.checks],
         "key": [asdict(k) for k in solution.key],
+        "free_body": [asdict(b) for b in solution.free_body],
+        "assumptions": [asdict(a) for a in solution.assumptions],
         "messages": list(solution.messages),
         "schema": SCHEMA_VERSION,
     }

@@ -1,0 +1,659 @@
+"""Scene mode in the renderers: free-body diagrams and assumptions in LaTeX, Markdown, text.
+
+The LaTeX diagrams are LaTeX ``picture`` environments made of ``\\qbezier`` curves; the
+geometry tests read the arrowheads back from them to check every arrow points the way
+its force does.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from dynsolve.render import latex
+from dynsolve.render.latex import escape_latex, render_latex, safe_math
+from dynsolve.render.markdown import render_markdown
+from dynsolve.render.terminal import render_text
+from dynsolve.results import (
+    AnswerRow,
+    Assumption,
+    Check,
+    EquationRow,
+    ForceRow,
+    Formula,
+    FreeBody,
+    GivenRow,
+    KeyComparison,
+    Solution,
+    Step,
+)
+
+SIN = math.sin(math.radians(36.87))
+COS = math.cos(math.radians(36.87))
+
+
+def force(
+    name: str,
+    kind: str,
+    point: str,
+    at: tuple[float, float],
+    direction: str,
+    towards: tuple[float, float],
+    known: bool = True,
+    value: str = "",
+) -> ForceRow:
+    return ForceRow(name, kind, point, *at, direction, *towards, known, value)
+
+
+DRUM = FreeBody(
+    body="drum",
+    shape="disk",
+    size=(0.4,),
+    motion="rotation about O",
+    forces=(
+        force("T", "tension", "(r, 0)", (0.4, 0.0), "down", (0.0, -1.0), False, "106 N"),
+        force("W_drum", "weight", "G", (0.0, 0.0), "down", (0.0, -1.0), True, "589 N"),
+        force("O_x", "reaction", "O", (0.0, 0.0), "right", (1.0, 0.0), False),
+        force("O_y", "reaction", "O", (0.0, 0.0), "up", (0.0, 1.0), False, "695 N"),
+    ),
+    kinetic=("I_O α",),
+    moment_point="O, the pin: its reactions have no moment",
+)
+CRATE = FreeBody(
+    body="crate",
+    shape="block",
+    size=(1.0, 0.5),
+    motion="translation",
+    forces=(
+        force("W_c", "weight", "G", (0.0, 0.0), "down", (0.0, -1.0), True, "981 N"),
+        force("N_C", "reaction", "C", (0.0, -0.25), "up", (0.0, 1.0), False),
+        force("F_C", "friction", "C", (0.0, -0.25), "left", (-1.0, 0.0), False),
+        force("P", "applied", "(-0.5, 0.1)", (-0.5, 0.1), "angle -36.9°", (COS, -SIN), True),
+    ),
+    kinetic=("m a_Gx",),
+    moment_point="G, since the crate translates",
+)
+LINK = FreeBody(
+    body="link",
+    shape="rod",
+    size=(2.0,),
+    motion="rotation about A",
+    forces=(
+        force("M", "couple", "G", (0.0, 0.0), "ccw", (0.0, 0.0), True, "50 N·m"),
+        force("W_link", "weight", "G", (0.0, 0.0), "down", (0.0, -1.0), True, "196 N"),
+        force("A_n", "reaction", "A", (-1.0, 0.0), "right", (1.0, 0.0), False),
+        force("A_t", "reaction", "A", (-1.0, 0.0), "up", (0.0, 1.0), False),
+    ),
+    kinetic=("m a_Gx", "m a_Gy", "I_G α"),
+    moment_point="A, the pin",
+)
+BALL = FreeBody(
+    body="ball",
+    shape="particle",
+    size=(),
+    motion="translation",
+    forces=(
+        force("W_b", "weight", "G", (0.0, 0.0), "down", (0.0, -1.0), True, "196 N"),
+        force("T_2", "tension", "G", (0.0, 0.0), "up", (0.0, 1.0), False, "157 N"),
+    ),
+    kinetic=("m a",),
+    moment_point="",
+)
+ASSUMPTIONS = (
+    Assumption("no slip at C", True, "|F_C| = 98.1 N ≤ μ_s N_C = 196 N"),
+    Assumption("no tipping", True, "x_C = 0.1 m, within the base (half-width 0.5 m)"),
+    Assumption("cord T taut", False, "T = -3.2 N < 0"),
+)
+
+# Where each arrowhead must be (mm from G on the page) and which way it must point.
+# Bodies are drawn 35 mm across; arrows are 10 mm long (an arrow from G is shortened to
+# stay inside a block); a force pointing back toward G from a point off G ends there.
+EXPECTED_TIPS = {
+    "drum": [((17.5, -10.0), (0, -1)), ((0, -10), (0, -1)), ((10, 0), (1, 0)), ((0, 10), (0, 1))],
+    "crate": [
+        ((0, -7), (0, -1)),  # weight from G, 80 % of the 8.75 mm to the base
+        ((0, -8.75), (0, 1)),  # the base's normal force pushes up into the base
+        ((-10, -8.75), (-1, 0)),  # friction from the contact point
+        ((-17.5, 3.5), (COS, -SIN)),  # the push ends at its point on the left face
+    ],
+    "link": [((0, -10), (0, -1)), ((-17.5, 0), (1, 0)), ((-17.5, 10), (0, 1))],
+    "ball": [((0, -10), (0, -1)), ((0, 10), (0, 1))],
+}
+
+
+def scene_solution(bodies: tuple[FreeBody, ...] = (DRUM, CRATE, LINK, BALL)) -> Solution:
+    """A hand-built scene-mode solution: givens, answers and checks, plus the scene."""
+    return Solution(
+        file="scene.dyn",
+        title="Drum, crate, link and ball",
+        source="made up for the renderer tests",
+        system="SI",
+        mode="scene",
+        givens=(GivenRow("m_d", "60 kg", "60 kg", "drum mass", False, "m_{d}", "60"),),
+        equations=(EquationRow(12, "T r = I_O α", "T r = I_{O} α", "ΣM_O", "moment", True, False),),
+        steps=(Step(1, (12,), ("T",), "linear", (Formula("T", "", "", "106 N", "106"),), (), ""),),
+        answers=(AnswerRow("T", 105.9, "N", "106 N", "14715/139", "106\\,\\mathrm{N}", ""),),
+        checks=(Check("units", True, "all equations"),),
+        key=(KeyComparison("T", "106 N", "106 N", True, "within 0.5%"),),
+        status="solved",
+        free_body=bodies,
+        assumptions=ASSUMPTIONS,
+    )  # fmt: skip
+
+
+def equation_solution() -> Solution:
+    """The same solution in equation mode: no scene."""
+    return replace(scene_solution(), mode="equations", free_body=(), assumptions=())
+
+
+# ---- reading the pictures back
+
+NUMBER = r"-?\d+(?:\.\d+)?"
+PAIR = re.compile(rf"\(({NUMBER}),({NUMBER})\)")
+Point = tuple[float, float]
+
+
+def pictures(tex: str) -> dict[str, list[str]]:
+    """Each body's picture, as its lines, by body name."""
+    found = re.findall(
+        r"\\subsubsection\*\{(\S+) \([^)]*\)\}\n\\begin\{center\}\n(.*?)\\end\{picture\}",
+        tex,
+        re.S,
+    )
+    return {name: body.splitlines() for name, body in found}
+
+
+def force_groups(lines: list[str]) -> list[tuple[bool, list[str]]]:
+    """The commands drawing each force, in order, and whether they are red."""
+    groups: list[tuple[bool, list[str]]] = []
+    current: list[str] | None = None
+    for line in lines:
+        if line in ("{\\linethickness{0.7pt}", "{\\color{red}\\linethickness{0.7pt}"):
+            current = []
+            groups.append(("red" in line, current))
+        elif line == "}":
+            current = None
+        elif current is not None:
+            current.append(line)
+    return groups
+
+
+def segments(commands: list[str]) -> list[tuple[Point, Point]]:
+    """The start and end of every ``\\qbezier``."""
+    out = []
+    for command in commands:
+        if command.startswith("\\qbezier"):
+            (x0, y0), _, (x1, y1) = PAIR.findall(command)
+            out.append(((float(x0), float(y0)), (float(x1), float(y1))))
+    return out
+
+
+def arrowhead(commands: list[str]) -> tuple[Point, Point]:
+    """The arrowhead's tip and unit direction: seven lines fan out from the tip."""
+    starts: dict[Point, list[Point]] = {}
+    for start, end in segments(commands):
+        starts.setdefault(start, []).append(end)
+    tip, ends = max(starts.items(), key=lambda item: len(item[1]))
+    assert len(ends) == 7, commands
+    base = (sum(e[0] for e in ends) / 7, sum(e[1] for e in ends) / 7)
+    length = math.dist(tip, base)
+    return tip, ((tip[0] - base[0]) / length, (tip[1] - base[1]) / length)
+
+
+def label(commands: list[str]) -> str:
+    labels = re.findall(r"\\makebox\(0,0\)\[[lrtb]+\]\{(.*)\}\}$", "\n".join(commands), re.M)
+    assert len(labels) == 1, commands
+    return labels[0]
+
+
+# ---- LaTeX: content
+
+
+def test_latex_sections_in_order() -> None:
+    tex = render_latex(scene_solution())
+    headings = re.findall(r"\\(?:sub)*section\*\{([^}]*)\}", tex)
+    assert headings == [
+        "Drum, crate, link and ball", "Given", "Free-body diagrams", "drum (disk)",
+        "crate (block)", "link (rod)", "ball (particle)", "Assumptions", "Equations",
+        "Solution", "Answers", "Checks",
+    ]  # fmt: skip
+    assert "\\usepackage{color}" in tex.split("\\begin{document}")[0]
+    assert tex.isascii()
+
+
+def test_latex_text_under_each_picture() -> None:
+    tex = render_latex(scene_solution())
+    assert "\\textbf{Motion:} rotation about O." in tex
+    assert "\\textbf{Moments about:} O, the pin: its reactions have no moment." in tex
+    assert "\\textbf{Kinetic diagram:} $I_{O} \\, \\alpha$." in tex
+    assert "\\textbf{Kinetic diagram:} $m \\, a_{Gx}$, $m \\, a_{Gy}$, $I_{G} \\, \\alpha$." in tex
+    assert "\\textbf{Moments about:} G, since the crate translates." in tex
+    ball = tex[tex.index("ball (particle)") :]
+    assert "Moments about" not in ball[: ball.index("\\end{minipage}")]  # none given
+    assert tex.count("Unknown forces are dashed and red") == 4
+
+
+def test_latex_assumptions() -> None:
+    tex = render_latex(scene_solution())
+    assert (
+        "\\item[$\\checkmark$] \\textbf{no slip at C} (holds): \\textbar{}F\\_C\\textbar{} = "
+        "98.1 N $\\leq$ $\\mu$\\_s N\\_C = 196 N"
+    ) in tex
+    assert "\\item[$\\checkmark$] \\textbf{no tipping} (holds): x\\_C = 0.1 m" in tex
+    assert (
+        "\\item[$\\times$] \\textbf{cord T taut} (\\textbf{fails}): T = -3.2 N \\textless{} 0"
+        in tex
+    )
+
+
+@pytest.mark.parametrize("body", [DRUM, CRATE, LINK, BALL], ids=lambda b: b.body)
+def test_latex_labels_and_colours(body: FreeBody) -> None:
+    groups = force_groups(pictures(render_latex(scene_solution()))[body.body])
+    assert len(groups) == len(body.forces)
+    for (red, commands), f in zip(groups, body.forces, strict=True):
+        assert red is not f.known, f.name
+        name = f"${safe_math(latex.latex_name(f.name)).strip()}$"
+        expected = f"{name} ({f.direction})" if f.kind == "couple" else name
+        assert label(commands) == expected
+
+
+@pytest.mark.parametrize("body", [DRUM, CRATE, LINK, BALL], ids=lambda b: b.body)
+def test_latex_arrows_point_the_right_way(body: FreeBody) -> None:
+    groups = force_groups(pictures(render_latex(scene_solution()))[body.body])
+    tips = [
+        arrowhead(c) for (_, c), f in zip(groups, body.forces, strict=True) if f.kind != "couple"
+    ]
+    for (tip, unit), (expected_tip, expected_unit) in zip(
+        tips, EXPECTED_TIPS[body.body], strict=True
+    ):
+        assert math.dist(tip, expected_tip) < 0.02
+        assert math.dist(unit, expected_unit) < 0.02
+
+
+def test_latex_unknown_forces_are_dashed() -> None:
+    groups = force_groups(pictures(render_latex(scene_solution()))["drum"])
+    shafts = [len(segments(c)) - 7 for _, c in groups]  # seven lines make the head
+    assert shafts == [3, 1, 3, 3]  # T, O_x and O_y dashed; W_drum one line
+
+
+def test_latex_couple_is_a_ccw_arc_around_g() -> None:
+    (_, commands), *_ = force_groups(pictures(render_latex(scene_solution()))["link"])
+    tip, unit = arrowhead(commands)
+    assert math.dist(tip, (-4.24, -4.24)) < 0.02  # the arc ends at 225 degrees, radius 6 mm
+    assert math.dist(unit, (math.sqrt(0.5), -math.sqrt(0.5))) < 0.02  # heading counterclockwise
+    arc = segments(commands)[:6]
+    assert all(abs(math.dist(p, (0, 0)) - 6) < 0.02 for s in arc for p in s)
+    clockwise = replace(LINK, forces=(replace(LINK.forces[0], direction="cw"),))
+    (_, commands), *_ = force_groups(pictures(render_latex(scene_solution((clockwise,))))["link"])
+    tip, unit = arrowhead(commands)
+    assert math.dist(tip, (4.24, -4.24)) < 0.02
+    assert math.dist(unit, (-math.sqrt(0.5), -math.sqrt(0.5))) < 0.02
+    assert label(commands) == "$M$ (cw)"
+
+
+def test_latex_outlines() -> None:
+    drawn = pictures(render_latex(scene_solution()))
+    drum = [s for s in segments(drawn["drum"][: drawn["drum"].index("\\put(0,0){\\circle*{1.2}}")])]
+    assert len(drum) == 8 and all(abs(math.dist(p, (0, 0)) - 17.5) < 0.02 for s in drum for p in s)
+    assert "\\linethickness{3pt}" in drawn["link"]
+    assert "\\qbezier(-17.5,0)(0,0)(17.5,0)" in drawn["link"]  # the rod, 35 mm along x
+    assert "\\qbezier(-17.5,-8.75)(0,-8.75)(17.5,-8.75)" in drawn["crate"]  # 1 m by 0.5 m
+    assert "\\put(0,0){\\circle*{2.5}}" in drawn["ball"]
+    assert all("\\put(-0.8,-0.8){\\makebox(0,0)[rt]{$G$}}" in lines for lines in drawn.values())
+
+
+def test_latex_unknown_shape_is_a_small_square() -> None:
+    odd = FreeBody("lump", "blob", (0.3,), "translation", (), (), "")
+    (lines,) = pictures(render_latex(scene_solution((odd,)))).values()
+    assert "\\qbezier(-4,-4)(0,-4)(4,-4)" in lines
+
+
+def test_equation_mode_output_is_unchanged() -> None:
+    """Without a scene the document is exactly the sections it always had."""
+    solution = equation_solution()
+    sections = [
+        latex._title(solution),
+        latex._givens_section(solution.givens),
+        latex._equations_section(solution.equations),
+        latex._solution_section(solution.steps),
+        latex._answers_section(solution.answers, solution.key),
+        latex._checks_section(solution.checks),
+    ]
+    expected = "\n\n".join([latex.PREAMBLE, "\\begin{document}", *sections, "\\end{document}"])
+    assert render_latex(solution) == expected + "\n"
+    markdown = render_markdown(solution)
+    assert "Free-body" not in markdown and "Assumptions" not in markdown
+    assert markdown.index("## Given") < markdown.index("## Equations")
+    text = render_text(solution)
+    assert "Free-body" not in text and "Assumptions" not in text
+
+
+# ---- Markdown
+
+
+def test_markdown_tables() -> None:
+    document = render_markdown(scene_solution())
+    order = ["## Given", "## Free-body diagrams", "### drum (disk)", "### crate (block)",
+             "### link (rod)", "### ball (particle)", "## Assumptions", "## Equations"]  # fmt: skip
+    assert [document.index(h) for h in order] == sorted(document.index(h) for h in order)
+    header = "| Force | Kind | Point | Direction | Known | Value |"
+    assert document.count(header) == 4
+    for row in [
+        "| $T$ | tension | (r, 0) | down | **no** | 106 N |",
+        "| $W_{drum}$ | weight | G | down | yes | 589 N |",
+        "| $O_{x}$ | reaction | O | right | **no** |  |",
+        "| $P$ | applied | (-0.5, 0.1) | angle -36.9° | yes |  |",
+        "| $M$ | couple | G | ccw | yes | 50 N·m |",
+        "| $T_{2}$ | tension | G | up | **no** | 157 N |",
+    ]:
+        assert row in document
+    assert "- Motion: rotation about O" in document
+    assert "- Moments about: O, the pin: its reactions have no moment" in document
+    assert "- Kinetic diagram: $m \\, a_{Gx}$, $m \\, a_{Gy}$, $I_{G} \\, α$" in document
+
+
+def test_markdown_assumptions() -> None:
+    document = render_markdown(scene_solution())
+    table = document[document.index("## Assumptions") : document.index("## Equations")]
+    assert "|  | Assumption | Detail |" in table
+    assert "| ✓ | no slip at C | \\|F\\_C\\| = 98.1 N ≤ μ\\_s N\\_C = 196 N |" in table
+    assert "| ✗ | cord T taut | T = -3.2 N \\< 0 |" in table
+
+
+def test_markdown_escapes_awkward_names() -> None:
+    odd = force("N|A*", "reaction", "[A]", (0.1, 0.0), "up", (0.0, 1.0), False, "1 | 2")
+    body = FreeBody("b_1 | x", "disk", (0.1,), "rotation", (odd,), ("m·a | b",), "`O`")
+    document = render_markdown(scene_solution((body,)))
+    assert "### b\\_1 \\| x (disk)" in document
+    assert "| N\\|A\\* | reaction | \\[A\\] | up | **no** | 1 \\| 2 |" in document
+    assert "- Kinetic diagram: m·a \\| b" in document
+    assert "- Moments about: \\`O\\`" in document
+
+
+# ---- terminal
+
+
+def test_terminal_sections() -> None:
+    text = render_text(scene_solution())
+    lines = [line.rstrip() for line in text.splitlines()]
+    order = ["Given", "Free-body diagrams", "drum (disk)", "crate (block)", "link (rod)",
+             "ball (particle)", "Equations (units checked)", "Answers", "Assumptions",
+             "Checks"]  # fmt: skip
+    assert [lines.index(h) for h in order] == sorted(lines.index(h) for h in order)
+    start = lines.index("drum (disk)")
+    assert lines[start + 1].split() == ["force", "kind", "at", "direction", "known", "value"]
+    assert lines[start + 2].split() == ["T", "tension", "(r,", "0)", "down", "no", "106", "N"]
+    assert lines[start + 4].split() == ["O_x", "reaction", "O", "right", "no"]
+    assert (
+        "motion: rotation about O · moments about O, the pin: its reactions have no moment" in lines
+    )
+    assert "kinetic diagram: m a_Gx, m a_Gy, I_G α" in lines
+    assert "motion: translation" in lines  # the ball: no moment point
+    rows = lines[lines.index("Assumptions") + 2 : lines.index("Assumptions") + 5]
+    assert [r.split()[0] for r in rows] == ["✓", "✓", "✗"]
+    assert "cord T taut" in rows[2] and "T = -3.2 N < 0" in rows[2]
+
+
+def test_terminal_shows_markup_literally() -> None:
+    odd = force("[bold]x[/bold]", "applied", "[A]", (0.0, 0.0), "up", (0.0, 1.0))
+    body = FreeBody("[red]b", "disk", (0.1,), "rotation", (odd,), (), "")
+    text = render_text(scene_solution((body,)))
+    assert "[bold]x[/bold]" in text and "[red]b (disk)" in text
+
+
+# ---- any force list: ASCII LaTeX that pdflatex accepts
+
+NAMES = st.one_of(
+    st.from_regex(r"[A-Za-z][A-Za-z0-9]{0,3}(_[A-Za-z0-9]{0,3}){0,3}", fullmatch=True),
+    st.sampled_from(["lambda_", "a__b", "x_", "theta_dot", "omega2", "Sigma_x", "W_bar", "F_{A}",
+                     "50%", "$x$", "\\relax", "{", "}", "#1", "μ_s", "T'", "", " ", "é", "N_A^2"]),
+    st.text(max_size=12),
+)  # fmt: skip
+FLOATS = st.one_of(
+    st.floats(allow_nan=False, allow_infinity=False),
+    st.floats(min_value=-10, max_value=10, allow_nan=False),
+    st.sampled_from([0.0, -0.0, 1e-300, 5e-324, 1e300]),
+)
+ANGLES = st.floats(min_value=-720, max_value=720, allow_nan=False)
+KINDS = st.sampled_from(["weight", "reaction", "friction", "tension", "applied", "couple"])
+
+
+@st.composite
+def forces(draw: st.DrawFn) -> ForceRow:
+    kind = draw(st.one_of(KINDS, st.text(max_size=8)))
+    angle = math.radians(draw(ANGLES))
+    dx, dy = (0.0, 0.0) if kind == "couple" else (math.cos(angle), math.sin(angle))
+    if draw(st.booleans()) and kind != "couple":
+        dx, dy = draw(st.sampled_from([(0.0, 0.0), (1e300, 1e300), (3.0, -4.0), (-0.0, 1e-320)]))
+    direction = draw(
+        st.one_of(st.sampled_from(["cw", "ccw", "down", "angle 36.9°"]), st.text(max_size=8))
+    )
+    return ForceRow(
+        draw(NAMES), kind, draw(st.text(max_size=8)), draw(FLOATS), draw(FLOATS), direction,
+        dx, dy, draw(st.booleans()), draw(st.text(max_size=8)),
+    )  # fmt: skip
+
+
+@st.composite
+def bodies(draw: st.DrawFn) -> FreeBody:
+    shapes = ["disk", "ring", "cylinder", "sphere", "shell", "hollow", "rod", "block", "plate",
+              "particle", "composite"]  # fmt: skip
+    return FreeBody(
+        body=draw(NAMES),
+        shape=draw(st.one_of(st.sampled_from(shapes), st.text(max_size=8))),
+        size=tuple(draw(st.lists(FLOATS, max_size=3))),
+        motion=draw(st.text(max_size=12)),
+        forces=tuple(draw(st.lists(forces(), max_size=6))),
+        kinetic=tuple(draw(st.lists(st.one_of(NAMES, st.text(max_size=10)), max_size=3))),
+        moment_point=draw(st.text(max_size=12)),
+    )
+
+
+SCENES = st.tuples(
+    st.lists(bodies(), min_size=1, max_size=3),
+    st.lists(st.builds(Assumption, NAMES, st.booleans(), st.text(max_size=20)), max_size=3),
+)
+
+# Every control word the renderer and escape_latex may write in the scene sections.
+TABLES = (
+    latex._TEXT_SPECIAL,
+    latex._TEXT_UNICODE,
+    latex._GREEK,
+    latex._SYMBOLS,
+    latex._SUPERSCRIPTS,
+    latex._ACCENTS,
+)
+COMMANDS = {
+    command
+    for table in TABLES
+    for value in table.values()
+    for command in re.findall(r"\\([A-Za-z]+)", value)
+} | {
+    "subsection",
+    "subsubsection",
+    "textbf",
+    "small",
+    "par",
+    "noindent",
+    "begin",
+    "end",
+    "medskip",
+    "linewidth",
+    "setlength",
+    "unitlength",
+    "qbezier",
+    "put",
+    "makebox",
+    "circle",
+    "color",
+    "linethickness",
+    "item",
+    "text",
+    "mathrm",
+    "dot",
+    "ddot",
+    "hat",
+    "bar",
+    "i",
+    "j",
+}
+ENVIRONMENTS = {"minipage", "center", "picture", "itemize"}
+PICTURE_LINE = re.compile(
+    rf"\\qbezier(?:\({NUMBER},{NUMBER}\)){{3}}|\\put\({NUMBER},{NUMBER}\)\{{.*\}}"
+    rf"|\\begin\{{picture\}}\({NUMBER},{NUMBER}\)\({NUMBER},{NUMBER}\)|\\end\{{picture\}}\}}"
+    r"|\{\\setlength\{\\unitlength\}\{1mm\}%|\{(?:\\color\{red\})?\\linethickness\{0\.7pt\}"
+    r"|\\linethickness\{(?:0\.8|3)pt\}|\}"
+)
+
+
+def scene_part(tex: str) -> str:
+    return tex[
+        tex.index("\\subsection*{Free-body diagrams}") : tex.index("\\subsection*{Equations}")
+    ]
+
+
+def assert_safe_tex(part: str) -> None:
+    """Balanced groups and math, no stray specials, no unknown commands, sane coordinates."""
+    assert part.isascii()
+    assert all(c.isprintable() for line in part.splitlines() for c in line)
+    plain = part.replace("{1mm}%\n", "{1mm}\n")  # the picture's one comment
+    plain = re.sub(r"\\[\\{}$%#&_ ,'`^~\"=.]", "", plain)  # escapes, \\, \, and accents
+    depth = 0
+    for char in plain:
+        depth += {"{": 1, "}": -1}.get(char, 0)
+        assert depth >= 0, part
+    assert depth == 0
+    spans = plain.split("$")
+    assert len(spans) % 2 == 1, "unbalanced $"
+    for i, span in enumerate(spans):
+        assert not set(span) & ({"&", "#", "%"} if i % 2 else {"&", "#", "%", "_", "^"}), span
+    assert set(re.findall(r"\\([A-Za-z]+)", part)) <= COMMANDS
+    assert set(re.findall(r"\\(?:begin|end)\{([^}]*)\}", part)) <= ENVIRONMENTS
+    in_picture = False
+    for line in part.splitlines():
+        in_picture = in_picture or line.startswith("{\\setlength{\\unitlength}")
+        if in_picture:
+            assert PICTURE_LINE.fullmatch(line), line
+            numbers = [float(n) for n in re.findall(NUMBER, line.split("{\\makebox")[0])]
+            assert all(abs(n) < 150 for n in numbers), line
+        in_picture = in_picture and line != "\\end{picture}}"
+
+
+@settings(max_examples=150, deadline=None)
+@given(SCENES)
+def test_any_scene_gives_safe_ascii_latex(scene: tuple[list[FreeBody], list[Assumption]]) -> None:
+    free_body, assumptions = scene
+    tex = render_latex(
+        replace(scene_solution(), free_body=tuple(free_body), assumptions=tuple(assumptions))
+    )
+    assert tex.isascii()
+    assert_safe_tex(scene_part(tex))
+    drawn = pictures(tex)
+    for body in free_body:
+        name = escape_latex(body.body) or "?"
+        assert name in tex
+    assert len(re.findall(r"\\begin\{picture\}", tex)) == len(free_body)
+    for lines in drawn.values():
+        w, h = (float(n) for n in PAIR.findall(lines[1])[0])
+        assert 0 < w < 300 and 0 < h < 300
+
+
+@given(SCENES)
+def test_any_scene_renders_in_markdown_and_text(
+    scene: tuple[list[FreeBody], list[Assumption]],
+) -> None:
+    free_body, assumptions = scene
+    solution = replace(scene_solution(), free_body=tuple(free_body), assumptions=tuple(assumptions))
+    document = render_markdown(solution)
+    table_rows = [line for line in document.splitlines() if line.startswith("| ")]
+    for row in table_rows:
+        assert len(re.findall(r"(?<!\\)\|", row)) in (4, 5, 7, 8)  # 3, 4 or 6 cells
+    assert render_text(solution).count("Free-body diagrams") == 1
+
+
+# ---- pdflatex
+
+
+@pytest.fixture
+def pdflatex() -> str:
+    """pdflatex's path; skipped when missing, unless CI is set (CI installs texlive)."""
+    path = shutil.which("pdflatex")
+    if path:
+        return path
+    if os.environ.get("CI"):
+        pytest.fail("pdflatex is missing although CI is set: install texlive-latex-recommended")
+    pytest.skip("pdflatex is not installed")
+
+
+def compile_pdf(tex: str, directory: Path, pdflatex: str) -> Path:
+    """Run pdflatex once on ``tex`` in ``directory``; the PDF it wrote."""
+    source = directory / "solution.tex"
+    source.write_text(tex, encoding="ascii")
+    result = subprocess.run(
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", source.name],
+        cwd=directory, capture_output=True, text=True, errors="replace", timeout=300,
+        stdin=subprocess.DEVNULL,
+    )  # fmt: skip
+    assert result.returncode == 0, result.stdout[-3000:]
+    pdf = directory / "solution.pdf"
+    assert pdf.is_file() and pdf.stat().st_size > 0
+    return pdf
+
+
+@pytest.mark.latex
+def test_scene_compiles(tmp_path: Path, pdflatex: str) -> None:
+    pdf = compile_pdf(render_latex(scene_solution()), tmp_path, pdflatex)
+    log = (tmp_path / "solution.log").read_text(errors="replace")
+    assert "size unavailable" not in log  # no picture command beyond the kernel's reach
+    tool = shutil.which("pdftotext")
+    if tool:
+        text = subprocess.run([tool, str(pdf), "-"], capture_output=True, text=True, check=True)
+        words = " ".join(text.stdout.split())
+        for phrase in ("Free-body diagrams", "drum (disk)", "ball (particle)", "Assumptions",
+                       "no slip at C", "Motion: rotation about A"):  # fmt: skip
+            assert phrase in words
+
+
+@pytest.mark.latex
+def test_awkward_scene_compiles(tmp_path: Path, pdflatex: str) -> None:
+    awkward = FreeBody(
+        body="Σ & 100% {x}_#1",
+        shape="composite",
+        size=(math.inf, -1.0),
+        motion="general plane motion \\ ~ ^",
+        forces=(
+            force("\\relax", "applied", "$", (math.nan, 1e300), "?", (0.0, 0.0)),
+            force("μ_s", "couple", "G", (5e-324, 0.0), "clockwise", (0.0, 0.0), False),
+            force("theta_dot", "reaction", "(0, 0)", (0.0, -1e-9), "up", (1e300, 1e300), False),
+            force("", "friction", "", (-3.0, 2.0), "", (-0.6, -0.8), True),
+        ),
+        kinetic=("m a_Gx", "I_G α²", "{", "50% of $"),
+        moment_point="A & B_1 (the pin) — 100%",
+    )
+    tiny = replace(DRUM, size=(1e-300,), forces=(replace(DRUM.forces[0], x=1e-300),))
+    solution = replace(scene_solution(), free_body=(awkward, tiny, CRATE))
+    compile_pdf(render_latex(solution), tmp_path, pdflatex)
+
+
+@pytest.mark.latex
+@settings(
+    max_examples=3, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(SCENES)
+def test_random_scenes_compile(
+    pdflatex: str, scene: tuple[list[FreeBody], list[Assumption]]
+) -> None:
+    free_body, assumptions = scene
+    solution = replace(scene_solution(), free_body=tuple(free_body), assumptions=tuple(assumptions))
+    with tempfile.TemporaryDirectory() as directory:
+        compile_pdf(render_latex(solution), Path(directory), pdflatex)

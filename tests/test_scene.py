@@ -1,0 +1,219 @@
+"""Scene mode: equations written from bodies, supports and loads (docs/scene-mode.md)."""
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from dynsolve.cli import app
+from dynsolve.errors import DimensionError, SpecError
+from dynsolve.pipeline import solve_file
+
+# Hibbeler 12e Example 17.11 as a scene: alpha = 11.3 rad/s^2 (cw with the block on the
+# right), T = 106 N, a = 4.52 m/s^2 down.
+DRUM_SCENE = """\
+problem: Drum and hanging block (scene)
+units: SI
+given:
+  m_d = 60 kg
+  k_O = 0.25 m
+  r = 0.4 m
+  m_b = 20 kg
+scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m_b, at (r, -r)
+  pin drum at O
+  cord T: drum at (r, 0) to block, down
+  gravity
+find: alpha = alpha(drum), T, a = a_G(block)
+answers:
+  alpha = 11.3 rad/s^2 +- 0.5% cw
+  T = 106 N +- 0.5%
+  a = 4.52 m/s^2 +- 0.5% down
+"""
+
+# Hibbeler 12e Example 17.7 (crate, mu_k = 0.2, P = 600 N at 0.8 m): x = 0.467 m, no tip.
+# With P at the top (1.0 m): sum of moments about G (translation, ccw +):
+# 490.5 x - 600(0.5) - 98.1(0.5) = 0  ->  x = 0.712 m > b/2 = 0.5 m: the crate tips.
+CRATE = """\
+units: SI
+given:
+  m = 50 kg
+  b = 1 m
+  h = 1 m
+  P = 600 N
+  h_P = {h_P}
+  mu_k = 0.2
+scene:
+  body crate: mass m, block b by h, at (0, 0)
+  base C on crate: from (-b/2, -h/2) to (b/2, -h/2), mu_k mu_k, slides right
+  force P on crate at (-b/2, h_P - h/2): right
+  gravity
+find: x = x_C, N_C
+answers:
+  x = {x} m +- 0.5%
+"""
+
+
+def write(tmp_path: Path, text: str, name: str = "scene.dyn") -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def failed(solution) -> list[str]:
+    return [f"{c.name}: {c.detail}" for c in solution.checks if not c.passed]
+
+
+def test_drum_scene_reproduces_the_textbook(tmp_path):
+    solution = solve_file(write(tmp_path, DRUM_SCENE))
+    assert solution.mode == "scene"
+    assert not failed(solution), failed(solution)
+    shown = {a.name: (a.value, a.direction) for a in solution.answers}
+    assert shown["alpha"][1] == "cw" and shown["a"][1] == "down"
+    assert all(value > 0 for value, _ in shown.values())  # magnitudes
+
+
+def test_drum_scene_writes_textbook_equations_and_diagrams(tmp_path):
+    solution = solve_file(write(tmp_path, DRUM_SCENE))
+    notes = [e.note for e in solution.equations]
+    assert any(n.startswith("ΣM_O = I_G α") for n in notes)  # the moment point is the pin
+    assert any("cord T inextensible" in n for n in notes)
+    bodies = {b.body: b for b in solution.free_body}
+    assert {f.name for f in bodies["drum"].forces} >= {"W_drum", "T", "O_x", "O_y"}
+    assert not next(f for f in bodies["drum"].forces if f.name == "O_x").known
+    assert "rotation about O" in bodies["drum"].motion
+    # the pin's reactions are not needed for alpha, T and a: they are not solved
+    assert any(c.name == "model only what is asked" for c in solution.checks)
+
+
+def test_no_tipping_is_checked_for_the_textbook_crate(tmp_path):
+    solution = solve_file(write(tmp_path, CRATE.format(h_P="0.8 m", x="0.467")))
+    assert not failed(solution), failed(solution)
+    tip = next(a for a in solution.assumptions if a.name.startswith("no tipping"))
+    assert tip.holds
+
+
+def test_a_crate_pushed_at_the_top_tips(tmp_path):
+    solution = solve_file(write(tmp_path, CRATE.format(h_P="1 m", x="0.712")))
+    tip = next(a for a in solution.assumptions if a.name.startswith("no tipping"))
+    assert not tip.holds and "tips" in tip.detail
+    assert not solution.passed  # a failed assumption fails the solve
+
+
+def test_slip_is_detected_and_resolved_with_kinetic_friction():
+    seed = Path(__file__).resolve().parent.parent / "problems" / "seed" / "gpm_seed_pole_slip.dyn"
+    solution = solve_file(seed)
+    trial = next(a for a in solution.assumptions if a.name == "no slip at A")
+    assert not trial.holds and "re-solved with F = μk N" in trial.detail
+    assert solution.passed
+
+
+def test_json_has_scene_fields(tmp_path):
+    result = CliRunner().invoke(app, ["solve", str(write(tmp_path, DRUM_SCENE)), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["mode"] == "scene"
+    assert {b["body"] for b in data["free_body"]} == {"drum", "block"}
+    assert all({"name", "holds", "detail"} <= set(a) for a in data["assumptions"])
+
+
+@pytest.mark.parametrize(
+    ("replace", "by", "error", "message"),
+    [
+        ("force", "force", None, ""),
+        ("cord T: drum at (r, 0) to block", "cord T: drum at (r, 0) to blok", SpecError,
+         "there is no body 'blok'"),
+        ("pin drum at O", "pin drum at Q", SpecError, "no fixed point 'Q'"),
+        ("body drum: mass m_d,", "body drum: mass r,", DimensionError, "must be a mass"),
+        ("find: alpha = alpha(drum)", "find: alpha = alpha(drum2)", SpecError,
+         "there is no body 'drum2'"),
+        ("find: alpha = alpha(drum), T", "find: alpha = alpha(drum), Tension", SpecError,
+         "not a quantity of this scene"),
+    ],
+)  # fmt: skip
+def test_scenes_that_make_no_sense_get_clear_errors(tmp_path, replace, by, error, message):
+    text = DRUM_SCENE.replace(replace, by)
+    if error is None:
+        assert solve_file(write(tmp_path, text)).passed
+        return
+    with pytest.raises(error) as caught:
+        solve_file(write(tmp_path, text))
+    assert message in caught.value.message
+    assert caught.value.position is not None and caught.value.hint
+
+
+def test_too_few_supports_names_the_free_unknowns_and_a_fix(tmp_path):
+    text = """\
+given:
+  m = 2 kg
+  r = 0.1 m
+scene:
+  body block: mass m, disk r
+  force Q on block at (r, 0): up
+  gravity
+find: Q
+"""
+    solution = solve_file(write(tmp_path, text))
+    structure = next(c for c in solution.checks if c.name == "structure")
+    assert not structure.passed
+    assert "cannot determine" in structure.detail and "Q" in structure.detail
+    assert "add a support" in structure.detail
+
+
+ROTATED_DRUM = """\
+units: {system}
+given:
+  m_d = {m_d}
+  k_O = {k_O}
+  r = {r}
+  m_b = {m_b}
+  phi = {phi}
+scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m_b, at (r*cos(phi) + r*sin(phi), r*sin(phi) - r*cos(phi))
+  pin drum at O
+  cord T: drum at (r*cos(phi), r*sin(phi)) to block, angle phi - pi/2
+  gravity: angle phi - pi/2
+find: alpha = alpha(drum), T [N], a = a_G(block) [m/s^2]
+"""
+
+
+@settings(max_examples=8, deadline=None)
+@given(phi=st.floats(min_value=0, max_value=2 * math.pi, allow_nan=False))
+def test_rotating_the_scene_axes_leaves_every_magnitude_unchanged(tmp_path_factory, phi):
+    # The drum problem with every position, direction and gravity rotated by phi:
+    # magnitudes are those of Hibbeler 17.11 (alpha = 7848/695, T = 14715/139,
+    # a = 15696/3475, from solving the linear system by hand).
+    tmp = tmp_path_factory.mktemp("rotated")
+    values = dict(m_d="60 kg", k_O="0.25 m", r="0.4 m", m_b="20 kg", phi=repr(phi))
+    solution = solve_file(write(tmp, ROTATED_DRUM.format(system="SI", **values)))
+    got = {a.name: a.value for a in solution.answers}
+    assert got["alpha"] == pytest.approx(7848 / 695, rel=1e-9)
+    assert got["T"] == pytest.approx(14715 / 139, rel=1e-9)
+    assert got["a"] == pytest.approx(15696 / 3475, rel=1e-9)
+
+
+def test_the_scene_restated_in_fps_gives_the_same_magnitudes(tmp_path):
+    si = dict(m_d="60 kg", k_O="0.25 m", r="0.4 m", m_b="20 kg", phi="0.3")
+    fps = dict(
+        m_d=f"{60 / 14.593902937206364!r} slug",
+        k_O=f"{0.25 / 0.3048!r} ft",
+        r=f"{0.4 / 0.3048!r} ft",
+        m_b=f"{20 / 14.593902937206364!r} slug",
+        phi="0.3",
+    )
+    text_si = ROTATED_DRUM.format(system="SI", **si)
+    text_fps = ROTATED_DRUM.format(system="FPS", **fps).replace(
+        "given:\n", "given:\n  g = 9.81 m/s^2\n"
+    )
+    a = {x.name: x.value for x in solve_file(write(tmp_path, text_si, "si.dyn")).answers}
+    b = {x.name: x.value for x in solve_file(write(tmp_path, text_fps, "fps.dyn")).answers}
+    for name in a:
+        assert b[name] == pytest.approx(a[name], rel=1e-9)
