@@ -95,8 +95,10 @@ def solve_problem(
     view = _View(problem, outcome, trial or {})
     answers = tuple(view.answer(t) for t in problem.targets)
     key = tuple(view.key())
+    notes = tuple(Check(name, True, detail) for name, detail in getattr(problem, "notes", ()))
     checks = (
         view.checks()
+        + notes
         + _assumption_checks(assumptions)
         + tuple(
             Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key

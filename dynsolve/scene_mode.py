@@ -45,6 +45,7 @@ class SceneProblem:
     rows: tuple[EquationRow, ...]
     slipping: Mapping[str, int] = field(default_factory=dict)
     mode: str = "scene"
+    notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
 
 
 def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -> SceneProblem:
@@ -65,15 +66,21 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     _check_answers(spec)
     wanted = _wanted(targets, formulation)
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
+    equations = formulation.equations if wanted else ()  # nothing asked needs an equation
     system = EquationSystem(
-        equations=formulation.equations,
-        unknowns=tuple(formulation.unknowns),
+        equations=equations,
+        unknowns=tuple(formulation.unknowns) if wanted else (),
         knowns=knowns,
         wanted=wanted,
     )
     symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
-    rows = tuple(_row(e, symbol_dims, spec) for e in formulation.equations)
+    rows = tuple(_row(e, symbol_dims, spec) for e in equations)
     report = DimensionReport(dims, (), frozenset())
+    notes = tuple(
+        _inertia_note(t, item, scene)
+        for t, item in zip(targets, spec.finds, strict=True)
+        if item.ref is not None and item.ref.function == "I"
+    )
     return SceneProblem(
         spec,
         tuple(givens),
@@ -85,7 +92,18 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         formulation,
         rows,
         dict(slipping or {}),
+        notes=notes,
     )
+
+
+def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, str]:
+    """How an asked-for inertia was found: the body's own I_G, then the parallel axis."""
+    assert item.ref is not None
+    body = scene.bodies[item.ref.args[0]]
+    lines = [body.inertia_note or "I_G given"]
+    if len(item.ref.args) > 1:
+        lines.append(f"parallel-axis theorem: I_{item.ref.args[1]} = I_G + m d²")
+    return (f"inertia {item.name} of {body.name}", "; ".join(lines))
 
 
 def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[sympy.Symbol, ...]:

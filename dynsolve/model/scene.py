@@ -306,7 +306,7 @@ class _Builder:
             I_G,
             at,
             at,
-            shape or ("particle" if particle else "body"),
+            shape or "body",
             sizes,
             {},
             particle,

@@ -97,6 +97,18 @@ def dot(a: Vec, b: Vec) -> sympy.Expr:
     return a[0] * b[0] + a[1] * b[1]
 
 
+def point_text(P: Vec, G: Vec) -> str:
+    """An unnamed point, written relative to G: ``G + (r, 0)``.
+
+    >>> import sympy
+    >>> r = sympy.Symbol("r")
+    >>> point_text((r, 0), (0, 0))
+    'G + (r, 0)'
+    """
+    dx, dy = (sympy.simplify(P[0] - G[0]), sympy.simplify(P[1] - G[1]))
+    return f"G + ({sympy.sstr(dx)}, {sympy.sstr(dy)})"
+
+
 def _minus(a: Vec, b: Vec) -> Vec:
     return (a[0] - b[0], a[1] - b[1])
 
@@ -164,12 +176,15 @@ class _Writer:
         stated = self.scene.motions.get(body.name)
         if stated:
             return stated
+        mine = [s for s in self.scene.supports if s.body == body.name]
+        if any(s.kind == "pin" for s in mine):
+            return "rotation"
+        if any(s.kind == "base" for s in mine):
+            return "translation"
+        if body.particle and len([s for s in mine if s.kind in ("contact", "rolls")]) >= 2:
+            return "translation"  # no inertia given, resting on two supports: it translates
         if body.particle:
             return "particle"
-        if any(s.kind == "pin" and s.body == body.name for s in self.scene.supports):
-            return "rotation"
-        if any(s.kind == "base" and s.body == body.name for s in self.scene.supports):
-            return "translation"
         return "general"
 
     def body_kinematics(self, body: Body) -> Kinematics:
@@ -237,7 +252,7 @@ class _Writer:
                     "applied",
                     load.body,
                     load.point,
-                    load.point_name,
+                    load.point_name or self._name_of(load.point, load.body),
                     load.direction,
                     magnitude,
                     known,
@@ -256,7 +271,7 @@ class _Writer:
                     "tension",
                     cord.body,
                     cord.point,
-                    self._name_of(cord.point),
+                    self._name_of(cord.point, cord.body),
                     cord.direction,
                     tension,
                     False,
@@ -272,7 +287,7 @@ class _Writer:
                         "tension",
                         cord.other,
                         cord.other_point,
-                        self._name_of(cord.other_point),
+                        self._name_of(cord.other_point, cord.other),
                         back,
                         tension,
                         False,
@@ -291,8 +306,11 @@ class _Writer:
                     f"cord {cord.name} fixed: its end on {cord.body} does not move along it",
                 )
 
-    def _name_of(self, point: Vec) -> str:
-        return self.scene.point_names.get(point, "")
+    def _name_of(self, point: Vec, body: str) -> str:
+        G = self.scene.bodies[body].G
+        if point == G:
+            return "G"
+        return self.scene.point_names.get(point) or point_text(point, G)
 
     def _pin(self, support: Support) -> None:
         body = self.scene.bodies[support.body]
@@ -442,7 +460,7 @@ class _Writer:
         self.equation(sum_y, m * kin.a_G[1], f"ΣF_y = m (a_G)_y {tag}")
         self.kinetic[body.name] = ("m (a_G)_x", "m (a_G)_y")
         if kin.motion == "particle":
-            self.moment_points[body.name] = "a particle: no moment equation"
+            self.moment_points[body.name] = ""
             return
         P, why = self._moment_point(body, forces)
         moment = sympy.Add(*(cross(_minus(f.point, P), f.vector) for f in forces))
@@ -467,8 +485,8 @@ class _Writer:
         pin = kin.pin
         assert pin is not None
         m, tag = body.mass, f"({body.name})"
-        r = _minus(body.G, pin.point)
-        r_G = sympy.sqrt(r[0] ** 2 + r[1] ** 2)
+        r = (sympy.simplify(body.G[0] - pin.point[0]), sympy.simplify(body.G[1] - pin.point[1]))
+        r_G = sympy.simplify(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
         I_O = body.I_G + m * r_G**2
         pin_name = pin.name
         if _is_zero(r_G):
@@ -484,7 +502,7 @@ class _Writer:
             )
             self.kinetic[body.name] = ("I_G α",)
         else:
-            e_r = (r[0] / r_G, r[1] / r_G)
+            e_r = (sympy.simplify(r[0] / r_G), sympy.simplify(r[1] / r_G))
             e_n, e_t = (-e_r[0], -e_r[1]), _perp(e_r)
             self.equation(
                 sympy.Add(*(dot(f.vector, e_n) for f in forces)),
@@ -506,7 +524,7 @@ class _Writer:
         )
         self.equation(moment, I_O * kin.alpha, note)
         self.moment_points[body.name] = (
-            f"about the pin {pin_name}: eliminates {pin_name}'s reaction components"
+            f"the pin {pin_name}, which eliminates its reaction components"
         )
 
     def _moment_point(self, body: Body, forces: list[ForceTerm]) -> tuple[Vec, str]:
@@ -519,15 +537,18 @@ class _Writer:
             if len(names) > len(best_names):
                 best, best_names = P, names
         if best == body.G:
-            return body.G, "about G: ΣM_G = I_G α"
+            return body.G, "G (ΣM_G = I_G α)"
         label = self._point_label(best, body)
         listed = " and ".join(pretty(n) for n in best_names)
-        return best, f"about {label}: eliminates {listed}, the unknowns acting there"
+        return best, f"{label}, which eliminates {listed}, the unknowns acting there"
 
     def _point_label(self, P: Vec, body: Body) -> str:
         if P == body.G:
             return "G"
-        return self.scene.point_names.get(P, "P")
+        named = self.scene.point_names.get(P) or next(
+            (f.point_name for f in self.forces[body.name] if f.point == P and f.point_name), ""
+        )
+        return named or point_text(P, body.G)
 
 
 def formulate(
