@@ -164,13 +164,15 @@ Point = tuple[float, float]
 
 
 def pictures(tex: str) -> dict[str, list[str]]:
-    """Each body's picture, as its lines, by body name."""
+    """Each body's picture, as its lines, by body name; ``\\qbezier`` without its dot count."""
     found = re.findall(
         r"\\subsubsection\*\{(\S+) \([^)]*\)\}\n\\begin\{center\}\n(.*?)\\end\{picture\}",
         tex,
         re.S,
     )
-    return {name: body.splitlines() for name, body in found}
+    return {
+        name: re.sub(r"\\qbezier\[\d+\]", r"\\qbezier", body).splitlines() for name, body in found
+    }
 
 
 def force_groups(lines: list[str]) -> list[tuple[bool, list[str]]]:
@@ -509,7 +511,7 @@ COMMANDS = {
 }
 ENVIRONMENTS = {"minipage", "center", "picture", "itemize"}
 PICTURE_LINE = re.compile(
-    rf"\\qbezier(?:\({NUMBER},{NUMBER}\)){{3}}|\\put\({NUMBER},{NUMBER}\)\{{.*\}}"
+    rf"\\qbezier\[[1-9]\d*\](?:\({NUMBER},{NUMBER}\)){{3}}|\\put\({NUMBER},{NUMBER}\)\{{.*\}}"
     rf"|\\begin\{{picture\}}\({NUMBER},{NUMBER}\)\({NUMBER},{NUMBER}\)|\\end\{{picture\}}\}}"
     r"|\{\\setlength\{\\unitlength\}\{1mm\}%|\{(?:\\color\{red\})?\\linethickness\{0\.7pt\}"
     r"|\\linethickness\{(?:0\.8|3)pt\}|\}"
@@ -544,8 +546,10 @@ def assert_safe_tex(part: str) -> None:
         in_picture = in_picture or line.startswith("{\\setlength{\\unitlength}")
         if in_picture:
             assert PICTURE_LINE.fullmatch(line), line
-            numbers = [float(n) for n in re.findall(NUMBER, line.split("{\\makebox")[0])]
-            assert all(abs(n) < 150 for n in numbers), line
+            dots = re.match(r"\\qbezier\[(\d+)\]", line)
+            assert dots is None or 0 < int(dots.group(1)) < 2000, line  # solid, not huge
+            coordinates = re.sub(r"^\\qbezier\[\d+\]", "", line).split("{\\makebox")[0]
+            assert all(abs(float(n)) < 150 for n in re.findall(NUMBER, coordinates)), line
         in_picture = in_picture and line != "\\end{picture}}"
 
 

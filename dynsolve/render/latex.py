@@ -469,6 +469,7 @@ _HEAD_MM, _HEAD_HALF_MM = 2.4, 0.9  # arrowhead length and half-width
 _SQUARE_MM = 8.0  # the side of the square drawn for a shape without a footprint
 _COUPLE_MM = 6.0  # the radius of a body's first couple arrow; the next ones 3 mm wider
 _LABEL_GAP_MM = 1.5
+_PT_PER_MM = 72.27 / 25.4
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
@@ -547,8 +548,9 @@ def _footprint(shape: str, size: Sequence[float]) -> Point | None:
 class _Picture:
     """Picture-mode commands in millimetres, and the box they cover."""
 
-    def __init__(self) -> None:
+    def __init__(self, thickness: float = 0.7) -> None:
         self.commands: list[str] = []
+        self.thickness = thickness  # pt, as set by the last \linethickness
         self.low = [-_SQUARE_MM / 2, -_SQUARE_MM / 2]
         self.high = [_SQUARE_MM / 2, _SQUARE_MM / 2]
 
@@ -557,8 +559,19 @@ class _Picture:
             self.low[axis] = min(self.low[axis], point[axis])
             self.high[axis] = max(self.high[axis], point[axis])
 
+    def set_thickness(self, points: float) -> None:
+        self.thickness = points
+        self.commands.append(f"\\linethickness{{{_num(points)}pt}}")
+
     def curve(self, start: Point, control: Point, end: Point) -> None:
-        self.commands.append(f"\\qbezier{_xy(start)}{_xy(control)}{_xy(end)}")
+        """A quadratic Bezier curve drawn as overlapping square dots of the line's width.
+
+        The dot count is given explicitly: left to itself the kernel divides by zero on a
+        curve shorter than a quarter of the line width ("Arithmetic overflow").
+        """
+        reach = (math.dist(start, control) + math.dist(control, end)) * _PT_PER_MM
+        dots = max(1, math.ceil(reach / (0.3 * self.thickness)))
+        self.commands.append(f"\\qbezier[{dots}]{_xy(start)}{_xy(control)}{_xy(end)}")
         self.cover(start)
         self.cover(end)
 
@@ -700,14 +713,14 @@ def _outline(
     else:
         hx, hy = at(footprint)
     if shape in _ROUND_SHAPES and footprint is not None:
-        picture.commands.append(r"\linethickness{0.8pt}")
+        picture.set_thickness(0.8)
         picture.arc((0.0, 0.0), hx, 0.0, 360.0, dashed=False)
         return
     if shape == "rod" and footprint is not None:
-        picture.commands.append(r"\linethickness{3pt}")
+        picture.set_thickness(3.0)
         picture.line((-hx, 0.0), (hx, 0.0))
         return
-    picture.commands.append(r"\linethickness{0.8pt}")
+    picture.set_thickness(0.8)
     corners = [(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)]
     for a, b in itertools.pairwise([*corners, corners[0]]):
         picture.line(a, b)
