@@ -216,3 +216,79 @@ def test_the_scene_restated_in_fps_gives_the_same_magnitudes(tmp_path):
     b = {x.name: x.value for x in solve_file(write(tmp_path, text_fps, "fps.dyn")).answers}
     for name in a:
         assert b[name] == pytest.approx(a[name], rel=1e-9)
+
+
+ATWOOD = """\
+given:
+  m1 = 3 kg
+  m2 = 5 kg
+  r = 0.1 m
+  L = 1 m
+  M = {M}
+scene:
+  point O: (0, 0)
+  body pulley: mass M, disk r, at (0, 0)
+  body A: particle, mass m1, at (-r, -L)
+  body B: particle, mass m2, at (r, -L)
+  pin pulley at O
+  cord T1: pulley at (-r, 0) to A, down
+  cord T2: pulley at (r, 0) to B, down
+  gravity
+find: a = a_G(B), T1, T2
+"""
+
+
+@pytest.mark.parametrize(
+    ("M", "a", "T1", "T2"),
+    [
+        # massless pulley: a = (m2 - m1) g/(m1 + m2) = 2(9.81)/8; T = 2 m1 m2 g/(m1 + m2)
+        ("0 kg", 2.4525, 36.7875, 36.7875),
+        # 2-kg disk pulley, I = M r^2/2: a = (m2 - m1) g/(m1 + m2 + M/2) = 19.62/9;
+        # T1 = m1 (g + a), T2 = m2 (g - a)
+        ("2 kg", 19.62 / 9, 3 * (9.81 + 19.62 / 9), 5 * (9.81 - 19.62 / 9)),
+    ],
+)
+def test_atwood_machine_over_a_pulley(tmp_path, M, a, T1, T2):
+    solution = solve_file(write(tmp_path, ATWOOD.format(M=M)))
+    got = {x.name: x for x in solution.answers}
+    assert got["a"].value == pytest.approx(a, rel=1e-9) and got["a"].direction == "down"
+    assert got["T1"].value == pytest.approx(T1, rel=1e-9)
+    assert got["T2"].value == pytest.approx(T2, rel=1e-9)
+
+
+def test_a_spring_pulls_with_k_times_its_stretch(tmp_path):
+    # stretch 0.5 - 0.3 = 0.2 m, force 100(0.2) = 20 N toward the wall: a = 20/2 = 10 m/s^2 left
+    text = """\
+given:
+  m = 2 kg
+  d = 0.5 m
+  k = 100 N/m
+  L0 = 0.3 m
+scene:
+  point W: (0, 0)
+  body block: particle, mass m, at (d, 0)
+  contact block at G: normal up, smooth
+  spring S: block at G to W, k k, unstretched L0
+  gravity
+find: a = a_G(block), N = N_G
+"""
+    got = {x.name: x for x in solve_file(write(tmp_path, text)).answers}
+    assert got["a"].value == pytest.approx(10.0) and got["a"].direction == "left"
+    assert got["N"].value == pytest.approx(2 * 9.81)
+
+
+def test_a_link_carries_the_weight_of_what_hangs_on_it(tmp_path):
+    text = """\
+given:
+  m = 2 kg
+  h = 0.5 m
+scene:
+  point O: (0, 0)
+  body block: particle, mass m, at (0, -h)
+  link AB: block at G to O
+  gravity
+find: F = AB, a = a_G(block)
+"""
+    got = {x.name: x for x in solve_file(write(tmp_path, text)).answers}
+    assert got["F"].value == pytest.approx(2 * 9.81) and got["F"].direction == "up"
+    assert got["a"].value == pytest.approx(0.0, abs=1e-12)

@@ -105,6 +105,35 @@ class Cord:
 
 
 @dataclass(frozen=True)
+class Spring:
+    """A linear spring from a point of ``body`` to a fixed point or another body's point."""
+
+    name: str
+    body: str
+    point: Vec
+    other: str  # "" when the other end is a fixed point
+    other_point: Vec
+    k: sympy.Expr
+    unstretched: sympy.Expr
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Link:
+    """A rigid massless link (a two-force member) from a point of ``body`` to a fixed point
+    or another body's point; its force acts along it."""
+
+    name: str
+    body: str
+    point: Vec
+    other: str
+    other_point: Vec
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Load:
     """A force (magnitude along ``direction`` at ``point``) or a couple (``sense`` ±1)."""
 
@@ -132,6 +161,8 @@ class Scene:
     omegas: Mapping[str, sympy.Expr]  # signed, ccw positive
     motions: Mapping[str, str] = field(default_factory=dict)
     point_names: Mapping[Vec, str] = field(default_factory=dict)
+    springs: tuple[Spring, ...] = ()
+    links: tuple[Link, ...] = ()
 
 
 class _Builder:
@@ -475,11 +506,27 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
     gravity: Vec | None = None
     omegas: dict[str, sympy.Expr] = {}
     motions: dict[str, str] = {}
+    springs: list[Spring] = []
+    links: list[Link] = []
     for stmt in spec.scene:
         if stmt.kind in ("pin", "contact", "rolls", "base"):
             supports.append(_support(builder, stmt))
         elif stmt.kind == "cord":
             cords.append(_cord(builder, stmt))
+        elif stmt.kind in ("spring", "link"):
+            body, point, other, other_point = _two_ends(builder, stmt)
+            if stmt.kind == "link":
+                links.append(
+                    Link(stmt.name, body, point, other, other_point, stmt.line, stmt.column)
+                )
+            else:
+                k = builder.value(stmt.props[0].values[0], Dim(0, 1, -2), "a spring stiffness")
+                free = builder.value(stmt.props[1].values[0], LENGTH, "an unstretched length")
+                springs.append(
+                    Spring(
+                        stmt.name, body, point, other, other_point, k, free, stmt.line, stmt.column
+                    )
+                )
         elif stmt.kind in ("force", "couple"):
             loads.append(_load(builder, stmt))
         elif stmt.kind == "gravity":
@@ -505,6 +552,8 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
         omegas,
         motions,
         names,
+        springs=tuple(springs),
+        links=tuple(links),
     )
 
 
@@ -576,6 +625,29 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
         None,
         stmt.line,
         stmt.column,
+    )
+
+
+def _two_ends(builder: _Builder, stmt: SceneStmt) -> tuple[str, Vec, str, Vec]:
+    """A spring's or link's two ends: a body point, then a fixed point or a body point."""
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    assert stmt.location is not None
+    point, _ = builder.location(body, stmt.location)
+    if stmt.other in builder.bodies:
+        other = builder.bodies[stmt.other]
+        if stmt.other_location is None:
+            return body.name, point, other.name, other.G
+        return body.name, point, other.name, builder.location(other, stmt.other_location)[0]
+    if stmt.other in builder.fixed and stmt.other_location is None:
+        return body.name, point, "", builder.fixed[stmt.other]
+    known = sorted({*builder.bodies, *builder.fixed})
+    close = difflib.get_close_matches(stmt.other, known, n=1)
+    hint = f"did you mean '{close[0]}'?" if close else "end it at a fixed point or a body"
+    raise SpecError(
+        f"the {stmt.kind} {stmt.name} ends at '{stmt.other}', which is neither a body nor a "
+        "fixed point",
+        builder.where(stmt.line, stmt.column),
+        hint,
     )
 
 

@@ -262,6 +262,10 @@ class _Writer:
     def supports(self) -> None:
         for support in self.scene.supports:
             getattr(self, f"_{support.kind}")(support)
+        for spring in self.scene.springs:
+            self._spring(spring)
+        for link in self.scene.links:
+            self._link(link)
         for cord in self.scene.cords:
             tension = self.unknown(cord.name, FORCE)
             self.reactions[cord.name] = (tension, cord.direction)
@@ -305,6 +309,94 @@ class _Writer:
                     sympy.Integer(0),
                     f"cord {cord.name} fixed: its end on {cord.body} does not move along it",
                 )
+
+    def _ends(self, body: str, point: Vec, other: str, other_point: Vec) -> tuple[Vec, sympy.Expr]:
+        """The unit vector from ``point`` toward the other end, and the length between them."""
+        d = _minus(other_point, point)
+        length = sympy.simplify(sympy.sqrt(d[0] ** 2 + d[1] ** 2))
+        return (sympy.simplify(d[0] / length), sympy.simplify(d[1] / length)), length
+
+    def _spring(self, spring: object) -> None:
+        from dynsolve.model.scene import Spring
+
+        assert isinstance(spring, Spring)
+        u, length = self._ends(spring.body, spring.point, spring.other, spring.other_point)
+        force = spring.k * (
+            length - spring.unstretched
+        )  # tension positive: pulls the ends together
+        self.add_force(
+            ForceTerm(
+                spring.name,
+                "spring",
+                spring.body,
+                spring.point,
+                self._name_of(spring.point, spring.body),
+                u,
+                force,
+                True,
+            )
+        )
+        if spring.other:
+            back = (-u[0], -u[1])
+            self.add_force(
+                ForceTerm(
+                    spring.name,
+                    "spring",
+                    spring.other,
+                    spring.other_point,
+                    self._name_of(spring.other_point, spring.other),
+                    back,
+                    force,
+                    True,
+                )
+            )
+
+    def _link(self, link: object) -> None:
+        from dynsolve.model.scene import Link
+
+        assert isinstance(link, Link)
+        u, _ = self._ends(link.body, link.point, link.other, link.other_point)
+        force = self.unknown(link.name, FORCE)
+        self.reactions[link.name] = (force, u)
+        self.add_force(
+            ForceTerm(
+                link.name,
+                "link",
+                link.body,
+                link.point,
+                self._name_of(link.point, link.body),
+                u,
+                force,
+                False,
+            )
+        )
+        a_1 = self.point_acceleration(link.body, link.point)
+        if link.other:
+            self.add_force(
+                ForceTerm(
+                    link.name,
+                    "link",
+                    link.other,
+                    link.other_point,
+                    self._name_of(link.other_point, link.other),
+                    (-u[0], -u[1]),
+                    force,
+                    False,
+                )
+            )
+            a_2 = self.point_acceleration(link.other, link.other_point)
+            self.constraint(
+                dot(a_2, u) - dot(a_1, u),
+                sympy.Integer(0),
+                f"link {link.name} rigid: no relative acceleration along it "
+                "(its ends at relative rest)",
+            )
+        else:
+            self.constraint(
+                dot(a_1, u),
+                sympy.Integer(0),
+                f"link {link.name} to a fixed point: its end does not move along it (at rest)",
+            )
 
     def _name_of(self, point: Vec, body: str) -> str:
         G = self.scene.bodies[body].G

@@ -69,15 +69,27 @@ MAX_STATEMENTS = 1000
 SECTIONS = ("problem", "source", "units", "given", "scene", "equations", "find", "answers")
 BLOCK_SECTIONS = ("given", "scene", "equations", "find", "answers")
 _FIELDS = {
-    "given": "givens", "scene": "scene", "equations": "equations", "find": "finds",
+    "given": "givens",
+    "scene": "scene",
+    "equations": "equations",
+    "find": "finds",
     "answers": "answers",
-}  # fmt: skip
+}
 SYSTEMS = {"si": "SI", "fps": "FPS"}
 SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
 FUNCTIONS = {
-    "sin": 1, "cos": 1, "tan": 1, "asin": 1, "acos": 1, "atan": 1, "atan2": 2,
-    "sqrt": 1, "exp": 1, "log": 1, "abs": 1,
-}  # fmt: skip
+    "sin": 1,
+    "cos": 1,
+    "tan": 1,
+    "asin": 1,
+    "acos": 1,
+    "atan": 1,
+    "atan2": 2,
+    "sqrt": 1,
+    "exp": 1,
+    "log": 1,
+    "abs": 1,
+}
 CONSTANTS = ("pi", "g")
 
 _EXPECTED_WORDS = {
@@ -689,10 +701,46 @@ class _Builder(Transformer_NonRecursive):
         other = str(rest[0]) if len(rest) > 1 else ""
         other_location = rest[1] if len(rest) > 2 else None
         return self._stmt(
-            "cord", name, name=str(name), body=str(body), location=location,
-            other=other, other_location=other_location, direction=direction,
+            "cord",
+            name,
+            name=str(name),
+            body=str(body),
+            location=location,
+            other=other,
+            other_location=other_location,
+            direction=direction,
             word="fixed" if fixed else "",
-        )  # fmt: skip
+        )
+
+    def spring_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, location, other, *rest = c
+        other_location = rest[0] if len(rest) == 3 else None
+        stiffness, unstretched = rest[-2], rest[-1]
+        return self._stmt(
+            "spring",
+            name,
+            name=str(name),
+            body=str(body),
+            location=location,
+            other=str(other),
+            other_location=other_location,
+            props=(
+                Prop("k", values=(stiffness,), line=self.line, column=self.offset + 1),
+                Prop("unstretched", values=(unstretched,), line=self.line, column=self.offset + 1),
+            ),
+        )
+
+    def link_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, location, other, *rest = c
+        return self._stmt(
+            "link",
+            name,
+            name=str(name),
+            body=str(body),
+            location=location,
+            other=str(other),
+            other_location=rest[0] if rest else None,
+        )
 
     def force_stmt(self, c: list[Any]) -> SceneStmt:
         name, body, location, direction = c
