@@ -56,15 +56,9 @@ def compare(
     """
     if answer.formula is not None:
         return _compare_formula(answer, computed, dim, spec, symbols, knowns, known_dims)
-    assert answer.quantity is not None
-    expected, expected_dim = resolve_quantity(answer.quantity, spec.system, spec.file)
-    shown = _expected_text(answer)
-    if expected_dim != dim:
-        return Verdict(
-            False,
-            shown,
-            f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}",
-        )
+    expected, shown, mismatch = _expected(answer, dim, spec)
+    if mismatch is not None:
+        return mismatch
     if answer.direction:
         if answer.quantity.value < 0:
             raise SpecError(
@@ -96,15 +90,9 @@ def compare_magnitude(
 ) -> Verdict:
     """Judge a scene answer: its magnitude (base units) and, when the key gives one, its
     direction word (cw/ccw, up/down/left/right)."""
-    assert answer.quantity is not None
-    expected, expected_dim = resolve_quantity(answer.quantity, spec.system, spec.file)
-    shown = _expected_text(answer)
-    if expected_dim != dim:
-        return Verdict(
-            False,
-            shown,
-            f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}",
-        )
+    expected, shown, mismatch = _expected(answer, dim, spec)
+    if mismatch is not None:
+        return mismatch
     if magnitude is None:
         return Verdict(False, shown, "not determined by the scene")
     target = abs(float(expected))
@@ -119,6 +107,17 @@ def compare_magnitude(
             False, shown, f"{detail}; direction {direction or 'none'}, not {answer.direction}"
         )
     return Verdict(True, shown, detail)
+
+
+def _expected(answer: Answer, dim: Dim, spec: Spec) -> tuple[sympy.Expr, str, Verdict | None]:
+    """The key's value in base units, its text, and a failed verdict if its unit is wrong."""
+    assert answer.quantity is not None
+    expected, expected_dim = resolve_quantity(answer.quantity, spec.system, spec.file)
+    shown = _expected_text(answer)
+    if expected_dim != dim:
+        detail = f"unit mismatch: the key gives {expected_dim.name}, the answer is {dim.name}"
+        return expected, shown, Verdict(False, shown, detail)
+    return expected, shown, None
 
 
 def _expected_text(answer: Answer) -> str:

@@ -8,7 +8,6 @@ its force does.
 from __future__ import annotations
 
 import math
-import os
 import re
 import shutil
 import subprocess
@@ -19,6 +18,7 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from latex_tools import compile_pdf
 
 from dynsolve.render import latex
 from dynsolve.render.latex import escape_latex, render_latex, safe_math
@@ -586,32 +586,6 @@ def test_any_scene_renders_in_markdown_and_text(
 
 
 # ---- pdflatex
-
-
-@pytest.fixture
-def pdflatex() -> str:
-    """pdflatex's path; skipped when missing, unless CI is set (CI installs texlive)."""
-    path = shutil.which("pdflatex")
-    if path:
-        return path
-    if os.environ.get("CI"):
-        pytest.fail("pdflatex is missing although CI is set: install texlive-latex-recommended")
-    pytest.skip("pdflatex is not installed")
-
-
-def compile_pdf(tex: str, directory: Path, pdflatex: str) -> Path:
-    """Run pdflatex once on ``tex`` in ``directory``; the PDF it wrote."""
-    source = directory / "solution.tex"
-    source.write_text(tex, encoding="ascii")
-    result = subprocess.run(
-        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", source.name],
-        cwd=directory, capture_output=True, text=True, errors="replace", timeout=300,
-        stdin=subprocess.DEVNULL,
-    )  # fmt: skip
-    assert result.returncode == 0, result.stdout[-3000:]
-    pdf = directory / "solution.pdf"
-    assert pdf.is_file() and pdf.stat().st_size > 0
-    return pdf
 
 
 @pytest.mark.latex
