@@ -38,7 +38,9 @@ class GivenInfo:
     symbol: sympy.Symbol
     value: sympy.Expr | None
     dim: Dim
-    given: Given | None  # None for the default g
+    given: Given | None  # None for the default g and for derived quantities
+    note: str = ""  # for a derived quantity (r_G, I_O): what it is
+    formula: sympy.Expr | None = None  # for a derived quantity: in terms of the givens
 
 
 @dataclass(frozen=True)

@@ -188,6 +188,8 @@ class _View:
 
     # ---- rows
     def given_row(self, info: GivenInfo) -> GivenRow:
+        if info.formula is not None:
+            return self.derived_row(info)
         given = info.given
         if info.value is None:
             assert given is not None and given.dimension is not None
@@ -222,6 +224,23 @@ class _View:
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
         return GivenRow(
             info.name, written, si, description, False, latex_name(info.name), latex_value
+        )
+
+    def derived_row(self, info: GivenInfo) -> GivenRow:
+        """A quantity dynsolve derived from the givens (r_G, I_O): its formula and value."""
+        assert info.formula is not None and info.value is not None
+        formula = self.text(info.formula)
+        value = self.number(info.value)
+        unit = natural_unit(info.dim, "SI", info.name)
+        si = (
+            "—"
+            if value is None
+            else format_quantity(convert(value, unit, self.system), unit, 4, trim=True)
+        )
+        written = f"= {formula}"
+        latex = self.latex(info.formula)
+        return GivenRow(
+            info.name, written, si, info.note, value is None, latex_name(info.name), latex
         )
 
     def _g_unit(self) -> str:

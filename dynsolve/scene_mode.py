@@ -61,7 +61,22 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     except ValueError as exc:
         raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
     symbols.update({s.name: s for s in formulation.unknowns})
+    symbols.update({s.name: s for s in formulation.derived})
     dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
+    dims |= {s.name: d for s, (_, d, _) in formulation.derived.items()}
+    given_values = {g.symbol: g.value for g in givens if g.value is not None}
+    givens = givens + [
+        GivenInfo(
+            s.name,
+            s,
+            value.xreplace(given_values) if given_values else value,
+            dim,
+            None,
+            meaning,
+            value,
+        )
+        for s, (value, dim, meaning) in formulation.derived.items()
+    ]
     targets = tuple(_target(item, spec, scene, formulation, symbols, dims) for item in spec.finds)
     _check_answers(spec)
     wanted = _wanted(targets, formulation)

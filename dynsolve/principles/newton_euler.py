@@ -77,6 +77,7 @@ class Formulation:
     moment_points: Mapping[str, str]
     reactions: Mapping[str, tuple[sympy.Symbol, Vec]]  # unknown force name → (symbol, axis)
     kinetic: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    derived: Mapping[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = field(default_factory=dict)
 
 
 def cross(r: Vec, f: Vec) -> sympy.Expr:
@@ -109,6 +110,17 @@ def point_text(P: Vec, G: Vec) -> str:
     return f"G + ({sympy.sstr(dx)}, {sympy.sstr(dy)})"
 
 
+def _projected(forces: list[ForceTerm], axis: Vec) -> sympy.Expr:
+    """Σ F·axis, each force's direction cosine simplified (so O_n·e_n reads O_n)."""
+    return sympy.Add(*(f.magnitude * sympy.simplify(dot(f.direction, axis)) for f in forces))
+
+
+def _moment(forces: list[ForceTerm], couples: list[CoupleTerm], P: Vec) -> sympy.Expr:
+    """Σ (r − P) × F + Σ couples, each moment arm simplified."""
+    arms = (f.magnitude * sympy.simplify(cross(_minus(f.point, P), f.direction)) for f in forces)
+    return sympy.Add(*arms) + sympy.Add(*(c.moment for c in couples))
+
+
 def _minus(a: Vec, b: Vec) -> Vec:
     return (a[0] - b[0], a[1] - b[1])
 
@@ -138,6 +150,7 @@ class _Writer:
         self.kinematics: dict[str, Kinematics] = {}
         self.moment_points: dict[str, str] = {}
         self.kinetic: dict[str, tuple[str, ...]] = {}
+        self.derived: dict[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = {}
         self.several = len(scene.bodies) > 1
 
     # ---- names and symbols
@@ -555,8 +568,7 @@ class _Writer:
             self.moment_points[body.name] = ""
             return
         P, why = self._moment_point(body, forces)
-        moment = sympy.Add(*(cross(_minus(f.point, P), f.vector) for f in forces))
-        moment += sympy.Add(*(c.moment for c in couples))
+        moment = _moment(forces, couples, P)
         r_GP = _minus(body.G, P)
         kinetic = body.I_G * kin.alpha + cross(r_GP, (m * kin.a_G[0], m * kin.a_G[1]))
         name = self._point_label(P, body)
@@ -578,10 +590,21 @@ class _Writer:
         assert pin is not None
         m, tag = body.mass, f"({body.name})"
         r = (sympy.simplify(body.G[0] - pin.point[0]), sympy.simplify(body.G[1] - pin.point[1]))
-        r_G = sympy.simplify(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
-        I_O = body.I_G + m * r_G**2
+        r_G_value = sympy.simplify(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
         pin_name = pin.name
-        if _is_zero(r_G):
+        on_axis = _is_zero(r_G_value)
+        r_G = self.name_quantity(
+            self.suffix("r_G", body.name), r_G_value, LENGTH, f"distance {pin_name}–G"
+        )
+        I_O = body.I_G
+        if not on_axis:
+            I_O = self.name_quantity(
+                self.suffix(f"I_{pin_name}", body.name),
+                sympy.simplify(body.I_G + m * r_G_value**2),
+                Dim(2, 1, 0),
+                f"I about {pin_name}: I_G + m r_G² (parallel-axis theorem)",
+            )
+        if on_axis:
             self.equation(
                 sympy.Add(*(f.vector[0] for f in forces)),
                 sympy.Integer(0),
@@ -594,30 +617,30 @@ class _Writer:
             )
             self.kinetic[body.name] = ("I_G α",)
         else:
-            e_r = (sympy.simplify(r[0] / r_G), sympy.simplify(r[1] / r_G))
+            e_r = (sympy.simplify(r[0] / r_G_value), sympy.simplify(r[1] / r_G_value))
             e_n, e_t = (-e_r[0], -e_r[1]), _perp(e_r)
-            self.equation(
-                sympy.Add(*(dot(f.vector, e_n) for f in forces)),
-                m * kin.omega**2 * r_G,
-                f"ΣF_n = m ω² r_G {tag}",
-            )
-            self.equation(
-                sympy.Add(*(dot(f.vector, e_t) for f in forces)),
-                m * kin.alpha * r_G,
-                f"ΣF_t = m α r_G {tag}",
-            )
+            self.equation(_projected(forces, e_n), m * kin.omega**2 * r_G, f"ΣF_n = m ω² r_G {tag}")
+            self.equation(_projected(forces, e_t), m * kin.alpha * r_G, f"ΣF_t = m α r_G {tag}")
             self.kinetic[body.name] = ("m ω² r_G", "m α r_G", "I_G α")
-        moment = sympy.Add(*(cross(_minus(f.point, pin.point), f.vector) for f in forces))
-        moment += sympy.Add(*(c.moment for c in couples))
+        moment = _moment(forces, couples, pin.point)
         note = (
             f"ΣM_{pin_name} = I_{pin_name} α, I_{pin_name} = I_G + m r_G² {tag}"
-            if not _is_zero(r_G)
+            if not on_axis
             else f"ΣM_{pin_name} = I_G α {tag}"
         )
         self.equation(moment, I_O * kin.alpha, note)
         self.moment_points[body.name] = (
             f"the pin {pin_name}, which eliminates its reaction components"
         )
+
+    def name_quantity(self, name: str, value: sympy.Expr, dim: Dim, meaning: str) -> sympy.Expr:
+        """A geometric or inertial quantity shown by name in the equations (r_G, I_O),
+        with its value listed beside the givens; a plain symbol or number is kept as is."""
+        if value.is_Symbol or value.is_Number or name in self.symbols:
+            return value
+        symbol = sympy.Symbol(name, positive=True)
+        self.derived[symbol] = (value, dim, meaning)
+        return symbol
 
     def _moment_point(self, body: Body, forces: list[ForceTerm]) -> tuple[Vec, str]:
         unknown = [f for f in forces if not f.known]
@@ -667,4 +690,5 @@ def formulate(
         moment_points=writer.moment_points,
         reactions=writer.reactions,
         kinetic=writer.kinetic,
+        derived=writer.derived,
     )
