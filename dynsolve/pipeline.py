@@ -92,7 +92,7 @@ def solve_problem(
 ) -> Solution:
     """Solve a built problem (unless ``outcome`` is given) and assemble what renderers show."""
     outcome = outcome or solve_system(problem.system, options)
-    view = _View(problem, outcome, trial or {})
+    view = _View(problem, outcome, trial or {}, options)
     answers = tuple(view.answer(t) for t in problem.targets)
     key = tuple(view.key())
     notes = tuple(Check(name, True, detail) for name, detail in getattr(problem, "notes", ()))
@@ -137,11 +137,17 @@ class _View:
     """Formats one solved problem; holds the lookups shared by the row builders."""
 
     def __init__(
-        self, problem: Problem, outcome: Outcome, trial: Mapping[sympy.Symbol, sympy.Expr]
+        self,
+        problem: Problem,
+        outcome: Outcome,
+        trial: Mapping[sympy.Symbol, sympy.Expr],
+        options: SolveOptions,
     ) -> None:
         self.problem = problem
         self.outcome = outcome
         self.trial = trial
+        self.options = options
+        self.thresholds: dict[str, sympy.Expr | None] = {}  # steepest(C), computed once
         self.system = problem.spec.system
         self.knowns = problem.system.knowns
         self.units = {t.name: t.unit for t in problem.targets}
@@ -322,6 +328,19 @@ class _View:
 
     def scene_value(self, target: Target) -> sympy.Expr | None:
         """A scene target's value: signed along its axis, or a vector's magnitude."""
+        if target.kind == "steepest":
+            from dynsolve.scene_mode import steepest
+
+            assert target.expr is not None
+            contact = target.expr.name
+            if contact not in self.thresholds:
+                self.thresholds[contact] = steepest(
+                    self.problem,  # type: ignore[arg-type]
+                    contact,
+                    self.outcome.values,
+                    self.options,
+                )
+            return self.thresholds[contact]
         values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
         if target.vector is not None:
             x, y = (sympy.Integer(0) + c for c in target.vector)

@@ -126,6 +126,8 @@ def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[symp
     wanted: list[sympy.Symbol] = []
     for target in targets:
         exprs = [target.expr] if target.expr is not None else []
+        if target.kind == "steepest":  # needs the friction's sense in the solved scene
+            exprs = [formulation.reactions[f"F_{target.expr}"][0]]
         if target.vector is not None:
             exprs += list(target.vector)
         for expr in exprs:
@@ -184,6 +186,8 @@ def _target(
         function, args, trial = args[0], (), True
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
+    if target.kind == "steepest" and item.unit is None:
+        unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
 
 
@@ -217,6 +221,15 @@ def _quantity(
     def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
         return Target(name, symbol, dim, "", False, False, kind, expr, **extra)  # type: ignore[arg-type]
 
+    if function == "steepest":
+        support = next((s for s in scene.supports if s.name == (args or ("",))[0]), None)
+        if support is None or support.mu_s is None or scene.gravity is None:
+            raise SpecError(
+                "steepest(C) needs a contact C with mu_s, and gravity",
+                where,
+                hint="name a rough contact, e.g. steepest(C) for 'rolls disk at C: …, mu_s mu_s'",
+            )
+        return target("steepest", Dim(), sympy.Symbol(support.name))
     if args:
         body = _body(args[0], scene, where)
         kin = formulation.kinematics[body]
@@ -264,6 +277,66 @@ def _quantity(
         f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
     )
     raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def steepest(
+    problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
+) -> sympy.Expr | None:
+    """The steepest slope at ``contact`` (angle of its surface to the horizontal) on which
+    it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
+    friction at its limit, |F| = μs N, in the sense it has in the solution ``values``.
+    """
+    from dynsolve.solve import solve_system
+
+    scene, formulation = problem.scene, problem.formulation
+    support = next(s for s in scene.supports if s.name == contact)
+    assert scene.gravity is not None and support.mu_s is not None
+    knowns = problem.system.knowns
+    up = (-scene.gravity[0], -scene.gravity[1])
+    side = _number(dot(up, support.tangent), knowns) or 0.0
+    friction = _number(formulation.reactions[f"F_{contact}"][0], {**knowns, **values})
+    if friction is None:
+        return None
+    phi = sympy.Symbol("phi_steepest", positive=True)
+    s = 1 if side >= 0 else -1
+    n, t = support.normal, support.tangent
+    tilted = (
+        -(sympy.cos(phi) * n[0] + s * sympy.sin(phi) * t[0]),
+        -(sympy.cos(phi) * n[1] + s * sympy.sin(phi) * t[1]),
+    )
+    symbols = {g.name: g.symbol for g in problem.givens}
+    limit = formulate(replace(scene, gravity=tilted), symbols, problem.slipping)
+    # friction keeps its sense; on level ground it opposes the slide the tilt starts
+    sense = (1 if friction > 0 else -1) if friction != 0 else s
+    F, N = limit.reactions[f"F_{contact}"][0], limit.reactions[f"N_{contact}"][0]
+    # solve the (linear) scene with φ as a parameter, then |F| = μs N for φ alone
+    system = EquationSystem(limit.equations, tuple(limit.unknowns), knowns, wanted=(F, N))
+    quiet = replace(options, show_formulas=False)  # type: ignore[type-var]
+    solved = solve_system(system, quiet).values
+    if F not in solved or N not in solved:
+        return None
+    condition = sympy.simplify((solved[F] - sense * support.mu_s * solved[N]).xreplace(knowns))
+    return _angle_root(condition, phi)
+
+
+def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
+    """The root of ``condition`` = 0 in (0, π/2]: exactly when sympy can, else numerically."""
+    try:
+        roots = sympy.solve(condition, phi)
+    except (NotImplementedError, ValueError):
+        roots = []
+    for root in roots:
+        value = _number(root, {})
+        if value is not None and 0 < value <= float(sympy.pi / 2) + 1e-12:
+            return root
+    for start in (0.1, 0.5, 1.0, 1.4):
+        try:
+            root = sympy.nsolve(condition, phi, start)
+        except (ValueError, ZeroDivisionError, TypeError):
+            continue
+        if 0 < float(root) <= float(sympy.pi / 2) + 1e-12:
+            return root
+    return None
 
 
 def _body(name: str, scene: Scene, where: Position) -> str:

@@ -1,6 +1,7 @@
 """Scene mode: equations written from bodies, supports and loads (docs/scene-mode.md)."""
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -292,3 +293,32 @@ find: F = AB, a = a_G(block)
     got = {x.name: x for x in solve_file(write(tmp_path, text)).answers}
     assert got["F"].value == pytest.approx(2 * 9.81) and got["F"].direction == "up"
     assert got["a"].value == pytest.approx(0.0, abs=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("body", "expected"),
+    [
+        # a block stays put up to tan(theta) = mu_s: theta = atan(0.5) = 26.565 deg
+        ("particle", math.degrees(math.atan(0.5))),
+        # a solid disk rolls without slipping up to tan(beta) = 3 mu_s (seed 001 / Hibbeler
+        # 17-94: tan(beta) <= mu_s (1 + m R^2/I_G)): beta = atan(1.5) = 56.31 deg
+        ("disk R", math.degrees(math.atan(1.5))),
+    ],
+)
+def test_steepest_slope_without_slip(tmp_path, body, expected):
+    contact = "contact" if body == "particle" else "rolls"
+    text = f"""\
+given:
+  m = 5 kg
+  R = 0.2 m
+  mu_s = 0.5
+scene:
+  body thing: mass m, {body}, at (0, R)
+  point C on thing: (0, -R)
+  {contact} thing at C: normal up, mu_s mu_s
+  gravity
+find: theta = steepest(C)
+"""
+    answer = solve_file(write(tmp_path, text)).answers[0]
+    assert answer.unit == "deg"
+    assert answer.value == pytest.approx(expected, rel=1e-9)

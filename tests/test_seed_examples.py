@@ -51,14 +51,12 @@ SYMBOLIC = (
 
 # Examples written in scene mode (issue 3): no hand-written equations.
 SCENE = tuple(e for e in SEED_EXAMPLES if e.startswith(("fa_", "gpm_", "tr_", "moi_")))
-# Answers a scene cannot name yet; the equation-mode cross-check still reproduces them.
-SCENE_GAPS = {"gpm_seed_incline_threshold": {"beta_max"}}  # the threshold incline angle
 
 
 @pytest.mark.parametrize("example", sorted(SEED_EXAMPLES))
 def test_seed_spec_names_match_the_example(example):
     spec = parse_file(SEED / f"{example}.dyn")
-    expected = SEED_EXAMPLES[example] - SCENE_GAPS.get(example, set())
+    expected = SEED_EXAMPLES[example]
     assert {f.name for f in spec.finds} >= expected
     assert {a.name for a in spec.answers} >= expected
 
@@ -68,7 +66,7 @@ def test_seed_example_reproduces_its_answers(example):
     solution = solve_file(SEED / f"{example}.dyn")
     failed = [f"{c.name}: {c.detail}" for c in solution.checks if not c.passed]
     assert not failed, failed
-    assert {k.name for k in solution.key} >= SEED_EXAMPLES[example] - SCENE_GAPS.get(example, set())
+    assert {k.name for k in solution.key} >= SEED_EXAMPLES[example]
 
 
 @pytest.mark.parametrize("example", SYMBOLIC)
