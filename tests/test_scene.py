@@ -322,3 +322,33 @@ find: theta = steepest(C)
     answer = solve_file(write(tmp_path, text)).answers[0]
     assert answer.unit == "deg"
     assert answer.value == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_given_velocity_sets_omega_for_pinned_and_rolling_bodies(tmp_path):
+    # rod20 of the seed notes with v_G = 7.5 m/s down instead of omega = 5 rad/s cw:
+    # omega = v_G/r_G = 7.5/1.5 = 5 rad/s cw, so O_n = m omega^2 r_G = 20(25)(1.5) = 750 N.
+    rod = """\
+given:
+  m = 20 kg
+  L = 3 m
+  v = 7.5 m/s
+  R = 0.5 m
+  v_d = 2 m/s
+  m_d = 4 kg
+scene:
+  point O: (0, 0)
+  body rod: mass m, rod L, at (L/2, 0)
+  pin rod at O
+  velocity rod: v, down
+  body disk: mass m_d, disk R, at (5*L, R)
+  point C on disk: (0, -R)
+  rolls disk at C: normal up, mu_s 1
+  velocity disk: v_d, right
+  gravity
+find: w = omega(rod), O_n, w_d = omega(disk)
+"""
+    got = {a.name: a for a in solve_file(write(tmp_path, rod)).answers}
+    assert got["w"].value == pytest.approx(5.0) and got["w"].direction == "cw"
+    assert got["O_n"].value == pytest.approx(750.0)
+    # rolling to the right at 2 m/s on a 0.5-m disk: omega = v/R = 4 rad/s cw
+    assert got["w_d"].value == pytest.approx(4.0) and got["w_d"].direction == "cw"

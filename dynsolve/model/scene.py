@@ -163,6 +163,7 @@ class Scene:
     point_names: Mapping[Vec, str] = field(default_factory=dict)
     springs: tuple[Spring, ...] = ()
     links: tuple[Link, ...] = ()
+    velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G given at the instant
 
 
 class _Builder:
@@ -505,6 +506,7 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
     loads: list[Load] = []
     gravity: Vec | None = None
     omegas: dict[str, sympy.Expr] = {}
+    velocities: dict[str, Vec] = {}
     motions: dict[str, str] = {}
     springs: list[Spring] = []
     links: list[Link] = []
@@ -536,6 +538,12 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
             assert stmt.value is not None
             omega = builder.value(stmt.value, Dim(0, 0, -1), "an angular velocity")
             omegas[stmt.body] = -omega if stmt.word == "cw" else omega
+        elif stmt.kind == "velocity":
+            builder.body(stmt.body, stmt.line, stmt.column)
+            assert stmt.value is not None and stmt.direction is not None
+            speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
+            direction = builder.direction(stmt.direction)
+            velocities[stmt.body] = (speed * direction[0], speed * direction[1])
         elif stmt.kind == "motion":
             builder.body(stmt.body, stmt.line, stmt.column)
             motions[stmt.body] = stmt.word
@@ -554,6 +562,7 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
         names,
         springs=tuple(springs),
         links=tuple(links),
+        velocities=velocities,
     )
 
 

@@ -202,7 +202,7 @@ class _Writer:
 
     def body_kinematics(self, body: Body) -> Kinematics:
         motion = self.motion(body)
-        omega = self.scene.omegas.get(body.name, sympy.Integer(0))
+        omega = self.scene.omegas.get(body.name, self.omega_from_velocity(body))
         if motion in ("translation", "particle"):
             a_G = (
                 self.unknown(self.suffix("a_Gx", body.name), ACCELERATION),
@@ -220,6 +220,24 @@ class _Writer:
             self.unknown(self.suffix("a_Gy", body.name), ACCELERATION),
         )
         return Kinematics(motion, alpha, a_G, omega)
+
+    def omega_from_velocity(self, body: Body) -> sympy.Expr:
+        """ω implied by a given v_G: rolling without slip (v_C = 0) or rotation about a pin."""
+        v = self.scene.velocities.get(body.name)
+        if v is None:
+            return sympy.Integer(0)
+        for support in self.scene.supports:
+            if support.body != body.name:
+                continue
+            if support.kind == "rolls" or (
+                support.kind == "contact" and not support.smooth and support.slides is None
+            ):
+                r = _minus(support.point, body.G)  # v_C = v_G + ω k × r_C/G = 0 along t
+                return sympy.simplify(-dot(v, support.tangent) / dot(_perp(r), support.tangent))
+            if support.kind == "pin":
+                r = _minus(body.G, support.point)  # v_G = ω k × r_G/O
+                return sympy.simplify(dot(v, _perp(r)) / dot(r, r))
+        return sympy.Integer(0)
 
     def point_acceleration(self, body: str, point: Vec) -> Vec:
         k = self.kinematics[body]

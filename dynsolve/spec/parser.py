@@ -764,6 +764,10 @@ class _Builder(Transformer_NonRecursive):
             self._sense(sense[0])
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
+    def velocity_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value, direction = c
+        return self._stmt("velocity", body, body=str(body), value=value, direction=direction)
+
     def motion_stmt(self, c: list[Token]) -> SceneStmt:
         body, motion = c
         return self._stmt("motion", body, body=str(body), word=str(motion))
