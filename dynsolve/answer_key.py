@@ -19,6 +19,7 @@ from dynsolve.dimensions import check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import quantity as format_quantity
+from dynsolve.numbers import real_value
 from dynsolve.quantities import convert, resolve_quantity, resolve_unit
 from dynsolve.spec.ast import Answer, EquationStmt, Name, Spec
 from dynsolve.spec.parser import iter_names
@@ -70,7 +71,7 @@ def compare(
             expected = -expected
     if computed is None:
         return Verdict(False, shown, "not determined by the equations")
-    value = _number(computed.subs(knowns))
+    value = real_value(computed.subs(knowns))
     if value is None:
         return Verdict(False, shown, f"the answer is a formula: {computed}")
     target = float(expected)
@@ -172,13 +173,6 @@ def _as_quantity(value: Fraction, unit: object, answer: Answer) -> object:
     return Quantity(value, str(value), unit, answer.line, answer.column)  # type: ignore[arg-type]
 
 
-def _number(expr: sympy.Expr) -> float | None:
-    if expr.free_symbols:
-        return None
-    value = complex(expr.evalf(30))
-    return value.real if abs(value.imag) <= 1e-12 * max(1.0, abs(value.real)) else None
-
-
 def _compare_formula(
     answer: Answer,
     computed: sympy.Expr | None,
@@ -209,8 +203,8 @@ def _compare_formula(
         return Verdict(False, shown, "not determined by the equations")
     if computed.free_symbols:
         return _equivalent(expected, computed, shown)
-    value = _number(computed)
-    target = _number(expected.subs(knowns))
+    value = real_value(computed)
+    target = real_value(expected.subs(knowns))
     if value is None or target is None:
         return Verdict(False, shown, "the formula cannot be evaluated with the givens")
     passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) + 1e-12

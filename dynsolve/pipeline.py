@@ -22,6 +22,7 @@ from dynsolve.equation_mode import GivenInfo, Problem, Target, build_problem
 from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.names import latex_name, pretty
+from dynsolve.numbers import real_value
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
@@ -177,10 +178,7 @@ class _View:
         return sympy.latex(expr, symbol_names=self.latex_symbols)
 
     def number(self, expr: sympy.Expr) -> float | None:
-        if expr.free_symbols:
-            return None
-        value = complex(expr.evalf(30))
-        return value.real if abs(value.imag) <= 1e-12 * max(1.0, abs(value.real)) else None
+        return real_value(expr)
 
     def shown(self, name: str, expr: sympy.Expr) -> tuple[str, str, float | None]:
         """(text, latex, full value in display unit) of a value in base units."""
@@ -365,9 +363,9 @@ class _View:
             y = self.number((sympy.Integer(0) + target.vector[1]).xreplace(values))
             if x is None or y is None or value == 0:
                 return ""
-            from dynsolve.scene_mode import _direction_word
+            from dynsolve.scene_mode import direction_word
 
-            return _direction_word(x / value, y / value)
+            return direction_word(x / value, y / value)
         axis = None
         if target.axis is not None:
             axis = (self.number(target.axis[0]) or 0.0, self.number(target.axis[1]) or 0.0)

@@ -20,6 +20,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import parallel_axis
 from dynsolve.model.scene import Scene, Vec, build_scene
 from dynsolve.names import latex_name, pretty
+from dynsolve.numbers import real_value
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody
@@ -293,8 +294,8 @@ def steepest(
     assert scene.gravity is not None and support.mu_s is not None
     knowns = problem.system.knowns
     up = (-scene.gravity[0], -scene.gravity[1])
-    side = _number(dot(up, support.tangent), knowns) or 0.0
-    friction = _number(formulation.reactions[f"F_{contact}"][0], {**knowns, **values})
+    side = real_value(dot(up, support.tangent), knowns) or 0.0
+    friction = real_value(formulation.reactions[f"F_{contact}"][0], {**knowns, **values})
     if friction is None:
         return None
     phi = sympy.Symbol("phi_steepest", positive=True)
@@ -326,7 +327,7 @@ def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
     except (NotImplementedError, ValueError):
         roots = []
     for root in roots:
-        value = _number(root, {})
+        value = real_value(root, {})
         if value is not None and 0 < value <= float(sympy.pi / 2) + 1e-12:
             return root
     for start in (0.1, 0.5, 1.0, 1.4):
@@ -385,7 +386,7 @@ def assess(
     for support in scene.supports:
         if support.kind == "pin":
             continue
-        N = _number(formulation.reactions[f"N_{support.name}"][0], substitution)
+        N = real_value(formulation.reactions[f"N_{support.name}"][0], substitution)
         if N is not None:
             checks.append(
                 Assumption(
@@ -403,10 +404,10 @@ def assess(
                 )
             )
         elif friction_name in formulation.reactions and support.mu_s is not None and N is not None:
-            F = _number(formulation.reactions[friction_name][0], substitution)
+            F = real_value(formulation.reactions[friction_name][0], substitution)
             limit = (
-                _number(support.mu_s, knowns) * N
-                if _number(support.mu_s, knowns) is not None
+                real_value(support.mu_s, knowns) * N
+                if real_value(support.mu_s, knowns) is not None
                 else None
             )
             if F is None or limit is None:
@@ -421,7 +422,7 @@ def assess(
                 slips[support.name] = 1 if F > 0 else -1
             checks.append(Assumption(f"no slip at {support.name}", holds, detail))
         if support.kind == "base":
-            x = _number(
+            x = real_value(
                 formulation.reactions.get(
                     f"x_{support.name}", (sympy.Symbol(f"x_{support.name}", real=True),)
                 )[0],
@@ -429,7 +430,7 @@ def assess(
             )
             checks.append(_tipping(support, problem, x, substitution))
     for cord in scene.cords:
-        T = _number(formulation.reactions[cord.name][0], substitution)
+        T = real_value(formulation.reactions[cord.name][0], substitution)
         if T is not None:
             checks.append(
                 Assumption(
@@ -455,7 +456,7 @@ def _tipping(
     along = support.tangent
     foot = dot((body.G[0] - support.point[0], body.G[1] - support.point[1]), along)
     length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), along)
-    low, high = _number(-foot, substitution), _number(length - foot, substitution)
+    low, high = real_value(-foot, substitution), real_value(length - foot, substitution)
     if x is None or low is None or high is None:
         return Assumption(f"no tipping on base {support.name}", True, "cannot be decided")
     lo, hi = min(low, high), max(low, high)
@@ -467,14 +468,6 @@ def _tipping(
             f"[{lo:.4g}, {hi:.4g}]: the body tips"
         )
     return Assumption(f"no tipping on base {support.name}", holds, detail)
-
-
-def _number(expr: sympy.Expr, substitution: Mapping[sympy.Symbol, sympy.Expr]) -> float | None:
-    value = (sympy.Integer(0) + expr).xreplace(dict(substitution))
-    if value.free_symbols:
-        return None
-    number = complex(sympy.N(value, 30))
-    return number.real if abs(number.imag) < 1e-12 * max(1.0, abs(number.real)) else None
 
 
 def free_bodies(
@@ -489,11 +482,11 @@ def free_bodies(
         rows = []
         G = body.G
         for force in problem.formulation.forces[name]:
-            x = _number(force.point[0] - G[0], knowns) or 0.0
-            y = _number(force.point[1] - G[1], knowns) or 0.0
-            dx = _number(force.direction[0], knowns) or 0.0
-            dy = _number(force.direction[1], knowns) or 0.0
-            magnitude = _number(force.magnitude, substitution)
+            x = real_value(force.point[0] - G[0], knowns) or 0.0
+            y = real_value(force.point[1] - G[1], knowns) or 0.0
+            dx = real_value(force.direction[0], knowns) or 0.0
+            dy = real_value(force.direction[1], knowns) or 0.0
+            magnitude = real_value(force.magnitude, substitution)
             value = (
                 format_quantity(abs(magnitude), natural_unit(Dim.of("force"), system))
                 if magnitude is not None
@@ -508,7 +501,7 @@ def free_bodies(
                     force.point_name or "P",
                     x,
                     y,
-                    _direction_word(dx, dy),
+                    direction_word(dx, dy),
                     dx,
                     dy,
                     force.known,
@@ -516,7 +509,7 @@ def free_bodies(
                 )
             )
         for couple in problem.formulation.couples[name]:
-            moment = _number(couple.moment, substitution)
+            moment = real_value(couple.moment, substitution)
             sense = "ccw" if (moment or 0) >= 0 else "cw"
             value = (
                 format_quantity(abs(moment), natural_unit(Dim.of("moment"), system))
@@ -526,7 +519,7 @@ def free_bodies(
             rows.append(
                 ForceRow(couple.name, "couple", "G", 0.0, 0.0, sense, 0.0, 0.0, couple.known, value)
             )
-        sizes = tuple(_number(s, knowns) or 0.0 for s in body.sizes)
+        sizes = tuple(real_value(s, knowns) or 0.0 for s in body.sizes)
         kin = problem.formulation.kinematics[name]
         motion = {
             "rotation": f"fixed-axis rotation about {kin.pin.name if kin.pin else 'O'}",
@@ -548,7 +541,12 @@ def free_bodies(
     return tuple(out)
 
 
-def _direction_word(dx: float, dy: float) -> str:
+def direction_word(dx: float, dy: float) -> str:
+    """The direction of a unit vector in words, else as an angle from +x.
+
+    >>> direction_word(0.0, -1.0), direction_word(0.6, 0.8)
+    ('down', 'angle 53.1°')
+    """
     import math
 
     if abs(dx) < 1e-12 and abs(dy) < 1e-12:
@@ -572,5 +570,5 @@ def direction_of(kind: str, value: float, axis: tuple[float, float] | None = Non
         if value == 0:
             return ""
         sign = 1 if value > 0 else -1
-        return _direction_word(sign * axis[0], sign * axis[1])
+        return direction_word(sign * axis[0], sign * axis[1])
     return ""
