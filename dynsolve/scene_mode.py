@@ -482,8 +482,8 @@ def free_bodies(
         rows = []
         G = body.G
         for force in problem.formulation.forces[name]:
-            x = real_value(force.point[0] - G[0], knowns) or 0.0
-            y = real_value(force.point[1] - G[1], knowns) or 0.0
+            x = real_value(force.point[0] - G[0], substitution) or 0.0
+            y = real_value(force.point[1] - G[1], substitution) or 0.0
             dx = real_value(force.direction[0], knowns) or 0.0
             dy = real_value(force.direction[1], knowns) or 0.0
             magnitude = real_value(force.magnitude, substitution)

@@ -586,6 +586,8 @@ class _Writer:
             self.moment_points[body.name] = ""
             return
         P, why = self._moment_point(body, forces)
+        if kin.motion == "translation" and P == body.G:
+            why = "G (translation: ΣM_G = 0)"
         moment = _moment(forces, couples, P)
         r_GP = _minus(body.G, P)
         kinetic = body.I_G * kin.alpha + cross(r_GP, (m * kin.a_G[0], m * kin.a_G[1]))
@@ -599,7 +601,8 @@ class _Writer:
             )
         self.equation(moment, kinetic, f"{principle} {tag}")
         self.moment_points[body.name] = why
-        self.kinetic[body.name] = (*self.kinetic[body.name], "I_G α")
+        if kin.motion != "translation":
+            self.kinetic[body.name] = (*self.kinetic[body.name], "I_G α")
 
     def _rotation(
         self, body: Body, kin: Kinematics, forces: list[ForceTerm], couples: list[CoupleTerm]
@@ -663,7 +666,13 @@ class _Writer:
     def _moment_point(self, body: Body, forces: list[ForceTerm]) -> tuple[Vec, str]:
         unknown = [f for f in forces if not f.known]
         candidates: list[Vec] = [body.G]
-        candidates += [f.point for f in unknown if f.point not in candidates]
+        unknowns = set(self.unknowns)
+        candidates += [
+            f.point
+            for f in unknown
+            if f.point not in candidates  # a point at an unknown place (a base's N) is no help
+            and not (sympy.Add(*f.point).free_symbols & unknowns)
+        ]
         best, best_names = body.G, []
         for P in candidates:
             names = [f.name for f in unknown if _is_zero(cross(_minus(f.point, P), f.direction))]
