@@ -97,6 +97,10 @@ def test_no_tipping_is_checked_for_the_textbook_crate(tmp_path):
     assert not failed(solution), failed(solution)
     tip = next(a for a in solution.assumptions if a.name.startswith("no tipping"))
     assert tip.holds
+    # regression: the moment point was once N_C's own (unknown) point; the textbook sums
+    # moments about G, where translation gives ΣM_G = 0
+    assert any(e.note.startswith("ΣM_G = 0 (translation)") for e in solution.equations)
+    assert solution.free_body[0].moment_point.startswith("G (translation")
 
 
 def test_a_crate_pushed_at_the_top_tips(tmp_path):
