@@ -1,4 +1,4 @@
-"""Evaluate sympy expressions to real floats, when they hold no free symbols.
+"""Small sympy helpers: real values of closed expressions, and cheap simplification.
 
 >>> import sympy
 >>> real_value(sympy.sqrt(2) * sympy.pi), real_value(sympy.Symbol("x")), real_value(sympy.I)
@@ -27,3 +27,17 @@ def real_value(
     if abs(number.imag) > IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
         return None
     return number.real
+
+
+def tidy(expr: sympy.Expr | int) -> sympy.Expr:
+    """``expr`` simplified, skipping sympy's (costly) simplify when it is already simple.
+
+    >>> import sympy
+    >>> r = sympy.Symbol("r")
+    >>> tidy(2 * r), tidy(sympy.sin(r) ** 2 + sympy.cos(r) ** 2)
+    (2*r, 1)
+    """
+    expr = sympy.Integer(0) + expr
+    if expr.is_Atom or sympy.count_ops(expr) <= 3:
+        return expr
+    return sympy.simplify(expr)

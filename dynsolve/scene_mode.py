@@ -20,7 +20,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import parallel_axis
 from dynsolve.model.scene import Scene, Vec, build_scene
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import real_value
+from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody
@@ -316,7 +316,7 @@ def steepest(
     solved = solve_system(system, quiet).values
     if F not in solved or N not in solved:
         return None
-    condition = sympy.simplify((solved[F] - sense * support.mu_s * solved[N]).xreplace(knowns))
+    condition = tidy((solved[F] - sense * support.mu_s * solved[N]).xreplace(knowns))
     return _angle_root(condition, phi)
 
 

@@ -27,6 +27,7 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+from dynsolve.numbers import tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.units import Dim
@@ -487,7 +488,7 @@ class _Builder:
 
 def _unit(vector: Vec) -> Vec:
     length = sympy.sqrt(vector[0] ** 2 + vector[1] ** 2)
-    return (sympy.simplify(vector[0] / length), sympy.simplify(vector[1] / length))
+    return (tidy(vector[0] / length), tidy(vector[1] / length))
 
 
 def _article(text: str) -> str:

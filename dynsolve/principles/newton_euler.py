@@ -18,6 +18,7 @@ import sympy
 
 from dynsolve.model.scene import Body, Scene, Support, Vec
 from dynsolve.names import pretty
+from dynsolve.numbers import tidy
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
@@ -106,18 +107,18 @@ def point_text(P: Vec, G: Vec) -> str:
     >>> point_text((r, 0), (0, 0))
     'G + (r, 0)'
     """
-    dx, dy = (sympy.simplify(P[0] - G[0]), sympy.simplify(P[1] - G[1]))
+    dx, dy = (tidy(P[0] - G[0]), tidy(P[1] - G[1]))
     return f"G + ({sympy.sstr(dx)}, {sympy.sstr(dy)})"
 
 
 def _projected(forces: list[ForceTerm], axis: Vec) -> sympy.Expr:
     """Σ F·axis, each force's direction cosine simplified (so O_n·e_n reads O_n)."""
-    return sympy.Add(*(f.magnitude * sympy.simplify(dot(f.direction, axis)) for f in forces))
+    return sympy.Add(*(f.magnitude * tidy(dot(f.direction, axis)) for f in forces))
 
 
 def _moment(forces: list[ForceTerm], couples: list[CoupleTerm], P: Vec) -> sympy.Expr:
     """Σ (r − P) × F + Σ couples, each moment arm simplified."""
-    arms = (f.magnitude * sympy.simplify(cross(_minus(f.point, P), f.direction)) for f in forces)
+    arms = (f.magnitude * tidy(cross(_minus(f.point, P), f.direction)) for f in forces)
     return sympy.Add(*arms) + sympy.Add(*(c.moment for c in couples))
 
 
@@ -131,7 +132,7 @@ def _perp(r: Vec) -> Vec:
 
 
 def _is_zero(expr: sympy.Expr) -> bool:
-    return bool(sympy.simplify(expr) == 0)
+    return bool(tidy(expr) == 0)
 
 
 class _Writer:
@@ -233,10 +234,10 @@ class _Writer:
                 support.kind == "contact" and not support.smooth and support.slides is None
             ):
                 r = _minus(support.point, body.G)  # v_C = v_G + ω k × r_C/G = 0 along t
-                return sympy.simplify(-dot(v, support.tangent) / dot(_perp(r), support.tangent))
+                return tidy(-dot(v, support.tangent) / dot(_perp(r), support.tangent))
             if support.kind == "pin":
                 r = _minus(body.G, support.point)  # v_G = ω k × r_G/O
-                return sympy.simplify(dot(v, _perp(r)) / dot(r, r))
+                return tidy(dot(v, _perp(r)) / dot(r, r))
         return sympy.Integer(0)
 
     def point_acceleration(self, body: str, point: Vec) -> Vec:
@@ -344,8 +345,8 @@ class _Writer:
     def _ends(self, body: str, point: Vec, other: str, other_point: Vec) -> tuple[Vec, sympy.Expr]:
         """The unit vector from ``point`` toward the other end, and the length between them."""
         d = _minus(other_point, point)
-        length = sympy.simplify(sympy.sqrt(d[0] ** 2 + d[1] ** 2))
-        return (sympy.simplify(d[0] / length), sympy.simplify(d[1] / length)), length
+        length = tidy(sympy.sqrt(d[0] ** 2 + d[1] ** 2))
+        return (tidy(d[0] / length), tidy(d[1] / length)), length
 
     def _spring(self, spring: object) -> None:
         from dynsolve.model.scene import Spring
@@ -610,8 +611,8 @@ class _Writer:
         pin = kin.pin
         assert pin is not None
         m, tag = body.mass, f"({body.name})"
-        r = (sympy.simplify(body.G[0] - pin.point[0]), sympy.simplify(body.G[1] - pin.point[1]))
-        r_G_value = sympy.simplify(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
+        r = (tidy(body.G[0] - pin.point[0]), tidy(body.G[1] - pin.point[1]))
+        r_G_value = tidy(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
         pin_name = pin.name
         on_axis = _is_zero(r_G_value)
         r_G = self.name_quantity(
@@ -621,7 +622,7 @@ class _Writer:
         if not on_axis:
             I_O = self.name_quantity(
                 self.suffix(f"I_{pin_name}", body.name),
-                sympy.simplify(body.I_G + m * r_G_value**2),
+                tidy(body.I_G + m * r_G_value**2),
                 Dim(2, 1, 0),
                 f"I about {pin_name}: I_G + m r_G² (parallel-axis theorem)",
             )
@@ -638,7 +639,7 @@ class _Writer:
             )
             self.kinetic[body.name] = ("I_G α",)
         else:
-            e_r = (sympy.simplify(r[0] / r_G_value), sympy.simplify(r[1] / r_G_value))
+            e_r = (tidy(r[0] / r_G_value), tidy(r[1] / r_G_value))
             e_n, e_t = (-e_r[0], -e_r[1]), _perp(e_r)
             self.equation(_projected(forces, e_n), m * kin.omega**2 * r_G, f"ΣF_n = m ω² r_G {tag}")
             self.equation(_projected(forces, e_t), m * kin.alpha * r_G, f"ΣF_t = m α r_G {tag}")
