@@ -196,11 +196,12 @@ def _compare_formula(
         answer.line, answer.column,
     )  # fmt: skip
     check_dimensions((statement,), {**known_dims, answer.name: dim}, spec.file, spec.system)
-    solved = {s: v for s, v in knowns.items() if s.name not in spec_given_names(spec)}
-    expected = to_sympy(answer.formula, symbols).xreplace(solved)
+    # givens with values and solved unknowns are put in; symbolic givens stay symbols
+    expected = to_sympy(answer.formula, symbols).xreplace(dict(knowns))
     shown = str(answer.formula)
     if computed is None:
         return Verdict(False, shown, "not determined by the equations")
+    computed = computed.xreplace(dict(knowns))
     if computed.free_symbols:
         return _equivalent(expected, computed, shown)
     value = real_value(computed)
@@ -209,11 +210,6 @@ def _compare_formula(
         return Verdict(False, shown, "the formula cannot be evaluated with the givens")
     passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) + 1e-12
     return Verdict(passed, shown, f"formula gives {target:.6g}, computed {value:.6g} (base units)")
-
-
-def spec_given_names(spec: Spec) -> set[str]:
-    """The names a spec gives (they stay symbols in a symbolic formula key)."""
-    return {g.name for g in spec.givens} | {"g"}
 
 
 def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdict:

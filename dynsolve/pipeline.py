@@ -51,6 +51,10 @@ RESIDUAL_LIMIT = 1e-9
 def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solution:
     """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
     spec = parse_file(path)
+    if spec.kinematics:
+        from dynsolve.kinematics_mode import build_kinematics_problem
+
+        return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
     if spec.scene:
         return solve_scene(spec, options or SolveOptions())
     return solve_problem(build_problem(spec), options or SolveOptions())
@@ -116,7 +120,8 @@ def solve_problem(
         assumptions=assumptions,
         givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
         equations=view.equation_rows(),
-        steps=tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+        steps=getattr(problem, "steps", None)
+        or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
         answers=answers,
         checks=checks,
         key=key,
@@ -406,6 +411,8 @@ class _View:
         known_dims = {g.name: g.dim for g in self.problem.givens} | {
             s.name: self.dims[s.name] for s in self.outcome.values
         }
+        if getattr(self.problem, "mode", "") == "kinematics":
+            known_dims |= {n: d for n, d in self.dims.items() if n in ("t", "x", "v")}
         solved = {**self.knowns, **self.outcome.values}
         out = []
         for answer in spec.answers:

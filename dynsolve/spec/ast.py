@@ -293,3 +293,4 @@ class Spec:
     answers: tuple[Answer, ...]
     system_line: int = 0
     scene: tuple[SceneStmt, ...] = ()
+    kinematics: tuple[EquationStmt, ...] = ()  # rectilinear motion: a(t), a(v), a(x) or x(t)

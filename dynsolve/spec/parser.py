@@ -66,11 +66,14 @@ MAX_POWER = 64
 MAX_UNIT_EXPONENT = 12
 MAX_STATEMENTS = 1000
 
-SECTIONS = ("problem", "source", "units", "given", "scene", "equations", "find", "answers")
-BLOCK_SECTIONS = ("given", "scene", "equations", "find", "answers")
+SECTIONS = (
+    "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "answers",
+)  # fmt: skip
+BLOCK_SECTIONS = ("given", "scene", "kinematics", "equations", "find", "answers")
 _FIELDS = {
     "given": "givens",
     "scene": "scene",
+    "kinematics": "kinematics",
     "equations": "equations",
     "find": "finds",
     "answers": "answers",
@@ -178,6 +181,7 @@ class _Sections:
     finds: list[FindItem] | None = None
     answers: list[Answer] | None = None
     scene: list[SceneStmt] | None = None
+    kinematics: list[EquationStmt] | None = None
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -314,11 +318,12 @@ def _body_line(
         node = _parse(text, "given_line", file, line, offset)
         assert parts.givens is not None
         parts.givens.append(replace(node, description=comment))
-    elif section == "equations":
+    elif section in ("equations", "kinematics"):
         node = _parse(text, "equation_line", file, line, offset)
-        assert parts.equations is not None
+        target = parts.equations if section == "equations" else parts.kinematics
+        assert target is not None
         lhs, relation, rhs = node
-        parts.equations.append(EquationStmt(lhs, relation, rhs, text, comment, line, offset + 1))
+        target.append(EquationStmt(lhs, relation, rhs, text, comment, line, offset + 1))
     elif section == "find":
         assert parts.finds is not None
         parts.finds.extend(_parse(text, "find_line", file, line, offset))
@@ -939,6 +944,7 @@ def _finish(parts: _Sections, file: str) -> Spec:
         answers=tuple(parts.answers or ()),
         system_line=parts.system_line,
         scene=tuple(parts.scene or ()),
+        kinematics=tuple(parts.kinematics or ()),
     )
 
 

@@ -1,0 +1,226 @@
+"""Turn a rectilinear-kinematics spec into a problem: the given motion, integrated.
+
+A ``kinematics:`` section gives one relation, ``a = …`` in t, v or x, or ``x = …`` /
+``v = …`` in t; the initial conditions are the givens ``t_0``, ``x_0``, ``v_0`` (zero
+when absent, except ``v_0``, which a(t), a(v) and a(x) need). ``find`` names relations
+such as ``v(t)``, ``x(v)``, ``t(x)``, or their values at a given: ``v(t_1)``.
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   c = 2 m/s^3
+...   v_0 = 1 m/s
+...   t_1 = 3 s
+... kinematics:
+...   a = c*t
+... find: v_1 = v(t_1)
+... ''', "k.dyn")
+>>> problem = build_kinematics_problem(spec)
+>>> problem.targets[0].expr
+c*t_1**2/2 + v_0
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.dimensions import DimensionReport, check_dimensions
+from dynsolve.equation_mode import GivenInfo, Target, givens_of
+from dynsolve.errors import Position, SpecError
+from dynsolve.expressions import to_sympy
+from dynsolve.names import latex_name, pretty
+from dynsolve.principles.rectilinear import KINDS, Motion, T, V, X, integrate_motion
+from dynsolve.quantities import resolve_unit
+from dynsolve.results import EquationRow, Formula, Step
+from dynsolve.spec.ast import EquationStmt, FindItem, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.system import EquationSystem
+from dynsolve.units import Dim, natural_unit
+
+VARIABLES: dict[str, tuple[sympy.Symbol, Dim]] = {
+    "t": (T, Dim.of("time")),
+    "x": (X, Dim.of("length")),
+    "v": (V, Dim.of("velocity")),
+}
+ACCELERATION = Dim.of("acceleration")
+
+
+@dataclass(frozen=True)
+class KinematicsProblem:
+    """The integrated motion, shaped like the other problems for the shared pipeline."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+    rows: tuple[EquationRow, ...]
+    steps: tuple[Step, ...]
+    motion: Motion
+    mode: str = "kinematics"
+
+
+def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
+    """Check the given relation's units, integrate it, and resolve the find list."""
+    file = spec.file
+    if len(spec.kinematics) != 1:
+        raise SpecError(
+            "kinematics takes exactly one relation",
+            Position(file, spec.kinematics[1].line if spec.kinematics[1:] else 1, 1),
+            hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
+        )
+    givens = givens_of(spec)
+    symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
+    statement = spec.kinematics[0]
+    kind = _kind(statement, set(symbols), file)
+    known_dims = {g.name: g.dim for g in givens} | {n: d for n, (_, d) in VARIABLES.items()}
+    known_dims |= {"a": ACCELERATION}
+    report = check_dimensions((statement,), known_dims | {"pi": Dim()}, file, spec.system)
+    values = {g.symbol: g.value for g in givens if g.value is not None}
+    initial = {n: symbols.get(f"{n}_0", sympy.Integer(0)) for n in ("t", "x", "v")}
+    if kind.startswith("a(") and "v_0" not in symbols:
+        raise SpecError(
+            "the initial velocity v_0 is not given",
+            Position(file, statement.line, statement.column),
+            hint="add 'v_0 = … m/s' under given: (and t_0, x_0 if not zero)",
+        )
+    rhs = to_sympy(statement.rhs, {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}})
+    motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])
+    all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
+    targets = tuple(_target(item, motion, all_symbols, spec) for item in spec.finds)
+    dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
+    row = _row(statement, report.checks[0].dim, spec)
+    steps = _steps(motion, values, all_symbols)
+    system = EquationSystem(equations=(), unknowns=(), knowns=values)
+    return KinematicsProblem(
+        spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion
+    )
+
+
+def _kind(statement: EquationStmt, given: set[str], file: str) -> str:
+    left = statement.lhs
+    names = {n.text for n in iter_names(statement.rhs)} - given - {"pi"}
+    variables = names & set(VARIABLES)
+    unknown = names - set(VARIABLES)
+    where = Position(file, statement.line, statement.column)
+    if unknown:
+        raise SpecError(
+            f"'{sorted(unknown)[0]}' is neither a given nor t, x or v",
+            where,
+            hint="declare it under given:",
+        )
+    if len(variables) > 1:
+        raise SpecError(
+            f"the relation mixes {' and '.join(sorted(variables))}",
+            where,
+            hint="rectilinear motion takes a(t), a(v), a(x), x(t) or v(t)",
+        )
+    variable = next(iter(variables), "t")
+    kind = f"{left}({variable})" if str(left) in ("a", "x", "v") else ""
+    if kind not in KINDS:
+        raise SpecError(
+            f"'{left} = …' in {variable} is not a kinematic relation dynsolve integrates",
+            where,
+            hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
+        )
+    return kind
+
+
+_DIMS = {"t": Dim.of("time"), "x": Dim.of("length"), "v": Dim.of("velocity"), "a": ACCELERATION}
+
+
+def _target(
+    item: FindItem, motion: Motion, symbols: Mapping[str, sympy.Symbol], spec: Spec
+) -> Target:
+    where = Position(spec.file, item.line, item.column)
+    ref = item.ref
+    if ref is None or len(ref.args) != 1 or ref.function not in _DIMS:
+        raise SpecError(
+            f"'{item.name}' is not a kinematic relation",
+            where,
+            hint="name one such as 'v_t = v(t)', 'x_v = x(v)' or 'v_1 = v(t_1)'",
+        )
+    argument = ref.args[0]
+    variable = argument if argument in VARIABLES else _variable_of(argument, symbols, spec, where)
+    name = f"{ref.function}({variable})"
+    if name not in motion.formulas:
+        found = ", ".join(motion.formulas)
+        raise SpecError(
+            f"{name} could not be found from {motion.given}", where, hint=f"found: {found}"
+        )
+    expr = motion.formulas[name]
+    if argument not in VARIABLES:
+        expr = expr.subs(VARIABLES[variable][0], symbols[argument])
+    dim = _DIMS[ref.function]
+    unit = item.unit.text if item.unit is not None else natural_unit(dim, spec.system)
+    if item.unit is not None and resolve_unit(item.unit, spec.file).dim != dim:
+        raise SpecError(
+            f"{item.name} is {dim.name}, not in {item.unit.text}",
+            where,
+            hint=f"use a unit of {dim.name}",
+        )
+    return Target(
+        item.name, sympy.Symbol(item.name), dim, unit, item.unit is not None, False, "signed", expr
+    )
+
+
+def _variable_of(
+    given: str, symbols: Mapping[str, sympy.Symbol], spec: Spec, where: Position
+) -> str:
+    """Which of t, x, v a given stands for (by its dimension): ``v(t_1)`` evaluates at t_1."""
+    from dynsolve.equation_mode import givens_of as _all
+
+    info = next((g for g in _all(spec) if g.name == given), None)
+    if info is None:
+        raise SpecError(
+            f"'{given}' is neither t, x, v nor a given",
+            where,
+            hint="evaluate at a given, e.g. v(t_1) with t_1 = 2 s",
+        )
+    for name, (_, dim) in VARIABLES.items():
+        if dim == info.dim:
+            return name
+    raise SpecError(
+        f"'{given}' is {info.dim.name}: not a time, position or speed",
+        where,
+        hint="evaluate at a time, a position or a speed",
+    )
+
+
+def _row(statement: EquationStmt, dim: Dim, spec: Spec) -> EquationRow:
+    from dynsolve.format import pretty_unit
+    from dynsolve.spec.printing import statement_latex, statement_text
+
+    unit = natural_unit(dim, spec.system) or "1"
+    return EquationRow(
+        statement.line,
+        statement_text(statement),
+        statement_latex(statement),
+        statement.note,
+        f"{dim.name} [{pretty_unit(unit)}]",
+        True,
+        False,
+    )
+
+
+def _steps(
+    motion: Motion, values: Mapping[sympy.Symbol, sympy.Expr], symbols: Mapping[str, sympy.Symbol]
+) -> tuple[Step, ...]:
+    pretty_names = {s: sympy.Symbol(pretty(n)) for n, s in symbols.items()}
+    latex_names = {s: latex_name(n) for n, s in symbols.items()}
+    steps = []
+    for index, (name, how) in enumerate(motion.steps, start=1):
+        formula = motion.formulas[name]
+        text = sympy.sstr(formula.xreplace(pretty_names)).replace("**", "^")
+        latex = sympy.latex(formula, symbol_names=latex_names)
+        with_numbers = formula.xreplace(dict(values))
+        shown = sympy.sstr(sympy.N(with_numbers, 4)).replace("**", "^")
+        result = Formula(name, text, latex, shown, sympy.latex(sympy.N(with_numbers, 4)))
+        steps.append(
+            Step(index, (), (name,), "integration" if "∫" in how else "algebra", (result,), (), how)
+        )
+    return tuple(steps)
