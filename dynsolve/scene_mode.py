@@ -56,9 +56,16 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     givens = givens_of(spec)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     given_dims = {g.name: g.dim for g in givens}
-    scene = build_scene(spec, symbols, given_dims)
+    scene = build_scene(
+        spec, symbols, given_dims, {g.symbol: g.value for g in givens if g.value is not None}
+    )
     try:
-        formulation = formulate(scene, symbols, slipping)
+        if scene.impacts:
+            from dynsolve.principles.impact import impact_formulation
+
+            formulation = impact_formulation(scene)
+        else:
+            formulation = formulate(scene, symbols, slipping)
     except ValueError as exc:
         raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
     symbols.update({s.name: s for s in formulation.unknowns})
@@ -231,6 +238,19 @@ def _quantity(
                 hint="name a rough contact, e.g. steepest(C) for 'rolls disk at C: …, mu_s mu_s'",
             )
         return target("steepest", Dim(), sympy.Symbol(support.name))
+    if function == "v_after" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.after:
+            raise SpecError(
+                f"{body} takes part in no impact", where, hint="add 'impact A with B: …'"
+            )
+        return target("vector", Dim(1, 0, -1), vector=formulation.after[body])
+    if args and not formulation.kinematics:
+        raise SpecError(
+            f"'{function}' is not a quantity of an impact scene",
+            where,
+            hint="an impact scene answers v_after(B)",
+        )
     if args:
         body = _body(args[0], scene, where)
         kin = formulation.kinematics[body]
@@ -477,7 +497,9 @@ def free_bodies(
     knowns = problem.system.knowns
     substitution = {**knowns, **values}
     system = problem.spec.system
-    out = []
+    out: list[FreeBody] = []
+    if not problem.formulation.kinematics:  # an impact: no free-body diagrams to draw
+        return ()
     for name, body in problem.scene.bodies.items():
         rows = []
         G = body.G

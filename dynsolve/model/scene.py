@@ -27,7 +27,7 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
-from dynsolve.numbers import tidy
+from dynsolve.numbers import real_value, tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.units import Dim
@@ -135,6 +135,18 @@ class Link:
 
 
 @dataclass(frozen=True)
+class Impact:
+    """A collision of two bodies along a line of impact (smooth: no impulse across it)."""
+
+    body: str
+    other: str
+    e: sympy.Expr  # coefficient of restitution, 0 ≤ e ≤ 1
+    line: Vec  # unit vector of the line of impact, from body toward other
+    stmt_line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Load:
     """A force (magnitude along ``direction`` at ``point``) or a couple (``sense`` ±1)."""
 
@@ -165,13 +177,21 @@ class Scene:
     springs: tuple[Spring, ...] = ()
     links: tuple[Link, ...] = ()
     velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G given at the instant
+    impacts: tuple[Impact, ...] = ()
 
 
 class _Builder:
     """Reads scene lines in two passes: bodies and points first, then what refers to them."""
 
-    def __init__(self, spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str, Dim]):
+    def __init__(
+        self,
+        spec: Spec,
+        symbols: Mapping[str, sympy.Expr],
+        dims: Mapping[str, Dim],
+        given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+    ):
         self.spec, self.symbols, self.dims = spec, symbols, dims
+        self.given_values = dict(given_values or {})
         self.file = spec.file
         self.bodies: dict[str, Body] = {}
         self.fixed: dict[str, Vec] = {}
@@ -495,9 +515,15 @@ def _article(text: str) -> str:
     return ("an " if text[:1] in "aeiou" else "a ") + text
 
 
-def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str, Dim]) -> Scene:
-    """The scene model of ``spec``; ``symbols`` and ``dims`` cover every given (and g)."""
-    builder = _Builder(spec, symbols, dims)
+def build_scene(
+    spec: Spec,
+    symbols: Mapping[str, sympy.Expr],
+    dims: Mapping[str, Dim],
+    given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> Scene:
+    """The scene model of ``spec``; ``symbols`` and ``dims`` cover every given (and g);
+    ``given_values`` lets numeric checks (0 ≤ e ≤ 1) be made at once."""
+    builder = _Builder(spec, symbols, dims, given_values)
     for stmt in spec.scene:
         builder.declare(stmt)
     builder.finish_composites()
@@ -511,6 +537,7 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
     motions: dict[str, str] = {}
     springs: list[Spring] = []
     links: list[Link] = []
+    impacts: list[Impact] = []
     for stmt in spec.scene:
         if stmt.kind in ("pin", "contact", "rolls", "base"):
             supports.append(_support(builder, stmt))
@@ -539,6 +566,28 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
             assert stmt.value is not None
             omega = builder.value(stmt.value, Dim(0, 0, -1), "an angular velocity")
             omegas[stmt.body] = -omega if stmt.word == "cw" else omega
+        elif stmt.kind == "impact":
+            builder.body(stmt.body, stmt.line, stmt.column)
+            builder.body(stmt.other, stmt.line, stmt.column)
+            assert stmt.value is not None and stmt.direction is not None
+            e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
+            numeric = real_value(e, builder.given_values)
+            if numeric is not None and not 0 <= numeric <= 1:
+                raise SpecError(
+                    f"the coefficient of restitution must lie in [0, 1], got {numeric:g}",
+                    builder.where(stmt.line, stmt.column),
+                    hint="0 is perfectly plastic, 1 perfectly elastic",
+                )
+            impacts.append(
+                Impact(
+                    stmt.body,
+                    stmt.other,
+                    e,
+                    builder.direction(stmt.direction),
+                    stmt.line,
+                    stmt.column,
+                )
+            )
         elif stmt.kind == "velocity":
             builder.body(stmt.body, stmt.line, stmt.column)
             assert stmt.value is not None and stmt.direction is not None
@@ -564,6 +613,7 @@ def build_scene(spec: Spec, symbols: Mapping[str, sympy.Expr], dims: Mapping[str
         springs=tuple(springs),
         links=tuple(links),
         velocities=velocities,
+        impacts=tuple(impacts),
     )
 
 

@@ -79,6 +79,7 @@ class Formulation:
     reactions: Mapping[str, tuple[sympy.Symbol, Vec]]  # unknown force name → (symbol, axis)
     kinetic: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     derived: Mapping[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = field(default_factory=dict)
+    after: Mapping[str, Vec] = field(default_factory=dict)  # velocities after an impact
 
 
 def cross(r: Vec, f: Vec) -> sympy.Expr:

@@ -769,6 +769,12 @@ class _Builder(Transformer_NonRecursive):
             self._sense(sense[0])
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
+    def impact_stmt(self, c: list[Any]) -> SceneStmt:
+        body, other, restitution, line = c
+        return self._stmt(
+            "impact", body, body=str(body), other=str(other), value=restitution, direction=line
+        )
+
     def velocity_stmt(self, c: list[Any]) -> SceneStmt:
         body, value, direction = c
         return self._stmt("velocity", body, body=str(body), value=value, direction=direction)

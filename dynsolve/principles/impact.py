@@ -1,0 +1,95 @@
+"""Impact of two bodies along a line: momentum conserved along it, restitution, smooth contact.
+
+For particles (or bodies translating through the impact) with velocities v₁ before:
+m_A v_A1·n + m_B v_B1·n = m_A v_A2·n + m_B v_B2·n (no external impulse along the line of
+impact), e (v_A1 − v_B1)·n = (v_B2 − v_A2)·n (coefficient of restitution), and each
+body's velocity across the line unchanged (a smooth contact transmits no impulse there).
+
+>>> import sympy
+>>> from dynsolve.model.scene import Impact
+>>> m, v = sympy.symbols("m v", positive=True)
+>>> eqs, after = impact_equations(Impact("A", "B", sympy.Integer(1), (1, 0)),
+...                               {"A": m, "B": m}, {"A": (v, 0), "B": (0, 0)})
+>>> sympy.solve([e.lhs - e.rhs for e in eqs], list(after.values()))
+{vn_A: 0, vn_B: v}
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy
+
+from dynsolve.model.scene import Impact, Scene, Vec
+from dynsolve.principles.newton_euler import Formulation
+from dynsolve.system import Equation
+from dynsolve.units import Dim
+
+ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def impact_equations(
+    impact: Impact, masses: Mapping[str, sympy.Expr], before: Mapping[str, Vec]
+) -> tuple[tuple[Equation, ...], dict[str, sympy.Symbol]]:
+    """The two equations of the impact and the unknown components along the line after it."""
+    n = impact.line
+    A, B = impact.body, impact.other
+    after = {body: sympy.Symbol(f"vn_{body}", real=True) for body in (A, B)}
+    v_A1, v_B1 = before.get(A, ZERO), before.get(B, ZERO)
+    momentum = Equation(
+        masses[A] * _dot(v_A1, n) + masses[B] * _dot(v_B1, n),
+        masses[A] * after[A] + masses[B] * after[B],
+        "momentum",
+        1,
+        f"linear momentum of {A} and {B} conserved along the line of impact "
+        "(no external impulse along it)",
+    )
+    restitution = Equation(
+        impact.e * (_dot(v_A1, n) - _dot(v_B1, n)),
+        after[B] - after[A],
+        "restitution",
+        2,
+        "coefficient of restitution: e (v_A1 − v_B1)·n = (v_B2 − v_A2)·n",
+    )
+    return (momentum, restitution), after
+
+
+def velocity_after(impact: Impact, body: str, along: sympy.Expr, before: Mapping[str, Vec]) -> Vec:
+    """A body's velocity after the impact: the solved component along the line, the one
+    across it unchanged (smooth contact)."""
+    n = impact.line
+    t = (-n[1], n[0])
+    across = _dot(before.get(body, ZERO), t)
+    return (along * n[0] + across * t[0], along * n[1] + across * t[1])
+
+
+def impact_formulation(scene: Scene) -> Formulation:
+    """The equations of every impact in ``scene`` (bodies move with their given velocities)."""
+    masses = {name: body.mass for name, body in scene.bodies.items()}
+    equations: list[Equation] = []
+    unknowns: dict[sympy.Symbol, Dim] = {}
+    after: dict[str, Vec] = {}
+    for impact in scene.impacts:
+        pair, along = impact_equations(impact, masses, scene.velocities)
+        equations += pair
+        for body, symbol in along.items():
+            unknowns[symbol] = Dim.of("velocity")
+            after[body] = velocity_after(impact, body, symbol, scene.velocities)
+    numbered = tuple(
+        Equation(e.lhs, e.rhs, f"eq. {i}", i, e.note) for i, e in enumerate(equations, start=1)
+    )
+    empty: dict[str, tuple] = {name: () for name in scene.bodies}
+    return Formulation(
+        equations=numbered,
+        unknowns=unknowns,
+        forces=empty,
+        couples=empty,
+        kinematics={},
+        moment_points={},
+        reactions={},
+        after=after,
+    )
