@@ -20,12 +20,15 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.dimensions import DimensionReport, check_dimensions
+from dynsolve.dimensions import DimensionReport, EquationCheck, check_dimensions
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import relation, to_sympy
+from dynsolve.format import pretty_unit
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
+from dynsolve.results import EquationRow, Step
 from dynsolve.spec.ast import EquationStmt, Given, Spec
 from dynsolve.spec.parser import iter_names
+from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import Constraint, Equation, EquationSystem
 from dynsolve.units import GRAVITY, Dim, natural_unit
 
@@ -78,6 +81,10 @@ class Problem:
     dims: DimensionReport
     targets: tuple[Target, ...]
     symbols: Mapping[str, sympy.Symbol]
+    rows: tuple[EquationRow, ...] = ()  # each equation as written, with its unit check
+    steps: tuple[Step, ...] = ()  # derivation steps known before solving (none here)
+    notes: tuple[tuple[str, str], ...] = ()  # (name, detail) shown with the checks
+    mode: str = "equations"
 
 
 def build_problem(spec: Spec) -> Problem:
@@ -122,7 +129,23 @@ def build_problem(spec: Spec) -> Problem:
         ),
         wanted=(),
     )
-    return Problem(spec, tuple(givens), system, report, targets, symbols)
+    rows = tuple(_row(check, spec) for check in report.checks)
+    return Problem(spec, tuple(givens), system, report, targets, symbols, rows)
+
+
+def _row(check: EquationCheck, spec: Spec) -> EquationRow:
+    """An equation as written, with the dimension both its sides share."""
+    statement = check.statement
+    unit = natural_unit(check.dim, spec.system) or "1"
+    return EquationRow(
+        line=statement.line,
+        text=statement_text(statement),
+        latex=statement_latex(statement),
+        note=statement.note,
+        dimension=f"{check.dim.name} [{pretty_unit(unit)}]",
+        dimension_ok=check.ok,
+        constraint=statement.relation != "=",
+    )
 
 
 def _requested_dimensions(spec: Spec) -> dict[str, Dim]:

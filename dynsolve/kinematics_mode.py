@@ -61,6 +61,7 @@ class KinematicsProblem:
     rows: tuple[EquationRow, ...]
     steps: tuple[Step, ...]
     motion: Motion
+    notes: tuple[tuple[str, str], ...] = ()
     mode: str = "kinematics"
 
 

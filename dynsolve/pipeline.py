@@ -14,11 +14,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
+from typing import Protocol
 
 import sympy
 
 from dynsolve.answer_key import compare, compare_magnitude
-from dynsolve.equation_mode import GivenInfo, Problem, Target, build_problem
+from dynsolve.dimensions import DimensionReport
+from dynsolve.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.names import latex_name, pretty
@@ -41,11 +43,26 @@ from dynsolve.solve.outcome import Outcome
 from dynsolve.solve.roots import truth
 from dynsolve.spec.ast import Spec
 from dynsolve.spec.parser import parse_file
-from dynsolve.spec.printing import statement_latex, statement_text
-from dynsolve.system import SolveOptions
+from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
+
+
+class SolvableProblem(Protocol):
+    """What the pipeline needs of a problem, whichever front end built it
+    (:class:`~dynsolve.equation_mode.Problem`, ``SceneProblem``, ``KinematicsProblem``)."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+    rows: tuple[EquationRow, ...]
+    steps: tuple[Step, ...]
+    notes: tuple[tuple[str, str], ...]
+    mode: str
 
 
 def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solution:
@@ -88,7 +105,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
 
 
 def solve_problem(
-    problem: Problem,
+    problem: SolvableProblem,
     options: SolveOptions,
     outcome: Outcome | None = None,
     trial: Mapping[sympy.Symbol, sympy.Expr] | None = None,
@@ -100,7 +117,7 @@ def solve_problem(
     view = _View(problem, outcome, trial or {}, options)
     answers = tuple(view.answer(t) for t in problem.targets)
     key = tuple(view.key())
-    notes = tuple(Check(name, True, detail) for name, detail in getattr(problem, "notes", ()))
+    notes = tuple(Check(name, True, detail) for name, detail in problem.notes)
     checks = (
         view.checks()
         + notes
@@ -115,12 +132,12 @@ def solve_problem(
         title=spec.title,
         source=spec.source,
         system=spec.system,
-        mode=getattr(problem, "mode", "equations"),
+        mode=problem.mode,
         free_body=free_body,
         assumptions=assumptions,
         givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
         equations=view.equation_rows(),
-        steps=getattr(problem, "steps", None)
+        steps=problem.steps
         or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
         answers=answers,
         checks=checks,
@@ -144,7 +161,7 @@ class _View:
 
     def __init__(
         self,
-        problem: Problem,
+        problem: SolvableProblem,
         outcome: Outcome,
         trial: Mapping[sympy.Symbol, sympy.Expr],
         options: SolveOptions,
@@ -256,24 +273,7 @@ class _View:
         return "m/s^2" if self.system == "SI" else "ft/s^2"
 
     def equation_rows(self) -> tuple[EquationRow, ...]:
-        if hasattr(self.problem, "rows"):
-            return self.problem.rows
-        rows = []
-        for check in self.problem.dims.checks:
-            statement = check.statement
-            unit = natural_unit(check.dim, self.system) or "1"
-            rows.append(
-                EquationRow(
-                    line=statement.line,
-                    text=statement_text(statement),
-                    latex=statement_latex(statement),
-                    note=statement.note,
-                    dimension=f"{check.dim.name} [{pretty_unit(unit)}]",
-                    dimension_ok=check.ok,
-                    constraint=statement.relation != "=",
-                )
-            )
-        return tuple(rows)
+        return self.problem.rows
 
     def step(self, index: int, block: object) -> Step:
         from dynsolve.solve.outcome import Block
@@ -411,7 +411,7 @@ class _View:
         known_dims = {g.name: g.dim for g in self.problem.givens} | {
             s.name: self.dims[s.name] for s in self.outcome.values
         }
-        if getattr(self.problem, "mode", "") == "kinematics":
+        if self.problem.mode == "kinematics":
             known_dims |= {n: d for n, d in self.dims.items() if n in ("t", "x", "v")}
         solved = {**self.knowns, **self.outcome.values}
         out = []
@@ -522,7 +522,7 @@ class _View:
     def _typo_hint(self) -> str:
         import difflib
 
-        if getattr(self.problem, "mode", "") == "scene":
+        if self.problem.mode == "scene":
             return self._support_hint()
         given = [g.name for g in self.problem.givens]
         hints = []

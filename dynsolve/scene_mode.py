@@ -23,7 +23,7 @@ from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
-from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody
+from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody, Step
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -45,6 +45,7 @@ class SceneProblem:
     formulation: Formulation
     rows: tuple[EquationRow, ...]
     slipping: Mapping[str, int] = field(default_factory=dict)
+    steps: tuple[Step, ...] = ()
     mode: str = "scene"
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
 
