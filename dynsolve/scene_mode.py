@@ -67,6 +67,8 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             formulation = impact_formulation(scene)
         else:
             formulation = formulate(scene, symbols, slipping)
+        if scene.travels:
+            formulation = _with_energy(formulation, scene, symbols)
     except ValueError as exc:
         raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
     symbols.update({s.name: s for s in formulation.unknowns})
@@ -128,6 +130,27 @@ def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, st
     if len(item.ref.args) > 1:
         lines.append(f"parallel-axis theorem: I_{item.ref.args[1]} = I_G + m d²")
     return (f"inertia {item.name} of {body.name}", "; ".join(lines))
+
+
+def _with_energy(
+    formulation: Formulation, scene: Scene, symbols: Mapping[str, sympy.Symbol]
+) -> Formulation:
+    """Add T1 + ΣU = T2 for every particle that travels to a second state."""
+    from dynsolve.principles.work_energy import energy_equation
+    from dynsolve.system import Equation
+
+    equations = list(formulation.equations)
+    unknowns = dict(formulation.unknowns)
+    speeds = dict(formulation.speeds)
+    for body in scene.travels:
+        equation, speed, _ = energy_equation(scene, body, symbols)
+        number = len(equations) + 1
+        equations.append(
+            Equation(equation.lhs, equation.rhs, f"eq. {number}", number, equation.note)
+        )
+        unknowns[speed] = Dim(1, 0, -1)
+        speeds[body] = speed
+    return replace(formulation, equations=tuple(equations), unknowns=unknowns, speeds=speeds)
 
 
 def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[sympy.Symbol, ...]:
@@ -239,6 +262,15 @@ def _quantity(
                 hint="name a rough contact, e.g. steepest(C) for 'rolls disk at C: …, mu_s mu_s'",
             )
         return target("steepest", Dim(), sympy.Symbol(support.name))
+    if function == "speed" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.speeds:
+            raise SpecError(
+                f"{body} does not travel to a second state",
+                where,
+                hint=f"add 'travel {body}: to (x, y)'",
+            )
+        return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
     if function == "v_after" and len(args) == 1:
         body = _body(args[0], scene, where)
         if body not in formulation.after:
@@ -408,7 +440,7 @@ def assess(
         if support.kind == "pin":
             continue
         N = real_value(formulation.reactions[f"N_{support.name}"][0], substitution)
-        if N is not None:
+        if N is not None and not support.two_sided:
             checks.append(
                 Assumption(
                     f"contact at {support.name} kept",

@@ -50,7 +50,7 @@ SYMBOLIC = (
 
 
 # Examples written in scene mode (issue 3): no hand-written equations.
-SCENE = tuple(e for e in SEED_EXAMPLES if e.startswith(("fa_", "gpm_", "tr_", "moi_")))
+SCENE = tuple(e for e in SEED_EXAMPLES if e.startswith(("fa_", "gpm_", "tr_", "moi_", "we_")))
 
 
 @pytest.mark.parametrize("example", sorted(SEED_EXAMPLES))

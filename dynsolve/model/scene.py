@@ -84,6 +84,7 @@ class Support:
     end: Vec | None = None  # a base's end point
     line: int = 0
     column: int = 0
+    two_sided: bool = False  # a guide (collar on a rod): the normal force may take either sign
 
     @property
     def tangent(self) -> Vec:
@@ -178,6 +179,7 @@ class Scene:
     links: tuple[Link, ...] = ()
     velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G given at the instant
     impacts: tuple[Impact, ...] = ()
+    travels: Mapping[str, Vec] = field(default_factory=dict)  # where G is in state 2
 
 
 class _Builder:
@@ -538,6 +540,7 @@ def build_scene(
     springs: list[Spring] = []
     links: list[Link] = []
     impacts: list[Impact] = []
+    travels: dict[str, Vec] = {}
     for stmt in spec.scene:
         if stmt.kind in ("pin", "contact", "rolls", "base"):
             supports.append(_support(builder, stmt))
@@ -588,6 +591,16 @@ def build_scene(
                     stmt.column,
                 )
             )
+        elif stmt.kind == "travel":
+            body = builder.body(stmt.body, stmt.line, stmt.column)
+            if not body.particle:
+                raise SpecError(
+                    f"work–energy between states is supported for particles; {body.name} is a "
+                    "rigid body",
+                    builder.where(stmt.line, stmt.column),
+                    hint="model it as a particle, or use the equations of motion at an instant",
+                )
+            travels[stmt.body] = builder.vector(stmt.vectors[0], "a position")
         elif stmt.kind == "velocity":
             builder.body(stmt.body, stmt.line, stmt.column)
             assert stmt.value is not None and stmt.direction is not None
@@ -614,6 +627,7 @@ def build_scene(
         links=tuple(links),
         velocities=velocities,
         impacts=tuple(impacts),
+        travels=travels,
     )
 
 
@@ -625,6 +639,7 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
     mu_k = builder.value(props["mu_k"].values[0], Dim(), "μk") if "mu_k" in props else None
     slides = builder.direction(props["slides"].direction) if "slides" in props else None
     smooth = "smooth" in props or (mu_s is None and mu_k is None and stmt.kind == "contact")
+    two_sided = "guide" in props
     if stmt.kind == "pin":
         if stmt.name not in builder.fixed:
             raise SpecError(
@@ -685,6 +700,7 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
         None,
         stmt.line,
         stmt.column,
+        two_sided,
     )
 
 

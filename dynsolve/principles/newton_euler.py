@@ -80,6 +80,7 @@ class Formulation:
     kinetic: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     derived: Mapping[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = field(default_factory=dict)
     after: Mapping[str, Vec] = field(default_factory=dict)  # velocities after an impact
+    speeds: Mapping[str, sympy.Symbol] = field(default_factory=dict)  # speed in state 2
 
 
 def cross(r: Vec, f: Vec) -> sympy.Expr:

@@ -775,6 +775,13 @@ class _Builder(Transformer_NonRecursive):
             "impact", body, body=str(body), other=str(other), value=restitution, direction=line
         )
 
+    def travel_stmt(self, c: list[Any]) -> SceneStmt:
+        body, target = c
+        return self._stmt("travel", body, body=str(body), vectors=(target,))
+
+    def prop_guide(self, c: list[Any]) -> Prop:
+        return self._prop("guide", c)
+
     def velocity_stmt(self, c: list[Any]) -> SceneStmt:
         body, value, direction = c
         return self._stmt("velocity", body, body=str(body), value=value, direction=direction)
