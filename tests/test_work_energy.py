@@ -4,6 +4,8 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from dynsolve.errors import SpecError
 from dynsolve.pipeline import solve_file
@@ -60,3 +62,81 @@ def test_unsupported_states_say_so(tmp_path, scene, message):
     with pytest.raises(SpecError) as caught:
         solve_file(write(tmp_path, text))
     assert message in caught.value.message
+
+
+SPRING_DROP = """\
+given:
+  m = {m} kg
+  k = {k} N/m
+  L0 = {L0} m
+  x1 = {x1} m
+  y1 = {y1} m
+  x2 = {x2} m
+  y2 = {y2} m
+  v_1 = {v1} m/s
+scene:
+  point A: (0, 0)
+  body ball: particle, mass m, at (x1, y1)
+  velocity ball: v_1, right
+  spring S: ball at G to A, k k, unstretched L0
+  gravity
+  travel ball: to (x2, y2)
+find: v = speed(ball)
+"""
+
+coordinate = st.integers(min_value=-20, max_value=20).map(lambda n: n / 10)
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    m=st.integers(1, 10), k=st.integers(1, 200), L0=st.integers(1, 10).map(lambda n: n / 10),
+    x1=coordinate, y1=coordinate, x2=coordinate, y2=coordinate, v1=st.integers(5, 30),
+)  # fmt: skip
+def test_conservative_scenes_keep_t_plus_v_constant(tmp_path_factory, m, k, L0, x1, y1, x2, y2, v1):
+    # T + V with V = m g y + (1/2) k (|r - A| - L0)^2 must be the same in both states
+    def V(x: float, y: float) -> float:
+        return m * 9.81 * y + k * (math.hypot(x, y) - L0) ** 2 / 2
+
+    total = m * v1**2 / 2 + V(x1, y1)
+    if total - V(x2, y2) < 1e-6:
+        return  # state 2 cannot be reached: no real speed there
+    text = SPRING_DROP.format(m=m, k=k, L0=L0, x1=x1, y1=y1, x2=x2, y2=y2, v1=v1)
+    path = tmp_path_factory.mktemp("tv") / "tv.dyn"
+    path.write_text(text)
+    v = solve_file(path).answers[0].value
+    assert m * v**2 / 2 + V(x2, y2) == pytest.approx(total, rel=1e-9)
+
+
+@pytest.mark.parametrize("angle", ["30 deg", "0.5235987755982988 rad", "0.08333333333333333 rev"])
+def test_angles_in_deg_rad_or_rev_give_the_same_answer(tmp_path, angle):
+    # a 2-kg particle pushed by P = 10 N at 30° above the horizontal, no gravity:
+    # a = P/m = 5 m/s^2 at 30°: the x component is 5 cos 30° = 4.330 m/s^2
+    text = f"""\
+given:
+  m = 2 kg
+  P = 10 N
+  phi = {angle}
+scene:
+  body ball: particle, mass m
+  force P on ball at G: angle phi
+find: a = a_G(ball)
+"""
+    answer = solve_file(write(tmp_path, text)).answers[0]
+    assert answer.value == pytest.approx(5.0, rel=1e-12)
+    assert answer.direction == "angle 30.0°"
+
+
+def test_a_state_of_an_unknown_body_is_an_error(tmp_path):
+    text = DROP.format(v_1="0 m/s").replace("travel ball:", "travel bal:")
+    with pytest.raises(SpecError) as caught:
+        solve_file(write(tmp_path, text))
+    assert "there is no body 'bal'" in caught.value.message and "ball" in caught.value.hint
+
+
+def test_a_spring_without_an_unstretched_length_is_an_error(tmp_path):
+    text = SPRING_DROP.format(m=1, k=1, L0=1, x1=1, y1=1, x2=0, y2=0, v1=5).replace(
+        ", unstretched L0", ""
+    )
+    with pytest.raises(SpecError) as caught:
+        solve_file(write(tmp_path, text))
+    assert caught.value.position is not None and caught.value.position.line == 14
