@@ -26,7 +26,7 @@ from dynsolve.expressions import relation, to_sympy
 from dynsolve.format import pretty_unit
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
 from dynsolve.results import EquationRow, Step
-from dynsolve.spec.ast import EquationStmt, Given, Spec
+from dynsolve.spec.ast import EquationStmt, FindItem, Given, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import Constraint, Equation, EquationSystem
@@ -226,12 +226,12 @@ def _check_finds(spec: Spec, unknowns: list[str], given: set[str]) -> None:
 
 
 def _target(
-    item: object, report: DimensionReport, symbols: Mapping[str, sympy.Symbol],
-    given: set[str], spec: Spec,
-) -> Target:  # fmt: skip
-    from dynsolve.spec.ast import FindItem
-
-    assert isinstance(item, FindItem)
+    item: FindItem,
+    report: DimensionReport,
+    symbols: Mapping[str, sympy.Symbol],
+    given: set[str],
+    spec: Spec,
+) -> Target:
     dim = report.dims[item.name]
     if item.unit is not None:
         unit_dim = resolve_unit(item.unit, spec.file).dim

@@ -92,7 +92,8 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     rhs = to_sympy(statement.rhs, {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}})
     motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
-    targets = tuple(_target(item, motion, all_symbols, spec) for item in spec.finds)
+    given_dims = {g.name: g.dim for g in givens}
+    targets = tuple(_target(item, motion, all_symbols, given_dims, spec) for item in spec.finds)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = _row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
@@ -135,7 +136,11 @@ _DIMS = {"t": Dim.of("time"), "x": Dim.of("length"), "v": Dim.of("velocity"), "a
 
 
 def _target(
-    item: FindItem, motion: Motion, symbols: Mapping[str, sympy.Symbol], spec: Spec
+    item: FindItem,
+    motion: Motion,
+    symbols: Mapping[str, sympy.Symbol],
+    given_dims: Mapping[str, Dim],
+    spec: Spec,
 ) -> Target:
     where = Position(spec.file, item.line, item.column)
     ref = item.ref
@@ -146,7 +151,7 @@ def _target(
             hint="name one such as 'v_t = v(t)', 'x_v = x(v)' or 'v_1 = v(t_1)'",
         )
     argument = ref.args[0]
-    variable = argument if argument in VARIABLES else _variable_of(argument, symbols, spec, where)
+    variable = argument if argument in VARIABLES else _variable_of(argument, given_dims, where)
     name = f"{ref.function}({variable})"
     if name not in motion.formulas:
         found = ", ".join(motion.formulas)
@@ -169,24 +174,20 @@ def _target(
     )
 
 
-def _variable_of(
-    given: str, symbols: Mapping[str, sympy.Symbol], spec: Spec, where: Position
-) -> str:
+def _variable_of(given: str, given_dims: Mapping[str, Dim], where: Position) -> str:
     """Which of t, x, v a given stands for (by its dimension): ``v(t_1)`` evaluates at t_1."""
-    from dynsolve.equation_mode import givens_of as _all
-
-    info = next((g for g in _all(spec) if g.name == given), None)
-    if info is None:
+    dim_of_given = given_dims.get(given)
+    if dim_of_given is None:
         raise SpecError(
             f"'{given}' is neither t, x, v nor a given",
             where,
             hint="evaluate at a given, e.g. v(t_1) with t_1 = 2 s",
         )
     for name, (_, dim) in VARIABLES.items():
-        if dim == info.dim:
+        if dim == dim_of_given:
             return name
     raise SpecError(
-        f"'{given}' is {info.dim.name}: not a time, position or speed",
+        f"'{given}' is {dim_of_given.name}: not a time, position or speed",
         where,
         hint="evaluate at a time, a position or a speed",
     )

@@ -116,7 +116,7 @@ def solve_problem(
     outcome = outcome or solve_system(problem.system, options)
     view = _View(problem, outcome, trial or {}, options)
     answers = tuple(view.answer(t) for t in problem.targets)
-    key = tuple(view.key())
+    key = tuple(view.key(answers))
     notes = tuple(Check(name, True, detail) for name, detail in problem.notes)
     checks = (
         view.checks()
@@ -405,7 +405,7 @@ class _View:
             return ""
         return f"  (numbers in {', '.join(BASE_UNITS[self.system])})"
 
-    def key(self) -> list[KeyComparison]:
+    def key(self, answers: tuple[AnswerRow, ...]) -> list[KeyComparison]:
         spec = self.problem.spec
         targets = {t.name: t for t in self.problem.targets}
         known_dims = {g.name: g.dim for g in self.problem.givens} | {
@@ -417,7 +417,7 @@ class _View:
         out = []
         for answer in spec.answers:
             target = targets[answer.name]
-            row = self.answer(target)
+            row = next(a for a in answers if a.name == answer.name)
             if target.kind != "signed" and answer.formula is None:
                 value = self.computed(answer.name)
                 number = None if value is None else self.number(value)

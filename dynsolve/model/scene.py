@@ -85,6 +85,7 @@ class Support:
     line: int = 0
     column: int = 0
     two_sided: bool = False  # a guide (collar on a rod): the normal force may take either sign
+    friction_sense: int | None = None  # ±1 along the tangent when sliding: opposes ``slides``
 
     @property
     def tangent(self) -> Vec:
@@ -640,6 +641,16 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
     slides = builder.direction(props["slides"].direction) if "slides" in props else None
     smooth = "smooth" in props or (mu_s is None and mu_k is None and stmt.kind == "contact")
     two_sided = "guide" in props
+    friction_sense = None
+    if slides is not None:
+        along = real_value(slides[0] * normal[1] - slides[1] * normal[0], builder.given_values)
+        if along is None or along == 0:
+            raise SpecError(
+                "the sliding direction must run along the surface",
+                builder.where(stmt.line, stmt.column),
+                hint="give 'slides' a direction across the contact normal",
+            )
+        friction_sense = -1 if along > 0 else 1
     if stmt.kind == "pin":
         if stmt.name not in builder.fixed:
             raise SpecError(
@@ -701,6 +712,7 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
         stmt.line,
         stmt.column,
         two_sided,
+        friction_sense,
     )
 
 

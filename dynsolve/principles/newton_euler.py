@@ -566,11 +566,7 @@ class _Writer:
         """+1/−1 along the tangent for kinetic friction, None for unknown static friction."""
         if support.name in self.slipping:
             return self.slipping[support.name]
-        if support.slides is not None:
-            along = dot(support.slides, support.tangent)
-            value = float(sympy.N(along.subs({s: 1 for s in along.free_symbols})))
-            return -1 if value > 0 else 1
-        return None
+        return support.friction_sense
 
     # ---- equations of motion
     def newton_euler(self, body: Body) -> None:
