@@ -356,3 +356,27 @@ find: w = omega(rod), O_n, w_d = omega(disk)
     assert got["O_n"].value == pytest.approx(750.0)
     # rolling to the right at 2 m/s on a 0.5-m disk: omega = v/R = 4 rad/s cw
     assert got["w_d"].value == pytest.approx(4.0) and got["w_d"].direction == "cw"
+
+
+def test_kinetic_friction_opposes_a_slide_given_by_a_vector_of_givens(tmp_path):
+    # regression: the sense of kinetic friction was found by putting 1 for every symbol
+    # of the sliding direction, so slides (d, 0) with d = -1 (to the left) got friction
+    # to the left too. Pushed left by 600 N: a = (600 - 0.2(50)(9.81))/50 = 10.04 m/s^2 left.
+    text = """\
+given:
+  m = 50 kg
+  b = 1 m
+  h = 1 m
+  P = 600 N
+  mu_k = 0.2
+  d = -1
+scene:
+  body crate: mass m, block b by h, at (0, 0)
+  base C on crate: from (-b/2, -h/2) to (b/2, -h/2), mu_k mu_k, slides (d, 0)
+  force P on crate at (b/2, 0): left
+  gravity
+find: a = a_G(crate), F = F_C
+"""
+    got = {a.name: a for a in solve_file(write(tmp_path, text)).answers}
+    assert got["a"].value == pytest.approx((600 - 0.2 * 50 * 9.81) / 50)
+    assert got["a"].direction == "left" and got["F"].direction == "right"

@@ -641,16 +641,6 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
     slides = builder.direction(props["slides"].direction) if "slides" in props else None
     smooth = "smooth" in props or (mu_s is None and mu_k is None and stmt.kind == "contact")
     two_sided = "guide" in props
-    friction_sense = None
-    if slides is not None:
-        along = real_value(slides[0] * normal[1] - slides[1] * normal[0], builder.given_values)
-        if along is None or along == 0:
-            raise SpecError(
-                "the sliding direction must run along the surface",
-                builder.where(stmt.line, stmt.column),
-                hint="give 'slides' a direction across the contact normal",
-            )
-        friction_sense = -1 if along > 0 else 1
     if stmt.kind == "pin":
         if stmt.name not in builder.fixed:
             raise SpecError(
@@ -687,6 +677,7 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
             end,
             stmt.line,
             stmt.column,
+            friction_sense=_friction_sense(builder, stmt, slides, normal),
         )
     assert stmt.location is not None
     point, name = builder.location(body, stmt.location)
@@ -712,7 +703,7 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
         stmt.line,
         stmt.column,
         two_sided,
-        friction_sense,
+        _friction_sense(builder, stmt, slides, normal),
     )
 
 
@@ -737,6 +728,22 @@ def _two_ends(builder: _Builder, stmt: SceneStmt) -> tuple[str, Vec, str, Vec]:
         builder.where(stmt.line, stmt.column),
         hint,
     )
+
+
+def _friction_sense(
+    builder: _Builder, stmt: SceneStmt, slides: Vec | None, normal: Vec
+) -> int | None:
+    """The sense (±1 along the tangent) of kinetic friction opposing ``slides``."""
+    if slides is None:
+        return None
+    along = real_value(slides[0] * normal[1] - slides[1] * normal[0], builder.given_values)
+    if along is None or along == 0:
+        raise SpecError(
+            "the sliding direction must run along the surface",
+            builder.where(stmt.line, stmt.column),
+            hint="give 'slides' a direction across the contact normal",
+        )
+    return -1 if along > 0 else 1
 
 
 def _cord(builder: _Builder, stmt: SceneStmt) -> Cord:
