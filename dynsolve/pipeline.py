@@ -390,11 +390,27 @@ class _View:
         if target.kind != "signed" and number is not None:
             direction = self.direction(target, number) or direction
             text, latex, number = self.shown(target.name, abs(value))
+        if number is None:
+            value, sense = self.sensed(target, value)
+            direction = sense or direction
         exact = self.text(_tidy(value)) if number is None else sympy.sstr(value)
         if number is None:
             latex = self.latex(_tidy(value))
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
+
+    def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
+        """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the
+        formula is the same for every positive value of the givens; else as it is."""
+        from dynsolve.model.states import sign_of
+
+        if target.kind != "rotation" or value.free_symbols & set(self.problem.system.unknowns):
+            return value, ""
+        try:
+            sense = sign_of(value, {})
+        except ValueError:
+            return value, ""
+        return sense * value, "ccw" if sense > 0 else "cw"
 
     def base_units_note(self) -> str:
         """For a formula holding numbers of dimensional givens: which units they are in."""
@@ -430,9 +446,12 @@ class _View:
                     spec,
                 )
             else:
+                computed = self.computed(answer.name)
+                if computed is not None and answer.formula is not None:
+                    computed, _ = self.sensed(target, computed)
                 verdict = compare(
                     answer,
-                    self.computed(answer.name),
+                    computed,
                     target.dim,
                     target.unit,
                     spec,

@@ -57,25 +57,39 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     givens = givens_of(spec)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     given_dims = {g.name: g.dim for g in givens}
+    state_unknowns = _state_unknowns(spec, symbols)
+    symbols.update({s.name: s for s in state_unknowns})
     scene = build_scene(
-        spec, symbols, given_dims, {g.symbol: g.value for g in givens if g.value is not None}
+        spec,
+        symbols,
+        given_dims | {s.name: d for s, d in state_unknowns.items()},
+        {g.symbol: g.value for g in givens if g.value is not None},
     )
+    given_values = {g.symbol: g.value for g in givens if g.value is not None}
+    rigid = any(not b.particle for b in scene.bodies.values()) or bool(scene.links)
     try:
         if scene.impacts:
             from dynsolve.principles.impact import impact_formulation
 
             formulation = impact_formulation(scene)
+        elif scene.pivots:
+            from dynsolve.principles.impact import pivot_formulation
+
+            formulation = pivot_formulation(scene, given_values)
+        elif (scene.travels and rigid) or scene.movers:
+            formulation = _states_only(scene)
         else:
             formulation = formulate(scene, symbols, slipping)
         if scene.travels:
-            formulation = _with_energy(formulation, scene, symbols)
+            formulation = _with_energy(formulation, scene, symbols, given_values)
     except ValueError as exc:
         raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
+    if state_unknowns:
+        formulation = replace(formulation, unknowns={**formulation.unknowns, **state_unknowns})
     symbols.update({s.name: s for s in formulation.unknowns})
     symbols.update({s.name: s for s in formulation.derived})
     dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
     dims |= {s.name: d for s, (_, d, _) in formulation.derived.items()}
-    given_values = {g.symbol: g.value for g in givens if g.value is not None}
     givens = givens + [
         GivenInfo(
             s.name,
@@ -102,10 +116,14 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
     rows = tuple(_row(e, symbol_dims, spec) for e in equations)
     report = DimensionReport(dims, (), frozenset())
-    notes = tuple(
+    notes = formulation.notes + tuple(
         _inertia_note(t, item, scene)
         for t, item in zip(targets, spec.finds, strict=True)
         if item.ref is not None and item.ref.function == "I"
+    )
+    notes += tuple(
+        _path_note(scene, name, path_extremes(scene, name, Position(spec.file, 1, 1)))
+        for name in scene.movers
     )
     return SceneProblem(
         spec,
@@ -132,25 +150,86 @@ def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, st
     return (f"inertia {item.name} of {body.name}", "; ".join(lines))
 
 
+_STATE_DIMS = {"velocity": Dim(1, 0, -1), "omega": Dim(0, 0, -1)}
+
+
+def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sympy.Symbol, Dim]:
+    """The speeds of ``velocity``/``omega`` lines that are asked for, not given: a name in
+    find written there becomes an unknown magnitude (the 'minimum speed' of a problem)."""
+    from dynsolve.spec.ast import Name
+
+    asked = {item.name for item in spec.finds if item.ref is None}
+    found: dict[sympy.Symbol, Dim] = {}
+    for stmt in spec.scene:
+        value = stmt.value
+        if (
+            stmt.kind in _STATE_DIMS
+            and isinstance(value, Name)
+            and value.text not in symbols
+            and value.text in asked
+        ):
+            found[sympy.Symbol(value.text, positive=True)] = _STATE_DIMS[stmt.kind]
+    return found
+
+
+def _states_only(scene: Scene) -> Formulation:
+    """An empty formulation for a rigid body or linkage between states: its answers come
+    from work and energy alone, not from the equations of motion at state 1."""
+    from dynsolve.principles.newton_euler import bare_formulation
+
+    return bare_formulation(scene.bodies)
+
+
 def _with_energy(
-    formulation: Formulation, scene: Scene, symbols: Mapping[str, sympy.Symbol]
+    formulation: Formulation,
+    scene: Scene,
+    symbols: Mapping[str, sympy.Symbol],
+    given_values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> Formulation:
-    """Add T1 + ΣU = T2 for every particle that travels to a second state."""
-    from dynsolve.principles.work_energy import energy_equation
+    """Add T1 + ΣU = T2 for the scene's travel (one per travelling particle)."""
+    from dynsolve.principles.work_energy import energy_equations
     from dynsolve.system import Equation
 
     equations = list(formulation.equations)
     unknowns = dict(formulation.unknowns)
-    speeds = dict(formulation.speeds)
-    for body in scene.travels:
-        equation, speed, _ = energy_equation(scene, body, symbols)
+    speeds, spins = dict(formulation.speeds), dict(formulation.spins)
+    notes = list(formulation.notes)
+    for energy in energy_equations(_after_pivot(scene, formulation), symbols, given_values):
         number = len(equations) + 1
+        equation = energy.equation
         equations.append(
             Equation(equation.lhs, equation.rhs, f"eq. {number}", number, equation.note)
         )
-        unknowns[speed] = Dim(1, 0, -1)
-        speeds[body] = speed
-    return replace(formulation, equations=tuple(equations), unknowns=unknowns, speeds=speeds)
+        if energy.rate is not None:
+            rotation = energy.rate.name.startswith("omega")
+            unknowns[energy.rate] = Dim(0, 0, -1) if rotation else Dim(1, 0, -1)
+        speeds.update(energy.speeds)
+        spins.update(energy.spins)
+        if energy.relations:
+            notes.append(("kinematics between the states", "; ".join(energy.relations)))
+    return replace(
+        formulation,
+        equations=tuple(equations),
+        unknowns=unknowns,
+        speeds=speeds,
+        spins=spins,
+        notes=tuple(notes),
+    )
+
+
+def _after_pivot(scene: Scene, formulation: Formulation) -> Scene:
+    """The scene just after an eccentric impact: pinned at the struck point, turning at ω₁."""
+    if not scene.pivots:
+        return scene
+    from dynsolve.model.scene import WORDS, Support
+
+    pins = tuple(
+        Support("pin", p.name, p.body, p.point, WORDS["up"], line=p.line, column=p.column)
+        for p in scene.pivots
+    )
+    return replace(
+        scene, supports=pins, omegas=dict(formulation.after_omega), velocities={}, pivots=()
+    )
 
 
 def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[sympy.Symbol, ...]:
@@ -271,6 +350,30 @@ def _quantity(
                 hint=f"add 'travel {body}: to (x, y)'",
             )
         return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
+    if function in ("a_max", "a_min") and len(args) == 1:
+        if args[0] not in scene.movers:
+            raise SpecError(
+                f"{args[0]} does not move along a path",
+                where,
+                hint=f"add 'moves {args[0]}: along PATH, speed v'",
+            )
+        extreme = path_extremes(scene, args[0], where)
+        chosen = extreme.maximum if function == "a_max" else extreme.minimum
+        return target("magnitude", Dim(1, 0, -2), chosen.a)
+    if function == "omega_after" and len(args) == 1:
+        if args[0] not in formulation.after_omega:
+            raise SpecError(
+                f"{args[0]} strikes no fixed point", where, hint="add 'impact B at P: e 0'"
+            )
+        return target("rotation", Dim(0, 0, -1), formulation.after_omega[args[0]])
+    if function == "omega2" and len(args) == 1:
+        if args[0] not in formulation.spins:
+            raise SpecError(
+                f"{args[0]} does not turn between two states",
+                where,
+                hint="describe state 2 with a 'travel' line of a rigid body or link",
+            )
+        return target("rotation", Dim(0, 0, -1), formulation.spins[args[0]])
     if function == "v_after" and len(args) == 1:
         body = _body(args[0], scene, where)
         if body not in formulation.after:
@@ -278,11 +381,22 @@ def _quantity(
                 f"{body} takes part in no impact", where, hint="add 'impact A with B: …'"
             )
         return target("vector", Dim(1, 0, -1), vector=formulation.after[body])
+    if args and function in ("m", "I"):
+        body = _body(args[0], scene, where)
+        model = scene.bodies[body]
+        if function == "m":
+            return target("magnitude", Dim(0, 1), model.mass)
+        if len(args) == 1:
+            return target("magnitude", Dim(2, 1), model.I_G)
+        point = _point(args[1], scene, body, where)
+        d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
+        return target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
     if args and not formulation.kinematics:
         raise SpecError(
-            f"'{function}' is not a quantity of an impact scene",
+            f"'{function}' is not a quantity of a scene between states or impacts",
             where,
-            hint="an impact scene answers v_after(B)",
+            hint="such a scene answers speed(B), omega2(B), v_after(B), omega_after(B), "
+            "m(B), I(B) and I(B, P)",
         )
     if args:
         body = _body(args[0], scene, where)
@@ -293,17 +407,6 @@ def _quantity(
             return target("rotation", Dim(0, 0, -1), kin.omega)
         if function in ("a_G", "a"):
             return target("vector", Dim(1, 0, -2), vector=kin.a_G)
-        if function == "m":
-            return target("magnitude", Dim(0, 1), scene.bodies[body].mass)
-        if function == "I":
-            model = scene.bodies[body]
-            if len(args) == 1:
-                return target("magnitude", Dim(2, 1), model.I_G)
-            point = _point(args[1], scene, body, where)
-            d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
-            return target(
-                "magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2))
-            )
         raise SpecError(
             f"unknown scene quantity '{function}'",
             where,
@@ -393,6 +496,65 @@ def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
     return None
 
 
+SAMPLES = (1.0, 2.0, 3.0, 5.0, 7.0, 0.5, 1.5, 4.0, 11.0)
+
+
+def path_extremes(scene: Scene, name: str, where: Position) -> object:
+    """The largest and smallest acceleration of a point moving along a path at constant
+    speed; symbolic givens are ordered with sample values that meet the scene's
+    ``assume`` lines, and the order must be the same for every such sample."""
+    from dynsolve.principles.curvilinear import (
+        ExplicitPath,
+        ImplicitPath,
+        acceleration_extremes,
+    )
+
+    mover = scene.movers[name]
+    path = mover.path
+    shape = (
+        ExplicitPath(path.explicit, path.x)
+        if path.explicit is not None
+        else ImplicitPath(path.curve, path.x, path.y)
+    )
+    symbols = sorted(path.curve.free_symbols - {path.x, path.y}, key=str)
+    if all(s in scene.values for s in symbols):
+        return acceleration_extremes(shape, mover.speed, order_by=scene.values)
+    found = []
+    for shift in range(len(SAMPLES)):
+        sample = {s: SAMPLES[(i + shift) % len(SAMPLES)] for i, s in enumerate(symbols)}
+        if all(bool(a.xreplace(sample)) for a in scene.assumptions):
+            found.append(acceleration_extremes(shape, mover.speed, order_by=sample))
+    orders = {(sympy.srepr(f.maximum.a), sympy.srepr(f.minimum.a)) for f in found}
+    if len(orders) != 1:
+        raise SpecError(
+            f"which point of the path {path.name} has the largest acceleration depends on "
+            "the givens",
+            where,
+            hint="say which region you mean, e.g. 'assume a > b' in the scene",
+        )
+    return found[0]
+
+
+def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:
+    """How the extremes along a path were found, and where they are."""
+    from dynsolve.principles.curvilinear import AccelerationExtremes
+
+    assert isinstance(extremes, AccelerationExtremes)
+    mover = scene.movers[name]
+
+    def points(extreme: object) -> str:
+        shown = [f"({sympy.sstr(x)}, {sympy.sstr(y)})" for x, y in extreme.points]  # type: ignore[attr-defined]
+        return ", ".join(shown) or "everywhere"
+
+    return (
+        f"{name} along {mover.path.name}",
+        "constant speed: a_t = 0, so |a| = a_n = v²κ; the extremes of the curvature κ "
+        f"along the path: largest a = {sympy.sstr(extremes.maximum.a)} at "
+        f"{points(extremes.maximum)}, smallest a = {sympy.sstr(extremes.minimum.a)} at "
+        f"{points(extremes.minimum)}",
+    )
+
+
 def _body(name: str, scene: Scene, where: Position) -> str:
     if name not in scene.bodies:
         close = difflib.get_close_matches(name, list(scene.bodies), n=1)
@@ -436,6 +598,8 @@ def assess(
     checks: list[Assumption] = []
     slips: dict[str, int] = {}
     scene, formulation = problem.scene, problem.formulation
+    if scene.travels and not formulation.reactions:
+        return _between_states(problem, substitution), slips
     for support in scene.supports:
         if support.kind == "pin":
             continue
@@ -494,6 +658,58 @@ def assess(
                 )
             )
     return tuple(checks), slips
+
+
+def _between_states(
+    problem: SceneProblem, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Assumption, ...]:
+    """What work–energy between two states assumes: the scene gets there, moving toward it,
+    and its rolling contacts do not slip on the way."""
+    checks: list[Assumption] = []
+    for pivot in problem.scene.pivots:
+        checks.append(
+            Assumption(
+                f"plastic impact at {pivot.name}",
+                True,
+                f"stated (e 0): {pivot.name} neither rebounds nor slides, so {pivot.body} "
+                f"turns about {pivot.name} after the impact",
+            )
+        )
+    for equation in problem.formulation.equations:
+        if not equation.note.startswith("T1 + ΣU"):
+            continue
+        energy = real_value(equation.lhs, substitution)
+        scale = sum(
+            abs(real_value(t, substitution) or 0) for t in sympy.Add.make_args(equation.lhs)
+        )
+        if energy is not None:
+            reaches = energy >= -1e-9 * max(scale, 1e-300)
+            checks.append(
+                Assumption(
+                    "reaches state 2",
+                    reaches,
+                    f"T1 + ΣU = {abs(energy) if reaches and energy <= 0 else energy:.4g} "
+                    + ("≥ 0" if reaches else "< 0: it stops before state 2"),
+                )
+            )
+    for support in problem.scene.supports:
+        if support.kind == "rolls":
+            checks.append(
+                Assumption(
+                    f"no slip at {support.name}",
+                    True,
+                    "stated by 'rolls' for the whole travel; the friction it needs between "
+                    "the states is not computed",
+                )
+            )
+    checks.append(
+        Assumption(
+            "sense of motion",
+            True,
+            "in state 2 the scene still moves toward it (speeds taken in the travel's sense)",
+        )
+    )
+    return tuple(checks)
 
 
 def _tipping(

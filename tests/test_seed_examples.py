@@ -49,8 +49,14 @@ SYMBOLIC = (
 )  # fmt: skip
 
 
-# Examples written in scene mode (issue 3): no hand-written equations.
-SCENE = tuple(e for e in SEED_EXAMPLES if e.startswith(("fa_", "gpm_", "tr_", "moi_", "we_")))
+# Examples written in scene mode (issues 3 and 4): no hand-written equations.
+SCENE = tuple(
+    e
+    for e in SEED_EXAMPLES
+    if e.startswith(("fa_", "gpm_", "tr_", "moi_", "we_", "rwe_", "ci_", "curv_"))
+)
+# issue 4 asks for the symbolic versions of its examples as scenes too
+SYMBOLIC_SCENE = tuple(e for e in SYMBOLIC if e.startswith(("we_", "rwe_", "ci_", "curv_")))
 
 
 @pytest.mark.parametrize("example", sorted(SEED_EXAMPLES))
@@ -93,6 +99,13 @@ def test_scene_seed_has_no_hand_written_equations(example):
     spec = parse_file(SEED / f"{example}.dyn")
     assert spec.scene and not spec.equations
     assert solve_file(SEED / f"{example}.dyn").mode == "scene"
+
+
+@pytest.mark.parametrize("example", SYMBOLIC_SCENE)
+def test_symbolic_scene_seed_has_no_hand_written_equations(example):
+    spec = parse_file(SEED / f"{example}-symbolic.dyn")
+    assert spec.scene and not spec.equations
+    assert solve_file(SEED / f"{example}-symbolic.dyn").mode == "scene"
 
 
 @pytest.mark.parametrize("example", SCENE)

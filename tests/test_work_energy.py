@@ -43,14 +43,16 @@ def test_the_collar_seed_from_its_scene():
     solution = solve_file(seed)
     assert solution.mode == "scene" and solution.passed
     note = next(e.note for e in solution.equations if e.note.startswith("T1 + ΣU"))
-    assert "no work: N_G" in note  # the guide's normal force does no work
+    assert "N_G (normal to the motion)" in note  # the guide's normal force does no work
 
 
 @pytest.mark.parametrize(
     ("scene", "message"),
     [
-        ("body ball: mass m, disk h, at (0, h)", "supported for particles"),
-        ("contact ball at G: normal up, mu_s 0.3", "friction at"),
+        # a free rigid body: x, y and its turn are all free
+        ("body ball: mass m, disk h, at (0, h)", "has 3 degrees of freedom"),
+        # a floor under the ball: the drop would go through it
+        ("contact ball at G: normal up, mu_s 0.3", "would leave its contact G"),
     ],
 )
 def test_unsupported_states_say_so(tmp_path, scene, message):

@@ -120,6 +120,7 @@ class Spring:
     unstretched: sympy.Expr
     line: int = 0
     column: int = 0
+    wound: bool = False  # on a cord wrapped round the body: its end moves with the rim
 
 
 @dataclass(frozen=True)
@@ -145,6 +146,63 @@ class Impact:
     e: sympy.Expr  # coefficient of restitution, 0 ≤ e ≤ 1
     line: Vec  # unit vector of the line of impact, from body toward other
     stmt_line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Pivot:
+    """A rigid body striking a fixed point and turning about it afterwards (a plastic,
+    eccentric impact: the point neither rebounds nor slides)."""
+
+    body: str
+    name: str
+    point: Vec
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Travel:
+    """How a body (or a link) gets from state 1, the scene as described, to state 2.
+
+    ``kind`` is "to" (G reaches ``position``), "by" (G moves ``distance`` along
+    ``direction``) or "turns" (it turns through ``angle``, ccw positive); ``stops``
+    says it is at rest in state 2.
+    """
+
+    body: str
+    kind: str
+    position: Vec | None = None
+    distance: sympy.Expr | None = None
+    direction: Vec | None = None
+    angle: sympy.Expr | None = None
+    stops: bool = False
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Path:
+    """A fixed path in the plane: the curve ``curve = 0`` in the coordinates ``x``, ``y``,
+    or ``y = explicit`` when it was written that way."""
+
+    name: str
+    curve: sympy.Expr
+    x: sympy.Symbol
+    y: sympy.Symbol
+    explicit: sympy.Expr | None = None
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Mover:
+    """A point (a particle whose mass does not matter) moving along a path at constant speed."""
+
+    name: str
+    path: Path
+    speed: sympy.Expr
+    line: int = 0
     column: int = 0
 
 
@@ -180,7 +238,11 @@ class Scene:
     links: tuple[Link, ...] = ()
     velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G given at the instant
     impacts: tuple[Impact, ...] = ()
-    travels: Mapping[str, Vec] = field(default_factory=dict)  # where G is in state 2
+    travels: Mapping[str, Travel] = field(default_factory=dict)  # how each gets to state 2
+    movers: Mapping[str, Mover] = field(default_factory=dict)  # points moving along paths
+    pivots: tuple[Pivot, ...] = ()  # eccentric impacts about a fixed point
+    assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
+    values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
 
 
 class _Builder:
@@ -541,7 +603,12 @@ def build_scene(
     springs: list[Spring] = []
     links: list[Link] = []
     impacts: list[Impact] = []
-    travels: dict[str, Vec] = {}
+    travels: dict[str, Travel] = {}
+    link_names = {stmt.name for stmt in spec.scene if stmt.kind == "link"}
+    paths: dict[str, Path] = {}
+    pivots: list[Pivot] = []
+    movers: dict[str, Mover] = {}
+    assumptions: list[sympy.core.relational.Relational] = []
     for stmt in spec.scene:
         if stmt.kind in ("pin", "contact", "rolls", "base"):
             supports.append(_support(builder, stmt))
@@ -556,13 +623,23 @@ def build_scene(
             else:
                 k = builder.value(stmt.props[0].values[0], Dim(0, 1, -2), "a spring stiffness")
                 free = builder.value(stmt.props[1].values[0], LENGTH, "an unstretched length")
+                wound = any(p.key == "wound" for p in stmt.props)
                 springs.append(
                     Spring(
-                        stmt.name, body, point, other, other_point, k, free, stmt.line, stmt.column
+                        stmt.name,
+                        body,
+                        point,
+                        other,
+                        other_point,
+                        k,
+                        free,
+                        stmt.line,
+                        stmt.column,
+                        wound,
                     )
                 )
         elif stmt.kind in ("force", "couple"):
-            loads.append(_load(builder, stmt))
+            loads.append(_load(builder, stmt, link_names))
         elif stmt.kind == "gravity":
             gravity = builder.direction(stmt.direction) if stmt.direction else WORDS["down"]
         elif stmt.kind == "omega":
@@ -593,15 +670,7 @@ def build_scene(
                 )
             )
         elif stmt.kind == "travel":
-            body = builder.body(stmt.body, stmt.line, stmt.column)
-            if not body.particle:
-                raise SpecError(
-                    f"work–energy between states is supported for particles; {body.name} is a "
-                    "rigid body",
-                    builder.where(stmt.line, stmt.column),
-                    hint="model it as a particle, or use the equations of motion at an instant",
-                )
-            travels[stmt.body] = builder.vector(stmt.vectors[0], "a position")
+            travels[stmt.body] = _travel(builder, stmt, link_names)
         elif stmt.kind == "velocity":
             builder.body(stmt.body, stmt.line, stmt.column)
             assert stmt.value is not None and stmt.direction is not None
@@ -611,6 +680,14 @@ def build_scene(
         elif stmt.kind == "motion":
             builder.body(stmt.body, stmt.line, stmt.column)
             motions[stmt.body] = stmt.word
+        elif stmt.kind == "pivot":
+            pivots.append(_pivot(builder, stmt))
+        elif stmt.kind == "path":
+            paths[stmt.name] = _path(builder, stmt)
+        elif stmt.kind == "moves":
+            movers[stmt.name] = _mover(builder, stmt, paths)
+        elif stmt.kind == "assume":
+            assumptions.append(_assumption(builder, stmt))
     names = {v: k for k, v in builder.fixed.items()}
     for body in builder.bodies.values():
         names.update({v: k for k, v in body.points.items()})
@@ -629,6 +706,10 @@ def build_scene(
         velocities=velocities,
         impacts=tuple(impacts),
         travels=travels,
+        movers=movers,
+        pivots=tuple(pivots),
+        assumptions=tuple(assumptions),
+        values=builder.given_values,
     )
 
 
@@ -769,7 +850,146 @@ def _cord(builder: _Builder, stmt: SceneStmt) -> Cord:
     )
 
 
-def _load(builder: _Builder, stmt: SceneStmt) -> Load:
+def _pivot(builder: _Builder, stmt: SceneStmt) -> Pivot:
+    """``impact BODY at POINT: e 0``: BODY strikes the fixed POINT and turns about it."""
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    if stmt.name not in builder.fixed:
+        raise SpecError(
+            f"there is no fixed point '{stmt.name}' for {body.name} to strike",
+            builder.where(stmt.line, stmt.column),
+            hint=f"declare it with 'point {stmt.name}: (x, y)'",
+        )
+    assert stmt.value is not None
+    e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
+    if real_value(e, builder.given_values) != 0:
+        raise SpecError(
+            "an impact about a fixed point is supported when it is plastic (e 0): the body "
+            "then turns about the point",
+            builder.where(stmt.line, stmt.column),
+            hint="write 'e 0'",
+        )
+    return Pivot(body.name, stmt.name, builder.fixed[stmt.name], stmt.line, stmt.column)
+
+
+COORDINATES = ("x", "y")
+
+
+def _path(builder: _Builder, stmt: SceneStmt) -> Path:
+    """``path NAME: LHS = RHS`` in the coordinates x and y (lengths)."""
+    lhs, rhs = stmt.vectors[0]
+    x, y = (sympy.Symbol(c, real=True) for c in COORDINATES)
+    taken = [c for c in COORDINATES if c in builder.symbols]
+    if taken:
+        raise SpecError(
+            f"'{taken[0]}' is a coordinate of the path, but also a given",
+            builder.where(stmt.line, stmt.column),
+            hint=f"rename the given '{taken[0]}'",
+        )
+    symbols = {**builder.symbols, "x": x, "y": y}
+    _known_names(builder, (lhs, rhs), symbols)
+    probe = EquationStmt(lhs, "=", rhs, "", "", stmt.line, stmt.column)
+    dims = {**builder.dims, "x": LENGTH, "y": LENGTH, "pi": Dim()}
+    check_dimensions((probe,), dims, builder.file)  # x and y are lengths
+    left, right = to_sympy(lhs, symbols), to_sympy(rhs, symbols)
+    explicit = right if left == y and not right.has(y) else None
+    return Path(stmt.name, left - right, x, y, explicit, stmt.line, stmt.column)
+
+
+def _known_names(
+    builder: _Builder, exprs: tuple[Expr, ...], symbols: Mapping[str, sympy.Expr]
+) -> None:
+    """Every name in ``exprs`` must be one of ``symbols`` (or pi)."""
+    for expr in exprs:
+        for name in iter_names(expr):
+            if name.text not in symbols and name.text != "pi":
+                close = difflib.get_close_matches(name.text, list(symbols), n=1)
+                raise SpecError(
+                    f"'{name.text}' in the scene is not a given",
+                    builder.where(name.line, name.column),
+                    f"did you mean '{close[0]}'?" if close else "declare it under given:",
+                )
+
+
+def _mover(builder: _Builder, stmt: SceneStmt, paths: Mapping[str, Path]) -> Mover:
+    if stmt.other not in paths:
+        close = difflib.get_close_matches(stmt.other, list(paths), n=1)
+        raise SpecError(
+            f"there is no path '{stmt.other}'",
+            builder.where(stmt.line, stmt.column),
+            f"did you mean '{close[0]}'?" if close else "declare it first with 'path NAME: …'",
+        )
+    assert stmt.value is not None
+    speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
+    return Mover(stmt.name, paths[stmt.other], speed, stmt.line, stmt.column)
+
+
+def _assumption(builder: _Builder, stmt: SceneStmt) -> sympy.core.relational.Relational:
+    """``assume LHS REL RHS`` between givens of the same dimension (decides orderings)."""
+    lhs, rhs = stmt.vectors[0]
+    _known_names(builder, (lhs, rhs), builder.symbols)
+    probe = EquationStmt(lhs, stmt.word, rhs, "", "", stmt.line, stmt.column)  # type: ignore[arg-type]
+    check_dimensions((probe,), {**builder.dims, "pi": Dim()}, builder.file)
+    relation = {">": sympy.Gt, "<": sympy.Lt, ">=": sympy.Ge, "<=": sympy.Le}.get(stmt.word)
+    if relation is None:
+        raise SpecError(
+            "an assumption is an inequality",
+            builder.where(stmt.line, stmt.column),
+            hint="write e.g. 'assume a > b'",
+        )
+    return relation(to_sympy(lhs, builder.symbols), to_sympy(rhs, builder.symbols))
+
+
+def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
+    """A travel line: to a position, by a distance along a direction, or through an angle."""
+    stops = any(p.key == "stops" for p in stmt.props)
+    line, column = stmt.line, stmt.column
+    if stmt.body not in links:
+        body = builder.body(stmt.body, stmt.line, stmt.column)
+    elif stmt.word not in ("cw", "ccw"):
+        raise SpecError(
+            f"a link's state is its angle: {stmt.body} can only turn",
+            builder.where(stmt.line, stmt.column),
+            hint=f"write 'travel {stmt.body}: turns ANGLE ccw'",
+        )
+    if stmt.vectors:
+        position = builder.vector(stmt.vectors[0], "a position")
+        return Travel(stmt.body, "to", position=position, stops=stops, line=line, column=column)
+    assert stmt.value is not None
+    if stmt.word in ("cw", "ccw"):
+        if stmt.body not in links and body.particle:
+            raise SpecError(
+                f"{stmt.body} is a particle: it has no angle to turn through",
+                builder.where(stmt.line, stmt.column),
+                hint=f"write 'travel {stmt.body}: by DISTANCE, DIRECTION' or 'to (x, y)'",
+            )
+        angle = builder.value(stmt.value, Dim(), "an angle")
+        angle = -angle if stmt.word == "cw" else angle
+        return Travel(stmt.body, "turns", angle=angle, stops=stops, line=line, column=column)
+    assert stmt.direction is not None
+    distance = builder.value(stmt.value, LENGTH, "a distance")
+    direction = builder.direction(stmt.direction)
+    return Travel(
+        stmt.body,
+        "by",
+        distance=distance,
+        direction=direction,
+        stops=stops,
+        line=line,
+        column=column,
+    )
+
+
+def _load(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Load:
+    """A force or couple; a couple may act on a link (its work counts between states)."""
+    if stmt.kind == "couple" and stmt.body in links:
+        return Load(
+            "couple",
+            stmt.name,
+            stmt.body,
+            sense=-1 if stmt.word == "cw" else 1,
+            line=stmt.line,
+            column=stmt.column,
+        )
     body = builder.body(stmt.body, stmt.line, stmt.column)
     if stmt.kind == "couple":
         return Load(

@@ -21,7 +21,7 @@ from collections.abc import Mapping
 import sympy
 
 from dynsolve.model.scene import Impact, Scene, Vec
-from dynsolve.principles.newton_euler import Formulation
+from dynsolve.principles.newton_euler import Formulation, bare_formulation
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
@@ -82,14 +82,44 @@ def impact_formulation(scene: Scene) -> Formulation:
     numbered = tuple(
         Equation(e.lhs, e.rhs, f"eq. {i}", i, e.note) for i, e in enumerate(equations, start=1)
     )
-    empty: dict[str, tuple] = {name: () for name in scene.bodies}
-    return Formulation(
-        equations=numbered,
-        unknowns=unknowns,
-        forces=empty,
-        couples=empty,
-        kinematics={},
-        moment_points={},
-        reactions={},
-        after=after,
+    return bare_formulation(scene.bodies, equations=numbered, unknowns=unknowns, after=after)
+
+
+def pivot_formulation(
+    scene: Scene, given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None
+) -> Formulation:
+    """Angular momentum about the struck point conserved through a plastic eccentric impact:
+    r_G/P × m v_G1 + I_G ω₀ = I_P ω₁ (the impulse acts at P; finite forces such as the
+    weight give no impulse over the short impact). ω₁ is written as its sense (that of
+    the angular momentum before) times an unknown magnitude."""
+    from dynsolve.model.states import sign_of
+
+    equations: list[Equation] = []
+    unknowns: dict[sympy.Symbol, Dim] = {}
+    after_omega: dict[str, sympy.Expr] = {}
+    for number, pivot in enumerate(scene.pivots, start=1):
+        body = scene.bodies[pivot.body]
+        r = (body.G[0] - pivot.point[0], body.G[1] - pivot.point[1])
+        v = scene.velocities.get(pivot.body, ZERO)
+        before = body.mass * (r[0] * v[1] - r[1] * v[0]) + body.I_G * scene.omegas.get(
+            pivot.body, 0
+        )
+        I_P = body.I_G + body.mass * (r[0] ** 2 + r[1] ** 2)
+        sense = sign_of(before, given_values or {})
+        omega = sympy.Symbol(f"omega1_{pivot.body}", positive=True)
+        equations.append(
+            Equation(
+                before,
+                I_P * sense * omega,
+                f"eq. {number}",
+                number,
+                f"angular momentum of {pivot.body} about {pivot.name} conserved through the "
+                f"impact: H_{pivot.name}1 = I_{pivot.name} ω₁ (the impulse acts at "
+                f"{pivot.name}; the weight's impulse over the short impact is negligible)",
+            )
+        )
+        unknowns[omega] = Dim(0, 0, -1)
+        after_omega[pivot.body] = sense * omega
+    return bare_formulation(
+        scene.bodies, equations=tuple(equations), unknowns=unknowns, after_omega=after_omega
     )

@@ -11,8 +11,9 @@ Nothing here solves; the result is an equation system and the diagrams as data.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import sympy
 
@@ -80,7 +81,30 @@ class Formulation:
     kinetic: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     derived: Mapping[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = field(default_factory=dict)
     after: Mapping[str, Vec] = field(default_factory=dict)  # velocities after an impact
-    speeds: Mapping[str, sympy.Symbol] = field(default_factory=dict)  # speed in state 2
+    after_omega: Mapping[str, sympy.Expr] = field(default_factory=dict)  # ω after an impact
+    speeds: Mapping[str, sympy.Expr] = field(default_factory=dict)  # |v_G| in state 2
+    spins: Mapping[str, sympy.Expr] = field(default_factory=dict)  # ω in state 2 (ccw +)
+    notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
+
+
+def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:
+    """A formulation without equations of motion (impacts, states, paths): no forces,
+    couples or reactions; ``fields`` fills the rest.
+
+    >>> bare_formulation(["A"]).equations
+    ()
+    """
+    empty: dict[str, tuple] = {name: () for name in bodies}
+    base: dict[str, Any] = {
+        "equations": (),
+        "unknowns": {},
+        "forces": empty,
+        "couples": empty,
+        "kinematics": {},
+        "moment_points": {},
+        "reactions": {},
+    }
+    return Formulation(**(base | fields))
 
 
 def cross(r: Vec, f: Vec) -> sympy.Expr:

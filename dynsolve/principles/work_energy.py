@@ -1,29 +1,57 @@
-"""Work and energy of a particle between two states: T1 + ΣU(1→2) = T2.
+"""Work and energy between two states of a scene: T1 + ΣU(1→2) = T2.
 
-State 1 is the scene as described (velocity from a ``velocity`` line, else rest);
-state 2 puts the particle's G where a ``travel`` line says. The work of the weight,
-of springs (from their stretch in both states) and of constant applied forces is
-summed; smooth contacts and guides do no work and are named as such.
+State 1 is the scene as described (velocities from ``velocity``/``omega`` lines, else
+rest); state 2 is where its ``travel`` line puts it. A lone particle's state 2 is its
+own position; a rigid body or a linkage is placed by :mod:`dynsolve.model.states`,
+which also gives every velocity in state 2 as a multiple of one rate of travel.
+T = Σ ½ m v_G² + ½ I_G ω². The work of weights (W·Δr_G), springs (−½k(s₂² − s₁²), both
+stretches from the geometry), couples (M Δθ), constant forces (F·Δr of their point)
+and kinetic friction while sliding (−μk N s) is summed; the forces that do no work
+are named with the reason.
 
 >>> import sympy
->>> from dynsolve.model.scene import Scene, Body
+>>> from dynsolve.model.scene import Scene, Body, Travel
 >>> m, g, h = sympy.symbols("m g h", positive=True)
 >>> ball = Body("ball", m, sympy.Integer(0), (0, h), (0, h), "particle", (), {}, True, "", 0, 0)
->>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {}, travels={"ball": (0, 0)})
->>> equation, speed, _ = energy_equation(scene, "ball", {"g": g})
->>> sympy.solve(equation.lhs - equation.rhs, speed)
+>>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {},
+...               travels={"ball": Travel("ball", "to", position=(0, 0))})
+>>> (energy,) = energy_equations(scene, {"g": g})
+>>> sympy.solve(energy.equation.residual, energy.rate)
 [-sqrt(2)*sqrt(g)*sqrt(h), sqrt(2)*sqrt(g)*sqrt(h)]
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.model.scene import Scene, Vec
-from dynsolve.numbers import tidy
+from dynsolve.model.scene import Scene, Support, Travel, Vec
+from dynsolve.model.states import (
+    Placement,
+    initial_rates,
+    point_after,
+    state_change,
+    wound_after,
+)
+from dynsolve.numbers import real_value, tidy
 from dynsolve.system import Equation
+
+ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+STILL = Placement(ZERO, sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
+
+
+@dataclass(frozen=True)
+class Energy:
+    """One work–energy equation and what it tells about state 2."""
+
+    equation: Equation
+    rate: sympy.Symbol | None  # the unknown rate of travel in state 2 (None: at rest)
+    speeds: Mapping[str, sympy.Expr]  # |v_G| in state 2, per body
+    spins: Mapping[str, sympy.Expr]  # ω in state 2 (ccw positive), per body or link
+    relations: tuple[str, ...]  # kinematics between the states
+    idle: tuple[str, ...]  # the forces that do no work, each with its reason
 
 
 def _dot(a: Vec, b: Vec) -> sympy.Expr:
@@ -34,49 +62,291 @@ def _length(a: Vec, b: Vec) -> sympy.Expr:
     return tidy(sympy.sqrt((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2))
 
 
-def energy_equation(
-    scene: Scene, body_name: str, symbols: Mapping[str, sympy.Expr]
-) -> tuple[Equation, sympy.Symbol, tuple[str, ...]]:
-    """T1 + ΣU = T2 for one travelling particle; its speed in state 2; forces doing no work."""
-    body = scene.bodies[body_name]
-    G1, G2 = body.G, scene.travels[body_name]
-    shift = (G2[0] - G1[0], G2[1] - G1[1])
-    m = body.mass
-    v1 = scene.velocities.get(body_name, (sympy.Integer(0), sympy.Integer(0)))
-    T1 = m * _dot(v1, v1) / 2
-    speed = sympy.Symbol(f"v2_{body_name}", real=True)
-    work: list[sympy.Expr] = []
-    notes: list[str] = []
-    if scene.gravity is not None:
-        work.append(m * symbols["g"] * _dot(scene.gravity, shift))
-        notes.append("U_W = W·Δr")
-    for spring in scene.springs:
-        if body_name not in (spring.body, spring.other):
-            continue
-        if spring.body == body_name and spring.other:
-            raise ValueError(f"spring {spring.name} joins two bodies: not supported between states")
-        end = spring.other_point
-        s1 = _length(G1, end) - spring.unstretched
-        s2 = _length(G2, end) - spring.unstretched
-        work.append(-spring.k * (s2**2 - s1**2) / 2)
-        notes.append(f"U_{spring.name} = −½k(s2² − s1²)")
-    for load in scene.loads:
-        if load.body == body_name and load.kind == "force":
-            magnitude = symbols.get(load.name)
-            if magnitude is None:
-                raise ValueError(f"the work of the unknown force {load.name} is not known")
-            work.append(magnitude * _dot(load.direction, shift))
-            notes.append(f"U_{load.name} = F·Δr")
-    idle = []
-    for support in scene.supports:
-        if support.body != body_name:
-            continue
-        if not support.smooth:
-            raise ValueError(f"friction at {support.name} does work: not supported between states")
-        idle.append(f"N_{support.name}")
-    T2 = m * speed**2 / 2
-    note = "T1 + ΣU(1→2) = T2 (" + "; ".join(notes) + ")"
-    if idle:
-        note += f"; no work: {', '.join(idle)} (normal to the motion)"
-    equation = Equation(T1 + sympy.Add(*work), T2, "energy", 0, note)
-    return equation, speed, tuple(idle)
+def _is_zero(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+    number = real_value(expr, values)
+    return tidy(expr) == 0 or (number is not None and abs(number) < 1e-12)
+
+
+def _particle_shift(scene: Scene, travel: Travel) -> Vec:
+    G = scene.bodies[travel.body].G
+    if travel.kind == "to":
+        assert travel.position is not None
+        return (tidy(travel.position[0] - G[0]), tidy(travel.position[1] - G[1]))
+    assert travel.distance is not None and travel.direction is not None
+    d = travel.direction
+    return (tidy(travel.distance * d[0]), tidy(travel.distance * d[1]))
+
+
+class _Work:
+    """Sums the work done between the states, and names what does none."""
+
+    def __init__(
+        self,
+        scene: Scene,
+        placements: Mapping[str, Placement],
+        link_turns: Mapping[str, sympy.Expr],
+        symbols: Mapping[str, sympy.Expr],
+        values: Mapping[sympy.Symbol, sympy.Expr],
+    ):
+        self.scene, self.placements, self.link_turns = scene, placements, link_turns
+        self.symbols, self.values = symbols, values
+        self.terms: list[sympy.Expr] = []
+        self.notes: list[str] = []
+        self.idle: list[str] = []
+
+    def moved(self, body: str, P: Vec) -> Vec:
+        placement = self.placements.get(body)
+        if placement is None:
+            return P
+        return point_after(self.scene.bodies[body], placement, P)
+
+    def add(self, term: sympy.Expr, note: str) -> None:
+        self.terms.append(tidy(term))
+        self.notes.append(note)
+
+    def weights(self) -> None:
+        if self.scene.gravity is None:
+            return
+        for name, placement in self.placements.items():
+            mass = self.scene.bodies[name].mass
+            if mass == 0:
+                continue
+            work = mass * self.symbols["g"] * _dot(self.scene.gravity, placement.shift)
+            if _is_zero(work, self.values):
+                self.idle.append(f"W_{name} (G moves across the weight)")
+            else:
+                self.add(work, f"U_W = W·Δr_G ({name})")
+
+    def springs(self) -> None:
+        for spring in self.scene.springs:
+            if spring.body not in self.placements and spring.other not in self.placements:
+                continue
+            if spring.wound:
+                body = self.scene.bodies[spring.body]
+                start = wound_after(body, self.placements[spring.body], spring.point)
+                shift = (start[0] - spring.point[0], start[1] - spring.point[1])
+                line = (
+                    spring.other_point[0] - spring.point[0],
+                    spring.other_point[1] - spring.point[1],
+                )
+                if not _is_zero(shift[0] * line[1] - shift[1] * line[0], self.values):
+                    raise ValueError(
+                        f"the wound spring {spring.name} must pull along the motion of its "
+                        "cord's end (keep it tangent to the rim, along its travel)"
+                    )
+                how = "its cord unwinds from the rim"
+            else:
+                start = self.moved(spring.body, spring.point)
+                how = "from the positions of its ends"
+            end = self.moved(spring.other, spring.other_point) if spring.other else None
+            end = end or spring.other_point
+            s1 = _length(spring.point, spring.other_point) - spring.unstretched
+            s2 = _length(start, end) - spring.unstretched
+            self.add(
+                -spring.k * (s2**2 - s1**2) / 2,
+                f"U_{spring.name} = −½k(s₂² − s₁²), s₁ = {sympy.sstr(tidy(s1))}, "
+                f"s₂ = {sympy.sstr(tidy(s2))} ({how})",
+            )
+
+    def loads(self) -> None:
+        for load in self.scene.loads:
+            if load.kind == "couple":
+                turn = self.link_turns.get(load.body)
+                if turn is None:
+                    turn = self.placements.get(load.body, STILL).turn
+                self.add(self.magnitude(load.name) * load.sense * turn, f"U_{load.name} = M Δθ")
+                continue
+            if load.body not in self.placements:
+                continue
+            shift = self.moved(load.body, load.point)
+            shift = (shift[0] - load.point[0], shift[1] - load.point[1])
+            work = self.magnitude(load.name) * _dot(load.direction, shift)
+            if _is_zero(work, self.values):
+                self.idle.append(f"{load.name} (its point moves across it)")
+            else:
+                self.add(work, f"U_{load.name} = F·Δr (constant force)")
+
+    def magnitude(self, name: str) -> sympy.Expr:
+        if name not in self.symbols:
+            raise ValueError(f"the work of the unknown load {name} is not known; give its size")
+        return self.symbols[name]
+
+    def supports(self) -> None:
+        for support in self.scene.supports:
+            if support.body not in self.placements:
+                continue
+            if support.kind == "pin":
+                self.idle.append(f"{support.name} (the pin does not move)")
+            elif support.kind == "rolls":
+                self.idle.append(
+                    f"N_{support.name}, F_{support.name} (rolling without slipping: the "
+                    "contact point has no velocity)"
+                )
+            else:
+                self.contact(support)
+
+    def contact(self, support: Support) -> None:
+        placement = self.placements[support.body]
+        P2 = self.moved(support.body, support.point)
+        step = (P2[0] - support.point[0], P2[1] - support.point[1])
+        if not _is_zero(_dot(step, support.normal), self.values):
+            raise ValueError(
+                f"{support.body} would leave its contact {support.name} on the way to state 2 "
+                "(a travel must run along the surface)"
+            )
+        path = _length(P2, support.point)
+        if support.smooth or _is_zero(path, self.values):
+            self.idle.append(f"N_{support.name} (normal to the motion)")
+            return
+        if support.mu_k is None:
+            raise ValueError(
+                f"{support.body} slides at {support.name} between the states: give mu_k there"
+            )
+        if not _is_zero(placement.turn, self.values) or support.two_sided:
+            raise ValueError(
+                f"friction work at {support.name} needs a body translating on a one-sided "
+                "surface (the normal force is taken from ΣF_n = 0)"
+            )
+        N = self.normal_force(support)
+        self.add(
+            -support.mu_k * N * path,
+            f"U_F = −μk N s at {support.name}, N = {sympy.sstr(N)} from ΣF_n = 0 "
+            "(constant along the straight path)",
+        )
+
+    def normal_force(self, support: Support) -> sympy.Expr:
+        """N from ΣF_n = 0 for a body translating along a straight surface."""
+        body = self.scene.bodies[support.body]
+        n = support.normal
+        others = [s for s in self.scene.supports if s.body == body.name and s is not support]
+        pulls = [s for s in self.scene.springs if body.name in (s.body, s.other)]
+        if others or pulls or any(link.body == body.name for link in self.scene.links):
+            raise ValueError(
+                f"friction work at {support.name}: the normal force changes along the path "
+                "(another support, spring or link acts on the body)"
+            )
+        total = sympy.Integer(0)
+        if self.scene.gravity is not None:
+            total += body.mass * self.symbols["g"] * _dot(self.scene.gravity, n)
+        for load in self.scene.loads:
+            if load.body == body.name and load.kind == "force":
+                total += self.magnitude(load.name) * _dot(load.direction, n)
+        N = tidy(-total)
+        number = real_value(N, self.values)
+        if number is not None and number < 0:
+            raise ValueError(f"{body.name} would leave the surface at {support.name} (N < 0)")
+        return N
+
+    def links(self) -> None:
+        if self.scene.links:
+            names = ", ".join(link.name for link in self.scene.links)
+            self.idle.append(f"the forces in {names} (pin-jointed: no net work on the system)")
+
+
+def _work(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    link_turns: Mapping[str, sympy.Expr],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> _Work:
+    work = _Work(scene, placements, link_turns, symbols, values)
+    work.weights()
+    work.springs()
+    work.loads()
+    work.supports()
+    work.links()
+    return work
+
+
+def _kinetic(scene: Scene, v_G: Mapping[str, Vec], omega: Mapping[str, sympy.Expr]) -> sympy.Expr:
+    """T = Σ ½ m v_G² + ½ I_G ω²."""
+    terms = []
+    for name, body in scene.bodies.items():
+        v = v_G.get(name, ZERO)
+        terms += [tidy(body.mass * _dot(v, v) / 2), tidy(body.I_G * omega.get(name, 0) ** 2 / 2)]
+    return sympy.Add(*terms)
+
+
+def _equation(T1: sympy.Expr, work: _Work, T2: sympy.Expr) -> Equation:
+    note = "T1 + ΣU(1→2) = T2"
+    if work.notes:
+        note += " (" + "; ".join(work.notes) + ")"
+    if work.idle:
+        note += "; no work: " + ", ".join(work.idle)
+    return Equation(sympy.Add(T1, *work.terms), T2, "energy", 0, note)
+
+
+def energy_equations(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> tuple[Energy, ...]:
+    """T1 + ΣU = T2 for the scene's travel: one per travelling particle, or one for a
+    rigid body or linkage moving as a whole."""
+    values = dict(given_values or {})
+    if all(b.particle for b in scene.bodies.values()) and not scene.links:
+        return tuple(_particle(scene, t, symbols, values) for t in scene.travels.values())
+    return (_mechanism(scene, symbols, values),)
+
+
+def _particle(
+    scene: Scene,
+    travel: Travel,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> Energy:
+    name = travel.body
+    if travel.kind == "turns":
+        raise ValueError(f"{name} is a particle: it has no angle to turn through")
+    shift = _particle_shift(scene, travel)
+    work = _work(
+        scene, {name: Placement(shift, STILL.turn, STILL.cos, STILL.sin)}, {}, symbols, values
+    )
+    mass = scene.bodies[name].mass
+    v1 = scene.velocities.get(name, ZERO)
+    rate = None if travel.stops else sympy.Symbol(f"v2_{name}", real=True)
+    T2 = mass * rate**2 / 2 if rate is not None else sympy.Integer(0)
+    equation = _equation(mass * _dot(v1, v1) / 2, work, T2)
+    speed = rate if rate is not None else sympy.Integer(0)
+    return Energy(equation, rate, {name: speed}, {}, (), tuple(work.idle))
+
+
+def _mechanism(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> Energy:
+    change = state_change(scene, values)
+    work = _work(scene, change.placements, change.link_turns, symbols, values)
+    (travel,) = scene.travels.values()
+    rates = change.rates
+    T1 = _initial_energy(scene, values)
+    rate = None
+    if not travel.stops:
+        prefix = "omega2" if travel.kind == "turns" else "v2"
+        rate = sympy.Symbol(f"{prefix}_{travel.body}", real=True)
+    q = rate if rate is not None else sympy.Integer(0)
+    v_G = {n: (v[0] * q, v[1] * q) for n, v in rates.v_G.items()}
+    spins = {n: tidy(w * q) for n, w in {**rates.omega, **rates.link_omega}.items()}
+    T2 = _kinetic(scene, v_G, spins)
+    speeds = {n: tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2)) * q for n, v in rates.v_G.items()}
+    relations = (*change.relations, f"velocities in state 2 in terms of the {change.rate_name}")
+    equation = _equation(T1, work, T2)
+    return Energy(equation, rate, speeds, spins, relations, tuple(work.idle))
+
+
+def _initial_energy(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """T1 from a given velocity or angular velocity in state 1 (0 from rest)."""
+    if not scene.velocities and not scene.omegas:
+        return sympy.Integer(0)
+    rates = initial_rates(scene, values)
+    if scene.omegas:
+        name, omega = next(iter(scene.omegas.items()))
+        q = omega / rates.omega[name]
+    else:
+        name, v = next(iter(scene.velocities.items()))
+        unit = rates.v_G[name]
+        q = _dot(v, unit) / _dot(unit, unit)
+    v_G = {n: (v[0] * q, v[1] * q) for n, v in rates.v_G.items()}
+    return _kinetic(scene, v_G, {n: w * q for n, w in rates.omega.items()})

@@ -718,9 +718,11 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def spring_stmt(self, c: list[Any]) -> SceneStmt:
-        name, body, location, other, *rest = c
+        wound = isinstance(c[-1], Token) and c[-1].type == "WOUND"
+        name, body, location, other, *rest = c[:-1] if wound else c
         other_location = rest[0] if len(rest) == 3 else None
         stiffness, unstretched = rest[-2], rest[-1]
+        extra = (Prop("wound", line=self.line, column=self.offset + 1),) if wound else ()
         return self._stmt(
             "spring",
             name,
@@ -732,6 +734,7 @@ class _Builder(Transformer_NonRecursive):
             props=(
                 Prop("k", values=(stiffness,), line=self.line, column=self.offset + 1),
                 Prop("unstretched", values=(unstretched,), line=self.line, column=self.offset + 1),
+                *extra,
             ),
         )
 
@@ -769,15 +772,58 @@ class _Builder(Transformer_NonRecursive):
             self._sense(sense[0])
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
+    def pivot_stmt(self, c: list[Any]) -> SceneStmt:
+        body, point, restitution = c
+        return self._stmt("pivot", body, body=str(body), name=str(point), value=restitution)
+
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
         body, other, restitution, line = c
         return self._stmt(
             "impact", body, body=str(body), other=str(other), value=restitution, direction=line
         )
 
+    def path_stmt(self, c: list[Any]) -> SceneStmt:
+        name, lhs, relation, rhs = c
+        if str(relation) != "=":
+            raise SpecError(
+                "a path is an equation in x and y", self._at(relation), "write it with '='"
+            )
+        return self._stmt("path", name, name=str(name), vectors=((lhs, rhs),))
+
+    def moves_stmt(self, c: list[Any]) -> SceneStmt:
+        name, path, speed = c
+        return self._stmt("moves", name, name=str(name), other=str(path), value=speed)
+
+    def assume_stmt(self, c: list[Any]) -> SceneStmt:
+        lhs, relation, rhs = c
+        return SceneStmt(
+            "assume",
+            vectors=((lhs, rhs),),
+            word=str(relation),
+            line=self.line,
+            column=self.offset + 1,
+        )
+
+    def _stops(self, c: list[Any]) -> tuple[list[Any], tuple[Prop, ...]]:
+        """Split a trailing ', stops' (at rest in state 2) off a travel line."""
+        if isinstance(c[-1], Token) and c[-1].type == "STOPS":
+            return c[:-1], (Prop("stops", line=self.line, column=self._col(c[-1])),)
+        return c, ()
+
     def travel_stmt(self, c: list[Any]) -> SceneStmt:
-        body, target = c
-        return self._stmt("travel", body, body=str(body), vectors=(target,))
+        (body, target), stops = self._stops(c)
+        return self._stmt("travel", body, body=str(body), vectors=(target,), props=stops)
+
+    def travel_by_stmt(self, c: list[Any]) -> SceneStmt:
+        (body, distance, direction), stops = self._stops(c)
+        return self._stmt(
+            "travel", body, body=str(body), value=distance, direction=direction, props=stops
+        )
+
+    def travel_turns_stmt(self, c: list[Any]) -> SceneStmt:
+        (body, angle, sense), stops = self._stops(c)
+        self._sense(sense)
+        return self._stmt("travel", body, body=str(body), value=angle, word=str(sense), props=stops)
 
     def prop_guide(self, c: list[Any]) -> Prop:
         return self._prop("guide", c)

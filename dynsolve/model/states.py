@@ -1,0 +1,418 @@
+"""Where a one-degree-of-freedom scene is in state 2, and how fast each part moves there.
+
+Each body's state-2 placement is its displacement Δr_G and rotation Δθ from the scene
+as described (state 1); each link's is its rotation. The supports, links and motions
+of the scene give the position constraints (a pin's point stays put, a rolling disk's
+centre moves r Δθ, a contact point stays on its surface, a link keeps its length), and
+the ``travel`` lines fix the state. Writing cos Δθ and sin Δθ as unknowns of their own
+makes every constraint linear; they are solved together and each angle recovered from
+its sine and cosine. A rotation that only the closure of a loop would fix (a general
+four-bar linkage: circle conditions, several assemblies) is refused with a hint.
+The velocities in state 2 are the constraints' time derivatives at the state-2
+geometry: a homogeneous linear system whose one-dimensional null space gives every
+velocity as a multiple of the rate of travel.
+
+>>> import sympy
+>>> from dynsolve.model.scene import Body, Scene, Support, Travel
+>>> r, s = sympy.symbols("r s", positive=True)
+>>> disk = Body("disk", 1, 1, (0, r), (0, r), "disk", (r,), {}, False, "", 0, 0)
+>>> rolls = Support("rolls", "C", "disk", (0, 0), (0, 1))
+>>> scene = Scene({"disk": disk}, {}, (rolls,), (), (), None, {},
+...               travels={"disk": Travel("disk", "by", distance=s, direction=(1, 0))})
+>>> change = state_change(scene)
+>>> change.placements["disk"].turn
+-s/r
+>>> change.rates.omega["disk"]
+-1/r
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.model.scene import Body, Scene, Vec
+from dynsolve.numbers import real_value, tidy
+
+ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+
+
+@dataclass(frozen=True)
+class Placement:
+    """A body's state 2 relative to state 1: its G moved by ``shift``, turned by ``turn``."""
+
+    shift: Vec
+    turn: sympy.Expr  # ccw positive
+    cos: sympy.Expr
+    sin: sympy.Expr
+
+
+@dataclass(frozen=True)
+class Rates:
+    """Velocities in state 2 per unit rate of travel (the rate is positive along the travel)."""
+
+    v_G: Mapping[str, Vec]
+    omega: Mapping[str, sympy.Expr]
+    link_omega: Mapping[str, sympy.Expr]
+
+
+@dataclass(frozen=True)
+class StateChange:
+    """The scene in state 2: placements, link rotations, velocity ratios, and how."""
+
+    placements: Mapping[str, Placement]
+    link_turns: Mapping[str, sympy.Expr]
+    rates: Rates
+    rate_name: str  # what the rate of travel measures, e.g. "ω of disk" or "speed of G"
+    relations: tuple[str, ...]  # the kinematic relations used, for the derivation
+
+
+def turned(cos: sympy.Expr, sin: sympy.Expr, vector: Vec) -> Vec:
+    """``vector`` rotated by the angle with this cosine and sine.
+
+    >>> turned(0, 1, (1, 0))
+    (0, 1)
+    """
+    return (cos * vector[0] - sin * vector[1], sin * vector[0] + cos * vector[1])
+
+
+def point_after(body: Body, placement: Placement, P: Vec) -> Vec:
+    """Where the material point of ``body`` that was at ``P`` in state 1 is in state 2.
+
+    >>> import sympy
+    >>> bar = Body("bar", 1, 1, (1, 0), (0, 0), "rod", (2,), {}, False, "", 0, 0)
+    >>> half_turn = Placement((0, 0), sympy.pi, -1, 0)
+    >>> point_after(bar, half_turn, (2, 0))
+    (0, 0)
+    """
+    rho = turned(placement.cos, placement.sin, (P[0] - body.G[0], P[1] - body.G[1]))
+    return tuple(  # type: ignore[return-value]
+        tidy(body.G[i] + placement.shift[i] + rho[i]) for i in range(2)
+    )
+
+
+def wound_after(body: Body, placement: Placement, P: Vec) -> Vec:
+    """Where the end of a cord wound on ``body`` and leaving it at ``P`` is in state 2.
+
+    The cord leaves at the same place relative to G throughout, so its end moves with
+    the velocity of the body point there, v_G + ω × (P − G), with P − G constant:
+    Δr = Δr_G + Δθ k × (P − G). For a disk rolling a distance s, the top moves 2 s.
+
+    >>> import sympy
+    >>> r, s = sympy.symbols("r s", positive=True)
+    >>> disk = Body("disk", 1, 1, (0, r), (0, r), "disk", (r,), {}, False, "", 0, 0)
+    >>> wound_after(disk, Placement((s, 0), -s / r, 1, 0), (0, 2 * r))
+    (2*s, 2*r)
+    """
+    rho = (P[0] - body.G[0], P[1] - body.G[1])
+    turn = placement.turn
+    return (
+        tidy(P[0] + placement.shift[0] - turn * rho[1]),
+        tidy(P[1] + placement.shift[1] + turn * rho[0]),
+    )
+
+
+def _cross_k(omega: sympy.Expr, r: Vec) -> Vec:
+    """ω k × r."""
+    return (-omega * r[1], omega * r[0])
+
+
+class _Unknowns:
+    """The position and velocity unknowns of every body and link."""
+
+    def __init__(self, scene: Scene):
+        self.bodies = list(scene.bodies)
+        self.links = [link.name for link in scene.links]
+        sym = sympy.Symbol
+        self.u = {b: sym(f"u_{b}", real=True) for b in self.bodies}
+        self.w = {b: sym(f"w_{b}", real=True) for b in self.bodies}
+        self.phi = {n: sym(f"phi_{n}", real=True) for n in self.bodies + self.links}
+        self.c = {n: sym(f"c_{n}", real=True) for n in self.bodies + self.links}
+        self.s = {n: sym(f"s_{n}", real=True) for n in self.bodies + self.links}
+        self.vx = {b: sym(f"vx_{b}", real=True) for b in self.bodies}
+        self.vy = {b: sym(f"vy_{b}", real=True) for b in self.bodies}
+        self.om = {n: sym(f"om_{n}", real=True) for n in self.bodies + self.links}
+
+    def positions(self) -> list[sympy.Symbol]:
+        names = self.bodies + self.links
+        return [
+            *self.u.values(),
+            *self.w.values(),
+            *(self.phi[n] for n in names),
+            *(self.c[n] for n in names),
+            *(self.s[n] for n in names),
+        ]
+
+    def velocities(self) -> list[sympy.Symbol]:
+        return [*self.vx.values(), *self.vy.values(), *self.om.values()]
+
+
+def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr], list[str]]:
+    """The scene's position constraints between states 1 and 2, each ``expr = 0``."""
+    equations: list[sympy.Expr] = []
+    relations: list[str] = []
+
+    def after(body: str, P: Vec) -> Vec:
+        G = scene.bodies[body].G
+        rho = turned(x.c[body], x.s[body], (P[0] - G[0], P[1] - G[1]))
+        return (G[0] + x.u[body] + rho[0], G[1] + x.w[body] + rho[1])
+
+    def pair(a: Vec, b: Vec) -> None:
+        equations.extend((a[0] - b[0], a[1] - b[1]))
+
+    for name, body in scene.bodies.items():
+        if body.particle:
+            equations.append(x.phi[name])
+    for support in scene.supports:
+        b, n = support.body, support.normal
+        if support.kind == "pin":
+            pair(after(b, support.point), support.point)
+            relations.append(f"{b} turns about the pin {support.name}")
+        elif support.kind == "rolls":
+            body = scene.bodies[b]
+            r = sympy.sqrt(
+                (support.point[0] - body.G[0]) ** 2 + (support.point[1] - body.G[1]) ** 2
+            )
+            k_n = _cross_k(x.phi[b] * tidy(r), n)
+            pair((x.u[b], x.w[b]), k_n)
+            relations.append(f"{b} rolls without slipping at {support.name}: Δs_G = r Δθ")
+        elif support.kind == "base":
+            equations += [x.phi[b], x.u[b] * n[0] + x.w[b] * n[1]]
+            relations.append(f"{b} slides on its base {support.name} without turning")
+        else:
+            moved = after(b, support.point)
+            equations.append(
+                (moved[0] - support.point[0]) * n[0] + (moved[1] - support.point[1]) * n[1]
+            )
+            relations.append(f"the point {support.name} of {b} stays on its surface")
+    for body, motion in scene.motions.items():
+        if motion == "translation":
+            equations.append(x.phi[body])
+            relations.append(f"{body} translates: Δθ = 0")
+    for link in scene.links:
+        if link.other:
+            start, end = after(link.body, link.point), after(link.other, link.other_point)
+        else:
+            start, end = after(link.body, link.point), link.other_point
+        arm = turned(
+            x.c[link.name],
+            x.s[link.name],
+            (link.point[0] - link.other_point[0], link.point[1] - link.other_point[1]),
+        )
+        pair((start[0] - end[0], start[1] - end[1]), arm)
+        relations.append(f"the link {link.name} keeps its length")
+    if scene.cords:
+        raise ValueError("cords between two states are not supported yet; use a link")
+    for travel in scene.travels.values():
+        b = travel.body
+        if travel.kind == "to":
+            assert travel.position is not None
+            G = scene.bodies[b].G
+            pair((G[0] + x.u[b], G[1] + x.w[b]), travel.position)
+        elif travel.kind == "by":
+            assert travel.distance is not None and travel.direction is not None
+            d = travel.direction
+            equations.append(x.u[b] * d[0] + x.w[b] * d[1] - travel.distance)
+        else:
+            equations.append(x.phi[b] - travel.angle)
+    return equations, relations
+
+
+def _solve_positions(
+    equations: list[sympy.Expr],
+    x: _Unknowns,
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
+    and cosine and back; a rotation left free by them is refused (see ``state_change``)."""
+    names = x.bodies + x.links
+    known: dict[sympy.Symbol, sympy.Expr] = {}
+    unknowns = x.positions()
+    for _ in range(4 * len(names) + 4):
+        current = [sympy.expand(e.xreplace(known)) for e in equations]
+        current = [e for e in current if e != 0]
+        free = [v for v in unknowns if v not in known]
+        if not current or not free:
+            break
+        solution = sympy.linsolve(current, free)
+        if solution == sympy.EmptySet:
+            raise ValueError("the travel asks for a state the scene's supports cannot reach")
+        (values,) = tuple(solution)
+        progress = False
+        for var, value in zip(free, values, strict=True):
+            if not (value.free_symbols & set(free)):
+                known[var] = tidy(value)
+                progress = True
+        for n in names:
+            phi, c, s = x.phi[n], x.c[n], x.s[n]
+            if phi in known and c not in known:
+                known[c], known[s] = tidy(sympy.cos(known[phi])), tidy(sympy.sin(known[phi]))
+                progress = True
+            elif c in known and s in known and phi not in known:
+                known[phi] = tidy(sympy.atan2(known[s], known[c]))
+                progress = True
+        if not progress:
+            break
+    turning = [n for n in names if x.phi[n] not in known]
+    if turning:
+        raise ValueError(
+            f"the turn of {', '.join(turning)} between the states follows from the closure "
+            "of a loop, which needs the circle conditions solved: say how it moves instead "
+            f"('motion {turning[0]}: translation', or a travel that turns it)"
+        )
+    return known
+
+
+def _velocity_constraints(
+    scene: Scene, x: _Unknowns, placements: Mapping[str, Placement]
+) -> list[sympy.Expr]:
+    """The time derivatives of the position constraints at the state-2 geometry."""
+    equations: list[sympy.Expr] = []
+
+    def at(body: str, P: Vec) -> Vec:
+        return point_after(scene.bodies[body], placements[body], P)
+
+    def velocity(body: str, P: Vec) -> Vec:
+        G2 = at(body, scene.bodies[body].G)
+        spin = _cross_k(x.om[body], (P[0] - G2[0], P[1] - G2[1]))
+        return (x.vx[body] + spin[0], x.vy[body] + spin[1])
+
+    for name, body in scene.bodies.items():
+        if body.particle:
+            equations.append(x.om[name])
+    for support in scene.supports:
+        b, n = support.body, support.normal
+        if support.kind == "pin":
+            equations += list(velocity(b, support.point))
+        elif support.kind == "rolls":
+            body = scene.bodies[b]
+            r = sympy.sqrt(
+                (support.point[0] - body.G[0]) ** 2 + (support.point[1] - body.G[1]) ** 2
+            )
+            k_n = _cross_k(x.om[b] * tidy(r), n)
+            equations += [x.vx[b] - k_n[0], x.vy[b] - k_n[1]]
+        elif support.kind == "base":
+            equations += [x.om[b], x.vx[b] * n[0] + x.vy[b] * n[1]]
+        else:
+            v = velocity(b, at(b, support.point))
+            equations.append(v[0] * n[0] + v[1] * n[1])
+    for body, motion in scene.motions.items():
+        if motion == "translation":
+            equations.append(x.om[body])
+    for link in scene.links:
+        start = at(link.body, link.point)
+        v_start = velocity(link.body, start)
+        if link.other:
+            end = at(link.other, link.other_point)
+            v_end = velocity(link.other, end)
+        else:
+            end, v_end = link.other_point, ZERO
+        spin = _cross_k(x.om[link.name], (start[0] - end[0], start[1] - end[1]))
+        equations += [v_start[0] - v_end[0] - spin[0], v_start[1] - v_end[1] - spin[1]]
+    return [sympy.expand(e) for e in equations if e != 0]
+
+
+def sign_of(expr: sympy.Expr, given_values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
+    """The sign of ``expr`` with the givens' values, else the same for sampled positive
+    values of its symbols; ValueError when it cannot be told.
+
+    >>> import sympy
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> sign_of(-a * b, {}), sign_of(a - b, {a: 1, b: 2})
+    (-1, -1)
+    """
+    from dynsolve.solve.roots import sampled
+
+    number = real_value(expr, given_values)
+    if number is None:
+        samples = sampled(expr)
+        number = samples[0] if samples and all(v * samples[0] > 0 for v in samples) else None
+    if number is None or number == 0:
+        raise ValueError("cannot tell which way the scene moves toward state 2")
+    return 1 if number > 0 else -1
+
+
+def _rates(
+    scene: Scene,
+    x: _Unknowns,
+    placements: Mapping[str, Placement],
+    given_values: Mapping[sympy.Symbol, sympy.Expr],
+    oriented: bool = True,
+) -> tuple[Rates, str]:
+    """Velocities per unit rate of travel at ``placements``; ``oriented``: signed to move
+    toward state 2 and scaled to the travelling body's |ω| or speed."""
+    equations = _velocity_constraints(scene, x, placements)
+    unknowns = x.velocities()
+    if equations:
+        A, _ = sympy.linear_eq_to_matrix(equations, unknowns)
+        basis = A.nullspace(simplify=True)
+    else:
+        basis = [sympy.eye(len(unknowns))[:, i] for i in range(len(unknowns))]
+    if len(basis) != 1:
+        what = "cannot move" if not basis else f"has {len(basis)} degrees of freedom"
+        raise ValueError(
+            f"the scene {what}; work–energy between two states needs one degree of "
+            "freedom (add or remove supports, links or 'motion B: translation')"
+        )
+    vector = dict(zip(unknowns, basis[0], strict=True))
+    travel = next(iter(scene.travels.values()))
+    b = travel.body
+    if not oriented:
+        scale, rate_name = sympy.Integer(1), "rate of travel"
+    elif travel.kind == "turns":
+        omega = vector[x.om[b]]
+        scale = sign_of(omega * travel.angle, given_values) / omega
+        rate_name = f"|ω| of {b}"
+    else:
+        placement = placements[b]
+        v = (vector[x.vx[b]], vector[x.vy[b]])
+        speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2))
+        along = v[0] * placement.shift[0] + v[1] * placement.shift[1]
+        scale = sign_of(along, given_values) / speed
+        rate_name = f"speed of G of {b}"
+    values = {k: tidy(v * scale) for k, v in vector.items()}
+    rates = Rates(
+        v_G={n: (values[x.vx[n]], values[x.vy[n]]) for n in x.bodies},
+        omega={n: values[x.om[n]] for n in x.bodies},
+        link_omega={n: values[x.om[n]] for n in x.links},
+    )
+    return rates, rate_name
+
+
+def state_change(
+    scene: Scene, given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None
+) -> StateChange:
+    """The scene in the state its ``travel`` lines describe; ValueError if it is not one."""
+    if len(scene.travels) != 1:
+        raise ValueError("describe state 2 with one travel line (the scene moves as one)")
+    values = dict(given_values or {})
+    initial_rates(scene, values)  # refuses a scene that has not one degree of freedom
+    x = _Unknowns(scene)
+    equations, relations = _position_constraints(scene, x)
+    known = _solve_positions(equations, x)
+    missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
+    missing += [n for n in x.links if x.phi[n] not in known]
+    if missing:
+        raise ValueError(
+            f"the position of {', '.join(missing)} in state 2 is not fixed by the scene "
+            "(add supports or links)"
+        )
+    placements = {
+        n: Placement((known[x.u[n]], known[x.w[n]]), known[x.phi[n]], known[x.c[n]], known[x.s[n]])
+        for n in x.bodies
+    }
+    link_turns = {n: known[x.phi[n]] for n in x.links}
+    rates, rate_name = _rates(scene, x, placements, values)
+    return StateChange(placements, link_turns, rates, rate_name, tuple(relations))
+
+
+def initial_rates(
+    scene: Scene, given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None
+) -> Rates:
+    """The velocities in state 1 per unit of some rate (their ratios are what counts)."""
+    x = _Unknowns(scene)
+    still = Placement(ZERO, sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
+    placements = {name: still for name in scene.bodies}
+    rates, _ = _rates(scene, x, placements, dict(given_values or {}), oriented=False)
+    return rates

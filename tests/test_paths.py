@@ -1,0 +1,100 @@
+"""A point moving along a path at constant speed (scene mode: `path`, `moves`, `assume`)."""
+
+import math
+from pathlib import Path
+
+import pytest
+
+from dynsolve.errors import DimensionError, SpecError
+from dynsolve.pipeline import solve_file
+
+PATH = """\
+given:
+  v = 12 m/s
+  c = 8 m
+  R = 30 m
+scene:
+  path P: {path}
+  moves car: along P, speed v
+find: a_max = a_max(car), a_min = a_min(car)
+"""
+
+
+def solve(tmp_path: Path, path: str, **replace: str):
+    text = PATH.format(path=path)
+    for old, new in replace.items():
+        text = text.replace(old, new)
+    file = tmp_path / "path.dyn"
+    file.write_text(text)
+    return solve_file(file)
+
+
+def test_a_parabola_bends_most_at_its_vertex(tmp_path):
+    # y = x²/(2c): y' = x/c, y'' = 1/c, κ = (1/c)/(1 + x²/c²)^(3/2): largest 1/c at x = 0,
+    # tending to 0 far out. a_max = v²/c = 144/8 = 18 m/s², a_min = 0 (at infinity)
+    solution = solve(tmp_path, "y = x^2/(2*c)")
+    a_max, a_min = solution.answers
+    assert a_max.value == pytest.approx(18.0, rel=1e-12)
+    assert a_min.value == pytest.approx(0.0, abs=1e-12)
+    note = next(c.detail for c in solution.checks if c.name == "car along P")
+    assert "at (0, 0)" in note
+
+
+def test_a_circle_has_the_same_acceleration_everywhere(tmp_path):
+    # κ = 1/R: a = v²/R = 144/30 = 4.8 m/s² at every point
+    solution = solve(tmp_path, "x^2 + y^2 = R^2")
+    assert [a.value for a in solution.answers] == pytest.approx([4.8, 4.8], rel=1e-12)
+
+
+def test_the_ellipse_in_either_orientation(tmp_path):
+    # x²/R² + y²/c² = 1 with R = 30 > c = 8: κ = R/c² at x = ±R, c/R² at y = ±c
+    solution = solve(tmp_path, "x^2/R^2 + y^2/c^2 = 1")
+    a_max, a_min = solution.answers
+    assert a_max.value == pytest.approx(144 * 30 / 64, rel=1e-12)
+    assert a_min.value == pytest.approx(144 * 8 / 900, rel=1e-12)
+    # swapped axes, same curve turned 90°: the same extremes
+    turned = solve(tmp_path, "x^2/c^2 + y^2/R^2 = 1")
+    assert [a.value for a in turned.answers] == pytest.approx([a_max.value, a_min.value])
+
+
+def test_symbolic_extremes_need_an_assumption_when_the_order_depends_on_the_givens(tmp_path):
+    text = PATH.format(path="x^2/R^2 + y^2/c^2 = 1")
+    text = (
+        text.replace("v = 12 m/s", "v: m/s").replace("c = 8 m", "c: m").replace("R = 30 m", "R: m")
+    )
+    file = tmp_path / "path.dyn"
+    file.write_text(text)
+    with pytest.raises(SpecError) as caught:
+        solve_file(file)
+    assert "depends on the givens" in caught.value.message
+    assert "assume" in caught.value.hint
+    assert caught.value.position.line == 8  # the find line that asks for a_max
+    file.write_text(text.replace("  moves car", "  assume R > c\n  moves car"))
+    solution = solve_file(file)
+    # κ = R/c² at x = ±R is the larger when R > c: a_max = v² R/c²
+    assert solution.answers[0].formula.replace(" ", "") in ("R*v**2/c**2", "R*v^2/c^2")
+
+
+@pytest.mark.parametrize(
+    ("path", "replace", "error", "message"),
+    [
+        # a length added to an area
+        ("x^2 + y = R^2", {}, DimensionError, "cannot be added"),
+        ("x^2 + y^2 > R^2", {}, SpecError, "a path is an equation"),
+        ("x^2 + y^2 = R^2", {"along P": "along Q"}, SpecError, "there is no path 'Q'"),
+        ("x^2 + y^2 = r^2", {}, SpecError, "'r' in the scene is not a given"),
+        ("x^2 + y^2 = R^2", {"speed v": "speed c"}, DimensionError, "must be a velocity"),
+    ],
+)
+def test_bad_paths_are_reported_at_their_line(tmp_path, path, replace, error, message):
+    with pytest.raises(error) as caught:
+        solve(tmp_path, path, **replace)
+    assert message in caught.value.message
+    assert caught.value.position.line in (6, 7)
+
+
+def test_the_curvature_formula_holds_at_the_vertex_of_a_steep_parabola(tmp_path):
+    # y = x²/(2c) with c = 0.5 m: ρ = c = 0.5 m at the vertex, a = v²/ρ = 288 m/s²
+    solution = solve(tmp_path, "y = x^2/(2*c)", **{"c = 8 m": "c = 0.5 m"})
+    assert solution.answers[0].value == pytest.approx(144 / 0.5, rel=1e-12)
+    assert math.isfinite(solution.answers[1].value)
