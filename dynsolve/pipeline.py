@@ -79,7 +79,7 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
-    from dynsolve.scene_mode import assess, build_scene_problem, free_bodies
+    from dynsolve.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -100,7 +100,13 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         outcome = solve_system(problem.system, options)
         assumptions = first + assess(problem, outcome.values)[0]
     return solve_problem(
-        problem, options, outcome, trial, assumptions, free_bodies(problem, outcome.values)
+        problem,
+        options,
+        outcome,
+        trial,
+        assumptions,
+        free_bodies(problem, outcome.values),
+        cross_checks(problem, outcome.values),
     )
 
 
@@ -111,8 +117,10 @@ def solve_problem(
     trial: Mapping[sympy.Symbol, sympy.Expr] | None = None,
     assumptions: tuple[Assumption, ...] = (),
     free_body: tuple[FreeBody, ...] = (),
+    second_methods: tuple[Check, ...] = (),
 ) -> Solution:
-    """Solve a built problem (unless ``outcome`` is given) and assemble what renderers show."""
+    """Solve a built problem (unless ``outcome`` is given) and assemble what renderers show;
+    ``second_methods`` are checks of the answers by another principle."""
     outcome = outcome or solve_system(problem.system, options)
     view = _View(problem, outcome, trial or {}, options)
     answers = tuple(view.answer(t) for t in problem.targets)
@@ -121,6 +129,7 @@ def solve_problem(
     checks = (
         view.checks()
         + notes
+        + second_methods
         + _assumption_checks(assumptions)
         + tuple(
             Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key

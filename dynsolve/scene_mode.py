@@ -23,7 +23,7 @@ from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
-from dynsolve.results import Assumption, EquationRow, ForceRow, FreeBody, Step
+from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -194,6 +194,7 @@ def _with_energy(
     unknowns = dict(formulation.unknowns)
     speeds, spins = dict(formulation.speeds), dict(formulation.spins)
     notes = list(formulation.notes)
+    second = list(formulation.second)
     for energy in energy_equations(_after_pivot(scene, formulation), symbols, given_values):
         number = len(equations) + 1
         equation = energy.equation
@@ -207,6 +208,8 @@ def _with_energy(
         spins.update(energy.spins)
         if energy.relations:
             notes.append(("kinematics between the states", "; ".join(energy.relations)))
+        if energy.rate is not None and energy.second is not None:
+            second.append((energy.rate, *energy.second))
     return replace(
         formulation,
         equations=tuple(equations),
@@ -214,7 +217,32 @@ def _with_energy(
         speeds=speeds,
         spins=spins,
         notes=tuple(notes),
+        second=tuple(second),
     )
+
+
+SECOND_METHOD_AGREEMENT = 1e-6  # relative
+
+
+def cross_checks(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Each answer found a second way, compared with the one solved for."""
+    checks = []
+    substitution = {**problem.system.knowns, **values}
+    for unknown, other, how, what in problem.formulation.second:
+        found = real_value(unknown, substitution)
+        if found is None:
+            continue
+        gap = abs(found - other) / max(abs(found), 1e-300)
+        checks.append(
+            Check(
+                f"second method: {what}",
+                gap <= SECOND_METHOD_AGREEMENT,
+                f"{how}: {other:.7g} (work–energy: {found:.7g}; relative difference {gap:.1e})",
+            )
+        )
+    return tuple(checks)
 
 
 def _after_pivot(scene: Scene, formulation: Formulation) -> Scene:

@@ -113,6 +113,8 @@ def test_a_disk_rolling_down_an_incline(tmp_path, beta):
     assert v.value == pytest.approx(math.sqrt(4 * G * h / 3), rel=1e-12)
     assert omega.value == pytest.approx(v.value / 0.2, rel=1e-12)
     assert omega.direction == "ccw"  # rolling to the left
+    # second method: α = g sin β/(3R/2) constant down the plane, ω₂² = 2 α θ
+    assert any(c.name.startswith("second method") and c.passed for c in solution.checks)
 
 
 SPRING_DISK = Path(__file__).resolve().parent.parent / "problems" / "seed" / "rwe_seed_disk40lb.dyn"
@@ -213,3 +215,15 @@ def test_friction_work_needs_mu_k(tmp_path):
     text = BLOCK.format(P="0 N").replace(", mu_k mu_k", ", mu_s 0.5")
     with pytest.raises(SpecError, match="give mu_k there"):
         solve_file(write(tmp_path, text))
+
+
+def test_the_rolling_wheel_is_checked_with_its_constant_angular_acceleration():
+    # ΣM about the contact point: P cos φ r = (I_G + m r²) α with I_G = m k_O² = 4.5 kg·m²,
+    # m r² = 8 kg·m²: α = 43.30(0.4)/12.5 = 1.3856 rad/s² (cw), constant;
+    # ω₂² = 2 α θ = 2(1.3856)(20π) → ω₂ = 13.20 rad/s
+    seed = Path(__file__).resolve().parent.parent / "problems" / "seed" / "rwe_seed_wheel10rev.dyn"
+    solution = solve_file(seed)
+    check = next(c for c in solution.checks if c.name == "second method: |ω| of wheel")
+    assert check.passed
+    alpha = 50 * math.cos(math.radians(30)) * 0.4 / (50 * 0.3**2 + 50 * 0.4**2)
+    assert f"{math.sqrt(2 * alpha * 20 * math.pi):.7g}" in check.detail

@@ -142,3 +142,22 @@ def test_a_spring_without_an_unstretched_length_is_an_error(tmp_path):
     with pytest.raises(SpecError) as caught:
         solve_file(write(tmp_path, text))
     assert caught.value.position is not None and caught.value.position.line == 14
+
+
+@pytest.mark.parametrize("v_1", ["0 m/s", "4 m/s"])
+def test_the_drop_is_checked_by_integrating_f_equals_ma(tmp_path, v_1):
+    # second method: m v dv/ds = m g along the fall, v² = v_1² + 2 g h, the same speed
+    solution = solve_file(write(tmp_path, DROP.format(v_1=v_1)))
+    check = next(c for c in solution.checks if c.name == "second method: speed of ball")
+    assert check.passed
+    speed = float(v_1.split()[0])
+    assert f"{math.sqrt(speed**2 + 2 * 9.81 * 5):.7g}" in check.detail
+
+
+def test_the_collar_is_checked_by_integrating_the_spring_force():
+    # F_t(s) = −k(√(s² + L²) − L) s/√(s² + L²) along the rod, integrated numerically from
+    # s = 2 ft to 0, gives the work–energy speed 11.09022 ft/s (seed we_seed_collar)
+    seed = Path(__file__).resolve().parent.parent / "problems" / "seed" / "we_seed_collar.dyn"
+    solution = solve_file(seed)
+    check = next(c for c in solution.checks if c.name.startswith("second method"))
+    assert check.passed and "11.09022" in check.detail

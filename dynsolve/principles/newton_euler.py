@@ -85,6 +85,8 @@ class Formulation:
     speeds: Mapping[str, sympy.Expr] = field(default_factory=dict)  # |v_G| in state 2
     spins: Mapping[str, sympy.Expr] = field(default_factory=dict)  # ω in state 2 (ccw +)
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
+    # an unknown's value found by a second method: (unknown, value, how, what it measures)
+    second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

@@ -39,6 +39,11 @@ from dynsolve.numbers import real_value, tidy
 from dynsolve.system import Equation
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+FORCE_PATH = "F = m a along the path, m v dv = F_t ds integrated numerically"
+CONSTANT_ALPHA = (
+    "ΣF = m a_G, ΣM = I α at state 1: α is constant (constant loads, flat support), "
+    "ω₂² = ω₁² + 2 α Δθ"
+)
 STILL = Placement(ZERO, sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
 
 
@@ -52,6 +57,8 @@ class Energy:
     spins: Mapping[str, sympy.Expr]  # ω in state 2 (ccw positive), per body or link
     relations: tuple[str, ...]  # kinematics between the states
     idle: tuple[str, ...]  # the forces that do no work, each with its reason
+    # the rate by a second method: (value, how, what the rate measures)
+    second: tuple[float, str, str] | None = None
 
 
 def _dot(a: Vec, b: Vec) -> sympy.Expr:
@@ -309,7 +316,14 @@ def _particle(
     T2 = mass * rate**2 / 2 if rate is not None else sympy.Integer(0)
     equation = _equation(mass * _dot(v1, v1) / 2, work, T2)
     speed = rate if rate is not None else sympy.Integer(0)
-    return Energy(equation, rate, {name: speed}, {}, (), tuple(work.idle))
+    second = None
+    if rate is not None:
+        from dynsolve.principles.force_path import speed_by_integration
+
+        found = speed_by_integration(scene, name, symbols, values)
+        if found is not None:
+            second = (found, FORCE_PATH, f"speed of {name}")
+    return Energy(equation, rate, {name: speed}, {}, (), tuple(work.idle), second)
 
 
 def _mechanism(
@@ -333,7 +347,20 @@ def _mechanism(
     speeds = {n: tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2)) * q for n, v in rates.v_G.items()}
     relations = (*change.relations, f"velocities in state 2 in terms of the {change.rate_name}")
     equation = _equation(T1, work, T2)
-    return Energy(equation, rate, speeds, spins, relations, tuple(work.idle))
+    second = None
+    if rate is not None and not scene.velocities:
+        from dynsolve.principles.force_path import omega_by_constant_alpha
+
+        body = travel.body
+        omega = (
+            omega_by_constant_alpha(scene, body, change.placements[body].turn, symbols, values)
+            if body in scene.bodies
+            else None
+        )
+        ratio = real_value(rates.omega.get(body, 0), values)
+        if omega is not None and ratio:  # the rate of travel per unit |ω|
+            second = (omega / abs(ratio), CONSTANT_ALPHA, change.rate_name)
+    return Energy(equation, rate, speeds, spins, relations, tuple(work.idle), second)
 
 
 def _initial_energy(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:

@@ -1,0 +1,141 @@
+"""Second methods for a speed between two states: F = m a integrated along the path.
+
+Along the straight path from G₁ to G₂ the tangential part of F = m a reads
+m v dv/ds = F_t(s), so v₂² = v₁² + (2/m) ∫ F_t ds. The forces are taken as they act at
+each point of the path (the weight, springs from their current length, constant forces,
+kinetic friction with N from the balance across a straight surface) and the integral is
+done numerically (``mpmath.quad``), independently of the closed-form work terms of
+:mod:`dynsolve.principles.work_energy`. A single rigid body rolling or sliding on a flat
+surface under constant loads has a constant α from the Newton–Euler equations at state 1,
+so ω₂² = ω₁² + 2 α Δθ. Both are used as cross-checks of the work–energy result.
+
+>>> import sympy
+>>> from dynsolve.model.scene import Scene, Body, Travel
+>>> ball = Body("ball", sympy.Integer(2), sympy.Integer(0), (0, 5), (0, 5), "particle", (),
+...             {}, True, "", 0, 0)
+>>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {},
+...               travels={"ball": Travel("ball", "to", position=(0, 0))})
+>>> round(speed_by_integration(scene, "ball", {"g": sympy.Float(9.81)}, {}), 6)  # √(2 g h)
+9.904544
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import mpmath
+import sympy
+
+from dynsolve.model.scene import Scene, Vec
+from dynsolve.numbers import real_value
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def speed_by_integration(
+    scene: Scene,
+    body_name: str,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> float | None:
+    """v₂ of a travelling particle from m v dv = F_t ds along its straight path; None when
+    a value is symbolic, a force is unknown or the particle does not get there."""
+    body = scene.bodies[body_name]
+    travel = scene.travels[body_name]
+    G1 = body.G
+    if travel.kind == "to":
+        assert travel.position is not None
+        G2 = travel.position
+    elif travel.kind == "by":
+        assert travel.distance is not None and travel.direction is not None
+        G2 = tuple(G1[i] + travel.distance * travel.direction[i] for i in range(2))
+    else:
+        return None
+    lam = sympy.Symbol("lambda_", real=True)
+    step = (G2[0] - G1[0], G2[1] - G1[1])
+    length = sympy.sqrt(_dot(step, step))
+    P = (G1[0] + lam * step[0], G1[1] + lam * step[1])
+    forces: list[Vec] = []
+    if scene.gravity is not None:
+        weight = body.mass * symbols["g"]
+        forces.append((weight * scene.gravity[0], weight * scene.gravity[1]))
+    for spring in scene.springs:
+        if spring.body != body_name or spring.other:
+            continue
+        to_end = (spring.other_point[0] - P[0], spring.other_point[1] - P[1])
+        current = sympy.sqrt(_dot(to_end, to_end))
+        pull = spring.k * (current - spring.unstretched) / current
+        forces.append((pull * to_end[0], pull * to_end[1]))
+    for load in scene.loads:
+        if load.body == body_name and load.kind == "force":
+            if load.name not in symbols:
+                return None
+            size = symbols[load.name]
+            forces.append((size * load.direction[0], size * load.direction[1]))
+    tangent = (step[0] / length, step[1] / length)
+    F_t = sympy.Add(*(_dot(f, tangent) for f in forces))
+    for support in scene.supports:
+        if support.body != body_name or support.smooth:
+            continue
+        if support.mu_k is None:
+            return None
+        across = sympy.Add(*(_dot(f, support.normal) for f in forces))
+        F_t -= support.mu_k * sympy.Abs(across)  # kinetic friction opposes the motion
+    m = real_value(body.mass, values)
+    s = real_value(length, values)
+    v1 = scene.velocities.get(body_name, (0, 0))
+    v1_squared = real_value(_dot(v1, v1), values)
+    integrand = sympy.Integer(0) + F_t.xreplace(dict(values))
+    if m is None or s is None or v1_squared is None or integrand.free_symbols - {lam}:
+        return None
+    force = sympy.lambdify(lam, integrand, "mpmath")
+    work = float(mpmath.quad(force, [0, 1])) * s
+    squared = v1_squared + 2 * work / m
+    return None if squared < 0 else squared**0.5
+
+
+def omega_by_constant_alpha(
+    scene: Scene,
+    body_name: str,
+    turn: sympy.Expr,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> float | None:
+    """|ω₂| = sqrt(ω₁² + 2 α Δθ) with α from ΣF = m a_G, ΣM = I α at state 1, for one body
+    on flat supports (rolling or a base) under constant loads; None when that does not hold."""
+    from dynsolve.principles.newton_euler import formulate
+
+    constant = (
+        len(scene.bodies) == 1
+        and not scene.springs
+        and not scene.links
+        and not scene.cords
+        and scene.supports
+        and all(s.kind in ("rolls", "base") for s in scene.supports)
+    )
+    if not constant:
+        return None
+    formulation = formulate(scene, symbols)
+    # a numeric check: floating-point coefficients keep the (linear) solve fast
+    residuals = [sympy.N((e.lhs - e.rhs).xreplace(dict(values))) for e in formulation.equations]
+    unknowns = list(formulation.unknowns)
+    found = sympy.linsolve(residuals, unknowns)
+    if len(found) != 1:
+        return None
+    (solution,) = tuple(found)
+    if any(v.free_symbols for v in solution):
+        return None
+    alpha = real_value(
+        formulation.kinematics[body_name].alpha.xreplace(
+            dict(zip(unknowns, solution, strict=True))
+        ),
+        values,
+    )
+    omega_1 = real_value(scene.omegas.get(body_name, 0), values)
+    theta = real_value(turn, values)
+    if alpha is None or omega_1 is None or theta is None:
+        return None
+    squared = omega_1**2 + 2 * alpha * theta
+    return None if squared < 0 else squared**0.5
