@@ -76,11 +76,15 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             from dynsolve.principles.impact import pivot_formulation
 
             formulation = pivot_formulation(scene, given_values)
+        elif any(t.kind == "for" for t in scene.travels.values()):
+            from dynsolve.principles.impulse_momentum import impulse_formulation
+
+            formulation = impulse_formulation(scene, symbols)
         elif (scene.travels and rigid) or scene.movers:
             formulation = _states_only(scene)
         else:
             formulation = formulate(scene, symbols, slipping)
-        if scene.travels:
+        if scene.travels and not any(t.kind == "for" for t in scene.travels.values()):
             formulation = _with_energy(formulation, scene, symbols, given_values)
     except ValueError as exc:
         raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
@@ -150,7 +154,7 @@ def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, st
     return (f"inertia {item.name} of {body.name}", "; ".join(lines))
 
 
-_STATE_DIMS = {"velocity": Dim(1, 0, -1), "omega": Dim(0, 0, -1)}
+_STATE_DIMS = {"velocity": Dim(1, 0, -1), "omega": Dim(0, 0, -1), "travel": Dim(0, 0, 1)}
 
 
 def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sympy.Symbol, Dim]:
@@ -164,6 +168,7 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
         value = stmt.value
         if (
             stmt.kind in _STATE_DIMS
+            and (stmt.kind != "travel" or stmt.word == "for")
             and isinstance(value, Name)
             and value.text not in symbols
             and value.text in asked

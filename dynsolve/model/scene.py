@@ -166,8 +166,8 @@ class Travel:
     """How a body (or a link) gets from state 1, the scene as described, to state 2.
 
     ``kind`` is "to" (G reaches ``position``), "by" (G moves ``distance`` along
-    ``direction``) or "turns" (it turns through ``angle``, ccw positive); ``stops``
-    says it is at rest in state 2.
+    ``direction``), "turns" (it turns through ``angle``, ccw positive) or "for" (the
+    scene moves for ``duration``); ``stops`` says it is at rest in state 2.
     """
 
     body: str
@@ -176,6 +176,7 @@ class Travel:
     distance: sympy.Expr | None = None
     direction: Vec | None = None
     angle: sympy.Expr | None = None
+    duration: sympy.Expr | None = None
     stops: bool = False
     line: int = 0
     column: int = 0
@@ -951,6 +952,10 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
             builder.where(stmt.line, stmt.column),
             hint=f"write 'travel {stmt.body}: turns ANGLE ccw'",
         )
+    if stmt.word == "for":
+        assert stmt.value is not None
+        duration = builder.value(stmt.value, Dim(0, 0, 1), "a time")
+        return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column)
     if stmt.vectors:
         position = builder.vector(stmt.vectors[0], "a position")
         return Travel(stmt.body, "to", position=position, stops=stops, line=line, column=column)

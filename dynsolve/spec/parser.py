@@ -820,6 +820,10 @@ class _Builder(Transformer_NonRecursive):
             "travel", body, body=str(body), value=distance, direction=direction, props=stops
         )
 
+    def travel_for_stmt(self, c: list[Any]) -> SceneStmt:
+        (body, duration), stops = self._stops(c)
+        return self._stmt("travel", body, body=str(body), value=duration, word="for", props=stops)
+
     def travel_turns_stmt(self, c: list[Any]) -> SceneStmt:
         (body, angle, sense), stops = self._stops(c)
         self._sense(sense)
