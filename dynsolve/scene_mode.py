@@ -715,16 +715,27 @@ def _between_states(
         scale = sum(
             abs(real_value(t, substitution) or 0) for t in sympy.Add.make_args(equation.lhs)
         )
-        if energy is not None:
-            reaches = energy >= -1e-9 * max(scale, 1e-300)
-            checks.append(
-                Assumption(
-                    "reaches state 2",
-                    reaches,
-                    f"T1 + ΣU = {abs(energy) if reaches and energy <= 0 else energy:.4g} "
-                    + ("≥ 0" if reaches else "< 0: it stops before state 2"),
+        if energy is None:
+            continue
+        tolerance = 1e-9 * max(scale, 1e-300)
+        if any(t.stops for t in problem.scene.travels.values()):
+            at_rest = abs(energy) <= tolerance
+            detail = f"T2 = T1 + ΣU = {0.0 if at_rest else energy:.4g}"
+            if not at_rest:
+                detail += (
+                    ": it still moves at state 2" if energy > 0 else ": it stops before state 2"
                 )
+            checks.append(Assumption("at rest in state 2", at_rest, detail))
+            continue
+        reaches = energy >= -tolerance
+        checks.append(
+            Assumption(
+                "reaches state 2",
+                reaches,
+                f"T1 + ΣU = {abs(energy) if reaches and energy <= 0 else energy:.4g} "
+                + ("≥ 0" if reaches else "< 0: it stops before state 2"),
             )
+        )
     for support in problem.scene.supports:
         if support.kind == "rolls":
             checks.append(
@@ -735,6 +746,8 @@ def _between_states(
                     "the states is not computed",
                 )
             )
+    if any(t.stops for t in problem.scene.travels.values()):
+        return tuple(checks)
     checks.append(
         Assumption(
             "sense of motion",

@@ -227,3 +227,13 @@ def test_the_rolling_wheel_is_checked_with_its_constant_angular_acceleration():
     assert check.passed
     alpha = 50 * math.cos(math.radians(30)) * 0.4 / (50 * 0.3**2 + 50 * 0.4**2)
     assert f"{math.sqrt(2 * alpha * 20 * math.pi):.7g}" in check.detail
+
+
+def test_a_travel_that_stops_must_end_at_rest(tmp_path):
+    # regression: 'stops' with nothing unknown dropped the energy equation and reported ω = 0
+    # as found; here T1 + ΣU = 15(0.625) − 5(1)² = 4.375 ft·lb ≠ 0, so it still moves
+    text = SPRING_DISK.read_text().replace("by s_G, left ", "by s_G, left, stops ")
+    solution = solve_file(write(tmp_path, text))
+    check = next(c for c in solution.checks if c.name == "assumption: at rest in state 2")
+    assert not check.passed and "still moves" in check.detail
+    assert not solution.passed

@@ -578,6 +578,8 @@ def _unit(vector: Vec) -> Vec:
 
 
 def _article(text: str) -> str:
+    if text == "dimensionless":
+        return "dimensionless (a pure number)"
     return ("an " if text[:1] in "aeiou" else "a ") + text
 
 
@@ -954,7 +956,7 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
         )
     if stmt.word == "for":
         assert stmt.value is not None
-        duration = builder.value(stmt.value, Dim(0, 0, 1), "a time")
+        duration = builder.value(stmt.value, Dim(0, 0, 1), "a duration")
         return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column)
     if stmt.vectors:
         position = builder.vector(stmt.vectors[0], "a position")
