@@ -126,7 +126,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         if item.ref is not None and item.ref.function == "I"
     )
     notes += tuple(
-        _path_note(scene, name, path_extremes(scene, name, Position(spec.file, 1, 1)))
+        _path_note(scene, name, _path_extremes(scene, name, Position(spec.file, 1, 1)))
         for name in scene.movers
     )
     return SceneProblem(
@@ -390,7 +390,7 @@ def _quantity(
                 where,
                 hint=f"add 'moves {args[0]}: along PATH, speed v'",
             )
-        extreme = path_extremes(scene, args[0], where)
+        extreme = _path_extremes(scene, args[0], where)
         chosen = extreme.maximum if function == "a_max" else extreme.minimum
         return target("magnitude", Dim(1, 0, -2), chosen.a)
     if function == "omega_after" and len(args) == 1:
@@ -532,7 +532,7 @@ def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
 SAMPLES = (1.0, 2.0, 3.0, 5.0, 7.0, 0.5, 1.5, 4.0, 11.0)
 
 
-def path_extremes(scene: Scene, name: str, where: Position) -> object:
+def _path_extremes(scene: Scene, name: str, where: Position) -> object:
     """The largest and smallest acceleration of a point moving along a path at constant
     speed; symbolic givens are ordered with sample values that meet the scene's
     ``assume`` lines, and the order must be the same for every such sample."""

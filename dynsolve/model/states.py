@@ -356,15 +356,15 @@ def _rates(
             "freedom (add or remove supports, links or 'motion B: translation')"
         )
     vector = dict(zip(unknowns, basis[0], strict=True))
-    travel = next(iter(scene.travels.values()))
-    b = travel.body
     if not oriented:
         scale, rate_name = sympy.Integer(1), "rate of travel"
-    elif travel.kind == "turns":
+    elif (travel := next(iter(scene.travels.values()))).kind == "turns":
+        b = travel.body
         omega = vector[x.om[b]]
         scale = sign_of(omega * travel.angle, given_values) / omega
         rate_name = f"|ω| of {b}"
     else:
+        b = travel.body
         placement = placements[b]
         v = (vector[x.vx[b]], vector[x.vy[b]])
         speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2))
@@ -410,7 +410,17 @@ def state_change(
 def initial_rates(
     scene: Scene, given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None
 ) -> Rates:
-    """The velocities in state 1 per unit of some rate (their ratios are what counts)."""
+    """The velocities in state 1 per unit of some rate (their ratios are what counts);
+    ValueError when the scene has not exactly one degree of freedom.
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Body, Support
+    >>> disk = Body("disk", 1, 1, (0, 2), (0, 2), "disk", (2,), {}, False, "", 0, 0)
+    >>> rolls = Support("rolls", "C", "disk", (0, 0), (0, 1))
+    >>> rates = initial_rates(Scene({"disk": disk}, {}, (rolls,), (), (), None, {}))
+    >>> rates.v_G["disk"][0] / rates.omega["disk"]  # v_G = −ω r: rolling
+    -2
+    """
     x = _Unknowns(scene)
     still = Placement(ZERO, sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
     placements = {name: still for name in scene.bodies}

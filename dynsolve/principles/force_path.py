@@ -104,7 +104,17 @@ def omega_by_constant_alpha(
     values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> float | None:
     """|ω₂| = sqrt(ω₁² + 2 α Δθ) with α from ΣF = m a_G, ΣM = I α at state 1, for one body
-    on flat supports (rolling or a base) under constant loads; None when that does not hold."""
+    on flat supports (rolling or a base) under constant loads; None when that does not hold.
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Body, Load, Support
+    >>> wheel = Body("wheel", 2, 1, (0, 1), (0, 1), "disk", (1,), {}, False, "", 0, 0)
+    >>> rolls = Support("rolls", "C", "wheel", (0, 0), (0, 1))
+    >>> pull = Load("force", "P", "wheel", (0, 1), "G", (1, 0))
+    >>> scene = Scene({"wheel": wheel}, {}, (rolls,), (), (pull,), None, {})
+    >>> omega_by_constant_alpha(scene, "wheel", -2, {"P": 3}, {})  # α = −P r/(I + m r²) = −1
+    2.0
+    """
     from dynsolve.principles.newton_euler import formulate
 
     constant = (

@@ -91,7 +91,18 @@ def pivot_formulation(
     """Angular momentum about the struck point conserved through a plastic eccentric impact:
     r_G/P × m v_G1 + I_G ω₀ = I_P ω₁ (the impulse acts at P; finite forces such as the
     weight give no impulse over the short impact). ω₁ is written as its sense (that of
-    the angular momentum before) times an unknown magnitude."""
+    the angular momentum before) times an unknown magnitude.
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Scene, Body, Pivot
+    >>> cube = Body("cube", 3, sympy.Rational(1, 2), (-1, 1), (-1, 1), "block", (2, 2), {},
+    ...             False, "", 0, 0)
+    >>> scene = Scene({"cube": cube}, {"B": (0, 0)}, (), (), (), None, {},
+    ...               velocities={"cube": (4, 0)}, pivots=(Pivot("cube", "B", (0, 0)),))
+    >>> f = pivot_formulation(scene)
+    >>> sympy.solve(f.equations[0].residual, list(f.unknowns)), f.after_omega  # -12 = 6.5 ω
+    ([24/13], {'cube': -omega1_cube})
+    """
     from dynsolve.model.states import sign_of
 
     equations: list[Equation] = []

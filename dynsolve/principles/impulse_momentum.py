@@ -36,7 +36,15 @@ ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 
 
 def constant_forces(scene: Scene) -> str:
-    """Why the forces might change during the interval ("" when they stay constant)."""
+    """Why the forces might change during the interval ("" when they stay constant).
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Scene, Body, Support
+    >>> rod = Body("rod", 1, 1, (1, 0), (0, 0), "rod", (2,), {}, False, "", 0, 0)
+    >>> pin = Support("pin", "O", "rod", (0, 0), (0, 1))
+    >>> constant_forces(Scene({"rod": rod}, {}, (pin,), (), (), (0, -1), {}))
+    "the weight's moment about O changes as rod turns"
+    """
     if scene.springs:
         return "a spring's force changes as the scene moves"
     if scene.links:
