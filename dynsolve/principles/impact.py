@@ -101,7 +101,7 @@ def pivot_formulation(
     ...               velocities={"cube": (4, 0)}, pivots=(Pivot("cube", "B", (0, 0)),))
     >>> f = pivot_formulation(scene)
     >>> sympy.solve(f.equations[0].residual, list(f.unknowns)), f.after_omega  # -12 = 6.5 ω
-    ([24/13], {'cube': -omega1_cube})
+    ([24/13], {'cube': -omega_1_cube})
     """
     from dynsolve.model.states import sign_of
 
@@ -117,7 +117,7 @@ def pivot_formulation(
         )
         I_P = body.I_G + body.mass * (r[0] ** 2 + r[1] ** 2)
         sense = sign_of(before, given_values or {})
-        omega = sympy.Symbol(f"omega1_{pivot.body}", positive=True)
+        omega = sympy.Symbol(f"omega_1_{pivot.body}", positive=True)
         equations.append(
             Equation(
                 before,

@@ -17,7 +17,7 @@ A direction (or point) with no external impulse is named: momentum is conserved 
 ...               travels={"box": Travel("box", "for", duration=t)})
 >>> f = impulse_formulation(scene, {"P": P})
 >>> sympy.solve([e.residual for e in f.equations], list(f.unknowns))
-{v2x: P*t/m, v2y: 0}
+{v_2x: P*t/m, v_2y: 0}
 """
 
 from __future__ import annotations
@@ -95,7 +95,9 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         for i, axis in enumerate("xy"):
             symbol = kin.a_G[i]
             if isinstance(symbol, sympy.Symbol) and symbol in motion.unknowns:
-                v2 = sympy.Integer(0) if travel.stops else sympy.Symbol(f"v2{axis}{tag}", real=True)
+                v2 = (
+                    sympy.Integer(0) if travel.stops else sympy.Symbol(f"v_2{axis}{tag}", real=True)
+                )
                 replace[symbol] = (v2 - v1[i]) / dt
                 if not travel.stops:
                     unknowns[v2] = Dim(1, 0, -1)
@@ -104,7 +106,7 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
                 end.append(None)  # type: ignore[arg-type]
         alpha = kin.alpha
         if isinstance(alpha, sympy.Symbol) and alpha in motion.unknowns:
-            w2 = sympy.Integer(0) if travel.stops else sympy.Symbol(f"omega2{tag}", real=True)
+            w2 = sympy.Integer(0) if travel.stops else sympy.Symbol(f"omega_2{tag}", real=True)
             replace[alpha] = (w2 - kin.omega) / dt
             if not travel.stops:
                 unknowns[w2] = Dim(0, 0, -1)

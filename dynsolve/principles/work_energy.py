@@ -312,7 +312,7 @@ def _particle(
     )
     mass = scene.bodies[name].mass
     v1 = scene.velocities.get(name, ZERO)
-    rate = None if travel.stops else sympy.Symbol(f"v2_{name}", real=True)
+    rate = None if travel.stops else sympy.Symbol(f"v_2_{name}", real=True)
     T2 = mass * rate**2 / 2 if rate is not None else sympy.Integer(0)
     equation = _equation(mass * _dot(v1, v1) / 2, work, T2)
     speed = rate if rate is not None else sympy.Integer(0)
@@ -338,7 +338,7 @@ def _mechanism(
     T1 = _initial_energy(scene, values)
     rate = None
     if not travel.stops:
-        prefix = "omega2" if travel.kind == "turns" else "v2"
+        prefix = "omega_2" if travel.kind == "turns" else "v_2"
         rate = sympy.Symbol(f"{prefix}_{travel.body}", real=True)
     q = rate if rate is not None else sympy.Integer(0)
     v_G = {n: (v[0] * q, v[1] * q) for n, v in rates.v_G.items()}
