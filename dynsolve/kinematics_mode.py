@@ -1,6 +1,8 @@
-"""Turn a rectilinear-kinematics spec into a problem: the given motion, integrated.
+"""Turn a kinematics spec into a problem: the given motion, integrated.
 
-A ``kinematics:`` section gives one relation, ``a = …`` in t, v or x, or ``x = …`` /
+A section naming plane components (``y``, ``v_x``, ``a_y``, ``r``, ``theta`` …) is plane
+motion, built by :mod:`dynsolve.plane_kinematics`. Otherwise it gives one relation of
+rectilinear motion, ``a = …`` in t, v or x, or ``x = …`` /
 ``v = …`` in t; the initial conditions are the givens ``t_0``, ``x_0``, ``v_0`` (zero
 when absent, except ``v_0``, which a(t), a(v) and a(x) need). ``find`` names relations
 such as ``v(t)``, ``x(v)``, ``t(x)``, or their values at a given: ``v(t_1)``.
@@ -66,7 +68,18 @@ class KinematicsProblem:
 
 
 def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
-    """Check the given relation's units, integrate it, and resolve the find list."""
+    """Check the given relation's units, integrate it, and resolve the find list
+    (plane motion, with two relations, is handed to :mod:`dynsolve.plane_kinematics`).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> text = "given:\\n  c = 2 m/s\\nkinematics:\\n  x = c*t\\n  y = c*t\\nfind: v_t = v(t)"
+    >>> build_kinematics_problem(parse_spec(text, "k.dyn")).targets[0].expr
+    sqrt(2)*c
+    """
+    from dynsolve.plane_kinematics import build_plane_problem, is_plane
+
+    if is_plane(spec):
+        return build_plane_problem(spec)
     file = spec.file
     if len(spec.kinematics) != 1:
         raise SpecError(
@@ -95,7 +108,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     given_dims = {g.name: g.dim for g in givens}
     targets = tuple(_target(item, motion, all_symbols, given_dims, spec) for item in spec.finds)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
-    row = _row(statement, report.checks[0].dim, spec)
+    row = relation_row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
     system = EquationSystem(equations=(), unknowns=(), knowns=values)
     return KinematicsProblem(
@@ -193,7 +206,16 @@ def _variable_of(given: str, given_dims: Mapping[str, Dim], where: Position) -> 
     )
 
 
-def _row(statement: EquationStmt, dim: Dim, spec: Spec) -> EquationRow:
+def relation_row(statement: EquationStmt, dim: Dim, spec: Spec, note: str = "") -> EquationRow:
+    """A kinematic relation as an equation row: as written, with its checked dimension
+    (``note``, when given, stands for a missing trailing comment).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  k = 2 1/s\\nkinematics:\\n  a = -k*v  # drag", "k.dyn")
+    >>> row = relation_row(spec.kinematics[0], ACCELERATION, spec)
+    >>> row.text, row.dimension, row.note
+    ('a = -k*v', 'acceleration [m/s²]', 'drag')
+    """
     from dynsolve.format import pretty_unit
     from dynsolve.spec.printing import statement_latex, statement_text
 
@@ -202,7 +224,7 @@ def _row(statement: EquationStmt, dim: Dim, spec: Spec) -> EquationRow:
         statement.line,
         statement_text(statement),
         statement_latex(statement),
-        statement.note,
+        statement.note or note,
         f"{dim.name} [{pretty_unit(unit)}]",
         True,
         False,

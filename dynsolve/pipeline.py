@@ -382,7 +382,10 @@ class _View:
             return direction_word(x / value, y / value)
         axis = None
         if target.axis is not None:
-            axis = (self.number(target.axis[0]) or 0.0, self.number(target.axis[1]) or 0.0)
+            known = dict(self.knowns)
+            axis = tuple(
+                self.number((sympy.Integer(0) + c).xreplace(known)) or 0.0 for c in target.axis
+            )
         return direction_of(target.kind, value, axis)
 
     def answer(self, target: object) -> AnswerRow:

@@ -80,7 +80,9 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             from dynsolve.principles.impulse_momentum import impulse_formulation
 
             formulation = impulse_formulation(scene, symbols)
-        elif (scene.travels and rigid) or scene.movers:
+        elif (scene.travels and rigid) or (
+            scene.movers and not set(scene.movers) & set(scene.bodies)
+        ):
             formulation = _states_only(scene)
         else:
             formulation = formulate(scene, symbols, slipping)
@@ -128,6 +130,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     notes += tuple(
         _path_note(scene, name, _path_extremes(scene, name, Position(spec.file, 1, 1)))
         for name in scene.movers
+        if name not in scene.bodies  # a body on a path has its speed at the instant only
     )
     return SceneProblem(
         spec,
@@ -384,11 +387,11 @@ def _quantity(
             )
         return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
     if function in ("a_max", "a_min") and len(args) == 1:
-        if args[0] not in scene.movers:
+        if args[0] not in scene.movers or args[0] in scene.bodies:
             raise SpecError(
-                f"{args[0]} does not move along a path",
+                f"{args[0]} is not a point moving along a path at constant speed",
                 where,
-                hint=f"add 'moves {args[0]}: along PATH, speed v'",
+                hint=f"add 'moves {args[0]}: along PATH, speed v' for a point that is not a body",
             )
         extreme = _path_extremes(scene, args[0], where)
         chosen = extreme.maximum if function == "a_max" else extreme.minimum

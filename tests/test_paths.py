@@ -98,3 +98,46 @@ def test_the_curvature_formula_holds_at_the_vertex_of_a_steep_parabola(tmp_path)
     solution = solve(tmp_path, "y = x^2/(2*c)", **{"c = 8 m": "c = 0.5 m"})
     assert solution.answers[0].value == pytest.approx(144 / 0.5, rel=1e-12)
     assert math.isfinite(solution.answers[1].value)
+
+
+HUMP = """\
+given:
+  m = 1200 kg
+  v = 15 m/s
+  c = 50 m
+  x_1 = {x_1}
+scene:
+  path road: y = -x^2/(2*c)
+  body car: particle, mass m, at (x_1, -x_1^2/(2*c))
+  moves car: along road, speed v
+  gravity
+find: N = N_road [N], a = a_G(car) [m/s^2]
+"""
+
+
+@pytest.mark.parametrize("x_1", [0.0, 20.0])
+def test_a_car_over_a_hump_in_normal_and_tangential_components(tmp_path, x_1):
+    # y = −x²/(2c): slope y' = −x/c, κ = (1/c)/(1 + y'²)^(3/2), the centre of curvature below.
+    # ΣF_n = m v² κ: m g cos θ − N = m v² κ, cos θ = 1/sqrt(1 + y'²);
+    # ΣF_t = m a_t: a_t = g sin θ (downhill), sin θ = |y'|/sqrt(1 + y'²).
+    # At the top (x = 0): N = 1200(9.81 − 225/50) = 6372 N, a = 4.5 m/s² down.
+    # At x = 20 m: y' = −0.4, N = 1200(9.81/√1.16 − 225(0.02)/1.16^1.5) = 6607.8 N.
+    file = tmp_path / "hump.dyn"
+    file.write_text(HUMP.format(x_1=f"{x_1} m"))
+    solution = solve_file(file)
+    slope = -x_1 / 50
+    root = math.sqrt(1 + slope**2)
+    a_n = 15**2 * (1 / 50) / root**3
+    a_t = 9.81 * abs(slope) / root
+    N, a = solution.answers
+    assert N.value == pytest.approx(1200 * (9.81 / root - a_n), rel=1e-12)
+    assert N.direction == "up" or x_1 != 0
+    assert a.value == pytest.approx(math.hypot(a_n, a_t), rel=1e-12)
+    assert any("on the curved path road" in e.note for e in solution.equations)
+
+
+def test_a_body_on_a_path_must_be_on_it(tmp_path):
+    file = tmp_path / "hump.dyn"
+    file.write_text(HUMP.format(x_1="20 m").replace("at (x_1, -x_1^2/(2*c))", "at (x_1, 0)"))
+    with pytest.raises(SpecError, match="not on the path road"):
+        solve_file(file)

@@ -86,6 +86,7 @@ class Support:
     column: int = 0
     two_sided: bool = False  # a guide (collar on a rod): the normal force may take either sign
     friction_sense: int | None = None  # ±1 along the tangent when sliding: opposes ``slides``
+    normal_acceleration: sympy.Expr | int = 0  # a_P·n on a curved path: v²(K·n)
 
     @property
     def tangent(self) -> Vec:
@@ -689,6 +690,8 @@ def build_scene(
             paths[stmt.name] = _path(builder, stmt)
         elif stmt.kind == "moves":
             movers[stmt.name] = _mover(builder, stmt, paths)
+            if stmt.name in builder.bodies:
+                supports.append(_on_path(builder, movers[stmt.name]))
         elif stmt.kind == "assume":
             assumptions.append(_assumption(builder, stmt))
     names = {v: k for k, v in builder.fixed.items()}
@@ -924,6 +927,48 @@ def _mover(builder: _Builder, stmt: SceneStmt, paths: Mapping[str, Path]) -> Mov
     assert stmt.value is not None
     speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
     return Mover(stmt.name, paths[stmt.other], speed, stmt.line, stmt.column)
+
+
+def _on_path(builder: _Builder, mover: Mover) -> Support:
+    """A particle on a curved path at the instant: a two-sided smooth contact along the
+    path's normal n = ∇F/|∇F| at G, whose point accelerates along n by v² K·n, with
+    K = −(t·H t) ∇F/|∇F|² the curvature vector of F = 0 (H the Hessian, t the tangent)."""
+    body = builder.bodies[mover.name]
+    where = builder.where(mover.line, mover.column)
+    if not body.particle:
+        raise SpecError(
+            f"{body.name} moves along a path but is a rigid body",
+            where,
+            hint="a path carries a particle; give the body no shape or inertia",
+        )
+    path = mover.path
+    at = {path.x: body.G[0], path.y: body.G[1]}
+    residual = real_value(path.curve.xreplace(at), builder.given_values)
+    if tidy(path.curve.xreplace(at)) != 0 and (residual is None or abs(residual) > 1e-9):
+        raise SpecError(
+            f"{body.name}'s G is not on the path {path.name}",
+            where,
+            hint="place the body with 'at (x, y)' on the path",
+        )
+    F_x, F_y = (sympy.diff(path.curve, c) for c in (path.x, path.y))
+    H = [[sympy.diff(d, c) for c in (path.x, path.y)] for d in (F_x, F_y)]
+    grad = (F_x.xreplace(at), F_y.xreplace(at))
+    size = sympy.sqrt(grad[0] ** 2 + grad[1] ** 2)
+    t = (-grad[1] / size, grad[0] / size)
+    tHt = sum(t[i] * H[i][j].xreplace(at) * t[j] for i in range(2) for j in range(2))
+    normal = (tidy(grad[0] / size), tidy(grad[1] / size))
+    return Support(
+        "contact",
+        path.name,
+        body.name,
+        body.G,
+        normal,
+        smooth=True,
+        line=mover.line,
+        column=mover.column,
+        two_sided=True,
+        normal_acceleration=tidy(-(mover.speed**2) * tHt / size),
+    )
 
 
 def _assumption(builder: _Builder, stmt: SceneStmt) -> sympy.core.relational.Relational:

@@ -1,5 +1,8 @@
 """Curvilinear particle kinematics: curvature of a path, n–t and r–θ components, projectiles.
 
+``path_components`` turns a velocity and an acceleration given in any orthonormal
+components (x–y, or r–θ) into the speed and the n–t components a_t, a_n and ρ.
+
 A path is one of three frozen forms: ``ExplicitPath`` (y = f(x)), ``ImplicitPath``
 (F(x, y) = 0) or ``ParametricPath`` (x(u), y(u)). ``kappa`` and ``rho`` give its
 curvature and radius of curvature; ``acceleration_extremes`` finds where the
@@ -81,6 +84,17 @@ class Polar:
 
 
 @dataclass(frozen=True)
+class PathComponents:
+    """Speed, acceleration magnitude and n–t components of a moving particle."""
+
+    v: sympy.Expr  # speed |v|
+    a: sympy.Expr  # |a|
+    a_t: sympy.Expr  # (v·a)/|v| = dv/dt
+    a_n: sympy.Expr  # |v × a|/|v| = v²/ρ
+    rho: sympy.Expr  # v²/a_n (oo where a_n = 0: the path is straight there)
+
+
+@dataclass(frozen=True)
 class Extreme:
     """One stationary value of the curvature along a path, and the points where it occurs."""
 
@@ -157,6 +171,28 @@ def nt_acceleration(v: sympy.Expr, rho: sympy.Expr, a_t: sympy.Expr | int = 0) -
     a_t = sympy.Integer(0) + a_t
     a_n = tidy(v**2 / rho)
     return NormalTangential(a_t=a_t, a_n=a_n, a=tidy(sympy.sqrt(a_t**2 + a_n**2)))
+
+
+def path_components(
+    v_1: sympy.Expr | int, v_2: sympy.Expr | int, a_1: sympy.Expr | int, a_2: sympy.Expr | int
+) -> PathComponents:
+    """From v = (v_1, v_2) and a = (a_1, a_2) along two orthonormal axes (x–y or r–θ):
+    v = |v|, a = |a|, a_t = (v·a)/v, a_n = |v × a|/v and ρ = v²/a_n.
+
+    >>> found = path_components(4, 3, 4, 6)  # x = 2t², y = t³ at t = 1
+    >>> found.v, found.a_t, found.a_n, found.rho
+    (5, 34/5, 12/5, 125/12)
+    """
+    v_1, v_2, a_1, a_2 = (sympy.Integer(0) + c for c in (v_1, v_2, a_1, a_2))
+    speed = tidy(sympy.sqrt(v_1**2 + v_2**2))
+    a_n = tidy(sympy.Abs(v_1 * a_2 - v_2 * a_1) / speed)
+    return PathComponents(
+        v=speed,
+        a=tidy(sympy.sqrt(a_1**2 + a_2**2)),
+        a_t=tidy((v_1 * a_1 + v_2 * a_2) / speed),
+        a_n=a_n,
+        rho=_inverse(tidy(a_n / speed**2)),
+    )
 
 
 def polar_components(r: sympy.Expr, theta: sympy.Expr, t: sympy.Symbol) -> Polar:

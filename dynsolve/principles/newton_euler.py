@@ -496,10 +496,13 @@ class _Writer:
     def _contact(self, support: Support) -> None:
         self._normal_and_friction(support)
         a_P = self.point_acceleration(support.body, support.point)
+        note = (
+            f"on the curved path {support.name}: a_n = v²/ρ toward the centre of curvature"
+            if support.normal_acceleration != 0
+            else f"contact at {support.name} kept: no acceleration into the surface"
+        )
         self.constraint(
-            dot(a_P, support.normal),
-            sympy.Integer(0),
-            f"contact at {support.name} kept: no acceleration into the surface",
+            dot(a_P, support.normal), sympy.Integer(0) + support.normal_acceleration, note
         )
         if self._static(support):
             self.constraint(

@@ -3,7 +3,9 @@
 The seed notes' §1.4 procedure: v(t) = v₀ + ∫a dt and x(t) = x₀ + ∫v dt for a(t);
 t(v) = t₀ + ∫dv/a and x(v) = x₀ + ∫v dv/a for a(v); v² = v₀² + 2∫a dx and
 t(x) = t₀ + ∫dx/v for a(x); derivatives for x(t). Inverse relations are solved for,
-keeping the branch that meets the initial condition.
+keeping the branch that meets the initial condition. ``crossing_times`` and
+``extreme_time`` find when a coordinate of a motion takes a value or its largest
+(smallest) value.
 
 >>> import sympy
 >>> k, v0 = sympy.symbols("k v_0", positive=True)
@@ -14,14 +16,17 @@ keeping the branch that meets the initial condition.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cmp_to_key
 
 import sympy
 
-from dynsolve.numbers import tidy
+from dynsolve.numbers import real_value, tidy
 
 T, X, V = sympy.symbols("t x v", real=True)
 KINDS = ("a(t)", "a(v)", "a(x)", "x(t)", "v(t)")
+Values = Mapping[sympy.Symbol, sympy.Expr]
 
 
 @dataclass(frozen=True)
@@ -86,6 +91,114 @@ def integrate_motion(
     else:
         raise ValueError(f"unknown kind of motion {kind!r}; one of {', '.join(KINDS)}")
     return Motion(kind, found, tuple(steps))
+
+
+@dataclass(frozen=True)
+class Crossings:
+    """The times after t₀ at which a coordinate takes a value, and the roots set aside."""
+
+    times: tuple[sympy.Expr, ...]  # after t₀, earliest first
+    discarded: tuple[tuple[sympy.Expr, str], ...]  # (root, why it was set aside)
+
+
+def crossing_times(
+    q: sympy.Expr, level: sympy.Expr, t0: sympy.Expr, values: Values | None = None
+) -> Crossings:
+    """Every time t > t₀ at which ``q`` (an expression in ``T``) equals ``level``, earliest first.
+
+    The roots are placed by their values at ``values`` (the givens' values), or, for
+    symbolic givens, by the symbols' assumptions. Roots sympy's ``solve`` does not
+    return (the other periods of a periodic motion) are not found. A ValueError says
+    when sympy cannot solve ``q = level`` for t, or cannot place a root.
+
+    >>> import sympy
+    >>> y = 10 * T - sympy.Rational(981, 200) * T**2  # y = v_y0 t - g t²/2
+    >>> found = crossing_times(y, sympy.Integer(0), sympy.Integer(0))
+    >>> found.times, found.discarded
+    ((2000/981,), ((0, 'not after t₀'),))
+    """
+    values = dict(values or {})
+    if tidy(q - level) == 0:
+        raise ValueError(f"{q} equals {level} at every time")
+    try:
+        roots = sympy.solve(sympy.Eq(q, level), T)
+    except NotImplementedError as error:
+        raise ValueError(f"sympy cannot solve {q} = {level} for t") from error
+    kept: list[sympy.Expr] = []
+    discarded: list[tuple[sympy.Expr, str]] = []
+    for root in dict.fromkeys(tidy(r) for r in roots):
+        after = _sign(root - t0, values)
+        if after is None:
+            discarded.append((root, "not real"))
+        elif after > 0:
+            kept.append(root)
+        else:
+            discarded.append((root, "not after t₀"))
+    ordered = sorted(kept, key=cmp_to_key(lambda a, b: _sign(a - b, values) or 0))
+    return Crossings(tuple(ordered), tuple(discarded))
+
+
+def extreme_time(
+    q: sympy.Expr, t0: sympy.Expr, values: Values | None = None, largest: bool = True
+) -> Crossings:
+    """When after t₀ ``q`` (in ``T``) is largest (``largest``) or smallest: dq/dt = 0 with
+    d²q/dt² < 0 (> 0); of several such times the one with the largest (smallest) q.
+
+    ``times`` holds that one time; ``discarded`` the other stationary times and why.
+    A ValueError when there is none, or when it cannot be decided (see ``crossing_times``).
+
+    >>> import sympy
+    >>> found = extreme_time(10 * T - 5 * T**2, sympy.Integer(0))  # dy/dt = 10 - 10 t
+    >>> found.times, found.discarded
+    ((1,), ())
+    """
+    values = dict(values or {})
+    rate = sympy.diff(q, T)
+    stationary = crossing_times(rate, sympy.Integer(0), t0, values)
+    sense = -1 if largest else 1
+    curvature = sympy.diff(rate, T)
+    candidates: list[sympy.Expr] = []
+    discarded = list(stationary.discarded)
+    for time in stationary.times:
+        bend = _sign(curvature.subs(T, time), values)
+        if bend == sense:
+            candidates.append(time)
+        else:
+            word = "a minimum" if bend == 1 else "a maximum" if bend == -1 else "no extreme"
+            discarded.append((time, word))
+    if not candidates:
+        word = "largest" if largest else "smallest"
+        raise ValueError(f"{q} has no {word} value after t₀ (no time where dq/dt = 0 fits)")
+    best = candidates[0]
+    for time in candidates[1:]:
+        gap = _sign(q.subs(T, time) - q.subs(T, best), values)
+        if gap == -sense:
+            discarded.append((best, "a smaller extreme" if largest else "a larger extreme"))
+            best = time
+        else:
+            discarded.append((time, "a smaller extreme" if largest else "a larger extreme"))
+    return Crossings((best,), tuple(discarded))
+
+
+def _sign(expr: sympy.Expr, values: Values) -> int | None:
+    """The sign of ``expr`` (−1, 0, 1) at ``values``, or by assumptions when symbols remain;
+    None when it is not real. ValueError when it cannot be decided."""
+    at = tidy(sympy.Integer(0) + expr).xreplace(values)
+    if not at.free_symbols:
+        number = real_value(at)
+        if number is None:
+            return None
+        return 0 if abs(number) <= 1e-12 else (1 if number > 0 else -1)
+    if at.is_real is False:
+        return None
+    if at.is_zero:
+        return 0
+    if at.is_positive:
+        return 1
+    if at.is_negative:
+        return -1
+    missing = ", ".join(sorted(map(str, at.free_symbols)))
+    raise ValueError(f"cannot tell the sign of {expr}; give values for {missing}")
 
 
 def _invert(
