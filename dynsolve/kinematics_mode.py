@@ -25,7 +25,7 @@ c*t_1**2/2 + v_0
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -90,7 +90,8 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     givens = givens_of(spec)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     statement = spec.kinematics[0]
-    kind = _kind(statement, set(symbols), file)
+    mass = _mass_times_a(statement, symbols)
+    kind = _kind(statement, set(symbols), file, newton=mass is not None)
     known_dims = {g.name: g.dim for g in givens} | {n: d for n, (_, d) in VARIABLES.items()}
     known_dims |= {"a": ACCELERATION}
     report = check_dimensions((statement,), known_dims | {"pi": Dim()}, file, spec.system)
@@ -103,21 +104,47 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
             hint="add 'v_0 = … m/s' under given: (and t_0, x_0 if not zero)",
         )
     rhs = to_sympy(statement.rhs, {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}})
+    if mass is not None:  # F = m a with a force law: a = F/m
+        rhs = rhs / mass
     motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
     given_dims = {g.name: g.dim for g in givens}
-    targets = tuple(_target(item, motion, all_symbols, given_dims, spec) for item in spec.finds)
+    numeric: list[Step] = []
+    targets = tuple(
+        _target(item, motion, all_symbols, given_dims, spec, (values, initial, numeric))
+        for item in spec.finds
+    )
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
+    steps += tuple(replace(step, index=len(steps) + i) for i, step in enumerate(numeric, 1))
     system = EquationSystem(equations=(), unknowns=(), knowns=values)
     return KinematicsProblem(
         spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion
     )
 
 
-def _kind(statement: EquationStmt, given: set[str], file: str) -> str:
-    left = statement.lhs
+def _mass_times_a(
+    statement: EquationStmt, symbols: Mapping[str, sympy.Symbol]
+) -> sympy.Expr | None:
+    """m when the relation is Newton's law ``m*a = F(t, x or v)``; None for ``a = …``.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> text = "given:\\n  m = 2 kg\\n  c = 1 kg/s\\nkinematics:\\n  m*a = -c*v"
+    >>> spec = parse_spec(text, "k.dyn")
+    >>> _mass_times_a(spec.kinematics[0], {"m": sympy.Symbol("m"), "c": sympy.Symbol("c")})
+    m
+    """
+    names = {n.text for n in iter_names(statement.lhs)}
+    if "a" not in names or str(statement.lhs) == "a" or names - {"a"} - set(symbols):
+        return None
+    A = sympy.Symbol("a")
+    mass = sympy.simplify(to_sympy(statement.lhs, {**symbols, "a": A}) / A)
+    return None if mass.has(A) or mass == 0 else mass
+
+
+def _kind(statement: EquationStmt, given: set[str], file: str, newton: bool = False) -> str:
+    left = "a" if newton else statement.lhs
     names = {n.text for n in iter_names(statement.rhs)} - given - {"pi"}
     variables = names & set(VARIABLES)
     unknown = names - set(VARIABLES)
@@ -154,6 +181,8 @@ def _target(
     symbols: Mapping[str, sympy.Symbol],
     given_dims: Mapping[str, Dim],
     spec: Spec,
+    numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]]
+    | None = None,
 ) -> Target:
     where = Position(spec.file, item.line, item.column)
     ref = item.ref
@@ -166,6 +195,12 @@ def _target(
     argument = ref.args[0]
     variable = argument if argument in VARIABLES else _variable_of(argument, given_dims, where)
     name = f"{ref.function}({variable})"
+    numeric = None
+    if name not in motion.formulas and numbers is not None and argument not in VARIABLES:
+        numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
+    if numeric is not None:
+        motion = replace(motion, formulas={**motion.formulas, name: numeric})
+        argument = variable  # already evaluated at the given
     if name not in motion.formulas:
         found = ", ".join(motion.formulas)
         raise SpecError(
@@ -185,6 +220,39 @@ def _target(
     return Target(
         item.name, sympy.Symbol(item.name), dim, unit, item.unit is not None, False, "signed", expr
     )
+
+
+def _numerically(
+    function: str,
+    variable: str,
+    at: sympy.Symbol,
+    motion: Motion,
+    numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]],
+) -> sympy.Expr | None:
+    """x or v at a given time by integrating the motion numerically, when sympy could not
+    invert the relation that would give it as a formula; the step is recorded."""
+    from dynsolve.numbers import real_value
+    from dynsolve.principles.rectilinear import integrate_numerically
+
+    values, initial, steps = numbers
+    if variable != "t" or function not in ("x", "v") or not motion.given.startswith("a("):
+        return None
+    a = motion.formulas[motion.given].xreplace(dict(values))
+    start = [real_value(initial[n], values) for n in ("t", "x", "v")]
+    t_1 = real_value(at, values)
+    if None in start or t_1 is None or a.free_symbols - {T, X, V}:
+        return None
+    t_0, x_0, v_0 = start
+    x, v = integrate_numerically(a, motion.given, t_0, x_0, v_0, t_1)  # type: ignore[arg-type]
+    value = sympy.Float(x if function == "x" else v, 15)
+    how = (
+        f"{function}({at}) by integrating x' = v, v' = {motion.given} numerically from t₀ "
+        f"(mpmath ODE solver): sympy could not invert the relation into {function}(t)"
+    )
+    shown = f"{float(value):.6g}"
+    result = Formula(f"{function}({at})", shown, sympy.latex(value), shown, sympy.latex(value))
+    steps.append(Step(0, (), (f"{function}({at})",), "numeric", (result,), (), how))
+    return value
 
 
 def _variable_of(given: str, given_dims: Mapping[str, Dim], where: Position) -> str:

@@ -115,3 +115,29 @@ def test_same_answer_whatever_unit_the_time_is_given_in(tmp_path):
         )
         value = solve_file(write(tmp_path, text)).answers[0].value
         assert math.isclose(value, 11.0, rel_tol=1e-9)
+
+
+DRAG_FALL = Path(__file__).resolve().parent.parent / "problems" / "kinematics" / "drag_fall.dyn"
+
+
+def test_newtons_law_with_a_drag_law_is_integrated():
+    # m dv/dt = m g − c v² from rest: v = v_T tanh(k t), x = (m/c) ln cosh(k t) with
+    # v_T = sqrt(m g/c), k = sqrt(g c/m) (separation of variables, by hand)
+    solution = solve_file(DRAG_FALL)
+    v_1, x_1 = solution.answers
+    v_T, k = math.sqrt(2 * 9.81 / 0.02), math.sqrt(9.81 * 0.02 / 2)
+    assert v_1.value == pytest.approx(v_T * math.tanh(k * 3), rel=1e-9)
+    assert x_1.value == pytest.approx(2 / 0.02 * math.log(math.cosh(k * 3)), rel=1e-9)
+    # regression: inverting t(v) used to run for minutes; now it gives up and integrates
+    assert any(step.method == "numeric" for step in solution.steps)
+
+
+def test_linear_drag_as_f_equals_ma_gives_the_exponential(tmp_path):
+    # m dv/dt = −c v, v(0) = v_0: v = v_0 e^(−c t/m) = 10 e^(−0.5) = 6.0653 m/s at t = 1 s
+    path = tmp_path / "drag.dyn"
+    path.write_text(
+        "given:\n  m = 2 kg\n  c = 1 kg/s\n  v_0 = 10 m/s\n  t_1 = 1 s\n"
+        "kinematics:\n  m*a = -c*v\nfind: v_1 = v(t_1)\n"
+    )
+    (v_1,) = solve_file(path).answers
+    assert v_1.value == pytest.approx(10 * math.exp(-0.5), rel=1e-12)

@@ -26,6 +26,7 @@ from dynsolve.numbers import real_value, tidy
 
 T, X, V = sympy.symbols("t x v", real=True)
 KINDS = ("a(t)", "a(v)", "a(x)", "x(t)", "v(t)")
+INVERT_BUDGET = 3.0  # seconds for sympy to invert a relation before it is left uninverted
 Values = Mapping[sympy.Symbol, sympy.Expr]
 
 
@@ -210,14 +211,41 @@ def _invert(
 ) -> sympy.Expr | None:
     """Solve ``argument = relation(variable)`` for ``variable``; the branch through
     (``at``, ``value``). None when sympy cannot invert it."""
+    from dynsolve.solve.blocks import BudgetExceeded, time_budget
+
     if relation.has(sympy.Integral):
         return None
     try:
-        roots = sympy.solve(sympy.Eq(argument, relation), variable)
-    except (NotImplementedError, ValueError):
+        with time_budget(INVERT_BUDGET):
+            roots = sympy.solve(sympy.Eq(argument, relation), variable)
+    except (NotImplementedError, ValueError, BudgetExceeded):
         return None
     for root in roots:
         start = tidy(root.subs(argument, at) - value)
         if start == 0:
             return root
     return roots[0] if len(roots) == 1 else None
+
+
+def integrate_numerically(
+    a: sympy.Expr, kind: str, t0: float, x0: float, v0: float, t1: float
+) -> tuple[float, float]:
+    """(x, v) at t1 by integrating x' = v, v' = a(t, x or v) numerically (mpmath's
+    Taylor-series ODE solver): the values when a relation could not be inverted.
+
+    >>> x, v = integrate_numerically(-V, "a(v)", 0.0, 0.0, 2.0, 1.0)  # v = 2 e^(−t)
+    >>> round(v, 10), round(x, 10)
+    (0.7357588823, 1.2642411177)
+    """
+    import mpmath
+
+    variable = {"a(t)": T, "a(v)": V, "a(x)": X}[kind]
+    rate = sympy.lambdify(variable, a, "mpmath")
+
+    def slopes(t: object, state: list[object]) -> list[object]:
+        x, v = state
+        return [v, rate({"a(t)": t, "a(v)": v, "a(x)": x}[kind])]
+
+    solution = mpmath.odefun(slopes, t0, [x0, v0])
+    x, v = solution(t1)
+    return float(x), float(v)

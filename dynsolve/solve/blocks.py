@@ -80,7 +80,7 @@ class BlockSolution:
     exhaustive: bool = True  # False when the roots come from a numeric search
 
 
-class _BudgetExceeded(BaseException):
+class BudgetExceeded(BaseException):
     """The symbolic time budget ran out (BaseException so sympy cannot swallow it)."""
 
 
@@ -121,7 +121,7 @@ def time_budget(seconds: float) -> Iterator[None]:
     def expire(signum: int, frame: object) -> None:
         if armed[0]:
             armed[0] = False
-            raise _BudgetExceeded
+            raise BudgetExceeded
 
     previous_handler = signal.signal(signal.SIGALRM, expire)
     previous_delay, previous_interval = signal.setitimer(signal.ITIMER_REAL, seconds)
@@ -144,7 +144,7 @@ def _within_budget(work: Callable[[], _Result], seconds: float) -> tuple[_Result
     try:
         with time_budget(seconds):
             return work(), False
-    except _BudgetExceeded:
+    except BudgetExceeded:
         return None, True
 
 
