@@ -80,6 +80,12 @@ DIMS = {"theta": Dim()} | {
     )
     for name in names
 }
+# particle kinetics: the resultant force m a in each component (needs the given mass m)
+FORCES = {
+    "F_x": "a_x", "F_y": "a_y", "F_r": "a_r", "F_theta": "a_theta",
+    "F_t": "a_t", "F_n": "a_n", "F": "a",
+}  # fmt: skip
+DIMS |= {name: Dim.of("force") for name in FORCES}
 PLANE_ONLY = frozenset({"y", "v_x", "v_y", "a_x", "a_y", "r", "theta", "y_0", "v_x0", "v_y0"})
 _AXIS_RULES = {  # the rectilinear rules of integrate_motion, along one axis
     "v = v₀ + ∫ a dt": "v_{0} = v_{0}0 + ∫ a_{0} dt",
@@ -451,6 +457,8 @@ class _Builder:
 
     def _quantity(self, name: str, at: Position) -> str:
         available = QUANTITIES[self.components]
+        if name in FORCES and FORCES[name] in available:
+            return self._force(name, at)
         if name in available:
             if name in ("a_t", "a_n", "rho"):
                 self._normal_tangential()
@@ -469,6 +477,20 @@ class _Builder:
         close = difflib.get_close_matches(name, [*available, "t_at", "max", "min"], n=1)
         hint = f"did you mean '{close[0]}'?" if close else f"the quantities: {listed}"
         raise SpecError(f"'{name}' is not a quantity of plane motion", at, hint)
+
+    def _force(self, name: str, at: Position) -> str:
+        """The resultant force on the particle in one component: ΣF = m a."""
+        if self.given_dims.get("m") != Dim.of("mass"):
+            raise SpecError(
+                f"{pretty(name)} = m {pretty(FORCES[name])} needs the particle's mass",
+                at,
+                hint="give it as 'm = … kg' under given:",
+            )
+        self._quantity(FORCES[name], at)
+        lines = tuple(s.line for s in self.relations.values())
+        rule = f"ΣF = m a: {pretty(name)} = m {pretty(FORCES[name])} (resultant force)"
+        self._derive(name, tidy(self.symbols["m"] * self.formulas[FORCES[name]]), rule, lines)
+        return name
 
     def _value(self, name: str, at: Position) -> tuple[sympy.Expr, Dim]:
         """A given, an initial condition or an earlier find: its value and dimension."""

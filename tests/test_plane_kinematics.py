@@ -322,3 +322,35 @@ def test_a_single_position_relation_is_still_rectilinear(tmp_path):
     problem = build_kinematics_problem(parse_file(write(tmp_path, text)))
     assert problem.motion.given == "x(t)"
     assert answers(tmp_path, text)["v_1"] == pytest.approx(2.0)
+
+
+ROD = """\
+given:
+  m = 0.5 kg
+  c = 2 m/s
+  b = 1 rad/s^2
+  t_1 = 1 s
+kinematics:
+  r = c*t
+  theta = b*t^2
+find: {find}
+"""
+
+
+def test_the_resultant_force_in_polar_components(tmp_path):
+    # a collar on a rod: r = 2t, θ = t²; at t = 1 s a_r = −8, a_θ = 12 (hand derivation in
+    # test_polar_components_at_a_time); ΣF = m a with m = 0.5 kg:
+    # F_r = −4 N (toward O), F_θ = 6 N, |F| = 0.5 √208 = 7.2111 N
+    find = "F_r1 = F_r(t_1) [N], F_th1 = F_theta(t_1) [N], F_1 = F(t_1) [N]"
+    got = answers(tmp_path, ROD.format(find=find))
+    assert got["F_r1"] == pytest.approx(-4.0, rel=1e-12)
+    assert got["F_th1"] == pytest.approx(6.0, rel=1e-12)
+    assert got["F_1"] == pytest.approx(0.5 * math.sqrt(208), rel=1e-12)
+
+
+def test_a_force_needs_the_mass(tmp_path):
+    text = ROD.format(find="F_1 = F(t_1)").replace("  m = 0.5 kg\n", "")
+    path = tmp_path / "rod.dyn"
+    path.write_text(text)
+    with pytest.raises(SpecError, match="needs the particle's mass"):
+        solve_file(path)
