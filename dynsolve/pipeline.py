@@ -414,7 +414,7 @@ class _View:
     def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
         """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the
         formula is the same for every positive value of the givens; else as it is."""
-        from dynsolve.model.states import sign_of
+        from dynsolve.solve.roots import sign_of
 
         if target.kind != "rotation" or value.free_symbols & set(self.problem.system.unknowns):
             return value, ""

@@ -8,6 +8,7 @@ and the assumptions to check once it is solved.
 from __future__ import annotations
 
 import difflib
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
@@ -18,7 +19,7 @@ from dynsolve.equation_mode import GivenInfo, Target, givens_of
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import parallel_axis
-from dynsolve.model.scene import Scene, Vec, build_scene
+from dynsolve.model.scene import Path, Scene, Vec, build_scene
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
@@ -539,36 +540,50 @@ def _path_extremes(scene: Scene, name: str, where: Position) -> object:
     """The largest and smallest acceleration of a point moving along a path at constant
     speed; symbolic givens are ordered with sample values that meet the scene's
     ``assume`` lines, and the order must be the same for every such sample."""
+    mover = scene.movers[name]
+    values = tuple(sorted(scene.values.items(), key=lambda item: str(item[0])))
+    found = _extremes(mover.path, mover.speed, values, scene.assumptions)
+    if found is None:
+        raise SpecError(
+            f"which point of the path {mover.path.name} has the largest acceleration depends "
+            "on the givens",
+            where,
+            hint="say which region you mean, e.g. 'assume a > b' in the scene",
+        )
+    return found
+
+
+@functools.lru_cache(maxsize=64)
+def _extremes(
+    path: Path,
+    speed: sympy.Expr,
+    values: tuple[tuple[sympy.Symbol, sympy.Expr], ...],
+    assumptions: tuple[sympy.core.relational.Relational, ...],
+) -> object | None:
+    """The curvature extremes of ``path`` (once per path: the notes and every find that
+    asks share them); None when their order differs between the samples."""
     from dynsolve.principles.curvilinear import (
         ExplicitPath,
         ImplicitPath,
         acceleration_extremes,
     )
 
-    mover = scene.movers[name]
-    path = mover.path
     shape = (
         ExplicitPath(path.explicit, path.x)
         if path.explicit is not None
         else ImplicitPath(path.curve, path.x, path.y)
     )
+    given = dict(values)
     symbols = sorted(path.curve.free_symbols - {path.x, path.y}, key=str)
-    if all(s in scene.values for s in symbols):
-        return acceleration_extremes(shape, mover.speed, order_by=scene.values)
+    if all(s in given for s in symbols):
+        return acceleration_extremes(shape, speed, order_by=given)
     found = []
     for shift in range(len(SAMPLES)):
         sample = {s: SAMPLES[(i + shift) % len(SAMPLES)] for i, s in enumerate(symbols)}
-        if all(bool(a.xreplace(sample)) for a in scene.assumptions):
-            found.append(acceleration_extremes(shape, mover.speed, order_by=sample))
+        if all(bool(a.xreplace(sample)) for a in assumptions):
+            found.append(acceleration_extremes(shape, speed, order_by=sample))
     orders = {(sympy.srepr(f.maximum.a), sympy.srepr(f.minimum.a)) for f in found}
-    if len(orders) != 1:
-        raise SpecError(
-            f"which point of the path {path.name} has the largest acceleration depends on "
-            "the givens",
-            where,
-            hint="say which region you mean, e.g. 'assume a > b' in the scene",
-        )
-    return found[0]
+    return found[0] if len(orders) == 1 else None
 
 
 def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:

@@ -161,3 +161,18 @@ def test_the_collar_is_checked_by_integrating_the_spring_force():
     solution = solve_file(seed)
     check = next(c for c in solution.checks if c.name.startswith("second method"))
     assert check.passed and "11.09022" in check.detail
+
+
+def test_a_path_through_the_springs_anchor_does_not_break_the_second_method(tmp_path_factory):
+    # regression (found by the T + V property): the path from (0, −0.1) to (0, 0.1) passes
+    # the anchor at the origin, where the spring's direction is undefined; the numeric
+    # integral used to divide by zero there. Both ends are 0.1 m from the anchor, so the
+    # stretch is the same and, with no weight, v₂ = v₁ = 5 m/s.
+    text = SPRING_DROP.format(m=1, k=1, L0=0.1, x1=0.0, y1=-0.1, x2=0.0, y2=0.1, v1=5)
+    text = text.replace("  gravity\n", "")
+    path = tmp_path_factory.mktemp("anchor") / "energy.dyn"
+    path.write_text(text)
+    solution = solve_file(path)
+    assert solution.answers[0].value == pytest.approx(5.0, rel=1e-12)
+    check = next(c for c in solution.checks if c.name.startswith("second method"))
+    assert check.passed

@@ -33,8 +33,9 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.model.scene import Body, Scene, Vec
-from dynsolve.numbers import real_value, tidy
+from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
+from dynsolve.numbers import tidy
+from dynsolve.solve.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 
@@ -67,6 +68,7 @@ class StateChange:
     rates: Rates
     rate_name: str  # what the rate of travel measures, e.g. "ω of disk" or "speed of G"
     relations: tuple[str, ...]  # the kinematic relations used, for the derivation
+    initial: Rates  # the velocities in state 1 per unit of some rate
 
 
 def turned(cos: sympy.Expr, sin: sympy.Expr, vector: Vec) -> Vec:
@@ -112,6 +114,35 @@ def wound_after(body: Body, placement: Placement, P: Vec) -> Vec:
         tidy(P[0] + placement.shift[0] - turn * rho[1]),
         tidy(P[1] + placement.shift[1] + turn * rho[0]),
     )
+
+
+def particle_shift(scene: Scene, travel: Travel) -> Vec | None:
+    """Δr_G of a particle's travel ``to`` a position or ``by`` a distance (None otherwise).
+
+    >>> import sympy
+    >>> s = sympy.Symbol("s")
+    >>> ball = Body("ball", 1, 0, (1, 2), (1, 2), "particle", (), {}, True, "", 0, 0)
+    >>> scene = Scene({"ball": ball}, {}, (), (), (), None, {})
+    >>> particle_shift(scene, Travel("ball", "to", position=(4, 6)))
+    (3, 4)
+    >>> particle_shift(scene, Travel("ball", "by", distance=s, direction=(0, -1)))
+    (0, -s)
+    """
+    G = scene.bodies[travel.body].G
+    if travel.kind == "to":
+        assert travel.position is not None
+        return (tidy(travel.position[0] - G[0]), tidy(travel.position[1] - G[1]))
+    if travel.kind == "by":
+        assert travel.distance is not None and travel.direction is not None
+        d = travel.direction
+        return (tidy(travel.distance * d[0]), tidy(travel.distance * d[1]))
+    return None
+
+
+def _rolling_radius(scene: Scene, support: Support) -> sympy.Expr:
+    """The distance from a rolling body's centre to its contact point."""
+    G, C = scene.bodies[support.body].G, support.point
+    return tidy(sympy.sqrt((C[0] - G[0]) ** 2 + (C[1] - G[1]) ** 2))
 
 
 def _cross_k(omega: sympy.Expr, r: Vec) -> Vec:
@@ -171,11 +202,7 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
             pair(after(b, support.point), support.point)
             relations.append(f"{b} turns about the pin {support.name}")
         elif support.kind == "rolls":
-            body = scene.bodies[b]
-            r = sympy.sqrt(
-                (support.point[0] - body.G[0]) ** 2 + (support.point[1] - body.G[1]) ** 2
-            )
-            k_n = _cross_k(x.phi[b] * tidy(r), n)
+            k_n = _cross_k(x.phi[b] * _rolling_radius(scene, support), n)
             pair((x.u[b], x.w[b]), k_n)
             relations.append(f"{b} rolls without slipping at {support.name}: Δs_G = r Δθ")
         elif support.kind == "base":
@@ -286,11 +313,7 @@ def _velocity_constraints(
         if support.kind == "pin":
             equations += list(velocity(b, support.point))
         elif support.kind == "rolls":
-            body = scene.bodies[b]
-            r = sympy.sqrt(
-                (support.point[0] - body.G[0]) ** 2 + (support.point[1] - body.G[1]) ** 2
-            )
-            k_n = _cross_k(x.om[b] * tidy(r), n)
+            k_n = _cross_k(x.om[b] * _rolling_radius(scene, support), n)
             equations += [x.vx[b] - k_n[0], x.vy[b] - k_n[1]]
         elif support.kind == "base":
             equations += [x.om[b], x.vx[b] * n[0] + x.vy[b] * n[1]]
@@ -311,26 +334,6 @@ def _velocity_constraints(
         spin = _cross_k(x.om[link.name], (start[0] - end[0], start[1] - end[1]))
         equations += [v_start[0] - v_end[0] - spin[0], v_start[1] - v_end[1] - spin[1]]
     return [sympy.expand(e) for e in equations if e != 0]
-
-
-def sign_of(expr: sympy.Expr, given_values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
-    """The sign of ``expr`` with the givens' values, else the same for sampled positive
-    values of its symbols; ValueError when it cannot be told.
-
-    >>> import sympy
-    >>> a, b = sympy.symbols("a b", positive=True)
-    >>> sign_of(-a * b, {}), sign_of(a - b, {a: 1, b: 2})
-    (-1, -1)
-    """
-    from dynsolve.solve.roots import sampled
-
-    number = real_value(expr, given_values)
-    if number is None:
-        samples = sampled(expr)
-        number = samples[0] if samples and all(v * samples[0] > 0 for v in samples) else None
-    if number is None or number == 0:
-        raise ValueError("cannot tell which way the scene moves toward state 2")
-    return 1 if number > 0 else -1
 
 
 def _rates(
@@ -387,7 +390,7 @@ def state_change(
     if len(scene.travels) != 1:
         raise ValueError("describe state 2 with one travel line (the scene moves as one)")
     values = dict(given_values or {})
-    initial_rates(scene, values)  # refuses a scene that has not one degree of freedom
+    initial = initial_rates(scene, values)  # refuses a scene without one degree of freedom
     x = _Unknowns(scene)
     equations, relations = _position_constraints(scene, x)
     known = _solve_positions(equations, x)
@@ -404,7 +407,7 @@ def state_change(
     }
     link_turns = {n: known[x.phi[n]] for n in x.links}
     rates, rate_name = _rates(scene, x, placements, values)
-    return StateChange(placements, link_turns, rates, rate_name, tuple(relations))
+    return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)
 
 
 def initial_rates(

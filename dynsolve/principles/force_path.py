@@ -27,11 +27,9 @@ import mpmath
 import sympy
 
 from dynsolve.model.scene import Scene, Vec
+from dynsolve.model.states import particle_shift
 from dynsolve.numbers import real_value
-
-
-def _dot(a: Vec, b: Vec) -> sympy.Expr:
-    return a[0] * b[0] + a[1] * b[1]
+from dynsolve.principles.newton_euler import dot
 
 
 def speed_by_integration(
@@ -45,19 +43,14 @@ def speed_by_integration(
     body = scene.bodies[body_name]
     travel = scene.travels[body_name]
     G1 = body.G
-    if travel.kind == "to":
-        assert travel.position is not None
-        G2 = travel.position
-    elif travel.kind == "by":
-        assert travel.distance is not None and travel.direction is not None
-        G2 = tuple(G1[i] + travel.distance * travel.direction[i] for i in range(2))
-    else:
+    step = particle_shift(scene, travel)
+    if step is None:
         return None
     lam = sympy.Symbol("lambda_", real=True)
-    step = (G2[0] - G1[0], G2[1] - G1[1])
-    length = sympy.sqrt(_dot(step, step))
+    length = sympy.sqrt(dot(step, step))
     P = (G1[0] + lam * step[0], G1[1] + lam * step[1])
     forces: list[Vec] = []
+    nearest: list[sympy.Expr] = []  # where the path passes closest to a spring's anchor
     if scene.gravity is not None:
         weight = body.mass * symbols["g"]
         forces.append((weight * scene.gravity[0], weight * scene.gravity[1]))
@@ -65,7 +58,9 @@ def speed_by_integration(
         if spring.body != body_name or spring.other:
             continue
         to_end = (spring.other_point[0] - P[0], spring.other_point[1] - P[1])
-        current = sympy.sqrt(_dot(to_end, to_end))
+        anchor = (spring.other_point[0] - G1[0], spring.other_point[1] - G1[1])
+        nearest.append(dot(anchor, step) / dot(step, step))
+        current = sympy.sqrt(dot(to_end, to_end))
         pull = spring.k * (current - spring.unstretched) / current
         forces.append((pull * to_end[0], pull * to_end[1]))
     for load in scene.loads:
@@ -75,23 +70,30 @@ def speed_by_integration(
             size = symbols[load.name]
             forces.append((size * load.direction[0], size * load.direction[1]))
     tangent = (step[0] / length, step[1] / length)
-    F_t = sympy.Add(*(_dot(f, tangent) for f in forces))
+    F_t = sympy.Add(*(dot(f, tangent) for f in forces))
     for support in scene.supports:
         if support.body != body_name or support.smooth:
             continue
         if support.mu_k is None:
             return None
-        across = sympy.Add(*(_dot(f, support.normal) for f in forces))
+        across = sympy.Add(*(dot(f, support.normal) for f in forces))
         F_t -= support.mu_k * sympy.Abs(across)  # kinetic friction opposes the motion
     m = real_value(body.mass, values)
     s = real_value(length, values)
     v1 = scene.velocities.get(body_name, (0, 0))
-    v1_squared = real_value(_dot(v1, v1), values)
+    v1_squared = real_value(dot(v1, v1), values)
     integrand = sympy.Integer(0) + F_t.xreplace(dict(values))
     if m is None or s is None or v1_squared is None or integrand.free_symbols - {lam}:
         return None
     force = sympy.lambdify(lam, integrand, "mpmath")
-    work = float(mpmath.quad(force, [0, 1])) * s
+    # the spring force turns where the path passes its anchor: split the integral there
+    # so no node falls on that point
+    inner = {real_value(n, values) for n in nearest} - {None}
+    nodes = [0.0, *sorted(n for n in inner if 0 < n < 1), 1.0]  # type: ignore[operator]
+    try:
+        work = float(mpmath.quad(force, nodes)) * s
+    except (ArithmeticError, ValueError):  # a singular force on the path: no second method
+        return None
     squared = v1_squared + 2 * work / m
     return None if squared < 0 else squared**0.5
 

@@ -21,15 +21,11 @@ from collections.abc import Mapping
 import sympy
 
 from dynsolve.model.scene import Impact, Scene, Vec
-from dynsolve.principles.newton_euler import Formulation, bare_formulation
+from dynsolve.principles.newton_euler import Formulation, bare_formulation, dot
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
-
-
-def _dot(a: Vec, b: Vec) -> sympy.Expr:
-    return a[0] * b[0] + a[1] * b[1]
 
 
 def impact_equations(
@@ -41,7 +37,7 @@ def impact_equations(
     after = {body: sympy.Symbol(f"vn_{body}", real=True) for body in (A, B)}
     v_A1, v_B1 = before.get(A, ZERO), before.get(B, ZERO)
     momentum = Equation(
-        masses[A] * _dot(v_A1, n) + masses[B] * _dot(v_B1, n),
+        masses[A] * dot(v_A1, n) + masses[B] * dot(v_B1, n),
         masses[A] * after[A] + masses[B] * after[B],
         "momentum",
         1,
@@ -49,7 +45,7 @@ def impact_equations(
         "(no external impulse along it)",
     )
     restitution = Equation(
-        impact.e * (_dot(v_A1, n) - _dot(v_B1, n)),
+        impact.e * (dot(v_A1, n) - dot(v_B1, n)),
         after[B] - after[A],
         "restitution",
         2,
@@ -63,7 +59,7 @@ def velocity_after(impact: Impact, body: str, along: sympy.Expr, before: Mapping
     across it unchanged (smooth contact)."""
     n = impact.line
     t = (-n[1], n[0])
-    across = _dot(before.get(body, ZERO), t)
+    across = dot(before.get(body, ZERO), t)
     return (along * n[0] + across * t[0], along * n[1] + across * t[1])
 
 
@@ -103,7 +99,7 @@ def pivot_formulation(
     >>> sympy.solve(f.equations[0].residual, list(f.unknowns)), f.after_omega  # -12 = 6.5 ω
     ([24/13], {'cube': -omega_1_cube})
     """
-    from dynsolve.model.states import sign_of
+    from dynsolve.solve.roots import sign_of
 
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}

@@ -30,12 +30,14 @@ import sympy
 from dynsolve.model.scene import Scene, Support, Travel, Vec
 from dynsolve.model.states import (
     Placement,
-    initial_rates,
+    Rates,
+    particle_shift,
     point_after,
     state_change,
     wound_after,
 )
 from dynsolve.numbers import real_value, tidy
+from dynsolve.principles.newton_euler import dot
 from dynsolve.system import Equation
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -61,27 +63,14 @@ class Energy:
     second: tuple[float, str, str] | None = None
 
 
-def _dot(a: Vec, b: Vec) -> sympy.Expr:
-    return a[0] * b[0] + a[1] * b[1]
-
-
 def _length(a: Vec, b: Vec) -> sympy.Expr:
-    return tidy(sympy.sqrt((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2))
+    d = (a[0] - b[0], a[1] - b[1])
+    return tidy(sympy.sqrt(dot(d, d)))
 
 
 def _is_zero(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
     number = real_value(expr, values)
     return tidy(expr) == 0 or (number is not None and abs(number) < 1e-12)
-
-
-def _particle_shift(scene: Scene, travel: Travel) -> Vec:
-    G = scene.bodies[travel.body].G
-    if travel.kind == "to":
-        assert travel.position is not None
-        return (tidy(travel.position[0] - G[0]), tidy(travel.position[1] - G[1]))
-    assert travel.distance is not None and travel.direction is not None
-    d = travel.direction
-    return (tidy(travel.distance * d[0]), tidy(travel.distance * d[1]))
 
 
 class _Work:
@@ -118,7 +107,7 @@ class _Work:
             mass = self.scene.bodies[name].mass
             if mass == 0:
                 continue
-            work = mass * self.symbols["g"] * _dot(self.scene.gravity, placement.shift)
+            work = mass * self.symbols["g"] * dot(self.scene.gravity, placement.shift)
             if _is_zero(work, self.values):
                 self.idle.append(f"W_{name} (G moves across the weight)")
             else:
@@ -167,7 +156,7 @@ class _Work:
                 continue
             shift = self.moved(load.body, load.point)
             shift = (shift[0] - load.point[0], shift[1] - load.point[1])
-            work = self.magnitude(load.name) * _dot(load.direction, shift)
+            work = self.magnitude(load.name) * dot(load.direction, shift)
             if _is_zero(work, self.values):
                 self.idle.append(f"{load.name} (its point moves across it)")
             else:
@@ -196,7 +185,7 @@ class _Work:
         placement = self.placements[support.body]
         P2 = self.moved(support.body, support.point)
         step = (P2[0] - support.point[0], P2[1] - support.point[1])
-        if not _is_zero(_dot(step, support.normal), self.values):
+        if not _is_zero(dot(step, support.normal), self.values):
             raise ValueError(
                 f"{support.body} would leave its contact {support.name} on the way to state 2 "
                 "(a travel must run along the surface)"
@@ -234,10 +223,10 @@ class _Work:
             )
         total = sympy.Integer(0)
         if self.scene.gravity is not None:
-            total += body.mass * self.symbols["g"] * _dot(self.scene.gravity, n)
+            total += body.mass * self.symbols["g"] * dot(self.scene.gravity, n)
         for load in self.scene.loads:
             if load.body == body.name and load.kind == "force":
-                total += self.magnitude(load.name) * _dot(load.direction, n)
+                total += self.magnitude(load.name) * dot(load.direction, n)
         N = tidy(-total)
         number = real_value(N, self.values)
         if number is not None and number < 0:
@@ -271,7 +260,7 @@ def _kinetic(scene: Scene, v_G: Mapping[str, Vec], omega: Mapping[str, sympy.Exp
     terms = []
     for name, body in scene.bodies.items():
         v = v_G.get(name, ZERO)
-        terms += [tidy(body.mass * _dot(v, v) / 2), tidy(body.I_G * omega.get(name, 0) ** 2 / 2)]
+        terms += [tidy(body.mass * dot(v, v) / 2), tidy(body.I_G * omega.get(name, 0) ** 2 / 2)]
     return sympy.Add(*terms)
 
 
@@ -306,7 +295,8 @@ def _particle(
     name = travel.body
     if travel.kind == "turns":
         raise ValueError(f"{name} is a particle: it has no angle to turn through")
-    shift = _particle_shift(scene, travel)
+    shift = particle_shift(scene, travel)
+    assert shift is not None
     work = _work(
         scene, {name: Placement(shift, STILL.turn, STILL.cos, STILL.sin)}, {}, symbols, values
     )
@@ -314,7 +304,7 @@ def _particle(
     v1 = scene.velocities.get(name, ZERO)
     rate = None if travel.stops else sympy.Symbol(f"v_2_{name}", real=True)
     T2 = mass * rate**2 / 2 if rate is not None else sympy.Integer(0)
-    equation = _equation(mass * _dot(v1, v1) / 2, work, T2)
+    equation = _equation(mass * dot(v1, v1) / 2, work, T2)
     speed = rate if rate is not None else sympy.Integer(0)
     second = None
     if rate is not None:
@@ -335,7 +325,7 @@ def _mechanism(
     work = _work(scene, change.placements, change.link_turns, symbols, values)
     (travel,) = scene.travels.values()
     rates = change.rates
-    T1 = _initial_energy(scene, values)
+    T1 = _initial_energy(scene, change.initial)
     rate = None
     if not travel.stops:
         prefix = "omega_2" if travel.kind == "turns" else "v_2"
@@ -363,17 +353,17 @@ def _mechanism(
     return Energy(equation, rate, speeds, spins, relations, tuple(work.idle), second)
 
 
-def _initial_energy(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
-    """T1 from a given velocity or angular velocity in state 1 (0 from rest)."""
+def _initial_energy(scene: Scene, rates: Rates) -> sympy.Expr:
+    """T1 from a given velocity or angular velocity in state 1 (0 from rest); ``rates``
+    are the state-1 velocities per unit rate."""
     if not scene.velocities and not scene.omegas:
         return sympy.Integer(0)
-    rates = initial_rates(scene, values)
     if scene.omegas:
         name, omega = next(iter(scene.omegas.items()))
         q = omega / rates.omega[name]
     else:
         name, v = next(iter(scene.velocities.items()))
         unit = rates.v_G[name]
-        q = _dot(v, unit) / _dot(unit, unit)
+        q = dot(v, unit) / dot(unit, unit)
     v_G = {n: (v[0] * q, v[1] * q) for n, v in rates.v_G.items()}
     return _kinetic(scene, v_G, {n: w * q for n, w in rates.omega.items()})

@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
+from dynsolve.numbers import real_value
 from dynsolve.solve.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
 from dynsolve.solve.outcome import DiscardedRoot
 from dynsolve.solve.residuals import equation_residual, is_satisfied
@@ -354,3 +355,21 @@ def _tidy(values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy
         else v
         for u, v in values.items()
     }
+
+
+def sign_of(expr: sympy.Expr, given_values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
+    """The sign of ``expr`` with the givens' values, else the same for sampled positive
+    values of its symbols; ValueError when it cannot be told.
+
+    >>> import sympy
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> sign_of(-a * b, {}), sign_of(a - b, {a: 1, b: 2})
+    (-1, -1)
+    """
+    number = real_value(expr, given_values)
+    if number is None:
+        samples = sampled(expr)
+        number = samples[0] if samples and all(v * samples[0] > 0 for v in samples) else None
+    if number is None or number == 0:
+        raise ValueError("cannot tell which way the scene moves toward state 2")
+    return 1 if number > 0 else -1
