@@ -8,6 +8,7 @@ random positive values of the free symbols.
 
 from __future__ import annotations
 
+import cmath
 import random
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -217,10 +218,26 @@ def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdi
     if difference == 0 or sympy.simplify(difference) == 0:
         return Verdict(True, shown, "equivalent (exactly)")
     rng = random.Random(20261121)
-    free = sorted(difference.free_symbols, key=lambda s: s.name)
+    # every symbol of either side gets a value, also one that cancels in the difference
+    free = sorted(expected.free_symbols | computed.free_symbols, key=lambda s: s.name)
     for _ in range(EQUIVALENCE_POINTS):
         point = {s: sympy.Rational(rng.randint(50, 400), 100) for s in free}
-        a, b = complex(expected.subs(point).evalf(30)), complex(computed.subs(point).evalf(30))
-        if abs(a - b) > 1e-9 * max(abs(a), abs(b), 1e-300):
+        a, b = _complex_value(expected.subs(point)), _complex_value(computed.subs(point))
+        if a is None:
+            return Verdict(False, shown, "the formula has no finite value (a division by zero?)")
+        if b is None or abs(a - b) > 1e-9 * max(abs(a), abs(b), 1e-300):
             return Verdict(False, shown, f"not equivalent: computed {computed}")
     return Verdict(True, shown, f"equivalent (numerically, at {EQUIVALENCE_POINTS} points)")
+
+
+def _complex_value(expr: sympy.Expr) -> complex | None:
+    """A number's value as a finite complex, or None (infinite, undefined or not a number).
+
+    >>> _complex_value(sympy.sqrt(-4)), _complex_value(sympy.zoo), _complex_value(sympy.Symbol("x"))
+    (2j, None, None)
+    """
+    try:
+        value = complex(expr.evalf(30))
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+    return value if cmath.isfinite(value) else None

@@ -7,16 +7,19 @@ The only module that prints. sympy and pint are imported inside the commands, so
 from __future__ import annotations
 
 import enum
-import os
-import tempfile
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, TypeVar
 
 import typer
 from rich.console import Console
 
+from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
+
 if TYPE_CHECKING:
-    from dynsolve.results import Solution
+    from dynsolve.results import Check, Solution
+    from dynsolve.system import SolveOptions
 
 
 class ExitCode(enum.IntEnum):
@@ -42,6 +45,53 @@ class Mode(enum.StrEnum):
     exact = "exact"
     numeric = "numeric"
 
+
+@dataclass(frozen=True)
+class _Target:
+    """Where ``solve`` output goes: its format, and the terminal's width and colours."""
+
+    format: str
+    to_terminal: bool
+    width: int
+    terminal: bool
+    colours: str | None
+
+
+@dataclass(frozen=True)
+class _Done:
+    """A solved spec's rendered output and exit code."""
+
+    text: str
+    exit_code: int
+
+
+@dataclass(frozen=True)
+class _Refused:
+    """A spec that could not be solved: bad input, unreadable, or over the budget."""
+
+    errors: tuple[str, ...]
+
+
+_Outcome = TypeVar("_Outcome")
+BLOCK_SECONDS = 5.0  # symbolic solve of one nonlinear block, before the numeric fallback
+TimeBudget = Annotated[
+    float,
+    typer.Option(
+        "--time-budget",
+        min=0.1,
+        max=3600,
+        help="Seconds the whole run may take: parsing, solving, checks and output.",
+    ),
+]
+MemoryBudget = Annotated[
+    int,
+    typer.Option(
+        "--memory-budget",
+        min=64,
+        max=1 << 20,
+        help="Megabytes of memory the run may use (not enforced on Windows).",
+    ),
+]
 
 app = typer.Typer(
     help="Solve and check engineering-dynamics problems written as plain-text .dyn specs.",
@@ -89,30 +139,32 @@ def solve(
     mode: Annotated[
         Mode, typer.Option(help="exact: rationals and formulas; numeric: floating point.")
     ] = Mode.exact,
-    time_budget: Annotated[
-        float,
-        typer.Option(min=0.1, max=600, help="Seconds a nonlinear block may take symbolically."),
-    ] = 5.0,
+    time_budget: TimeBudget = DEFAULT_SECONDS,
+    memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
 ) -> None:
     """Solve one spec and show its unit-checked derivation.
 
     Shows the givens, each equation with its unit check, the solve order, the
     answers to 3 significant figures and the checks. Exit code 0 when every check
-    and answer passes, 1 when one fails, 2 for bad input.
+    and answer passes, 1 when one fails, 2 for bad input or past the time or
+    memory budget (the whole run: parsing, solving, checks and output).
     """
-    from dynsolve.errors import DynsolveError
-    from dynsolve.pipeline import solve_file
-    from dynsolve.system import SolveOptions
-
     if output is not None:
         _refuse_overwriting_input(file, output)
-    try:
-        solution = solve_file(file, SolveOptions(mode=mode.value, time_budget=time_budget))
-    except DynsolveError as error:
-        _report(error)
-        raise typer.Exit(ExitCode.BAD_INPUT) from None
-    _emit(solution, format, output)
-    raise typer.Exit(ExitCode.OK if solution.passed else ExitCode.FAILED)
+    budget = Budget(time_budget, memory_budget)
+    width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
+    # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
+    target = _Target(format.value, output is None, width, terminal, colours)
+    outcome = _in_worker(solve_and_render, (file, mode.value, budget, target), budget)
+    if isinstance(outcome, _Refused):
+        _report(outcome.errors)
+        raise typer.Exit(ExitCode.BAD_INPUT)
+    if output is None:
+        stdout.file.write(outcome.text)
+        stdout.file.flush()
+    else:
+        _write_output(output, outcome.text)
+    raise typer.Exit(outcome.exit_code)
 
 
 @app.command()
@@ -122,39 +174,43 @@ def check(
         typer.Argument(help="Spec files or folders (searched for *.dyn).", show_default=False),
     ],
     mode: Annotated[Mode, typer.Option(help="Solve mode for every spec.")] = Mode.exact,
+    time_budget: TimeBudget = DEFAULT_SECONDS,
+    memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
 ) -> None:
     """Solve every .dyn spec under PATHS and compare it with its answer key.
 
-    Prints a table of the failures and ends with 'N passed, M failed'. Exit code 0
-    only when all pass; 1 when an answer or check fails; 2 when a spec is malformed.
+    Prints a table of the failures, each with its reason, and ends with 'N passed,
+    M failed' (then ', K malformed' when specs could not be solved: bad syntax or
+    units, unreadable, not a regular file, over the budget). Each spec gets the
+    whole time and memory budget. Exit code 0 only when all pass; 1 when an answer
+    or check fails; 2 when a spec is malformed.
     """
-    from dynsolve.errors import DynsolveError
-    from dynsolve.pipeline import solve_file
+    from dynsolve.budget import run_each
     from dynsolve.render.terminal import failures_table
-    from dynsolve.system import SolveOptions
 
     files = _collect(paths)
-    options = SolveOptions(mode=mode.value)
+    budget = Budget(time_budget, memory_budget)
     failures: list[tuple[str, object]] = []
-    passed = failed = 0
-    worst = ExitCode.OK
-    for file in _progress(files):
-        try:
-            solution = solve_file(file, options)
-        except DynsolveError as error:
-            failures.append((str(file), str(error)))
+    passed = failed = malformed = 0
+    jobs = [(file, mode.value, budget) for file in files]
+    outcomes = run_each(solve_and_check, jobs, budget)
+    for file, result in zip(files, _progress(outcomes, len(files)), strict=True):
+        outcome = _refused_if_stopped(result)
+        if isinstance(outcome, _Refused):
+            failures.extend((str(file), error) for error in outcome.errors)
+            malformed += 1
+        elif outcome:
+            failures.extend((str(file), check) for check in outcome)
             failed += 1
-            worst = ExitCode.BAD_INPUT
-            continue
-        if solution.passed:
+        else:
             passed += 1
-            continue
-        failed += 1
-        worst = max(worst, ExitCode.FAILED)
-        failures.extend((str(file), c) for c in solution.checks if not c.passed)
     if failures:
         stdout.print(failures_table(failures))  # type: ignore[arg-type]
-    stdout.print(f"{passed} passed, {failed} failed")
+    summary = f"{passed} passed, {failed} failed" + (
+        f", {malformed} malformed" if malformed else ""
+    )
+    stdout.print(summary)
+    worst = ExitCode.BAD_INPUT if malformed else ExitCode.FAILED if failed else ExitCode.OK
     raise typer.Exit(worst)
 
 
@@ -172,37 +228,121 @@ def _collect(paths: list[Path]) -> list[Path]:
     return files
 
 
-def _progress(files: list[Path]):  # type: ignore[no-untyped-def]
-    if len(files) < CHECK_PROGRESS_THRESHOLD or not stderr.is_terminal:
-        yield from files
+def _progress(items: Iterator[_Outcome], total: int) -> Iterator[_Outcome]:
+    if total < CHECK_PROGRESS_THRESHOLD or not stderr.is_terminal:
+        yield from items
         return
     from rich.progress import track
 
-    yield from track(files, description="checking", console=stderr, transient=True)
+    yield from track(items, total=total, description="checking", console=stderr, transient=True)
 
 
-def _emit(solution: Solution, format: OutputFormat, output: Path | None) -> None:
+def solve_and_render(file: Path, mode: str, budget: Budget, target: _Target) -> _Done | _Refused:
+    """The worker's job for ``solve``: solve, check and render one spec to text."""
+    from dynsolve.budget import step
+    from dynsolve.errors import DynsolveError
+    from dynsolve.pipeline import solve_file
+
+    try:
+        solution = solve_file(file, _options(mode, budget))
+        with step("rendering the output"):
+            text = _render(solution, target)
+    except DynsolveError as error:
+        return _Refused(_messages(error))
+    return _Done(text, ExitCode.OK if solution.passed else ExitCode.FAILED)
+
+
+def solve_and_check(file: Path, mode: str, budget: Budget) -> tuple[Check, ...] | _Refused:
+    """The worker's job for ``check``: the failed checks of one spec (none: it passed)."""
+    from dynsolve.errors import DynsolveError
+    from dynsolve.pipeline import solve_file
+
+    try:
+        solution = solve_file(file, _options(mode, budget))
+    except DynsolveError as error:
+        return _Refused(_messages(error))
+    return tuple(c for c in solution.checks if not c.passed)
+
+
+def _options(mode: str, budget: Budget) -> SolveOptions:
+    """Solve options whose per-block symbolic budget leaves room for the numeric fallback."""
+    from dynsolve.system import SolveOptions
+
+    return SolveOptions(mode=mode, time_budget=min(BLOCK_SECONDS, budget.seconds / 4))
+
+
+def _render(solution: Solution, target: _Target) -> str:
     from dynsolve.render import renderer
 
-    if output is None and format is OutputFormat.text:
-        from dynsolve.render.terminal import solution_renderable
+    if target.format != OutputFormat.text or not target.to_terminal:
+        return renderer(target.format)(solution)
+    import io
 
-        stdout.print(solution_renderable(solution))
-        return
-    text = renderer(format.value)(solution)
-    if output is None:
-        stdout.out(text, end="", highlight=False)
-        return
-    _write_atomically(output, text)
-    stderr.print(f"wrote {output}")
+    from dynsolve.render.terminal import solution_renderable
+
+    buffer = io.StringIO()
+    console = Console(
+        file=buffer,
+        width=target.width,
+        force_terminal=target.terminal,
+        color_system=target.colours,  # type: ignore[arg-type]
+        highlight=False,
+    )
+    console.print(solution_renderable(solution))
+    return buffer.getvalue()
+
+
+def _in_worker(
+    job: Callable[..., _Outcome], args: tuple[object, ...], budget: Budget
+) -> _Outcome | _Refused:
+    """``job(*args)`` in a worker under ``budget``, or the error that stopped it."""
+    from dynsolve.budget import run
+    from dynsolve.errors import DynsolveError
+
+    try:
+        return run(job, args, budget)
+    except DynsolveError as error:
+        return _Refused(_messages(error))
+
+
+def _refused_if_stopped(outcome: _Outcome | Exception) -> _Outcome | _Refused:
+    """A job's outcome; the reason as _Refused when the budget or a bug stopped it."""
+    from dynsolve.errors import DynsolveError
+
+    if isinstance(outcome, DynsolveError):
+        return _Refused(_messages(outcome))
+    if isinstance(outcome, Exception):
+        last = str(outcome).strip().splitlines()[-1:] or ["no detail"]
+        return _Refused((f"internal error (a bug in dynsolve; please report it): {last[0]}",))
+    return outcome
+
+
+def _messages(error: Exception) -> tuple[str, ...]:
+    return tuple(str(each) for each in (error, *getattr(error, "others", ())))
 
 
 def _refuse_overwriting_input(spec: Path, output: Path) -> None:
+    from dynsolve.files import FileAccessError, check_writable
+
     same = output.exists() and spec.exists() and output.resolve() == spec.resolve()
     if same or output.suffix.lower() == ".dyn":
         _fail(f"refusing to write output to {output}: it is a spec file", "choose another -o path")
-    if output.is_dir():
-        _fail(f"cannot write {output}: it is a folder", "give a file name, e.g. -o out.tex")
+    try:
+        check_writable(output)  # before any work: a device, FIFO or /proc file is refused
+    except FileAccessError as error:
+        _report((str(error),))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+
+
+def _write_output(output: Path, text: str) -> None:
+    from dynsolve.files import FileAccessError, write_text
+
+    try:
+        write_text(output, text)
+    except FileAccessError as error:
+        _report((str(error),))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    stderr.print(f"wrote {output}")
 
 
 def _fail(message: str, hint: str) -> None:
@@ -210,37 +350,9 @@ def _fail(message: str, hint: str) -> None:
     raise typer.Exit(ExitCode.BAD_INPUT)
 
 
-def _write_atomically(path: Path, text: str) -> None:
-    """Write via a temporary file and rename, so a failure never leaves half a file."""
-    directory = path.resolve().parent
-    if not directory.is_dir():
-        _fail(f"cannot write {path}: folder {directory} does not exist", "create it first")
-    handle, temporary = tempfile.mkstemp(dir=directory, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
-        os.chmod(temporary, _file_mode(path))
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-
-
-def _file_mode(path: Path) -> int:
-    """The mode an ordinary new file gets (or the existing file's), not mkstemp's 0600."""
-    if path.exists():
-        return path.stat().st_mode & 0o777
-    umask = os.umask(0)
-    os.umask(umask)
-    return 0o666 & ~umask
-
-
-def _report(error: Exception) -> None:
-    from dynsolve.errors import DynsolveError
-
-    assert isinstance(error, DynsolveError)
-    for each in (error, *getattr(error, "others", ())):
-        stderr.out(f"error: {each}", highlight=False)
+def _report(messages: tuple[str, ...]) -> None:
+    for message in messages:
+        stderr.out(f"error: {message}", highlight=False)
 
 
 def main() -> None:

@@ -19,6 +19,7 @@ from typing import Protocol
 import sympy
 
 from dynsolve.answer_key import compare, compare_magnitude
+from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
 from dynsolve.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
@@ -67,14 +68,16 @@ class SolvableProblem(Protocol):
 
 def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solution:
     """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
-    spec = parse_file(path)
-    if spec.kinematics:
-        from dynsolve.kinematics_mode import build_kinematics_problem
+    with step("parsing the spec"):
+        spec = parse_file(path)
+    with step("building the equations"):
+        if spec.kinematics:
+            from dynsolve.kinematics_mode import build_kinematics_problem
 
-        return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
-    if spec.scene:
-        return solve_scene(spec, options or SolveOptions())
-    return solve_problem(build_problem(spec), options or SolveOptions())
+            return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
+        if spec.scene:
+            return solve_scene(spec, options or SolveOptions())
+        return solve_problem(build_problem(spec), options or SolveOptions())
 
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
@@ -121,10 +124,12 @@ def solve_problem(
 ) -> Solution:
     """Solve a built problem (unless ``outcome`` is given) and assemble what renderers show;
     ``second_methods`` are checks of the answers by another principle."""
-    outcome = outcome or solve_system(problem.system, options)
+    with step("solving the equations"):
+        outcome = outcome or solve_system(problem.system, options)
     view = _View(problem, outcome, trial or {}, options)
-    answers = tuple(view.answer(t) for t in problem.targets)
-    key = tuple(view.key(answers))
+    with step("simplifying the answers and comparing them with the key"):
+        answers = tuple(view.answer(t) for t in problem.targets)
+        key = tuple(view.key(answers))
     notes = tuple(Check(name, True, detail) for name, detail in problem.notes)
     checks = (
         view.checks()

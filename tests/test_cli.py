@@ -360,7 +360,7 @@ def test_check_folder_counts_passes_failures_and_malformed_specs(workdir: Path):
     # a malformed spec is bad input: exit 2 even though a spec merely failed too
     assert result.exit_code == 2
     out = text_of(result.stdout)
-    assert last_line(out) == "2 passed, 2 failed"
+    assert last_line(out) == "2 passed, 1 failed, 1 malformed"
     assert "c_wrong.dyn" in out and "d_bad.dyn" in out and "kgs" in out
     assert "a_drum.dyn" not in out and "b_block.dyn" not in out
 

@@ -239,6 +239,8 @@ def integrate_numerically(
     """
     import mpmath
 
+    from dynsolve.budget import step
+
     variable = {"a(t)": T, "a(v)": V, "a(x)": X}[kind]
     rate = sympy.lambdify(variable, a, "mpmath")
 
@@ -246,6 +248,7 @@ def integrate_numerically(
         x, v = state
         return [v, rate({"a(t)": t, "a(v)": v, "a(x)": x}[kind])]
 
-    solution = mpmath.odefun(slopes, t0, [x0, v0])
-    x, v = solution(t1)
+    with step("integrating the motion numerically (mpmath ODE)"):
+        solution = mpmath.odefun(slopes, t0, [x0, v0])
+        x, v = solution(t1)
     return float(x), float(v)

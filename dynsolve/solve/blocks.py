@@ -9,7 +9,7 @@ knowns and earlier unknowns kept as symbols. Choosing among the candidates is
 * linear blocks: ``linear_eq_to_matrix`` + ``linsolve`` — exact, method ``linear``;
   a singular matrix leaves the dependent unknowns *free* (under-determined);
 * nonlinear blocks: ``sympy.solve`` under ``options.time_budget`` seconds (SIGALRM,
-  main thread only; a budget <= 0 skips it), method ``symbolic``; when it times
+  else a cooperative clock check; a budget <= 0 skips it), method ``symbolic``; when it times
   out, cannot solve or finds nothing: Newton/secant root finding (mpmath, as
   ``sympy.nsolve`` does) from several starting points, method ``numeric``.
 
@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 import signal
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -37,6 +38,7 @@ import sympy
 from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
+from dynsolve.budget import step
 from dynsolve.solve.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -105,17 +107,30 @@ def as_expr(value: object) -> sympy.Expr:
 def time_budget(seconds: float) -> Iterator[None]:
     """Raise a private exception inside the ``with`` body once ``seconds`` have passed.
 
-    Uses ``SIGALRM``/``setitimer``, so it only arms in the main thread (elsewhere
-    there is no budget); the previous handler and timer are always restored.
+    Uses ``SIGALRM``/``setitimer`` in the main thread where it exists (the previous
+    handler and timer are always restored); elsewhere (Windows, other threads) a
+    cooperative check of the clock at each Python function call. The whole run has
+    its own budget besides (:mod:`dynsolve.budget`).
 
     >>> with time_budget(5.0):
     ...     total = sum(range(10))
     >>> total
     45
     """
-    if seconds <= 0 or threading.current_thread() is not threading.main_thread():
-        yield
-        return
+    with step("solving a nonlinear block symbolically (sympy)"):
+        if seconds <= 0:
+            yield
+        elif hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread():
+            with _alarm(seconds):
+                yield
+        else:
+            with _cooperative(seconds):
+                yield
+
+
+@contextmanager
+def _alarm(seconds: float) -> Iterator[None]:
+    """The budget by ``SIGALRM``/``setitimer`` (POSIX, main thread)."""
     armed = [True]
 
     def expire(signum: int, frame: object) -> None:
@@ -135,6 +150,25 @@ def time_budget(seconds: float) -> Iterator[None]:
         if previous_delay > 0:
             left = max(previous_delay - (time.monotonic() - started), 1e-6)
             signal.setitimer(signal.ITIMER_REAL, left, previous_interval)
+
+
+@contextmanager
+def _cooperative(seconds: float) -> Iterator[None]:
+    """The budget without signals (Windows, other threads): a profile hook checks the clock
+    at each Python function call and raises once the deadline has passed."""
+    deadline = time.monotonic() + seconds
+    previous = sys.getprofile()
+
+    def check(frame: object, event: str, argument: object) -> None:
+        if event == "call" and time.monotonic() > deadline:
+            sys.setprofile(previous)
+            raise BudgetExceeded
+
+    sys.setprofile(check)
+    try:
+        yield
+    finally:
+        sys.setprofile(previous)
 
 
 def _within_budget(work: Callable[[], _Result], seconds: float) -> tuple[_Result | None, bool]:

@@ -31,6 +31,7 @@ import lark
 from lark import Token, Transformer_NonRecursive
 
 from dynsolve.errors import Position, SpecError
+from dynsolve.files import read_capped
 from dynsolve.spec.ast import (
     Answer,
     Binary,
@@ -141,19 +142,8 @@ def _lark() -> lark.Lark:
 
 def parse_file(path: str | Path) -> Spec:
     """Read and parse a ``.dyn`` file, bounding its size and checking its encoding."""
-    path = Path(path)
     shown = str(path)
-    try:
-        size = path.stat().st_size
-    except OSError as exc:
-        raise SpecError(f"cannot read {shown}: {exc.strerror}", hint="check the path") from None
-    if size > MAX_FILE_BYTES:
-        raise SpecError(
-            f"{shown} is {size} bytes; specs are limited to {MAX_FILE_BYTES} bytes",
-            Position(shown, 1, 1),
-            hint="split the problem into several files",
-        )
-    raw = path.read_bytes()
+    raw = read_capped(path, MAX_FILE_BYTES)  # a byte cap, not stat: /dev/zero, FIFOs
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
