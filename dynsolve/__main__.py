@@ -2,4 +2,5 @@
 
 from dynsolve.cli import main
 
-main()
+if __name__ == "__main__":  # a spawned worker (macOS, Windows) imports this module again
+    main()

@@ -34,6 +34,7 @@ _KILL_GRACE = 2.0  # seconds the child gets to exit after being terminated
 _Result = TypeVar("_Result")
 _channel: Connection | None = None  # set in the worker: where step names go
 _current = ["starting"]
+_out_of_memory_in = [""]  # the step a MemoryError came from, in the worker
 
 
 @dataclass(frozen=True)
@@ -68,6 +69,9 @@ def step(name: str) -> Iterator[None]:
     _announce(name)
     try:
         yield
+    except MemoryError:
+        _out_of_memory_in[0] = _out_of_memory_in[0] or name  # the innermost step
+        raise
     finally:
         _announce(previous)
 
@@ -155,11 +159,11 @@ def _work_in_child(
     _channel = sender
     _limit_memory(budget.megabytes)
     for args in jobs:
-        _current[0] = "starting"
+        _current[0], _out_of_memory_in[0] = "starting", ""
         try:
             result = work(*args)
         except MemoryError:
-            sender.send(("memory", _current[0]))
+            sender.send(("memory", _out_of_memory_in[0] or _current[0]))
             return  # the heap may be in pieces: a new worker takes the next job
         except BaseException:
             sender.send(("error", traceback.format_exc()))

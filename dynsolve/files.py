@@ -36,7 +36,8 @@ class FileAccessError(DynsolveError, OSError):
 
 
 def read_capped(path: str | Path, cap: int) -> bytes:
-    """The bytes of the regular file at ``path``; FileAccessError past ``cap`` bytes.
+    """The bytes of the regular file at ``path``, at most ``cap + 1`` of them: a result
+    longer than ``cap`` means the file is over the cap (the caller says so, with its limit).
 
     >>> try:
     ...     read_capped("/dev/zero", cap=10)
@@ -72,11 +73,6 @@ def read_capped(path: str | Path, cap: int) -> bytes:
         raise FileAccessError(f"cannot read {shown}: {_reason(error)}") from None
     finally:
         os.close(descriptor)
-    if size > cap:
-        raise FileAccessError(
-            f"{shown} is over {cap} bytes; specs are limited to {cap} bytes",
-            hint="split the problem into several files",
-        )
     return b"".join(chunks)
 
 
@@ -102,8 +98,8 @@ def check_writable(path: Path) -> None:
             f"refusing to write {path}: it is a {kind}, not a regular file", hint=hint
         )
     real = Path(os.path.realpath(path))
-    for folder in SPECIAL_FOLDERS:
-        if real == folder or folder in real.parents:
+    for folder in SPECIAL_FOLDERS:  # as written (/dev/stdout) and as resolved (/proc/self/...)
+        if any(p == folder or folder in p.parents for p in (Path(path).absolute(), real)):
             raise FileAccessError(
                 f"refusing to write {path}: {folder} holds system interfaces, not files", hint=hint
             )

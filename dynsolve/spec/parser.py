@@ -144,6 +144,12 @@ def parse_file(path: str | Path) -> Spec:
     """Read and parse a ``.dyn`` file, bounding its size and checking its encoding."""
     shown = str(path)
     raw = read_capped(path, MAX_FILE_BYTES)  # a byte cap, not stat: /dev/zero, FIFOs
+    if len(raw) > MAX_FILE_BYTES:
+        raise SpecError(
+            f"{shown} is over {MAX_FILE_BYTES} bytes; specs are limited to {MAX_FILE_BYTES} bytes",
+            Position(shown, 1, 1),
+            hint="split the problem into several files",
+        )
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:

@@ -1,0 +1,131 @@
+"""The run budget: wall time and memory for the whole run, the step named when it runs out.
+
+The CLI tests go through CliRunner (in-process; the worker is forked from the test
+process). drag_fall takes about 4 s on this machine, far beyond half a second.
+"""
+
+from __future__ import annotations
+
+import shutil
+import threading
+import time
+from pathlib import Path
+
+import pytest
+import sympy
+from specs import DRUM
+from typer.testing import CliRunner, Result
+
+from dynsolve.budget import Budget, OverBudget, WorkerFailed, run, run_each, step
+from dynsolve.cli import ExitCode, app
+from dynsolve.solve.blocks import BudgetExceeded, time_budget
+
+ROOT = Path(__file__).resolve().parent.parent
+DRAG_FALL = ROOT / "problems" / "kinematics" / "drag_fall.dyn"
+
+
+def cli(*args: str) -> Result:
+    return CliRunner().invoke(app, list(args), env={"COLUMNS": "300"})  # tables unwrapped
+
+
+def _sleep_in_a_step(seconds: float) -> str:
+    with step("counting sheep"):
+        time.sleep(seconds)
+    return "awake"
+
+
+def _allocate(megabytes: int) -> int:
+    with step("allocating"):
+        return len(bytearray(megabytes * 1024 * 1024))
+
+
+def _raise() -> None:
+    raise ZeroDivisionError("a bug")
+
+
+def test_a_long_run_is_stopped_and_names_its_step():
+    started = time.monotonic()
+    with pytest.raises(OverBudget, match=r"time budget of 0\.5 s, while counting sheep") as info:
+        run(_sleep_in_a_step, (30.0,), Budget(seconds=0.5))
+    assert time.monotonic() - started < 10
+    assert info.value.step == "counting sheep"
+    assert "--mode numeric" in info.value.hint and "--time-budget" in info.value.hint
+
+
+def test_a_run_within_the_budget_returns_its_result():
+    assert run(_sleep_in_a_step, (0.01,), Budget(seconds=30)) == "awake"
+
+
+def test_a_memory_hog_is_stopped():
+    pytest.importorskip("resource")
+    # 4 GB against a 512 MB address-space limit: MemoryError in the worker, not in the tests
+    with pytest.raises(OverBudget, match="memory budget of 512 MB, while allocating"):
+        run(_allocate, (4096,), Budget(seconds=60, megabytes=512))
+
+
+def test_each_job_gets_the_budget_and_a_stopped_worker_is_replaced():
+    outcomes = list(run_each(_sleep_in_a_step, [(0.01,), (30.0,), (0.01,)], Budget(seconds=1)))
+    assert outcomes[0] == "awake" and outcomes[2] == "awake"
+    assert isinstance(outcomes[1], OverBudget)
+
+
+def test_a_bug_in_the_worker_comes_back_with_its_traceback():
+    with pytest.raises(WorkerFailed, match="ZeroDivisionError: a bug"):
+        run(_raise, (), Budget(seconds=30))
+
+
+def test_steps_nest_and_restore():
+    with step("outer"):
+        with step("inner"):
+            pass
+        with pytest.raises(OverBudget, match="while inner"):
+            run(_nested_steps, (), Budget(seconds=0.5))
+
+
+def _nested_steps() -> None:
+    with step("outer"), step("inner"):
+        time.sleep(30)
+
+
+def test_solve_past_the_time_budget_exits_2_naming_the_step():
+    result = cli("solve", str(DRAG_FALL), "--time-budget", "0.5")
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "error: stopped after the time budget of 0.5 s, while " in result.stderr
+    assert "try --mode numeric, or a larger --time-budget" in result.stderr
+    assert result.stdout == ""
+
+
+def test_check_goes_on_past_a_spec_over_the_budget(tmp_path: Path):
+    shutil.copy(DRAG_FALL, tmp_path / "a_drag_fall.dyn")
+    (tmp_path / "b_drum.dyn").write_text(DRUM, encoding="utf-8")
+    result = cli("check", str(tmp_path), "--time-budget", "1")
+    out = " ".join(result.stdout.split())
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "a_drag_fall.dyn" in out and "time budget of 1 s" in out
+    assert result.stdout.strip().splitlines()[-1] == "1 passed, 0 failed, 1 malformed"
+
+
+@pytest.mark.parametrize("value", ["0", "-1", "1e9"])
+def test_budgets_out_of_range_are_bad_input(value: str):
+    assert cli("solve", str(DRAG_FALL), "--time-budget", value).exit_code == 2
+    assert cli("solve", str(DRAG_FALL), "--memory-budget", value).exit_code == 2
+
+
+def test_the_block_budget_works_without_signals_in_another_thread():
+    # the cooperative path (as on Windows, where there is no SIGALRM)
+    x = sympy.Symbol("x")
+    outcome: list[str] = []
+
+    def solve_hard() -> None:
+        started = time.monotonic()
+        try:
+            with time_budget(0.3):
+                sympy.solve(x**7 + x**3 * sympy.sin(x) - sympy.exp(x) + 3, x)
+            outcome.append("finished")
+        except BudgetExceeded:
+            outcome.append(f"stopped after {time.monotonic() - started:.1f} s")
+
+    worker = threading.Thread(target=solve_hard)
+    worker.start()
+    worker.join(60)
+    assert outcome and outcome[0].startswith("stopped after 0.")
