@@ -29,6 +29,9 @@ from dynsolve.errors import DynsolveError
 
 DEFAULT_SECONDS = 60.0  # every bundled problem takes under 6 s (drag_fall, the slowest)
 DEFAULT_MEGABYTES = 2048  # address space of the worker, libraries included
+# fork starts the worker with the parent's modules in ~5 ms; macOS and Windows have
+# only spawn (a fresh interpreter) as a safe choice
+START_METHOD = "fork" if sys.platform.startswith("linux") else "spawn"
 _KILL_GRACE = 2.0  # seconds the child gets to exit after being terminated
 
 _Result = TypeVar("_Result")
@@ -105,7 +108,7 @@ def run_each(
     >>> list(run_each(abs, [(-1,), (2,)], Budget(seconds=30)))
     [1, 2]
     """
-    context = multiprocessing.get_context("fork" if sys.platform.startswith("linux") else "spawn")
+    context = multiprocessing.get_context(START_METHOD)
     first = 0
     while first < len(jobs):
         receiver, sender = context.Pipe(duplex=False)
