@@ -219,8 +219,8 @@ def _collect(paths: list[Path]) -> list[Path]:
     for path in paths:
         if path.is_dir():
             files.extend(sorted(path.rglob("*.dyn")))
-        elif path.is_file():
-            files.append(path)
+        elif path.exists() or path.is_symlink():
+            files.append(path)  # reading it says why when it is not a regular file
         else:
             _fail(f"{path}: no such file or folder", "check the path")
     if not files:

@@ -243,3 +243,13 @@ def test_write_text_through_a_symlink_keeps_the_link(tmp_path: Path):
     link.symlink_to(real)
     write_text(link, "new")
     assert link.is_symlink() and real.read_text(encoding="utf-8") == "new"
+
+
+def test_check_names_a_special_file_or_loop_given_on_the_command_line(tmp_path: Path):
+    loop = tmp_path / "loop.dyn"
+    loop.symlink_to(loop)
+    spec = write(tmp_path, "drum.dyn", DRUM)
+    result = run("check", "/dev/zero", str(loop), str(spec))
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "character device" in result.stdout and "symlink loop" in result.stdout
+    assert last_line(result.stdout) == "1 passed, 0 failed, 2 malformed"
