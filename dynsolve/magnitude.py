@@ -128,10 +128,13 @@ def bound(expr: sympy.Basic, known: Mapping[sympy.Symbol, Bound]) -> Bound:
     return UNKNOWN  # tan, log, functions of time...: their parts were still checked
 
 
-def check_operation(function: str, args: list[sympy.Expr]) -> None:
+def check_operation(
+    function: str, args: list[sympy.Expr], known: Mapping[sympy.Symbol, Bound] | None = None
+) -> None:
     """Raise :class:`OutOfRange` if ``function`` (``+ * ^`` or exp) of ``args`` would be too big.
 
-    Called before the result is built, so ``10^10^10`` never reaches sympy.
+    Called before the result is built, so ``10^10^10`` never reaches sympy;
+    ``known`` bounds symbols whose values will be put in later.
 
     >>> check_operation("^", [sympy.Integer(2), sympy.Integer(64)])
     >>> try:
@@ -140,7 +143,7 @@ def check_operation(function: str, args: list[sympy.Expr]) -> None:
     ...     print(error.message)
     a value of about 2.0e434 is out of range (limit 1e±300)
     """
-    parts = [bound(a, {}) for a in args]
+    parts = [bound(a, known or {}) for a in args]
     if function == "+":
         _sum(parts)
     elif function == "*":

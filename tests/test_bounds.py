@@ -100,6 +100,27 @@ def test_huge_values_are_refused_with_their_line(
             "1.0e4096 is out of range",
             id="answer-key-digits",
         ),
+        pytest.param(
+            "given:\n  n = 10\n  c = 1 1/s\n  v_0 = 2 m/s\n  t_1 = 2 s\n"
+            "kinematics:\n  a = -10^(n^n)*c*v\nfind: v_1 = v(t_1)\n",
+            ":7:8:",
+            "1.0e10000000000 is out of range",
+            id="kinematics",
+        ),
+        pytest.param(
+            "given:\n  n = 10\n  g = 9.81 m/s^2\n  t_1 = 1 s\n"
+            "kinematics:\n  a_x = 0\n  a_y = -10^(n^n)*g\nfind: y_1 = y(t_1)\n",
+            ":7:10:",
+            "1.0e10000000000 is out of range",
+            id="plane-kinematics",
+        ),
+        pytest.param(
+            "given:\n  n = 10\n  m = 2 kg\nscene:\n  point O: (0, 0)\n"
+            "  body blk: particle, mass m*10^(n^n), at (0, 0)\n  gravity\nfind: a = a_G(blk)\n",
+            ":6:30:",
+            "1.0e10000000000 is out of range",
+            id="scene",
+        ),
     ],
 )
 def test_values_put_in_later_are_bounded(tmp_path: Path, text: str, where: str, cause: str) -> None:
@@ -192,3 +213,13 @@ def test_bounds_of_known_values() -> None:
     with pytest.raises(OutOfRange, match=r"1\.0e308"):
         bound(x**2, {x: value_bound(sympy.Integer(10) ** 154)})
     assert not bound(x**2, {}).known  # an unknown stays unbounded
+
+
+def test_an_underflowing_coefficient_does_not_reach_math_log() -> None:
+    # 1e-400 is a nonzero sympy Float whose float() is 0.0: no scale can be taken from it;
+    # x^3 + x = 1e-400 has the single real root x = 1e-400 (to first order), i.e. about 0
+    from dynsolve.solve.blocks import numeric_roots
+
+    x = sympy.Symbol("x")
+    roots = numeric_roots([x**3 + x - sympy.Float("1e-400")], [x])
+    assert roots and abs(float(sympy.re(roots[0][0]))) < 1e-12
