@@ -137,6 +137,9 @@ def test_values_put_in_later_are_bounded(tmp_path: Path, text: str, where: str, 
         # 300 digits: checked as text, never printed whole
         pytest.param("N^1" + "0" * 300, "more than 40 digits", id="long"),
         pytest.param("N^(1e50/3)", "unit exponent 100000000000… is out of range", id="fraction"),
+        # 1e-30 = 1/10^30: small, but its denominator would make a unit no one can read back
+        pytest.param("N^1e-30", "denominator at most 12", id="tiny"),
+        pytest.param("N^(1/13)", "unit exponent 1/13 is out of range", id="denominator"),
     ],
 )
 def test_unit_exponents_are_checked_as_text(tmp_path: Path, unit: str, cause: str) -> None:

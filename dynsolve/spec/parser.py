@@ -613,10 +613,11 @@ class _Builder(Transformer_NonRecursive):
                 "unit exponent divides by zero", self._at(numbers[1]), "fix the fraction"
             )
         value = self._fraction(numbers[0]) / denominator
-        if abs(value) > MAX_UNIT_EXPONENT:
+        if abs(value) > MAX_UNIT_EXPONENT or value.denominator > MAX_UNIT_EXPONENT:
             shown = str(value) if len(str(value)) <= 20 else f"{str(value)[:12]}…"
             raise SpecError(
-                f"unit exponent {shown} is out of range (limit ±{MAX_UNIT_EXPONENT})",
+                f"unit exponent {shown} is out of range (limit ±{MAX_UNIT_EXPONENT}, "
+                f"denominator at most {MAX_UNIT_EXPONENT})",
                 self._at(numbers[0]),
                 hint="units in dynamics need small powers such as m/s^2",
             )
