@@ -48,13 +48,17 @@ class OutOfRange(SpecError):
         """This error placed at a line and column (the first placement wins)."""
         return self if self.line else OutOfRange(self.message, line, column, self.hint)
 
-    def located(self, file: str) -> SpecError:
-        """The same error as a :class:`SpecError` naming ``file``.
+    def located(self, file: str, columns: Mapping[int, int] | None = None) -> SpecError:
+        """The same error as a :class:`SpecError` naming ``file``; an error placed on a
+        line only (column 0) takes its column from ``columns`` (line → column).
 
         >>> str(OutOfRange("too big", 3, 7, hint="h").located("a.dyn"))
         'a.dyn:3:7: too big (hint: h)'
+        >>> str(OutOfRange("too big", 4, 0, hint="h").located("a.dyn", {4: 3}))
+        'a.dyn:4:3: too big (hint: h)'
         """
-        where = Position(file, self.line, max(self.column, 1)) if self.line else None
+        column = self.column or (columns or {}).get(self.line, 1)
+        where = Position(file, self.line, column) if self.line else None
         return SpecError(self.message, where, self.hint)
 
 

@@ -78,8 +78,9 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
         if spec.scene:
             return solve_scene(spec, options or SolveOptions())
         return solve_problem(build_problem(spec), options or SolveOptions())
-    except OutOfRange as error:  # raised where only the line is known
-        raise error.located(spec.file) from None
+    except OutOfRange as error:  # raised where the file is not known
+        columns = {s.line: s.column for s in (*spec.equations, *spec.kinematics)}
+        raise error.located(spec.file, columns) from None
 
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:

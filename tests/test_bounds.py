@@ -52,10 +52,13 @@ def _solve(tmp_path: Path, text: str, *options: str) -> tuple[int, str]:
             "  y = exp(exp(exp(exp(10))))", ":2:", "e9565 is out of range", id="exp-tower"
         ),
         # exponent from another equation: 10^(10^5)
-        pytest.param("  n = 10^5\n  y = 10^n", ":3:", "1.0e100000 is out of range", id="solved"),
+        pytest.param("  n = 10^5\n  y = 10^n", ":3:3:", "1.0e100000 is out of range", id="solved"),
         # x_k = 10^(50 * 2^(k-1)): x_4 = 10^400 is the first beyond 10^300 (line 5)
         pytest.param(
-            f"  x_1 = 10^50\n{SQUARES}\n  y = x_30", ":5:", "1.0e400 is out of range", id="squares"
+            f"  x_1 = 10^50\n{SQUARES}\n  y = x_30",
+            ":5:3:",
+            "1.0e400 is out of range",
+            id="squares",
         ),
         # 10^-100 to the fourth power is 10^-400: it would print as 0
         pytest.param("  y = (1e-100)^4", ":2:", "1.0e-400 is too small", id="underflow"),
@@ -83,7 +86,7 @@ def test_huge_values_are_refused_with_their_line(
         # n^n = 10^10, so 10^(n^n) has 10^10 digits; caught before n is put in
         pytest.param(
             "given:\n  n = 10\nequations:\n  y = 10^(n^n)\nfind: y\n",
-            ":4:",
+            ":4:3:",
             "1.0e10000000000 is out of range",
             id="exponent-from-a-given",
         ),

@@ -118,7 +118,7 @@ def _solve_structural_block(
     try:
         progress.bounds.update({u: value_bound(v) for u, v in choice.values.items()})
     except OutOfRange as error:
-        raise error.at(system.equations[block.equations[0]].line, 1) from None
+        raise error.at(system.equations[block.equations[0]].line, 0) from None
 
 
 def _check_magnitudes(indices: Iterable[int], system: EquationSystem, progress: _Progress) -> None:
@@ -128,7 +128,7 @@ def _check_magnitudes(indices: Iterable[int], system: EquationSystem, progress: 
         try:
             bound(equation.residual, progress.bounds)
         except OutOfRange as error:
-            raise error.at(equation.line, 1) from None
+            raise error.at(equation.line, 0) from None  # the column is the spec's
 
 
 def _skip(block: StructuralBlock, blocked: list[sympy.Symbol], progress: _Progress) -> None:
