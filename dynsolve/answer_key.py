@@ -20,6 +20,7 @@ from dynsolve.dimensions import check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import quantity as format_quantity
+from dynsolve.magnitude import OutOfRange, bound, value_bound
 from dynsolve.numbers import real_value
 from dynsolve.quantities import convert, resolve_quantity, resolve_unit
 from dynsolve.spec.ast import Answer, EquationStmt, Name, Spec
@@ -198,7 +199,12 @@ def _compare_formula(
     )  # fmt: skip
     check_dimensions((statement,), {**known_dims, answer.name: dim}, spec.file, spec.system)
     # givens with values and solved unknowns are put in; symbolic givens stay symbols
-    expected = to_sympy(answer.formula, symbols).xreplace(dict(knowns))
+    formula = to_sympy(answer.formula, symbols)
+    try:  # bound the formula's numbers before the values are put in
+        bound(formula, {k: value_bound(v) for k, v in knowns.items()})
+    except OutOfRange as error:
+        raise error.at(answer.line, answer.column).located(spec.file) from None
+    expected = formula.xreplace(dict(knowns))
     shown = str(answer.formula)
     if computed is None:
         return Verdict(False, shown, "not determined by the equations")

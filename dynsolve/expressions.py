@@ -17,6 +17,7 @@ from collections.abc import Callable, Mapping
 
 import sympy
 
+from dynsolve.magnitude import Bound, OutOfRange, check_operation, value_bound
 from dynsolve.spec.ast import Call, Expr, Name, Num, Unary
 
 _FUNCTIONS: dict[str, Callable[..., sympy.Expr]] = {
@@ -41,18 +42,47 @@ _RELATIONS: dict[str, Callable[[sympy.Expr, sympy.Expr], sympy.Basic]] = {
 }
 
 
-def to_sympy(expr: Expr, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
-    """The sympy expression of ``expr``; ``symbols`` maps every name but ``pi``."""
+def to_sympy(
+    expr: Expr,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> sympy.Expr:
+    """The sympy expression of ``expr``; ``symbols`` maps every name but ``pi``.
+
+    Each power, product, sum and exponential is bounded before it is built
+    (:mod:`dynsolve.magnitude`), with the symbols in ``values`` bounded by the
+    values that will be put in later; the error names the operation's line and column.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> tower = parse_spec("equations:\\n  y = 2*10^10^10", "t.dyn").equations[0].rhs
+    >>> try:
+    ...     to_sympy(tower, {})
+    ... except OutOfRange as error:
+    ...     print(error.line, error.column, error.message)
+    2 9 a value of about 1.0e10000000000 is out of range (limit 1e±300)
+    """
+    try:
+        known = {k: value_bound(v) for k, v in (values or {}).items()}
+        return _build(expr, symbols, known)
+    except OutOfRange as error:
+        raise error.at(expr.line, expr.column) from None
+
+
+def _build(
+    expr: Expr, symbols: Mapping[str, sympy.Expr], known: Mapping[sympy.Symbol, Bound]
+) -> sympy.Expr:
     if isinstance(expr, Num):
         return sympy.Rational(expr.value.numerator, expr.value.denominator)
     if isinstance(expr, Name):
         return sympy.pi if expr.text == "pi" else symbols[expr.text]
     if isinstance(expr, Unary):
-        return -to_sympy(expr.operand, symbols)
+        return -_build(expr.operand, symbols, known)
     if isinstance(expr, Call):
-        args = [to_sympy(a, symbols) for a in expr.args]
+        args = [_build(a, symbols, known) for a in expr.args]
+        _checked(expr.function, args, known, expr)
         return _FUNCTIONS[expr.function](*args)
-    left, right = to_sympy(expr.left, symbols), to_sympy(expr.right, symbols)
+    left, right = _build(expr.left, symbols, known), _build(expr.right, symbols, known)
+    _checked(expr.op.replace("-", "+"), [left, right], known, expr)
     if expr.op == "+":
         return left + right
     if expr.op == "-":
@@ -62,6 +92,15 @@ def to_sympy(expr: Expr, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
     if expr.op == "/":
         return left / right
     return left**right
+
+
+def _checked(
+    function: str, args: list[sympy.Expr], known: Mapping[sympy.Symbol, Bound], expr: Expr
+) -> None:
+    try:
+        check_operation(function, args, known)
+    except OutOfRange as error:
+        raise error.at(expr.line, expr.column) from None
 
 
 def relation(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> sympy.Basic:

@@ -1,7 +1,7 @@
 """Number and unit formatting shared by the renderers: 3 significant figures, pretty units.
 
->>> sig(11.2919), sig(-0.000123456), sig(144.715), sig(0.0)
-('11.3', '-1.23e-4', '145', '0')
+>>> sig(11.2919), sig(-0.000123456), sig(144.715), sig(0.0), sig(float("inf"))
+('11.3', '-1.23e-4', '145', '0', 'not a finite number')
 >>> pretty_unit("kg*m^2/s^2"), latex_unit("m/s^2")
 ('kg·m²/s²', '\\\\mathrm{m/s^{2}}')
 """
@@ -12,14 +12,17 @@ import math
 import re
 from collections.abc import Sequence
 
+NOT_FINITE = "not a finite number"
 _POWER = re.compile(r"\^(?:\((-?\d+/\d+)\)|(-?\d+))")
 _SUPERSCRIPT = str.maketrans("0123456789-/()", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻ᐟ⁽⁾")
 
 
 def sig(value: float, figures: int = 3) -> str:
     """``value`` to ``figures`` significant figures, plain or in e-notation when extreme."""
-    if value == 0 or not math.isfinite(value):
-        return "0" if value == 0 else str(value)
+    if not math.isfinite(value):
+        return NOT_FINITE  # never 'inf' or 'nan': such an answer is also a failed check
+    if value == 0:
+        return "0"
     exponent = math.floor(math.log10(abs(value)))
     if -3 <= exponent < 6:
         decimals = max(figures - 1 - exponent, 0)
@@ -56,6 +59,8 @@ def quantity(value: float, unit: str, figures: int = 3, trim: bool = False) -> s
     ('4.52 m/s²', '60 kg')
     """
     shown = sig(value, figures)
+    if shown == NOT_FINITE:
+        return shown
     if trim and "." in shown and "e" not in shown:
         shown = shown.rstrip("0").rstrip(".")
     return f"{shown} {pretty_unit(unit)}" if unit else shown

@@ -103,7 +103,8 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
             Position(file, statement.line, statement.column),
             hint="add 'v_0 = … m/s' under given: (and t_0, x_0 if not zero)",
         )
-    rhs = to_sympy(statement.rhs, {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}})
+    variables = {n: s for n, (s, _) in VARIABLES.items()}
+    rhs = to_sympy(statement.rhs, {**symbols, **variables}, values)
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
     motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])

@@ -7,7 +7,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 import sympy
 
@@ -41,3 +41,25 @@ def tidy(expr: sympy.Expr | int) -> sympy.Expr:
     if expr.is_Atom or sympy.count_ops(expr) <= 3:
         return expr
     return sympy.simplify(expr)
+
+
+def mpmath_function(
+    variables: Sequence[sympy.Symbol], expr: sympy.Expr | sympy.Matrix | list[sympy.Expr]
+) -> Callable[..., object]:
+    """``expr`` as a function of ``variables`` evaluated with mpmath.
+
+    The variables are renamed first: lambdify puts every symbol of a matrix into the
+    generated code's namespace under its own name, so an unknown called ``mpf`` would
+    replace mpmath's ``mpf`` (and every constant written ``mpf(1)/mpf(2)`` would fail).
+
+    >>> mpf, x = sympy.symbols("mpf x")
+    >>> jacobian = mpmath_function([mpf, x], sympy.Matrix([[mpf / 2 + x]]))
+    >>> jacobian(3, 1)
+    matrix(
+    [['2.5']])
+    """
+    renamed = {v: sympy.Dummy(f"u{i}") for i, v in enumerate(variables)}
+    plain = (
+        [e.xreplace(renamed) for e in expr] if isinstance(expr, list) else expr.xreplace(renamed)
+    )
+    return sympy.lambdify(list(renamed.values()), plain, modules="mpmath")

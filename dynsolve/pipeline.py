@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
@@ -22,8 +23,9 @@ from dynsolve.answer_key import compare, compare_magnitude
 from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
 from dynsolve.equation_mode import GivenInfo, Target, build_problem
-from dynsolve.format import latex_number, latex_unit, pretty_unit, sig
+from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
+from dynsolve.magnitude import OutOfRange
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value
 from dynsolve.quantities import convert
@@ -70,14 +72,18 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
     """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
     with step("parsing the spec"):
         spec = parse_file(path)
-    with step("building the equations"):
-        if spec.kinematics:
-            from dynsolve.kinematics_mode import build_kinematics_problem
+    try:
+        with step("building the equations"):
+            if spec.kinematics:
+                from dynsolve.kinematics_mode import build_kinematics_problem
 
-            return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
-        if spec.scene:
-            return solve_scene(spec, options or SolveOptions())
-        return solve_problem(build_problem(spec), options or SolveOptions())
+                return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
+            if spec.scene:
+                return solve_scene(spec, options or SolveOptions())
+            return solve_problem(build_problem(spec), options or SolveOptions())
+    except OutOfRange as error:  # raised where the file is not known
+        columns = {s.line: s.column for s in (*spec.equations, *spec.kinematics)}
+        raise error.located(spec.file, columns) from None
 
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
@@ -131,8 +137,14 @@ def solve_problem(
         answers = tuple(view.answer(t) for t in problem.targets)
         key = tuple(view.key(answers))
     notes = tuple(Check(name, True, detail) for name, detail in problem.notes)
+    overflowed = tuple(
+        Check("finite", False, f"{a.name} is {NOT_FINITE} (overflow or division by zero)")
+        for a in answers
+        if a.shown == NOT_FINITE
+    )
     checks = (
         view.checks()
+        + overflowed
         + notes
         + second_methods
         + _assumption_checks(assumptions)
@@ -403,7 +415,12 @@ class _View:
         )
         if value is None:
             return AnswerRow(target.name, None, target.unit, "not determined", "", "", direction)
+        overflow = AnswerRow(target.name, None, target.unit, NOT_FINITE, "", "", direction)
+        if value.has(sympy.nan, sympy.zoo, sympy.oo):
+            return overflow
         text, latex, number = self.shown(target.name, value)
+        if not math.isfinite(number or 0.0):
+            return overflow
         if target.kind != "signed" and number is not None:
             direction = self.direction(target, number) or direction
             text, latex, number = self.shown(target.name, abs(value))

@@ -312,7 +312,7 @@ class _Builder:
                 self.initial[name] = self.symbols[name]
             elif name in self.initial_lines:
                 st = self.initial_lines[name]
-                expr = to_sympy(st.rhs, self.symbols)
+                expr = to_sympy(st.rhs, self.symbols, self.values)
                 self.initial[name] = expr
                 self.derivations.append(
                     Derivation(name, expr, "initial condition", "algebra", (st.line,), dim)
@@ -325,7 +325,7 @@ class _Builder:
             name = next(n for n in names if n in self.relations)
             st = self.relations[name]
             kind = ("x(t)", "v(t)", "a(t)")[names.index(name)]
-            expr = to_sympy(st.rhs, self.symbols)
+            expr = to_sympy(st.rhs, self.symbols, self.values)
             start = (self.initial[f"{axis}_0"], self.initial[f"v_{axis}0"])
             motion = integrate_motion(expr, kind, self.t0, *start)
             used = [self.initial_lines.get(n) for n in (f"{axis}_0", f"v_{axis}0")]
@@ -343,7 +343,7 @@ class _Builder:
     def _polar(self) -> None:
         r_line, theta_line = self.relations["r"], self.relations["theta"]
         lines = (r_line.line, theta_line.line)
-        r, theta = (to_sympy(s.rhs, self.symbols) for s in (r_line, theta_line))
+        r, theta = (to_sympy(s.rhs, self.symbols, self.values) for s in (r_line, theta_line))
         self._derive("r", r, "given", (r_line.line,))
         self._derive("theta", theta, "given", (theta_line.line,))
         found = polar_components(r, theta, T)

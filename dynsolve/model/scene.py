@@ -292,7 +292,7 @@ class _Builder:
                 self.where(expr.line, expr.column),
                 hint="check the units of the givens it uses",
             )
-        return to_sympy(expr, self.symbols)
+        return to_sympy(expr, self.symbols, self.given_values)
 
     def vector(self, vector: tuple[Expr, Expr], what: str) -> Vec:
         return (self.value(vector[0], LENGTH, what), self.value(vector[1], LENGTH, what))

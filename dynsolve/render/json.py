@@ -9,6 +9,7 @@
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import asdict
 from typing import Any
 
@@ -52,5 +53,21 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
 
 
 def render_json(solution: Solution) -> str:
-    """The solution as an indented JSON document."""
-    return json.dumps(solution_dict(solution), indent=2, ensure_ascii=False) + "\n"
+    """The solution as an indented, strict JSON document (no ``Infinity`` or ``NaN``)."""
+    data = _finite(solution_dict(solution))
+    return json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _finite(data: Any) -> Any:
+    """``data`` with every infinite or nan float replaced by ``None``.
+
+    >>> _finite({"v": [1.5, float("inf")], "n": float("nan")})
+    {'v': [1.5, None], 'n': None}
+    """
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if isinstance(data, dict):
+        return {key: _finite(value) for key, value in data.items()}
+    if isinstance(data, list | tuple):
+        return [_finite(value) for value in data]
+    return data

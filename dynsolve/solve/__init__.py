@@ -17,10 +17,12 @@ block was discarded) or ``failed`` (no root could be found).
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import sympy
 
+from dynsolve.magnitude import Bound, OutOfRange, bound, value_bound
 from dynsolve.solve.blocks import DEFAULT_OPTIONS, BlockSolution, as_expr, solve_block
 from dynsolve.solve.outcome import Block, Outcome, Status
 from dynsolve.solve.residuals import all_residuals, equation_residual, is_satisfied
@@ -46,6 +48,7 @@ class _Progress:
     no_valid_root: bool = False
     failed: bool = False
     messages: list[str] = field(default_factory=list)
+    bounds: dict[sympy.Symbol, Bound] = field(default_factory=dict)  # of every value in given
 
 
 def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS) -> Outcome:
@@ -61,11 +64,13 @@ def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS
     """
     structure = analyse_structure(system)
     progress = _Progress(given={k: as_expr(v) for k, v in system.knowns.items()})
+    progress.bounds = {k: value_bound(v) for k, v in progress.given.items()}
     progress.undetermined |= set(structure.undetermined)
     progress.unsolved |= set(structure.undetermined)
     progress.missing_equations = structure.missing_equations
     for block in structure.blocks:
         _solve_structural_block(block, system, structure, options, progress)
+    _check_magnitudes(range(len(system.equations)), system, progress)
     redundant = _check_surplus(structure.surplus, system, progress)
     unsolved = set(system.unknowns) - set(progress.solved)
     return Outcome(
@@ -97,6 +102,7 @@ def _solve_structural_block(
     if blocked:
         _skip(block, blocked, progress)
         return
+    _check_magnitudes(block.equations, system, progress)
     solution = solve_block(residuals, block.unknowns, progress.given, options)
     determined = [u for u in block.unknowns if u not in solution.free]
     choice = choose_root(
@@ -109,6 +115,20 @@ def _solve_structural_block(
     )
     progress.blocks.append(_block(block, solution, choice))
     _record(block, solution, choice, progress)
+    try:
+        progress.bounds.update({u: value_bound(v) for u, v in choice.values.items()})
+    except OutOfRange as error:
+        raise error.at(system.equations[block.equations[0]].line, 0) from None
+
+
+def _check_magnitudes(indices: Iterable[int], system: EquationSystem, progress: _Progress) -> None:
+    """Refuse, before substituting, values that would make an equation's numbers too large."""
+    for i in indices:
+        equation = system.equations[i]
+        try:
+            bound(equation.residual, progress.bounds)
+        except OutOfRange as error:
+            raise error.at(equation.line, 0) from None  # the column is the spec's
 
 
 def _skip(block: StructuralBlock, blocked: list[sympy.Symbol], progress: _Progress) -> None:

@@ -39,6 +39,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
+from dynsolve.numbers import mpmath_function
 from dynsolve.solve.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -469,11 +470,9 @@ def numeric_roots(
     [-2.0, 2.0]
     """
     unknowns = list(unknowns)
-    function = sympy.lambdify(unknowns, list(residuals), modules="mpmath")
-    size = sympy.lambdify(unknowns, [_term_size(r) for r in residuals], modules="mpmath")
-    jacobian = sympy.lambdify(
-        unknowns, sympy.Matrix(residuals).jacobian(unknowns), modules="mpmath"
-    )
+    function = mpmath_function(unknowns, list(residuals))
+    size = mpmath_function(unknowns, [_term_size(r) for r in residuals])
+    jacobian = mpmath_function(unknowns, sympy.Matrix(residuals).jacobian(unknowns))
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
     for start in _starting_points(residuals, len(unknowns)):
         root = _find_root(function, jacobian, start)
@@ -498,6 +497,7 @@ def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float
     """
     scales = [1.0]
     numbers = [abs(float(a)) for r in residuals for a in r.atoms(sympy.Number) if a != 0]
+    numbers = [x for x in numbers if 0 < x < math.inf]  # an underflow is no scale for log
     if numbers:
         typical = math.exp(sum(math.log(x) for x in numbers) / len(numbers))
         if not 0.3 < typical < 3:

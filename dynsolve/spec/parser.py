@@ -602,15 +602,18 @@ class _Builder(Transformer_NonRecursive):
     def unit_exponent(self, c: list[Token]) -> Fraction:
         sign = -1 if str(c[0]) == "-" else 1
         numbers = [t for t in c if t.type == "NUMBER"]
-        denominator = Fraction(str(numbers[1])) if len(numbers) > 1 else Fraction(1)
+        # _fraction bounds digits and e-exponent as text, before any Fraction is built
+        denominator = self._fraction(numbers[1]) if len(numbers) > 1 else Fraction(1)
         if denominator == 0:
             raise SpecError(
                 "unit exponent divides by zero", self._at(numbers[1]), "fix the fraction"
             )
-        value = Fraction(str(numbers[0])) / denominator
-        if abs(value) > MAX_UNIT_EXPONENT:
+        value = self._fraction(numbers[0]) / denominator
+        if abs(value) > MAX_UNIT_EXPONENT or value.denominator > MAX_UNIT_EXPONENT:
+            shown = str(value) if len(str(value)) <= 20 else f"{str(value)[:12]}…"
             raise SpecError(
-                f"unit exponent {value} is out of range (limit ±{MAX_UNIT_EXPONENT})",
+                f"unit exponent {shown} is out of range (limit ±{MAX_UNIT_EXPONENT}, "
+                f"denominator at most {MAX_UNIT_EXPONENT})",
                 self._at(numbers[0]),
                 hint="units in dynamics need small powers such as m/s^2",
             )
