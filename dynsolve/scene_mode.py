@@ -722,6 +722,7 @@ def assess(
                 substitution,
             )
             checks.append(_tipping(support, problem, x, substitution))
+    checks += _held_at_rest(scene, checks)
     for cord in scene.cords:
         T = real_value(formulation.reactions[cord.name][0], substitution)
         if T is not None:
@@ -734,6 +735,27 @@ def assess(
                 )
             )
     return tuple(checks), slips
+
+
+def _held_at_rest(scene: Scene, checks: list[Assumption]) -> tuple[Assumption, ...]:
+    """A body that travels to state 2 from rest must start to move: one whose contact holds
+    it by static friction at state 1 (no slip holds) never gets there."""
+    held = []
+    for support in scene.supports:
+        travel = scene.travels.get(support.body)
+        if travel is None or travel.kind == "for" or support.body in scene.velocities:
+            continue
+        stuck = any(c.name == f"no slip at {support.name}" and c.holds for c in checks)
+        if stuck and support.kind in ("contact", "base"):
+            held.append(
+                Assumption(
+                    f"{support.body} starts toward state 2",
+                    False,
+                    f"at rest in state 1, static friction at {support.name} holds it (no slip "
+                    "holds): it does not start to move, so it never reaches state 2",
+                )
+            )
+    return tuple(held)
 
 
 def _no_slip(

@@ -361,3 +361,17 @@ def test_a_travel_with_enough_push_gets_there(tmp_path):
     solution = solve_file(write(tmp_path, TRAVEL.format(P=150, velocity="")))
     assert answer(solution, "v") == pytest.approx((2 * 103.8 / 50) ** 0.5, rel=1e-9)
     assert solution.passed
+
+
+def test_a_block_held_by_static_friction_does_not_travel(tmp_path):
+    # From rest, P = 120 N: μk N = 98.1 N < P ≤ μs N = 147.15 N. Energy alone would give
+    # T2 = (120 − 98.1) × 2 = 43.8 J (v = 1.32 m/s), but static friction holds the block at
+    # state 1 (F = 120 N ≤ μs N): it never starts. (Regression: v = 1.32 m/s, all green.)
+    text = TRAVEL.format(P=120, velocity="").replace(
+        "contact block at G: normal up, mu_k mu_k",
+        "contact block at G: normal up, mu_s 0.3, mu_k mu_k",
+    )
+    solution = solve_file(write(tmp_path, text))
+    starts = assumption(solution, "block starts toward state 2")
+    assert not starts.holds and "never reaches state 2" in starts.detail
+    assert not solution.passed
