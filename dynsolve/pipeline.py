@@ -94,11 +94,16 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     outcome = solve_system(problem.system, options)
     assumptions, slips = assess(problem, outcome.values)
     trial: Mapping[sympy.Symbol, sympy.Expr] = {}
-    if slips:
-        trial = outcome.values
-        first = tuple(a for a in assumptions if a.name.startswith("no slip") and not a.holds)
-        trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
-        problem = build_scene_problem(spec, slips)
+    trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
+    failed: tuple[Assumption, ...] = ()
+    slipping: dict[str, int] = {}
+    for _ in range(RESOLVES):  # a slide contradicted, then a stick that slips the other way
+        if not slips or slips.items() <= slipping.items():
+            break
+        trial = trial or outcome.values
+        failed += tuple(a for a in assumptions if _resolved(a))
+        slipping |= slips
+        problem = build_scene_problem(spec, slipping)
         problem = replace(
             problem,
             targets=tuple(
@@ -107,7 +112,8 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
             ),
         )
         outcome = solve_system(problem.system, options)
-        assumptions = first + assess(problem, outcome.values)[0]
+        assumptions, slips = assess(problem, outcome.values)
+    assumptions = failed + assumptions
     return solve_problem(
         problem,
         options,
@@ -173,13 +179,23 @@ def solve_problem(
     )
 
 
+RESOLVES = 3  # re-solves of a scene whose friction assumption failed
+
+
+def _resolved(assumption: Assumption) -> bool:
+    """A failed friction trial (no slip, or a stated slide) that was re-solved the other way."""
+    return (
+        not assumption.holds
+        and assumption.name.startswith(("no slip", "sliding"))
+        and "re-solved" in assumption.detail
+    )
+
+
 def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]:
-    """Final assumptions as checks; a failed no-slip trial that was re-solved passes."""
-    checks = []
-    for a in assumptions:
-        resolved = a.name.startswith("no slip") and "re-solved" in a.detail
-        checks.append(Check(f"assumption: {a.name}", a.holds or resolved, a.detail))
-    return tuple(checks)
+    """Final assumptions as checks; a failed friction trial that was re-solved passes."""
+    return tuple(
+        Check(f"assumption: {a.name}", a.holds or _resolved(a), a.detail) for a in assumptions
+    )
 
 
 class _View:

@@ -112,6 +112,8 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     targets = tuple(_target(item, spec, scene, formulation, symbols, dims) for item in spec.finds)
     _check_answers(spec)
     wanted = _wanted(targets, formulation)
+    if wanted:  # every assumption is checked, whatever the find list asks
+        wanted += tuple(s for s in _checked(scene, formulation) if s not in wanted)
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
     equations = formulation.equations if wanted else ()  # nothing asked needs an equation
     system = EquationSystem(
@@ -281,6 +283,37 @@ def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[symp
         for expr in exprs:
             wanted += [s for s in expr.free_symbols if s in unknowns and s not in wanted]
     return tuple(wanted)
+
+
+def _checked(scene: Scene, formulation: Formulation) -> tuple[sympy.Symbol, ...]:
+    """The unknowns that checking the assumptions needs: each contact's N and F (contact
+    kept, no slip), a base's x (no tipping), each cord's tension (taut), and the motion of
+    the bodies whose friction is kinetic (the sense of their slide)."""
+    exprs: list[sympy.Expr] = []
+    for support in scene.supports:
+        if support.kind == "pin":
+            continue
+        exprs += [
+            formulation.reactions[f"{prefix}{support.name}"][0]
+            for prefix in ("N_", "F_")
+            if f"{prefix}{support.name}" in formulation.reactions
+        ]
+        if support.kind == "base":
+            exprs.append(sympy.Symbol(f"x_{support.name}", real=True))
+        kin = formulation.kinematics.get(support.body)
+        if kin is not None and not support.smooth:
+            exprs += [kin.alpha, *kin.a_G]
+    exprs += [
+        formulation.reactions[c.name][0] for c in scene.cords if c.name in formulation.reactions
+    ]
+    found: list[sympy.Symbol] = []
+    for expr in exprs:
+        found += [
+            s
+            for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str)
+            if s in formulation.unknowns and s not in found
+        ]
+    return tuple(found)
 
 
 def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> EquationRow:
@@ -665,30 +698,22 @@ def assess(
                 )
             )
         friction_name = f"F_{support.name}"
-        if support.name in problem.slipping:
-            checks.append(
-                Assumption(
-                    f"slip at {support.name}", True, "no-slip failed; F = μk N opposing the slip"
-                )
-            )
-        elif friction_name in formulation.reactions and support.mu_s is not None and N is not None:
-            F = real_value(formulation.reactions[friction_name][0], substitution)
-            limit = (
-                real_value(support.mu_s, knowns) * N
-                if real_value(support.mu_s, knowns) is not None
-                else None
-            )
-            if F is None or limit is None:
-                continue
-            holds = abs(F) <= limit * (1 + IMPENDING)
-            impending = holds and abs(abs(F) - limit) <= IMPENDING * max(limit, 1e-300)
-            detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {limit:.4g}"
-            if impending:
-                detail += " (impending slip: still no slip)"
-            if not holds and support.mu_k is not None:
-                detail += "; re-solved with F = μk N opposing the slip"
-                slips[support.name] = 1 if F > 0 else -1
-            checks.append(Assumption(f"no slip at {support.name}", holds, detail))
+        state = problem.slipping.get(support.name)
+        if state:
+            checks.append(_slip_sense(problem, support, state, substitution))
+        elif state is None and support.friction_sense is not None:
+            slide = _declared_slide(problem, support, substitution)
+            if slide is not None:
+                checks.append(slide)
+                if not slide.holds and "re-solved" in slide.detail:
+                    slips[support.name] = 0
+        elif friction_name in formulation.reactions and N is not None:
+            check = _no_slip(support, formulation.reactions[friction_name][0], N, substitution)
+            if check is not None:
+                assumption, sense = check
+                checks.append(assumption)
+                if sense:
+                    slips[support.name] = sense
         if support.kind == "base":
             x = real_value(
                 formulation.reactions.get(
@@ -697,6 +722,7 @@ def assess(
                 substitution,
             )
             checks.append(_tipping(support, problem, x, substitution))
+    checks += _held_at_rest(scene, checks)
     for cord in scene.cords:
         T = real_value(formulation.reactions[cord.name][0], substitution)
         if T is not None:
@@ -709,6 +735,174 @@ def assess(
                 )
             )
     return tuple(checks), slips
+
+
+def _held_at_rest(scene: Scene, checks: list[Assumption]) -> tuple[Assumption, ...]:
+    """A body that travels to state 2 from rest must start to move: one whose contact holds
+    it by static friction at state 1 (no slip holds) never gets there."""
+    held = []
+    for support in scene.supports:
+        travel = scene.travels.get(support.body)
+        if travel is None or travel.kind == "for" or support.body in scene.velocities:
+            continue
+        stuck = any(c.name == f"no slip at {support.name}" and c.holds for c in checks)
+        if stuck and support.kind in ("contact", "base"):
+            held.append(
+                Assumption(
+                    f"{support.body} starts toward state 2",
+                    False,
+                    f"at rest in state 1, static friction at {support.name} holds it (no slip "
+                    "holds): it does not start to move, so it never reaches state 2",
+                )
+            )
+    return tuple(held)
+
+
+def _no_slip(
+    support: object,
+    friction: sympy.Expr,
+    N: float,
+    substitution: Mapping[sympy.Symbol, sympy.Expr],
+) -> tuple[Assumption, int] | None:
+    """|F| ≤ μs N at a contact assumed not to slip, and the sense (±1 along the tangent)
+    of kinetic friction to re-solve with when it fails (0: no re-solve). Without μs, μk N
+    is a lower bound of μs N: below it the contact surely holds; above it μs is taken
+    equal to μk, the only coefficient given."""
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support)
+    F = real_value(friction, substitution)
+    mu = support.mu_s if support.mu_s is not None else support.mu_k
+    mu_value = real_value(mu, substitution) if mu is not None else None
+    if F is None or mu_value is None:
+        return None
+    limit = mu_value * N
+    holds = abs(F) <= limit * (1 + IMPENDING)
+    name = f"no slip at {support.name}"
+    if support.mu_s is None:
+        detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μk N = {limit:.4g}"
+        if holds:
+            return Assumption(name, True, detail + " ≤ μs N (μs ≥ μk)"), 0
+        detail += " (no mu_s given: taken equal to μk); re-solved with F = μk N opposing the slip"
+        return Assumption(name, False, detail), 1 if F > 0 else -1
+    impending = holds and abs(abs(F) - limit) <= IMPENDING * max(limit, 1e-300)
+    detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {limit:.4g}"
+    if impending:
+        detail += " (impending slip: still no slip)"
+    sense = 0
+    if not holds and support.mu_k is not None:
+        detail += "; re-solved with F = μk N opposing the slip"
+        sense = 1 if F > 0 else -1
+    return Assumption(name, holds, detail), sense
+
+
+def _contact_motion(
+    problem: SceneProblem, support: object, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[float | None, float | None]:
+    """The velocity and acceleration of a body's contact point along the contact tangent."""
+    from dynsolve.model.scene import ZERO, Support
+    from dynsolve.principles.newton_euler import point_acceleration
+
+    assert isinstance(support, Support)
+    kin = problem.formulation.kinematics.get(support.body)  # none over an interval
+    G = problem.scene.bodies[support.body].G
+    omega = kin.omega if kin else problem.scene.omegas.get(support.body, sympy.Integer(0))
+    v_G = problem.scene.velocities.get(support.body, ZERO)
+    r = (support.point[0] - G[0], support.point[1] - G[1])
+    v_P = (v_G[0] - omega * r[1], v_G[1] + omega * r[0])
+    a_P = point_acceleration(kin, G, support.point) if kin else None
+    return (
+        real_value(dot(v_P, support.tangent), substitution),
+        real_value(dot(a_P, support.tangent), substitution) if a_P else None,
+    )
+
+
+SENSE_TOLERANCE = 1e-9  # a relative speed or acceleration this small counts as zero
+
+
+def _declared_slide(
+    problem: SceneProblem, support: object, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> Assumption | None:
+    """A stated ``slides DIR``: the contact point must move that way, or (at rest at the
+    instant) start to; a slide the answer contradicts is re-solved without slip."""
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support) and support.friction_sense is not None
+    name = f"sliding at {support.name}"
+    if support.kind == "contact" and problem.scene.motions.get(support.body) == "translation":
+        return Assumption(
+            name,
+            True,
+            f"stated: {support.body} is stated to translate, so the slide at {support.name} is "
+            "of a wheel spinning there (a driven wheel), not of the body's own point",
+        )
+    v, a = _contact_motion(problem, support, substitution)
+    if v is None:
+        return None
+    along = -support.friction_sense  # the slide's sense along the tangent
+    if along * v > SENSE_TOLERANCE:
+        return Assumption(name, True, f"its contact point slides that way (v_P = {abs(v):.4g})")
+    if along * v < -SENSE_TOLERANCE:
+        return Assumption(
+            name, False, f"its contact point moves against the stated slide (v_P = {abs(v):.4g})"
+        )
+    if a is None:
+        return None
+    if along * a >= -SENSE_TOLERANCE and support.mu_s is not None:
+        return Assumption(
+            name,
+            False,
+            "from rest, a slide starts only if static friction cannot hold the contact: "
+            "re-solved with no slip to check |F| ≤ μs N",
+        )
+    if along * a >= -SENSE_TOLERANCE:
+        return Assumption(
+            name,
+            True,
+            f"from rest, the contact point accelerates that way at {abs(a):.4g} (no mu_s: "
+            "static friction is not checked)",
+        )
+    return Assumption(
+        name,
+        False,
+        f"from rest, F = μk N opposing the slide would accelerate the contact point the other "
+        f"way ({abs(a):.4g}): it cannot start to slide; re-solved with no slip",
+    )
+
+
+def _slip_sense(
+    problem: SceneProblem,
+    support: object,
+    sense: int,
+    substitution: Mapping[sympy.Symbol, sympy.Expr],
+) -> Assumption:
+    """After a failed no-slip trial: the contact point must slip against the friction."""
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support)
+    name = f"slip at {support.name}"
+    if support.friction_sense is not None and sense != support.friction_sense:
+        return Assumption(
+            name,
+            False,
+            "static friction cannot hold the contact, but it slips the other way than the "
+            "stated 'slides'",
+        )
+    v, a = _contact_motion(problem, support, substitution)
+    slip = v if v is not None and abs(v) > SENSE_TOLERANCE else a
+    if slip is None:
+        return Assumption(name, True, "no-slip failed; F = μk N opposing the slip")
+    holds = -sense * slip >= -SENSE_TOLERANCE
+    detail = (
+        f"no-slip failed; F = μk N opposing the slip, and the contact point slips against it "
+        f"(relative {'velocity' if slip is v else 'acceleration'} {abs(slip):.4g})"
+    )
+    if not holds:
+        detail = (
+            "no-slip failed, but with F = μk N the contact point would slip along the "
+            "friction, not against it: neither assumption holds"
+        )
+    return Assumption(name, holds, detail)
 
 
 def _between_states(

@@ -18,6 +18,7 @@ m*r**2/2
 from __future__ import annotations
 
 import difflib
+from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
@@ -87,6 +88,12 @@ class Support:
     two_sided: bool = False  # a guide (collar on a rod): the normal force may take either sign
     friction_sense: int | None = None  # ±1 along the tangent when sliding: opposes ``slides``
     normal_acceleration: sympy.Expr | int = 0  # a_P·n on a curved path: v²(K·n)
+    at: str = ""  # the point's own name when ``name`` carries the body too (two ``at G``)
+
+    @property
+    def point_name(self) -> str:
+        """The name of the point where the support acts, as drawn on the diagram."""
+        return self.at or self.name
 
     @property
     def tangent(self) -> Vec:
@@ -700,7 +707,7 @@ def build_scene(
     return Scene(
         builder.bodies,
         builder.fixed,
-        tuple(supports),
+        distinct_names(supports),
         tuple(cords),
         tuple(loads),
         gravity,
@@ -791,6 +798,22 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
         stmt.column,
         two_sided,
         _friction_sense(builder, stmt, slides, normal),
+    )
+
+
+def distinct_names(supports: list[Support]) -> tuple[Support, ...]:
+    """The supports with unique names: where two share a point name (each body's ``at G``)
+    each is named for its body too (``G_A``), so its unknowns are ``N_G_A``, ``F_G_A``.
+
+    >>> up = WORDS["up"]
+    >>> [s.name for s in distinct_names([Support("contact", "G", "A", up, up),
+    ...                                  Support("contact", "G", "B", up, up)])]
+    ['G_A', 'G_B']
+    """
+    counts = Counter(s.name for s in supports)
+    return tuple(
+        replace(s, name=f"{s.name}_{s.body}", at=s.name) if counts[s.name] > 1 else s
+        for s in supports
     )
 
 

@@ -163,6 +163,38 @@ def _is_zero(expr: sympy.Expr) -> bool:
     return bool(tidy(expr) == 0)
 
 
+def point_acceleration(kin: Kinematics, G: Vec, point: Vec) -> Vec:
+    """a_P = a_G + α k × r_P/G − ω² r_P/G of a point of a rigid body.
+
+    >>> kin = Kinematics("general", sympy.Integer(2), (1, 0), sympy.Integer(3))
+    >>> point_acceleration(kin, (0, 0), (0, -1))
+    (3, 9)
+    """
+    r = _minus(point, G)
+    return (
+        kin.a_G[0] + kin.alpha * _perp(r)[0] - kin.omega**2 * r[0],
+        kin.a_G[1] + kin.alpha * _perp(r)[1] - kin.omega**2 * r[1],
+    )
+
+
+def touches_at_rim(body: Body, support: Support) -> bool:
+    """True when a round body touches the surface at its rim, straight below G along the
+    normal: the contact point then moves round the body as it turns.
+
+    >>> from dynsolve.model.scene import WORDS
+    >>> r = sympy.Symbol("r", positive=True)
+    >>> wheel = Body("w", 1, 1, (0, r), (0, r), "disk", (r,), {}, False, "", 0, 0)
+    >>> touches_at_rim(wheel, Support("contact", "C", "w", (0, 0), WORDS["up"]))
+    True
+    """
+    if body.radius is None:
+        return False
+    offset = _minus(body.G, support.point)
+    return _is_zero(offset[0] - body.radius * support.normal[0]) and _is_zero(
+        offset[1] - body.radius * support.normal[1]
+    )
+
+
 class _Writer:
     """Collects unknowns, forces and equations while walking the scene."""
 
@@ -269,12 +301,7 @@ class _Writer:
         return sympy.Integer(0)
 
     def point_acceleration(self, body: str, point: Vec) -> Vec:
-        k = self.kinematics[body]
-        r = _minus(point, self.scene.bodies[body].G)
-        return (
-            k.a_G[0] + k.alpha * _perp(r)[0] - k.omega**2 * r[0],
-            k.a_G[1] + k.alpha * _perp(r)[1] - k.omega**2 * r[1],
-        )
+        return point_acceleration(self.kinematics[body], self.scene.bodies[body].G, point)
 
     # ---- loads and reactions
     def add_force(self, term: ForceTerm) -> None:
@@ -486,7 +513,7 @@ class _Writer:
                     "reaction",
                     body.name,
                     support.point,
-                    support.name,
+                    support.point_name,
                     direction,
                     symbol,
                     False,
@@ -501,9 +528,13 @@ class _Writer:
             if support.normal_acceleration != 0
             else f"contact at {support.name} kept: no acceleration into the surface"
         )
-        self.constraint(
-            dot(a_P, support.normal), sympy.Integer(0) + support.normal_acceleration, note
-        )
+        a_n = dot(a_P, support.normal)
+        if support.normal_acceleration == 0 and touches_at_rim(
+            self.scene.bodies[support.body], support
+        ):  # the contact point changes as it turns: the centre keeps its height
+            a_n = dot(self.kinematics[support.body].a_G, support.normal)
+            note = f"contact at {support.name} kept: {support.body}'s centre keeps its height"
+        self.constraint(a_n, sympy.Integer(0) + support.normal_acceleration, note)
         if self._static(support):
             self.constraint(
                 dot(a_P, support.tangent),
@@ -545,10 +576,16 @@ class _Writer:
             sympy.Integer(0),
             f"{support.body} stays on the surface at base {support.name}",
         )
+        if self._static(support):
+            self.constraint(
+                dot(kin.a_G, support.tangent),
+                sympy.Integer(0),
+                f"no slip on base {support.name} (assumed; checked after solving)",
+            )
 
     def _static(self, support: Support) -> bool:
         """True when friction here is an unknown with a no-slip assumption."""
-        return not support.smooth and support.name not in self.slipping and support.slides is None
+        return not support.smooth and self._sliding_sense(support) is None
 
     def _normal_and_friction(self, support: Support, point: Vec | None = None) -> None:
         where = point if point is not None else support.point
@@ -560,7 +597,7 @@ class _Writer:
                 "reaction",
                 support.body,
                 where,
-                support.name,
+                support.point_name,
                 support.normal,
                 normal,
                 False,
@@ -584,7 +621,7 @@ class _Writer:
                 "friction",
                 support.body,
                 where,
-                support.name,
+                support.point_name,
                 support.tangent,
                 friction,
                 sense is not None,
@@ -592,9 +629,10 @@ class _Writer:
         )
 
     def _sliding_sense(self, support: Support) -> int | None:
-        """+1/−1 along the tangent for kinetic friction, None for unknown static friction."""
+        """+1/−1 along the tangent for kinetic friction, None for unknown static friction
+        (also where ``slipping`` holds 0: a declared slide that the answer contradicted)."""
         if support.name in self.slipping:
-            return self.slipping[support.name]
+            return self.slipping[support.name] or None
         return support.friction_sense
 
     # ---- equations of motion
@@ -727,7 +765,8 @@ def formulate(
     """The Newton–Euler equations and constraints of ``scene``.
 
     ``slipping`` maps contacts whose no-slip assumption failed to the sense (±1 along
-    the contact tangent) of their kinetic friction.
+    the contact tangent) of their kinetic friction, and declared slides that the answer
+    contradicted to 0 (no slip assumed instead).
     """
     writer = _Writer(scene, symbols, slipping or {})
     for body in scene.bodies.values():

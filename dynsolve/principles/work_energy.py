@@ -203,6 +203,13 @@ class _Work:
                 f"friction work at {support.name} needs a body translating on a one-sided "
                 "surface (the normal force is taken from ΣF_n = 0)"
             )
+        v_1 = real_value(dot(self.scene.velocities.get(support.body, ZERO), step), self.values)
+        if v_1 is not None and v_1 < 0:
+            raise ValueError(
+                f"{support.body} moves away from state 2 at state 1, so the friction at "
+                f"{support.name} would change sense on the way (U_F = −μk N s assumes one "
+                "sense): split the travel where it turns back"
+            )
         N = self.normal_force(support)
         self.add(
             -support.mu_k * N * path,
