@@ -1,0 +1,418 @@
+"""A scene followed through its stages: each stage's principle, from the state the last one left.
+
+Stage k runs from state k to state k + 1 (:mod:`dynsolve.model.stages`). A travel applies
+work and energy (:mod:`dynsolve.principles.work_energy`) to the bodies it moves, starting
+from their velocities at state k; an impact applies momentum and restitution
+(:mod:`dynsolve.principles.impact`) to the velocities just before it; an eccentric impact
+conserves angular momentum about the struck point, after which the body turns about it.
+The unknowns of one stage (the speed at the end of a fall) enter the equations of the next
+(the momentum before the impact), so the whole chain is one system, solved in order.
+
+>>> import sympy
+>>> from dynsolve.model.scene import Impact, Scene, Travel
+>>> m, g, h = sympy.symbols("m g h", positive=True)
+>>> ball = Body("ball", m, sympy.Integer(0), (0, h), (0, h), "particle", (), {}, True, "", 0, 0)
+>>> fall = Travel("ball", "by", distance=h, direction=(0, -1))
+>>> bounce = Impact("ball", "ground", sympy.Rational(1, 2), (0, -1))
+>>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {}, events=(fall, bounce))
+>>> f = chain_formulation(scene, {"g": g}, {})
+>>> solved = sympy.solve([e.residual for e in f.equations], list(f.unknowns), dict=True)
+>>> sorted((s.name, v) for s, v in solved[-1].items())  # v₃ = e √(2 g h), up
+[('v_2_ball', sqrt(2)*sqrt(g)*sqrt(h)), ('vn_3_ball', -sqrt(2)*sqrt(g)*sqrt(h)/2)]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, replace
+
+import sympy
+
+from dynsolve.model.scene import Impact, Pivot, Scene, Support, Travel, Vec
+from dynsolve.model.stages import Stage, StageRecord, State, stages_of
+from dynsolve.numbers import tidy
+from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
+from dynsolve.results import Assumption
+from dynsolve.system import Equation
+from dynsolve.units import Dim
+
+ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+
+
+@dataclass(frozen=True)
+class _Step:
+    """What one stage adds: equations, unknowns, and the motion at its end."""
+
+    equations: tuple[Equation, ...]
+    unknowns: Mapping[sympy.Symbol, Dim]
+    velocities: Mapping[str, Vec]  # v_G at the end, for the bodies the stage changed
+    omegas: Mapping[str, sympy.Expr]
+    record: StageRecord
+    scene: Scene  # the scene's geometry and supports at the end of the stage
+    second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
+    relations: tuple[str, ...] = ()
+
+
+def chain_formulation(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    given_values: Mapping[sympy.Symbol, sympy.Expr],
+) -> Formulation:
+    """The equations of every stage of ``scene``, each starting where the last one ended."""
+    current = replace(scene, travels={}, impacts=(), pivots=(), events=())
+    velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
+    omegas = {name: sympy.Integer(0) + scene.omegas.get(name, 0) for name in scene.bodies}
+    states = [State(1, dict(velocities), dict(omegas))]
+    equations: list[Equation] = []
+    unknowns: dict[sympy.Symbol, Dim] = {}
+    records: list[StageRecord] = []
+    notes: list[tuple[str, str]] = []
+    second: list[tuple[sympy.Symbol, float, str, str]] = []
+    unfollowed: set[str] = set()  # bodies whose geometry after a stage is not followed
+    for stage in stages_of(scene.events):
+        step = _stage(stage, current, velocities, omegas, unfollowed, symbols, given_values)
+        first = len(equations)
+        for equation in step.equations:
+            number = len(equations) + 1
+            note = f"{stage.title}: {equation.note}"
+            equations.append(Equation(equation.lhs, equation.rhs, f"eq. {number}", number, note))
+        unknowns.update(step.unknowns)
+        velocities.update(step.velocities)
+        omegas.update(step.omegas)
+        states.append(State(stage.number + 1, dict(velocities), dict(omegas)))
+        records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
+        second += step.second
+        if step.relations:
+            notes.append((f"kinematics in stage {stage.number}", "; ".join(step.relations)))
+        current = step.scene
+    notes.insert(0, ("stages", "; ".join(r.stage.title for r in records)))
+    return bare_formulation(
+        scene.bodies,
+        equations=tuple(equations),
+        unknowns=unknowns,
+        after=_after(records, states),
+        after_omega={
+            r.stage.event.body: states[r.stage.number].omegas[r.stage.event.body]
+            for r in records
+            if isinstance(r.stage.event, Pivot)
+        },
+        speeds=_after_travels(
+            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)))
+        ),
+        spins=_after_travels(records, states, lambda s, n: s.omegas[n]),
+        notes=tuple(notes),
+        second=tuple(second),
+        states=tuple(states),
+        stages=tuple(records),
+    )
+
+
+def _after_travels(
+    records: list[StageRecord], states: list[State], read: Callable[[State, str], sympy.Expr]
+) -> dict[str, sympy.Expr]:
+    """A quantity of each body at the end of the last travel that moves it (speed(B))."""
+    found: dict[str, sympy.Expr] = {}
+    for record in records:
+        if isinstance(record.stage.event, Travel):
+            for body in record.bodies:
+                found[body] = read(states[record.stage.number], body)
+    return found
+
+
+def _after(records: list[StageRecord], states: list[State]) -> dict[str, Vec]:
+    """Each body's velocity just after the last impact it takes part in."""
+    after: dict[str, Vec] = {}
+    for record in records:
+        if isinstance(record.stage.event, Impact):
+            for body in record.bodies:
+                after[body] = states[record.stage.number].velocities[body]
+    return after
+
+
+def _stage(
+    stage: Stage,
+    scene: Scene,
+    velocities: Mapping[str, Vec],
+    omegas: Mapping[str, sympy.Expr],
+    unfollowed: set[str],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> _Step:
+    event = stage.event
+    if isinstance(event, Impact):
+        return _impact(stage, event, scene, velocities)
+    if event.body in unfollowed:
+        raise ValueError(
+            f"{stage.title}: where {event.body} is after an earlier stage is not followed "
+            "(only a particle's position is); describe this part as a scene of its own"
+        )
+    if isinstance(event, Pivot):
+        return _pivot(stage, event, scene, velocities, omegas, values)
+    if event.kind == "for":
+        raise ValueError(
+            f"{stage.title}: an interval ('travel … for') cannot be chained with other stages "
+            "yet; describe it as a scene of its own"
+        )
+    return _travel(stage, event, scene, velocities, omegas, unfollowed, symbols, values)
+
+
+def _renamed(symbol: sympy.Symbol, prefix: str, state: int, body: str) -> sympy.Symbol:
+    """The unknown of a stage named for the state it belongs to (v_3_ball)."""
+    return sympy.Symbol(f"{prefix}_{state}_{body}", **symbol.assumptions0)
+
+
+def _impact(stage: Stage, impact: Impact, scene: Scene, velocities: Mapping[str, Vec]) -> _Step:
+    from dynsolve.principles.impact import impact_equations, velocity_after
+
+    masses = {name: body.mass for name, body in scene.bodies.items()}
+    equations, along = impact_equations(impact, masses, velocities)
+    names = {s: _renamed(s, "vn", stage.number + 1, body) for body, s in along.items()}
+    equations = tuple(
+        replace(e, lhs=e.lhs.xreplace(names), rhs=e.rhs.xreplace(names)) for e in equations
+    )
+    after = {
+        body: velocity_after(impact, body, names[symbol], velocities)
+        for body, symbol in along.items()
+    }
+    return _Step(
+        equations,
+        {names[s]: Dim.of("velocity") for s in along.values()},
+        after,
+        {},
+        StageRecord(stage, tuple(along)),
+        scene,
+    )
+
+
+def _pivot(
+    stage: Stage,
+    pivot: Pivot,
+    scene: Scene,
+    velocities: Mapping[str, Vec],
+    omegas: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> _Step:
+    """An eccentric plastic impact; afterwards the body is pinned at the struck point."""
+    from dynsolve.model.scene import WORDS
+    from dynsolve.principles.impact import pivot_formulation
+
+    body = pivot.body
+    struck = replace(
+        scene,
+        velocities={body: velocities[body]},
+        omegas={body: omegas[body]},
+        pivots=(pivot,),
+    )
+    found = pivot_formulation(struck, values)
+    (old,) = found.unknowns
+    omega = _renamed(old, "omega", stage.number + 1, body)
+    (equation,) = found.equations
+    equation = replace(equation, rhs=equation.rhs.xreplace({old: omega}))
+    spin = found.after_omega[body].xreplace({old: omega})
+    G = scene.bodies[body].G
+    r = (G[0] - pivot.point[0], G[1] - pivot.point[1])
+    pin = Support("pin", pivot.name, body, pivot.point, WORDS["up"], line=pivot.line)
+    supports = (*(s for s in scene.supports if s.body != body), pin)
+    return _Step(
+        (equation,),
+        {omega: Dim(0, 0, -1)},
+        {body: (tidy(-spin * r[1]), tidy(spin * r[0]))},  # v_G = ω k × r_G/P
+        {body: spin},
+        StageRecord(stage, (body,)),
+        replace(scene, supports=supports),
+    )
+
+
+def _travel(
+    stage: Stage,
+    travel: Travel,
+    scene: Scene,
+    velocities: Mapping[str, Vec],
+    omegas: Mapping[str, sympy.Expr],
+    unfollowed: set[str],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> _Step:
+    """Work and energy for the bodies the travel moves (those joined to its body)."""
+    from dynsolve.principles.work_energy import energy_equations
+
+    part = _joined(scene, travel.body)
+    for name in scene.bodies:
+        if name not in part and not _still(velocities[name], omegas[name]):
+            raise ValueError(
+                f"{stage.title}: {name} is moving but takes no part in the travel; "
+                "give it its own stage or join it to the travelling body"
+            )
+    links = tuple(link for link in scene.links if {link.body, link.other} & part)
+    lone = len(part) == 1 and scene.bodies[travel.body].particle and not links
+    if lone and travel.kind in ("to", "by"):
+        _check_straight(stage, travel, scene, velocities[travel.body])
+    moving = {n: v for n in part if not _still(v := velocities.get(n, ZERO), 0)}
+    spinning = {n: w for n in part if not _still(ZERO, w := omegas.get(n, 0))}
+    sub = replace(
+        scene,
+        bodies={n: b for n, b in scene.bodies.items() if n in part},
+        supports=tuple(s for s in scene.supports if s.body in part),
+        loads=tuple(
+            load for load in scene.loads if load.body in part or load.body not in scene.bodies
+        ),
+        links=links,
+        springs=tuple(s for s in scene.springs if {s.body, s.other} & part),
+        cords=tuple(c for c in scene.cords if {c.body, c.other} & part),
+        velocities=moving if not spinning else {},
+        omegas=spinning,
+        travels={travel.body: travel},
+    )
+    (energy,) = energy_equations(sub, symbols, values)
+    state = stage.number + 1
+    names: dict[sympy.Symbol, sympy.Symbol] = {}
+    if energy.rate is not None:
+        prefix = "omega" if energy.rate.name.startswith("omega") else "v"
+        names[energy.rate] = _renamed(energy.rate, prefix, state, travel.body)
+    k = stage.number
+    equation = energy.equation
+    note = equation.note.replace("T1 + ΣU(1→2) = T2", f"T{k} + ΣU({k}→{k + 1}) = T{k + 1}")
+    equation = Equation(
+        equation.lhs.xreplace(names), equation.rhs.xreplace(names), "energy", 0, note
+    )
+    unknowns = {}
+    if energy.rate is not None:
+        rotation = energy.rate.name.startswith("omega")
+        unknowns[names[energy.rate]] = Dim(0, 0, -1) if rotation else Dim(1, 0, -1)
+    after_v = {
+        n: (sympy.Integer(0) + v[0], sympy.Integer(0) + v[1]) for n, v in energy.velocities.items()
+    }
+    after_v = {n: (v[0].xreplace(names), v[1].xreplace(names)) for n, v in after_v.items()}
+    after_w = {n: (sympy.Integer(0) + w).xreplace(names) for n, w in energy.spins.items()}
+    if lone:
+        after_w = {travel.body: sympy.Integer(0)}
+    second = ()
+    if energy.rate is not None and energy.second is not None:
+        second = ((names[energy.rate], *energy.second),)
+    return _Step(
+        (equation,),
+        unknowns,
+        after_v,
+        {n: w for n, w in after_w.items() if n in scene.bodies},
+        StageRecord(stage, tuple(part), dict(energy.works), stops=travel.stops),
+        _moved(scene, travel, part, lone, unfollowed),
+        second,
+        energy.relations,
+    )
+
+
+def _still(v: Vec, w: sympy.Expr) -> bool:
+    return (
+        tidy(sympy.Integer(0) + v[0]) == 0
+        and tidy(sympy.Integer(0) + v[1]) == 0
+        and tidy(sympy.Integer(0) + w) == 0
+    )
+
+
+def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> None:
+    """A lone particle's velocity at the end of a travel is taken along the travel: it must
+    start at rest or moving along that line (work and energy gives only its speed)."""
+    from dynsolve.model.states import particle_shift
+
+    shift = particle_shift(scene, travel)
+    assert shift is not None
+    if tidy(cross(shift, v)) != 0:
+        raise ValueError(
+            f"{stage.title}: {travel.body} starts moving across the line of its travel, so "
+            "the direction of its velocity at the end is not known from work and energy "
+            "(only its speed); its path must be straight along the travel"
+        )
+
+
+def _joined(scene: Scene, body: str) -> set[str]:
+    """``body`` and every body joined to it by links, springs or cords."""
+    pairs = [(c.body, c.other) for c in (*scene.links, *scene.springs, *scene.cords)]
+    part = {body}
+    grown = True
+    while grown:
+        grown = False
+        for a, b in pairs:
+            if b and (a in part) != (b in part):
+                part |= {a, b}
+                grown = True
+    return {name for name in part if name in scene.bodies}
+
+
+def _moved(scene: Scene, travel: Travel, part: set[str], lone: bool, unfollowed: set[str]) -> Scene:
+    """The scene's geometry after a travel: a lone particle moved to its new place; the
+    bodies of a mechanism are marked as not followed (later stages may not need them)."""
+    from dynsolve.model.states import particle_shift
+
+    if not lone:
+        unfollowed |= part
+        return scene
+    shift = particle_shift(scene, travel)
+    assert shift is not None
+    body = scene.bodies[travel.body]
+    moved = replace(
+        body,
+        G=_plus(body.G, shift),
+        origin=_plus(body.origin, shift),
+        points={n: _plus(p, shift) for n, p in body.points.items()},
+    )
+    return replace(scene, bodies={**scene.bodies, travel.body: moved})
+
+
+def _plus(a: Vec, b: Vec) -> Vec:
+    return (tidy(a[0] + b[0]), tidy(a[1] + b[1]))
+
+
+def chain_assumptions(
+    formulation: Formulation, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Assumption, ...]:
+    """What following the stages assumes, checked against the solution: each travel gets
+    to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated."""
+    from dynsolve.numbers import real_value
+
+    checks: list[Assumption] = []
+    for record in formulation.stages:
+        event, k = record.stage.event, record.stage.number
+        if isinstance(event, Impact):
+            checks.append(
+                Assumption(
+                    f"impact in stage {k}",
+                    True,
+                    f"stated: smooth contact, restitution e = {sympy.sstr(event.e)} along the line "
+                    "of impact; finite forces (weights, supports) give no impulse over it",
+                )
+            )
+            continue
+        if isinstance(event, Pivot):
+            checks.append(
+                Assumption(
+                    f"plastic impact at {event.name}",
+                    True,
+                    f"stated (e 0): {event.name} neither rebounds nor slides, so {event.body} "
+                    f"turns about {event.name} after the impact",
+                )
+            )
+            continue
+        for index in record.equations:
+            equation = formulation.equations[index]
+            energy = real_value(equation.lhs, values)
+            if energy is None:
+                continue
+            scale = sum(abs(real_value(t, values) or 0) for t in sympy.Add.make_args(equation.lhs))
+            tolerance = 1e-9 * max(scale, 1e-300)
+            if record.stops:
+                at_rest = abs(energy) <= tolerance
+                detail = f"T{k + 1} = T{k} + ΣU = {0.0 if at_rest else energy:.4g}"
+                if not at_rest:
+                    detail += " : it still moves there" if energy > 0 else ": it stops before"
+                checks.append(Assumption(f"at rest in state {k + 1}", at_rest, detail))
+                continue
+            reaches = energy >= -tolerance
+            checks.append(
+                Assumption(
+                    f"reaches state {k + 1}",
+                    reaches,
+                    f"T{k} + ΣU = {max(energy, 0.0) if reaches else energy:.4g} "
+                    + ("≥ 0" if reaches else f"< 0: it stops before state {k + 1}"),
+                )
+            )
+    return tuple(checks)
