@@ -134,7 +134,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     report = DimensionReport(dims, (), frozenset())
     notes = formulation.notes + tuple(
         _inertia_note(t, item, scene)
-        for t, item in zip(targets, spec.finds, strict=True)
+        for t, item in zip(targets[: len(spec.finds)], spec.finds, strict=True)
         if item.ref is not None and item.ref.function == "I"
     )
     notes += tuple(
@@ -245,6 +245,7 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
 
     asked = {item.name for item in spec.finds if item.ref is None}
     found: dict[sympy.Symbol, Dim] = {}
+    stops = {n.text for n in _stopping_distances(spec)}
     for stmt in spec.scene:
         value = stmt.value
         dim = _STATE_DIMS.get(stmt.kind)
@@ -254,10 +255,28 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
             dim is not None
             and isinstance(value, Name)
             and value.text not in symbols
-            and value.text in asked
+            and (value.text in asked or value.text in stops)
         ):
-            found[sympy.Symbol(value.text, positive=True)] = dim
+            extent = stmt.kind == "travel" and stmt.word == ""  # a distance may be 0
+            sign = {"nonnegative": True} if extent else {"positive": True}
+            found[sympy.Symbol(value.text, **sign)] = dim
     return found
+
+
+def _stopping_distances(spec: Spec) -> list[object]:
+    """The names of distances in ``travel B: by NAME, DIR, stops`` lines: how far it
+    goes until it stops is an unknown that the stop fixes (a rebound height)."""
+    from dynsolve.spec.ast import Name
+
+    return [
+        stmt.value
+        for stmt in spec.scene
+        if stmt.kind == "travel"
+        and stmt.word == ""
+        and stmt.direction is not None
+        and isinstance(stmt.value, Name)
+        and any(p.key == "stops" for p in stmt.props)
+    ]
 
 
 def _states_only(scene: Scene) -> Formulation:
@@ -739,7 +758,7 @@ def assess(
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions
 
-        return chain_assumptions(formulation, substitution), slips
+        return chain_assumptions(scene, formulation, substitution), slips
     if scene.travels and not formulation.reactions:
         return _between_states(problem, substitution), slips
     for support in scene.supports:

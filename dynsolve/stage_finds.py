@@ -91,7 +91,8 @@ def kinetic_energy(scene: Scene, state: State, bodies: tuple[str, ...]) -> sympy
     """T = Σ ½ m v_G² + ½ I_G ω² of ``bodies`` at ``state``.
 
     >>> from dynsolve.model.scene import Body
-    >>> ball = Body("ball", 2, 0, (0, 0), (0, 0), "particle", (), {}, True, "", 0, 0)
+    >>> m, zero = sympy.Integer(2), sympy.Integer(0)
+    >>> ball = Body("ball", m, zero, (0, 0), (0, 0), "particle", (), {}, True, "", 0, 0)
     >>> kinetic_energy(Scene({"ball": ball}, {}, (), (), (), None, {}),
     ...                State(1, {"ball": (3, 4)}, {"ball": 0}), ("ball",))
     25

@@ -75,6 +75,7 @@ class StageRecord:
     works: Mapping[str, sympy.Expr] = field(default_factory=dict)  # U(k→k+1) per force
     equations: tuple[int, ...] = ()  # its equations' indices in the whole chain
     stops: bool = False  # a travel that ends at rest
+    start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
 
 
 def stages_of(events: tuple[Travel | Impact | Pivot, ...]) -> tuple[Stage, ...]:

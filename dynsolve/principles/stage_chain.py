@@ -9,7 +9,7 @@ The unknowns of one stage (the speed at the end of a fall) enter the equations o
 (the momentum before the impact), so the whole chain is one system, solved in order.
 
 >>> import sympy
->>> from dynsolve.model.scene import Impact, Scene, Travel
+>>> from dynsolve.model.scene import Body, Impact, Scene, Travel
 >>> m, g, h = sympy.symbols("m g h", positive=True)
 >>> ball = Body("ball", m, sympy.Integer(0), (0, h), (0, h), "particle", (), {}, True, "", 0, 0)
 >>> fall = Travel("ball", "by", distance=h, direction=(0, -1))
@@ -245,8 +245,9 @@ def _travel(
             )
     links = tuple(link for link in scene.links if {link.body, link.other} & part)
     lone = len(part) == 1 and scene.bodies[travel.body].particle and not links
+    start_along = None
     if lone and travel.kind in ("to", "by"):
-        _check_straight(stage, travel, scene, velocities[travel.body])
+        start_along = _check_straight(stage, travel, scene, velocities[travel.body])
     moving = {n: v for n in part if not _still(v := velocities.get(n, ZERO), 0)}
     spinning = {n: w for n in part if not _still(ZERO, w := omegas.get(n, 0))}
     sub = replace(
@@ -294,7 +295,9 @@ def _travel(
         unknowns,
         after_v,
         {n: w for n, w in after_w.items() if n in scene.bodies},
-        StageRecord(stage, tuple(part), dict(energy.works), stops=travel.stops),
+        StageRecord(
+            stage, tuple(part), dict(energy.works), stops=travel.stops, start_along=start_along
+        ),
         _moved(scene, travel, part, lone, unfollowed),
         second,
         energy.relations,
@@ -309,9 +312,10 @@ def _still(v: Vec, w: sympy.Expr) -> bool:
     )
 
 
-def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> None:
+def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> sympy.Expr:
     """A lone particle's velocity at the end of a travel is taken along the travel: it must
-    start at rest or moving along that line (work and energy gives only its speed)."""
+    start at rest or moving along that line (work and energy gives only its speed).
+    Returns v·Δr, whose sign (checked once solved) says it starts toward the end."""
     from dynsolve.model.states import particle_shift
 
     shift = particle_shift(scene, travel)
@@ -322,6 +326,7 @@ def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> None:
             "the direction of its velocity at the end is not known from work and energy "
             "(only its speed); its path must be straight along the travel"
         )
+    return tidy(dot(v, shift))
 
 
 def _joined(scene: Scene, body: str) -> set[str]:
@@ -363,7 +368,7 @@ def _plus(a: Vec, b: Vec) -> Vec:
 
 
 def chain_assumptions(
-    formulation: Formulation, values: Mapping[sympy.Symbol, sympy.Expr]
+    scene: Scene, formulation: Formulation, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Assumption, ...]:
     """What following the stages assumes, checked against the solution: each travel gets
     to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated."""
@@ -392,6 +397,28 @@ def chain_assumptions(
                 )
             )
             continue
+        for support in scene.supports:
+            if support.kind == "rolls" and support.body in record.bodies:
+                checks.append(
+                    Assumption(
+                        f"no slip at {support.name} in stage {k}",
+                        True,
+                        "stated by 'rolls' for the whole travel; the friction it needs "
+                        "between the states is not computed",
+                    )
+                )
+        along = real_value(record.start_along, values) if record.start_along is not None else None
+        if along is not None and along != 0:
+            checks.append(
+                Assumption(
+                    f"sense of motion in stage {k}",
+                    along > 0,
+                    f"at state {k} {event.body} moves "
+                    + ("toward" if along > 0 else "away from")
+                    + f" the end of its travel (v·Δr = {along:.4g})"
+                    + ("" if along > 0 else ": it does not travel that way"),
+                )
+            )
         for index in record.equations:
             equation = formulation.equations[index]
             energy = real_value(equation.lhs, values)
@@ -403,7 +430,7 @@ def chain_assumptions(
                 at_rest = abs(energy) <= tolerance
                 detail = f"T{k + 1} = T{k} + ΣU = {0.0 if at_rest else energy:.4g}"
                 if not at_rest:
-                    detail += " : it still moves there" if energy > 0 else ": it stops before"
+                    detail += ": it still moves there" if energy > 0 else ": it stops before"
                 checks.append(Assumption(f"at rest in state {k + 1}", at_rest, detail))
                 continue
             reaches = energy >= -tolerance

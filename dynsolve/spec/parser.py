@@ -294,6 +294,7 @@ def _header(
         parts.system_line = line
     else:
         setattr(parts, _FIELDS[key], [])
+        parts.define_line = line if key == "define" else parts.define_line
         if rest:
             if key != "find":
                 raise SpecError(
@@ -334,7 +335,6 @@ def _body_line(
     elif section == "define":
         assert parts.defines is not None
         parts.defines.append(_define(text, comment, file, line, offset))
-        parts.define_line = parts.define_line or line
     elif section == "scene":
         assert parts.scene is not None
         parts.scene.append(_parse(text, "scene_line", file, line, offset))
