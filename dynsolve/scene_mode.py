@@ -98,8 +98,9 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             and not any(t.kind == "for" for t in scene.travels.values())
         ):
             formulation = _with_energy(formulation, scene, symbols, given_values)
-    except ValueError as exc:
-        raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
+    except ValueError as exc:  # a stage's error names its line
+        where = Position(spec.file, getattr(exc, "line", 0) or 1, getattr(exc, "column", 0) or 1)
+        raise SpecError(str(exc), where, hint="check the scene") from None
     if state_unknowns:
         formulation = replace(formulation, unknowns={**formulation.unknowns, **state_unknowns})
     symbols.update({s.name: s for s in formulation.unknowns})

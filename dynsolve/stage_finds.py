@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Callable, Mapping
+from typing import Any
 
 import sympy
 
@@ -28,6 +29,7 @@ from dynsolve.model.scene import Impact, Scene, Travel
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.numbers import tidy
 from dynsolve.principles.newton_euler import Formulation, dot
+from dynsolve.scene_mode import _body
 from dynsolve.units import Dim
 
 STAGE_FUNCTIONS = ("T", "work", "energy_lost", "impulse")
@@ -57,34 +59,24 @@ def stage_quantity(
 
 
 def _state(text: str, formulation: Formulation, where: Position) -> State:
-    count = len(formulation.states)
-    if not text.isdigit() or not 1 <= int(text) <= count:
-        raise SpecError(
-            f"there is no state '{text}'",
-            where,
-            hint=f"the states are numbered 1 to {count} (1 is the scene as described)",
-        )
-    return formulation.states[int(text) - 1]
+    hint = "(1 is the scene as described)"
+    return _numbered(text, formulation.states, "state", hint, where)
 
 
 def _stage(text: str, formulation: Formulation, where: Position) -> StageRecord:
-    count = len(formulation.stages)
-    if not text.isdigit() or not 1 <= int(text) <= count:
+    hint = "in the order of the travel and impact lines"
+    return _numbered(text, formulation.stages, "stage", hint, where)
+
+
+def _numbered(text: str, items: tuple[Any, ...], what: str, how: str, where: Position) -> Any:
+    """The item numbered ``text`` (from 1), or an error saying which numbers exist."""
+    if not text.isdigit() or not 1 <= int(text) <= len(items):
         raise SpecError(
-            f"there is no stage '{text}'",
+            f"there is no {what} '{text}'",
             where,
-            hint=f"the stages are numbered 1 to {count}, in the order of the travel and "
-            "impact lines",
+            hint=f"the {what}s are numbered 1 to {len(items)}, {how}",
         )
-    return formulation.stages[int(text) - 1]
-
-
-def _body(name: str, scene: Scene, where: Position) -> str:
-    if name not in scene.bodies:
-        close = difflib.get_close_matches(name, list(scene.bodies), n=1)
-        hint = f"did you mean '{close[0]}'?" if close else "name a body of the scene"
-        raise SpecError(f"there is no body '{name}'", where, hint)
-    return name
+    return items[int(text) - 1]
 
 
 def kinetic_energy(scene: Scene, state: State, bodies: tuple[str, ...]) -> sympy.Expr:

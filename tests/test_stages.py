@@ -127,6 +127,40 @@ find: v2 = v_after(ball)
     assert got.direction == direction
 
 
+PENETRATION = """\
+given:
+  m_r = 800 kg
+  m_p = 1200 kg
+  h   = 1.5 m
+  R   = 50 kN
+scene:
+  body ram: particle, mass m_r, at (0, h)
+  body pile: particle, mass m_p, at (0, -h)
+  force R on pile at G: up
+  gravity
+  travel ram: by h, down
+  impact ram with pile: e {e}, line down
+  travel pile: by d, down, stops
+find: d [m]
+"""
+
+
+def test_after_a_plastic_impact_the_bodies_travel_together(tmp_path):
+    # v₃ = 800 √(2 g h)/2000 → ½ (2000) v₃² = 4708.8 J; the pair then stops after d:
+    # 4708.8 + 2000 (9.81) d − 50000 d = 0 → d = 4708.8/30380 = 0.1549967 m
+    solution = solve(tmp_path, PENETRATION.format(e="0"))
+    assert answers(solution)["d"].value == pytest.approx(4708.8 / 30380, rel=1e-9)
+    assert "ram moving with pile: their masses added" in solution.equations[-1].note
+
+
+def test_a_moving_body_left_out_of_a_travel_is_refused(tmp_path):
+    # with e = 0.5 the ram rebounds on its own: the pile's travel cannot ignore it
+    with pytest.raises(SpecError) as caught:
+        solve(tmp_path, PENETRATION.format(e="0.5"))
+    assert "ram is moving but takes no part" in caught.value.message
+    assert (caught.value.position.line, caught.value.position.column) == (13, 10)
+
+
 def test_a_pivot_then_a_swing_still_chains(tmp_path):
     # the cube over the lip (seed problem) goes through the stages as well
     solution = solve_file(Path(__file__).parent.parent / "problems/seed/ci_seed_cube_lip.dyn")
@@ -238,6 +272,7 @@ find: v2 = v_after(ball)
     with pytest.raises(SpecError) as caught:
         solve(tmp_path, text)
     assert "straight" in caught.value.message
+    assert caught.value.position.line == 9  # the travel line
 
 
 def test_a_travel_against_the_motion_fails_its_sense_check(tmp_path):

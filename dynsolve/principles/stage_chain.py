@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import sympy
 
-from dynsolve.model.scene import Impact, Pivot, Scene, Support, Travel, Vec
+from dynsolve.model.scene import Impact, Link, Pivot, Scene, Support, Travel, Vec
 from dynsolve.model.stages import Stage, StageRecord, State, stages_of
 from dynsolve.numbers import tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
@@ -37,6 +37,16 @@ from dynsolve.system import Equation
 from dynsolve.units import Dim
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
+
+
+class StageError(ValueError):
+    """A stage that cannot be followed, with the line of its travel or impact."""
+
+    def __init__(self, stage: Stage, message: str) -> None:
+        super().__init__(message)
+        event = stage.event
+        self.line = event.stmt_line if isinstance(event, Impact) else event.line
+        self.column = event.column
 
 
 @dataclass(frozen=True)
@@ -59,33 +69,29 @@ def chain_formulation(
     given_values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> Formulation:
     """The equations of every stage of ``scene``, each starting where the last one ended."""
-    current = replace(scene, travels={}, impacts=(), pivots=(), events=())
-    velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
-    omegas = {name: sympy.Integer(0) + scene.omegas.get(name, 0) for name in scene.bodies}
-    states = [State(1, dict(velocities), dict(omegas))]
+    chain = _Chain(scene, symbols, given_values)
+    states = [State(1, dict(chain.velocities), dict(chain.omegas))]
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}
     records: list[StageRecord] = []
     notes: list[tuple[str, str]] = []
     second: list[tuple[sympy.Symbol, float, str, str]] = []
-    unfollowed: set[str] = set()  # bodies whose geometry after a stage is not followed
     for stage in stages_of(scene.events):
-        step = _stage(stage, current, velocities, omegas, unfollowed, symbols, given_values)
+        step = chain.stage(stage)
         first = len(equations)
         for equation in step.equations:
             number = len(equations) + 1
             note = f"{stage.title}: {equation.note}"
             equations.append(Equation(equation.lhs, equation.rhs, f"eq. {number}", number, note))
         unknowns.update(step.unknowns)
-        velocities.update(step.velocities)
-        omegas.update(step.omegas)
-        states.append(State(stage.number + 1, dict(velocities), dict(omegas)))
+        chain.advance(step)
+        states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         second += step.second
         if step.relations:
             notes.append((f"kinematics in stage {stage.number}", "; ".join(step.relations)))
-        current = step.scene
     notes.insert(0, ("stages", "; ".join(r.stage.title for r in records)))
+    notes += [(f"together after stage {k}", text) for k, text in chain.joined_notes]
     return bare_formulation(
         scene.bodies,
         equations=tuple(equations),
@@ -129,179 +135,253 @@ def _after(records: list[StageRecord], states: list[State]) -> dict[str, Vec]:
     return after
 
 
-def _stage(
-    stage: Stage,
-    scene: Scene,
-    velocities: Mapping[str, Vec],
-    omegas: Mapping[str, sympy.Expr],
-    unfollowed: set[str],
-    symbols: Mapping[str, sympy.Expr],
-    values: Mapping[sympy.Symbol, sympy.Expr],
-) -> _Step:
-    event = stage.event
-    if isinstance(event, Impact):
-        return _impact(stage, event, scene, velocities)
-    if event.body in unfollowed:
-        raise ValueError(
-            f"{stage.title}: where {event.body} is after an earlier stage is not followed "
-            "(only a particle's position is); describe this part as a scene of its own"
+class _Chain:
+    """The scene as the stages leave it: geometry, velocities, and what moves together."""
+
+    def __init__(
+        self,
+        scene: Scene,
+        symbols: Mapping[str, sympy.Expr],
+        values: Mapping[sympy.Symbol, sympy.Expr],
+    ) -> None:
+        self.scene = replace(scene, travels={}, impacts=(), pivots=(), events=())
+        self.symbols, self.values = symbols, values
+        self.velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
+        self.omegas = {n: sympy.Integer(0) + scene.omegas.get(n, 0) for n in scene.bodies}
+        self.unfollowed: set[str] = set()  # bodies whose geometry is no longer followed
+        self.together: dict[str, frozenset[str]] = {n: frozenset((n,)) for n in scene.bodies}
+        self.joined_notes: list[tuple[int, str]] = []
+
+    def stage(self, stage: Stage) -> _Step:
+        event = stage.event
+        if isinstance(event, Impact):
+            return self.impact(stage, event)
+        if event.body in self.unfollowed:
+            raise StageError(
+                stage,
+                f"{stage.title}: where {event.body} is after an earlier stage is not followed "
+                "(only a particle's position is); describe this part as a scene of its own",
+            )
+        if isinstance(event, Pivot):
+            return self.pivot(stage, event)
+        if event.kind == "for":
+            raise StageError(
+                stage,
+                f"{stage.title}: an interval ('travel … for') cannot be chained with other "
+                "stages yet; describe it as a scene of its own",
+            )
+        return self.travel(stage, event)
+
+    def advance(self, step: _Step) -> None:
+        """Move on to the state at the end of ``step``."""
+        self.velocities.update(step.velocities)
+        self.omegas.update(step.omegas)
+        self.scene = step.scene
+
+    def impact(self, stage: Stage, impact: Impact) -> _Step:
+        from dynsolve.principles.impact import impact_equations, velocity_after
+
+        masses = {name: body.mass for name, body in self.scene.bodies.items()}
+        equations, along = impact_equations(impact, masses, self.velocities)
+        names = {s: _renamed(s, "vn", stage.number + 1, body) for body, s in along.items()}
+        equations = tuple(
+            replace(e, lhs=e.lhs.xreplace(names), rhs=e.rhs.xreplace(names)) for e in equations
         )
-    if isinstance(event, Pivot):
-        return _pivot(stage, event, scene, velocities, omegas, values)
-    if event.kind == "for":
-        raise ValueError(
-            f"{stage.title}: an interval ('travel … for') cannot be chained with other stages "
-            "yet; describe it as a scene of its own"
+        after = {
+            body: velocity_after(impact, body, names[symbol], self.velocities)
+            for body, symbol in along.items()
+        }
+        if len(after) == 2 and tidy(impact.e) == 0:
+            self.stick(stage, impact)
+        return _Step(
+            equations,
+            {names[s]: Dim.of("velocity") for s in along.values()},
+            after,
+            {},
+            StageRecord(stage, tuple(along)),
+            self.scene,
         )
-    return _travel(stage, event, scene, velocities, omegas, unfollowed, symbols, values)
+
+    def stick(self, stage: Stage, impact: Impact) -> None:
+        """After a plastic impact (equal components along the line) with equal components
+        across it too, two particles move on as one (a ram and the pile it drives): later
+        travels carry both."""
+        A, B = impact.body, impact.other
+        across = (-impact.line[1], impact.line[0])
+        v_A, v_B = self.velocities[A], self.velocities[B]
+        same = tidy(dot(v_A, across) - dot(v_B, across)) == 0
+        if not same or not all(self.scene.bodies[n].particle for n in (A, B)):
+            return
+        group = self.together[A] | self.together[B]
+        for name in group:
+            self.together[name] = group
+        self.joined_notes.append(
+            (stage.number, f"the plastic impact leaves {' and '.join(sorted(group))} with one "
+             "velocity: they move on together (their masses add in later travels)")
+        )  # fmt: skip
+
+    def pivot(self, stage: Stage, pivot: Pivot) -> _Step:
+        """An eccentric plastic impact; afterwards the body is pinned at the struck point."""
+        from dynsolve.model.scene import WORDS
+        from dynsolve.principles.impact import pivot_formulation
+
+        body, scene = pivot.body, self.scene
+        struck = replace(
+            scene,
+            velocities={body: self.velocities[body]},
+            omegas={body: self.omegas[body]},
+            pivots=(pivot,),
+        )
+        found = pivot_formulation(struck, self.values)
+        (old,) = found.unknowns
+        omega = _renamed(old, "omega", stage.number + 1, body)
+        (equation,) = found.equations
+        equation = replace(equation, rhs=equation.rhs.xreplace({old: omega}))
+        spin = found.after_omega[body].xreplace({old: omega})
+        G = scene.bodies[body].G
+        r = (G[0] - pivot.point[0], G[1] - pivot.point[1])
+        pin = Support("pin", pivot.name, body, pivot.point, WORDS["up"], line=pivot.line)
+        supports = (*(s for s in scene.supports if s.body != body), pin)
+        return _Step(
+            (equation,),
+            {omega: Dim(0, 0, -1)},
+            {body: (tidy(-spin * r[1]), tidy(spin * r[0]))},  # v_G = ω k × r_G/P
+            {body: spin},
+            StageRecord(stage, (body,)),
+            replace(scene, supports=supports),
+        )
+
+    def travel(self, stage: Stage, travel: Travel) -> _Step:
+        """Work and energy for the bodies the travel moves: those joined to its body, or
+        moving with it since a plastic impact."""
+        from dynsolve.principles.work_energy import energy_equations
+
+        scene, body = self.scene, travel.body
+        riders = self.together[body] - {body}  # carried along since a plastic impact
+        part = _joined(scene, body) | riders
+        for name in scene.bodies:
+            if name not in part and not _still(self.velocities[name], self.omegas[name]):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {name} is moving but takes no part in the travel; "
+                    "give it its own stage or join it to the travelling body",
+                )
+        links = tuple(link for link in scene.links if {link.body, link.other} & part)
+        lone = (len(part) - len(riders)) == 1 and scene.bodies[body].particle and not links
+        if riders and not lone:
+            raise StageError(
+                stage,
+                f"{stage.title}: {body} carries {', '.join(sorted(riders))} since a plastic "
+                "impact; a travel of particles moving together is supported on its own only",
+            )
+        start_along = None
+        if lone and travel.kind in ("to", "by"):
+            start_along = _check_straight(stage, travel, scene, self.velocities[body])
+        sub = self.moving_part(part, riders, body, links)
+        (energy,) = energy_equations(
+            replace(sub, travels={body: travel}), self.symbols, self.values
+        )
+        names: dict[sympy.Symbol, sympy.Symbol] = {}
+        if energy.rate is not None:
+            prefix = "omega" if energy.rate.name.startswith("omega") else "v"
+            names[energy.rate] = _renamed(energy.rate, prefix, stage.number + 1, body)
+        k = stage.number
+        note = energy.equation.note.replace(
+            "T1 + ΣU(1→2) = T2", f"T{k} + ΣU({k}→{k + 1}) = T{k + 1}"
+        )
+        if riders:
+            note += f"; {', '.join(sorted(riders))} moving with {body}: their masses added"
+        lhs, rhs = energy.equation.lhs, energy.equation.rhs
+        equation = Equation(lhs.xreplace(names), rhs.xreplace(names), "energy", 0, note)
+        unknowns = {}
+        if energy.rate is not None:
+            rotation = energy.rate.name.startswith("omega")
+            unknowns[names[energy.rate]] = Dim(0, 0, -1) if rotation else Dim(1, 0, -1)
+        after_v = {
+            n: tuple((sympy.Integer(0) + c).xreplace(names) for c in v)
+            for n, v in energy.velocities.items()
+        }
+        after_v |= {rider: after_v[body] for rider in riders}
+        after_w = {n: (sympy.Integer(0) + w).xreplace(names) for n, w in energy.spins.items()}
+        if lone:
+            after_w = {n: sympy.Integer(0) for n in (body, *riders)}
+        second = ()
+        if energy.rate is not None and energy.second is not None:
+            second = ((names[energy.rate], *energy.second),)
+        record = StageRecord(
+            stage, tuple(sorted(part)), dict(energy.works), stops=travel.stops,
+            start_along=start_along,
+        )  # fmt: skip
+        return _Step(
+            (equation,),
+            unknowns,
+            after_v,  # type: ignore[arg-type]
+            {n: w for n, w in after_w.items() if n in scene.bodies},
+            record,
+            self.moved(travel, part, lone),
+            second,
+            energy.relations,
+        )
+
+    def moving_part(
+        self, part: set[str], riders: frozenset[str], body: str, links: tuple[Link, ...]
+    ) -> Scene:
+        """The scene of the bodies a travel moves, starting from their current motion; a
+        body's riders are merged into it (one particle, the masses added)."""
+        scene = self.scene
+        bodies = {n: b for n, b in scene.bodies.items() if n in part and n not in riders}
+        if riders:
+            mass = scene.bodies[body].mass + sum(scene.bodies[n].mass for n in riders)
+            bodies[body] = replace(bodies[body], mass=tidy(mass))
+        aboard = {n: body for n in riders}
+        moving = {n: v for n in bodies if not _still(v := self.velocities[n], 0)}
+        spinning = {n: w for n in bodies if not _still(ZERO, w := self.omegas[n])}
+        return replace(
+            scene,
+            bodies=bodies,
+            supports=tuple(
+                replace(s, body=aboard.get(s.body, s.body))
+                for s in scene.supports
+                if s.body in part
+            ),
+            loads=tuple(
+                replace(load, body=aboard.get(load.body, load.body))
+                for load in scene.loads
+                if load.body in part or load.body not in scene.bodies
+            ),
+            links=links,
+            springs=tuple(s for s in scene.springs if {s.body, s.other} & part),
+            cords=tuple(c for c in scene.cords if {c.body, c.other} & part),
+            velocities=moving if not spinning else {},
+            omegas=spinning,
+        )
+
+    def moved(self, travel: Travel, part: set[str], lone: bool) -> Scene:
+        """The geometry after a travel: a lone particle (and its riders) moved to the new
+        place; the bodies of a mechanism are marked as no longer followed."""
+        from dynsolve.model.states import particle_shift
+
+        scene = self.scene
+        if not lone:
+            self.unfollowed |= part
+            return scene
+        shift = particle_shift(scene, travel)
+        assert shift is not None
+        bodies = dict(scene.bodies)
+        for name in part:
+            body = bodies[name]
+            bodies[name] = replace(
+                body,
+                G=_plus(body.G, shift),
+                origin=_plus(body.origin, shift),
+                points={n: _plus(p, shift) for n, p in body.points.items()},
+            )
+        return replace(scene, bodies=bodies)
 
 
 def _renamed(symbol: sympy.Symbol, prefix: str, state: int, body: str) -> sympy.Symbol:
     """The unknown of a stage named for the state it belongs to (v_3_ball)."""
     return sympy.Symbol(f"{prefix}_{state}_{body}", **symbol.assumptions0)
-
-
-def _impact(stage: Stage, impact: Impact, scene: Scene, velocities: Mapping[str, Vec]) -> _Step:
-    from dynsolve.principles.impact import impact_equations, velocity_after
-
-    masses = {name: body.mass for name, body in scene.bodies.items()}
-    equations, along = impact_equations(impact, masses, velocities)
-    names = {s: _renamed(s, "vn", stage.number + 1, body) for body, s in along.items()}
-    equations = tuple(
-        replace(e, lhs=e.lhs.xreplace(names), rhs=e.rhs.xreplace(names)) for e in equations
-    )
-    after = {
-        body: velocity_after(impact, body, names[symbol], velocities)
-        for body, symbol in along.items()
-    }
-    return _Step(
-        equations,
-        {names[s]: Dim.of("velocity") for s in along.values()},
-        after,
-        {},
-        StageRecord(stage, tuple(along)),
-        scene,
-    )
-
-
-def _pivot(
-    stage: Stage,
-    pivot: Pivot,
-    scene: Scene,
-    velocities: Mapping[str, Vec],
-    omegas: Mapping[str, sympy.Expr],
-    values: Mapping[sympy.Symbol, sympy.Expr],
-) -> _Step:
-    """An eccentric plastic impact; afterwards the body is pinned at the struck point."""
-    from dynsolve.model.scene import WORDS
-    from dynsolve.principles.impact import pivot_formulation
-
-    body = pivot.body
-    struck = replace(
-        scene,
-        velocities={body: velocities[body]},
-        omegas={body: omegas[body]},
-        pivots=(pivot,),
-    )
-    found = pivot_formulation(struck, values)
-    (old,) = found.unknowns
-    omega = _renamed(old, "omega", stage.number + 1, body)
-    (equation,) = found.equations
-    equation = replace(equation, rhs=equation.rhs.xreplace({old: omega}))
-    spin = found.after_omega[body].xreplace({old: omega})
-    G = scene.bodies[body].G
-    r = (G[0] - pivot.point[0], G[1] - pivot.point[1])
-    pin = Support("pin", pivot.name, body, pivot.point, WORDS["up"], line=pivot.line)
-    supports = (*(s for s in scene.supports if s.body != body), pin)
-    return _Step(
-        (equation,),
-        {omega: Dim(0, 0, -1)},
-        {body: (tidy(-spin * r[1]), tidy(spin * r[0]))},  # v_G = ω k × r_G/P
-        {body: spin},
-        StageRecord(stage, (body,)),
-        replace(scene, supports=supports),
-    )
-
-
-def _travel(
-    stage: Stage,
-    travel: Travel,
-    scene: Scene,
-    velocities: Mapping[str, Vec],
-    omegas: Mapping[str, sympy.Expr],
-    unfollowed: set[str],
-    symbols: Mapping[str, sympy.Expr],
-    values: Mapping[sympy.Symbol, sympy.Expr],
-) -> _Step:
-    """Work and energy for the bodies the travel moves (those joined to its body)."""
-    from dynsolve.principles.work_energy import energy_equations
-
-    part = _joined(scene, travel.body)
-    for name in scene.bodies:
-        if name not in part and not _still(velocities[name], omegas[name]):
-            raise ValueError(
-                f"{stage.title}: {name} is moving but takes no part in the travel; "
-                "give it its own stage or join it to the travelling body"
-            )
-    links = tuple(link for link in scene.links if {link.body, link.other} & part)
-    lone = len(part) == 1 and scene.bodies[travel.body].particle and not links
-    start_along = None
-    if lone and travel.kind in ("to", "by"):
-        start_along = _check_straight(stage, travel, scene, velocities[travel.body])
-    moving = {n: v for n in part if not _still(v := velocities.get(n, ZERO), 0)}
-    spinning = {n: w for n in part if not _still(ZERO, w := omegas.get(n, 0))}
-    sub = replace(
-        scene,
-        bodies={n: b for n, b in scene.bodies.items() if n in part},
-        supports=tuple(s for s in scene.supports if s.body in part),
-        loads=tuple(
-            load for load in scene.loads if load.body in part or load.body not in scene.bodies
-        ),
-        links=links,
-        springs=tuple(s for s in scene.springs if {s.body, s.other} & part),
-        cords=tuple(c for c in scene.cords if {c.body, c.other} & part),
-        velocities=moving if not spinning else {},
-        omegas=spinning,
-        travels={travel.body: travel},
-    )
-    (energy,) = energy_equations(sub, symbols, values)
-    state = stage.number + 1
-    names: dict[sympy.Symbol, sympy.Symbol] = {}
-    if energy.rate is not None:
-        prefix = "omega" if energy.rate.name.startswith("omega") else "v"
-        names[energy.rate] = _renamed(energy.rate, prefix, state, travel.body)
-    k = stage.number
-    equation = energy.equation
-    note = equation.note.replace("T1 + ΣU(1→2) = T2", f"T{k} + ΣU({k}→{k + 1}) = T{k + 1}")
-    equation = Equation(
-        equation.lhs.xreplace(names), equation.rhs.xreplace(names), "energy", 0, note
-    )
-    unknowns = {}
-    if energy.rate is not None:
-        rotation = energy.rate.name.startswith("omega")
-        unknowns[names[energy.rate]] = Dim(0, 0, -1) if rotation else Dim(1, 0, -1)
-    after_v = {
-        n: (sympy.Integer(0) + v[0], sympy.Integer(0) + v[1]) for n, v in energy.velocities.items()
-    }
-    after_v = {n: (v[0].xreplace(names), v[1].xreplace(names)) for n, v in after_v.items()}
-    after_w = {n: (sympy.Integer(0) + w).xreplace(names) for n, w in energy.spins.items()}
-    if lone:
-        after_w = {travel.body: sympy.Integer(0)}
-    second = ()
-    if energy.rate is not None and energy.second is not None:
-        second = ((names[energy.rate], *energy.second),)
-    return _Step(
-        (equation,),
-        unknowns,
-        after_v,
-        {n: w for n, w in after_w.items() if n in scene.bodies},
-        StageRecord(
-            stage, tuple(part), dict(energy.works), stops=travel.stops, start_along=start_along
-        ),
-        _moved(scene, travel, part, lone, unfollowed),
-        second,
-        energy.relations,
-    )
 
 
 def _still(v: Vec, w: sympy.Expr) -> bool:
@@ -321,10 +401,11 @@ def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> sympy
     shift = particle_shift(scene, travel)
     assert shift is not None
     if tidy(cross(shift, v)) != 0:
-        raise ValueError(
+        raise StageError(
+            stage,
             f"{stage.title}: {travel.body} starts moving across the line of its travel, so "
             "the direction of its velocity at the end is not known from work and energy "
-            "(only its speed); its path must be straight along the travel"
+            "(only its speed); its path must be straight along the travel",
         )
     return tidy(dot(v, shift))
 
@@ -341,26 +422,6 @@ def _joined(scene: Scene, body: str) -> set[str]:
                 part |= {a, b}
                 grown = True
     return {name for name in part if name in scene.bodies}
-
-
-def _moved(scene: Scene, travel: Travel, part: set[str], lone: bool, unfollowed: set[str]) -> Scene:
-    """The scene's geometry after a travel: a lone particle moved to its new place; the
-    bodies of a mechanism are marked as not followed (later stages may not need them)."""
-    from dynsolve.model.states import particle_shift
-
-    if not lone:
-        unfollowed |= part
-        return scene
-    shift = particle_shift(scene, travel)
-    assert shift is not None
-    body = scene.bodies[travel.body]
-    moved = replace(
-        body,
-        G=_plus(body.G, shift),
-        origin=_plus(body.origin, shift),
-        points={n: _plus(p, shift) for n, p in body.points.items()},
-    )
-    return replace(scene, bodies={**scene.bodies, travel.body: moved})
 
 
 def _plus(a: Vec, b: Vec) -> Vec:
@@ -415,7 +476,7 @@ def chain_assumptions(
                     along > 0,
                     f"at state {k} {event.body} moves "
                     + ("toward" if along > 0 else "away from")
-                    + f" the end of its travel (v·Δr = {along:.4g})"
+                    + " the end of its travel (the sign of v·Δr)"
                     + ("" if along > 0 else ": it does not travel that way"),
                 )
             )
