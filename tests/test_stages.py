@@ -153,6 +153,14 @@ def test_after_a_plastic_impact_the_bodies_travel_together(tmp_path):
     assert "ram moving with pile: their masses added" in solution.equations[-1].note
 
 
+def test_the_average_resistance_that_stops_the_pile_is_an_unknown(tmp_path):
+    # same chain, d = 0.155 m given: R = (m_r + m_p) g + ½ (m_r + m_p) v₃²/d
+    #   = 19620 + 4708.8/0.155 = 49999.355 N
+    text = PENETRATION.format(e="0").replace("R   = 50 kN", "d   = 0.155 m")
+    got = answers(solve(tmp_path, text.replace("find: d [m]", "find: R [N]")))["R"]
+    assert got.value == pytest.approx(19620 + 4708.8 / 0.155, rel=1e-9)
+
+
 def test_a_moving_body_left_out_of_a_travel_is_refused(tmp_path):
     # with e = 0.5 the ram rebounds on its own: the pile's travel cannot ignore it
     with pytest.raises(SpecError) as caught:

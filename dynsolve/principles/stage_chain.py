@@ -68,8 +68,15 @@ def chain_formulation(
     symbols: Mapping[str, sympy.Expr],
     given_values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> Formulation:
-    """The equations of every stage of ``scene``, each starting where the last one ended."""
-    chain = _Chain(scene, symbols, given_values)
+    """The equations of every stage of ``scene``, each starting where the last one ended.
+    A load whose size is not given is an unknown of the travels that it works in (the
+    average resistance that stops a pile)."""
+    loads = {
+        load.name: sympy.Symbol(load.name, positive=True)
+        for load in scene.loads
+        if load.name not in symbols
+    }
+    chain = _Chain(scene, {**symbols, **loads}, given_values)
     states = [State(1, dict(chain.velocities), dict(chain.omegas))]
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}
@@ -90,6 +97,10 @@ def chain_formulation(
         second += step.second
         if step.relations:
             notes.append((f"kinematics in stage {stage.number}", "; ".join(step.relations)))
+    used = set().union(*(e.lhs.free_symbols | e.rhs.free_symbols for e in equations))
+    for load in scene.loads:
+        if loads.get(load.name) in used:
+            unknowns[loads[load.name]] = Dim.of("force" if load.kind == "force" else "moment")
     notes.insert(0, ("stages", "; ".join(r.stage.title for r in records)))
     notes += [(f"together after stage {k}", text) for k, text in chain.joined_notes]
     return bare_formulation(
