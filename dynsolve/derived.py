@@ -53,9 +53,10 @@ def define_targets(
     defined: list[Target] = []
     for line in spec.defines:
         name = line.lhs.text  # type: ignore[union-attr]
-        if name in known and name not in {t.name for t in targets}:
+        if name in known:
+            what = "find" if name in {t.name for t in (*targets, *defined)} else "given"
             raise SpecError(
-                f"'{name}' is already a given",
+                f"'{name}' is already a {what}",
                 Position(spec.file, line.line, line.column),
                 hint="choose another name for the derived quantity",
             )

@@ -234,6 +234,35 @@ def test_a_define_names_only_known_quantities(tmp_path):
     assert (caught.value.position.line, caught.value.position.column) == (13, 7)
 
 
+@pytest.mark.parametrize(
+    ("find", "define", "what"),
+    [("dE = energy_lost(2)", "dE = T(2) - T(3)", "find"), ("h_2", "h = 2*h_2", "given")],
+)
+def test_a_define_needs_a_name_of_its_own(tmp_path, find, define, what):
+    text = BOUNCE.format(m="0.5 kg", h="2 m", e="0.6", find=find) + f"define:\n  {define}\n"
+    with pytest.raises(SpecError) as caught:
+        solve(tmp_path, text)
+    assert f"already a {what}" in caught.value.message and caught.value.position.line == 13
+
+
+def test_a_single_rigid_travel_answers_kinetic_energy_and_work(tmp_path):
+    # Ch.18 wheel (seed rwe_seed_wheel10rev): s_O = 0.4 (10)(2π) = 25.13274 m;
+    # work(P) = P cos 30° s_O = 43.30127 (25.13274) = 1088.28 J = T2 (T1 = 0);
+    # the weight does no work (G moves across it)
+    seed = Path(__file__).parent.parent / "problems/seed/rwe_seed_wheel10rev.dyn"
+    text = seed.read_text().replace(
+        "find: omega = omega2(wheel)",
+        "find: omega = omega2(wheel), T_2 = T(wheel, 2), U_P = work(P), U_W = work(W_wheel)",
+    )
+    solution = solve(tmp_path, text)
+    got = answers(solution)
+    s_O = 0.4 * 10 * 2 * math.pi
+    assert got["U_P"].value == pytest.approx(50 * math.cos(math.pi / 6) * s_O, rel=1e-9)
+    assert got["T_2"].value == pytest.approx(got["U_P"].value, rel=1e-9)
+    assert got["U_W"].value == pytest.approx(0.0, abs=1e-12)
+    assert got["omega"].value == pytest.approx(13.2, rel=5e-3) and solution.passed
+
+
 def test_a_define_is_one_name_equal_to_an_expression():
     with pytest.raises(SpecError) as caught:
         parse_spec("scene:\n  gravity\ndefine:\n  x > 2\n", "d.dyn")
