@@ -291,6 +291,39 @@ def test_stage_quantities_report_bad_arguments(tmp_path, find, message, hint):
     assert caught.value.position.line == 11
 
 
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        # the cord is vertical at the bottom: a line of impact with a vertical part pulls it
+        ("line right", "line (1, 1)", "link cord on bob is not across the line"),
+        # a pinned rod turning at the impact is no particle (its angular momentum about O)
+        ("body bob: particle, mass m_A,", "body bob: mass m_A, rod L,", "bob turns at the impact"),
+    ],
+)
+def test_an_impact_whose_supports_would_take_part_is_refused(tmp_path, old, new, message):
+    text = (PROBLEMS / "pendulum_block.dyn").read_text()
+    if "rod" in new:
+        text = text.replace(old, new).replace("link cord: bob at G to O", "pin bob at O")
+    else:
+        text = text.replace(old, new)
+    with pytest.raises(SpecError) as caught:
+        solve(tmp_path, text)
+    assert message in caught.value.message
+
+
+def test_an_impact_into_a_supported_body_along_its_support_normal_is_refused(tmp_path):
+    # a ball dropped onto a block resting on the floor: the floor's impulse acts too
+    text = BOUNCE.format(m="1 kg", h="1 m", e="0.5", find="v = v_after(ball)")
+    text = text.replace(
+        "  gravity\n",
+        "  body block: particle, mass m, at (0, 0)\n  contact block at G: normal up, smooth\n"
+        "  gravity\n",
+    ).replace("ball with ground", "ball with block")
+    with pytest.raises(SpecError) as caught:
+        solve(tmp_path, text)
+    assert "support G of block pushes along the line of impact" in caught.value.message
+
+
 def test_a_particle_moving_across_its_travel_is_refused(tmp_path):
     # a ball thrown sideways does not fall straight: its direction at the floor is unknown
     text = """\

@@ -162,6 +162,7 @@ class _Chain:
         self.unfollowed: set[str] = set()  # bodies whose geometry is no longer followed
         self.together: dict[str, frozenset[str]] = {n: frozenset((n,)) for n in scene.bodies}
         self.joined_notes: list[tuple[int, str]] = []
+        self.places: dict[str, Vec] = {}  # G of a particle on a link, after a travel
 
     def stage(self, stage: Stage) -> _Step:
         event = stage.event
@@ -192,6 +193,7 @@ class _Chain:
     def impact(self, stage: Stage, impact: Impact) -> _Step:
         from dynsolve.principles.impact import impact_equations, velocity_after
 
+        self.check_impulses(stage, impact)
         masses = {name: body.mass for name, body in self.scene.bodies.items()}
         equations, along = impact_equations(impact, masses, self.velocities)
         names = {s: _renamed(s, "vn", stage.number + 1, body) for body, s in along.items()}
@@ -212,6 +214,42 @@ class _Chain:
             StageRecord(stage, tuple(along)),
             self.scene,
         )
+
+    def check_impulses(self, stage: Stage, impact: Impact) -> None:
+        """An impact along a line is that of particles (or translating bodies) whose supports
+        and links give no impulse along it: refuse a body turning about a pin, a support
+        whose normal has a part along the line, or a link along it."""
+        scene, n = self.scene, impact.line
+        for name in (impact.body, impact.other):
+            if name not in scene.bodies:
+                continue  # the ground
+            body = scene.bodies[name]
+            pinned = any(s.body == name and s.kind == "pin" for s in scene.supports)
+            if not body.particle and (pinned or tidy(self.omegas[name]) != 0):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {name} turns at the impact; an impact along a line is "
+                    "supported for particles and translating bodies",
+                )
+            for support in scene.supports:
+                if support.body == name and tidy(dot(support.normal, n)) != 0:
+                    raise StageError(
+                        stage,
+                        f"{stage.title}: the support {support.name} of {name} pushes along the "
+                        "line of impact, so it would take part in the impulse",
+                    )
+            for link in scene.links:
+                if name not in (link.body, link.other):
+                    continue
+                place = self.places.get(name, body.G)
+                P = _plus(place, (link.point[0] - body.G[0], link.point[1] - body.G[1]))
+                along = (P[0] - link.other_point[0], P[1] - link.other_point[1])
+                if link.other or tidy(dot(along, n)) != 0:
+                    raise StageError(
+                        stage,
+                        f"{stage.title}: the link {link.name} on {name} is not across the line "
+                        "of impact, so it would take part in the impulse",
+                    )
 
     def stick(self, stage: Stage, impact: Impact) -> None:
         """After a plastic impact (equal components along the line) with equal components
@@ -375,6 +413,11 @@ class _Chain:
         scene = self.scene
         if not lone:
             self.unfollowed |= part
+            body = scene.bodies[travel.body]
+            if body.particle and travel.kind in ("to", "by"):  # where a bob has swung to
+                shift = particle_shift(scene, travel)
+                assert shift is not None
+                self.places[travel.body] = _plus(body.G, shift)
             return scene
         shift = particle_shift(scene, travel)
         assert shift is not None
