@@ -25,7 +25,7 @@ from typing import Any
 import sympy
 
 from dynsolve.errors import Position, SpecError
-from dynsolve.model.scene import Impact, Scene, Travel
+from dynsolve.model.scene import Impact, Pivot, Scene, Travel
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.numbers import tidy
 from dynsolve.principles.newton_euler import Formulation, dot
@@ -143,12 +143,12 @@ def _work(args: tuple[str, ...], scene: Scene, f: Formulation, where: Position) 
 
 
 def _impact_stage(args: tuple[str, ...], f: Formulation, where: Position) -> StageRecord:
-    impacts = [r for r in f.stages if isinstance(r.stage.event, Impact)]
+    impacts = [r for r in f.stages if isinstance(r.stage.event, Impact | Pivot)]
     if args:
         record = _stage(args[-1], f, where)
-        if not isinstance(record.stage.event, Impact):
+        if not isinstance(record.stage.event, Impact | Pivot):
             raise SpecError(
-                f"stage {args[-1]} is not an impact of two bodies or with the ground",
+                f"stage {args[-1]} is not an impact",
                 where,
                 hint="name an impact stage: " + ", ".join(str(r.stage.number) for r in impacts),
             )
@@ -180,7 +180,9 @@ def _impulse(args: tuple[str, ...], scene: Scene, f: Formulation, where: Positio
     body = _body(args[0], scene, where)
     record = _impact_stage(args[1:], f, where) if len(args) == 2 else None
     if record is None:
-        mine = [r for r in f.stages if isinstance(r.stage.event, Impact) and body in r.bodies]
+        mine = [
+            r for r in f.stages if isinstance(r.stage.event, Impact | Pivot) and body in r.bodies
+        ]
         if len(mine) != 1:
             raise SpecError(
                 f"{body} takes part in {len(mine)} impacts",

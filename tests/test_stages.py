@@ -176,6 +176,19 @@ def test_a_pivot_then_a_swing_still_chains(tmp_path):
     assert solution.equations[0].note.startswith("stage 1 (state 1 → 2): cube strikes B")
 
 
+def test_the_energy_lost_when_the_cube_strikes_the_lip(tmp_path):
+    # I_B = (8/3) M a², ω₁ = 3 v/(8 a): T after = ½ I_B ω₁² = (3/8)(½ M v²), so 5/8 of
+    # T1 = ½ M v² is lost, v² = 16 a g (√2 − 1)/3 (a = 0.25 m, M = 8 kg)
+    seed = Path(__file__).parent.parent / "problems/seed/ci_seed_cube_lip.dyn"
+    text = seed.read_text().replace(
+        "find: v_min [m/s], omega_1 = omega_after(cube)", "find: v_min, dE = energy_lost(1)"
+    )
+    text = text[: text.index("answers:")]
+    got = answers(solve(tmp_path, text))
+    v2 = 16 * 0.25 * G * (math.sqrt(2) - 1) / 3
+    assert got["dE"].value == pytest.approx(5 / 8 * 0.5 * 8 * v2, rel=1e-9)
+
+
 # ---- findable quantities
 def test_kinetic_energy_work_energy_lost_and_impulse(tmp_path):
     # m = 0.5 kg, h = 2 m, e = 0.6; v₂² = 2 g h = 39.24, v₃² = e² v₂² = 14.1264
