@@ -71,6 +71,15 @@ def test_a_fall_then_an_impact_uses_the_speed_at_the_end_of_the_fall(tmp_path):
     assert solution.passed
 
 
+def test_an_impact_of_bodies_moving_apart_fails_its_check(tmp_path):
+    # line up: from the ram toward the pile is down, so (v_ram − v_pile)·n < 0 as written
+    text = FALL_THEN_IMPACT.format(e="0", find="v = v_after(ram)").replace("line down", "line up")
+    solution = solve(tmp_path, text)
+    approach = next(a for a in solution.assumptions if a.name == "approach in stage 2")
+    assert not approach.holds and "does not strike pile" in approach.detail
+    assert not solution.passed
+
+
 def test_each_stage_is_shown_in_order_with_its_principle(tmp_path):
     solution = solve(tmp_path, FALL_THEN_IMPACT.format(e="0.5", find="v = v_after(pile)"))
     notes = [row.note for row in solution.equations]

@@ -76,6 +76,7 @@ class StageRecord:
     equations: tuple[int, ...] = ()  # its equations' indices in the whole chain
     stops: bool = False  # a travel that ends at rest
     start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
+    approach: sympy.Expr | None = None  # an impact's (v_A − v_B)·n just before it
 
 
 def stages_of(events: tuple[Travel | Impact | Pivot, ...]) -> tuple[Stage, ...]:

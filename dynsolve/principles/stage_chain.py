@@ -211,9 +211,17 @@ class _Chain:
             {names[s]: Dim.of("velocity") for s in along.values()},
             after,
             {},
-            StageRecord(stage, tuple(along)),
+            StageRecord(stage, tuple(along), approach=self.approach(impact)),
             self.scene,
         )
+
+    def approach(self, impact: Impact) -> sympy.Expr:
+        """(v_A − v_B)·n just before the impact: positive when A closes on B along the line
+        (for the ground, either sense of the line is allowed: only its size counts)."""
+        v_A = self.velocities[impact.body]
+        v_B = self.velocities.get(impact.other, ZERO)
+        closing = tidy(dot((v_A[0] - v_B[0], v_A[1] - v_B[1]), impact.line))
+        return closing if impact.other in self.scene.bodies else sympy.Abs(closing)
 
     def check_impulses(self, stage: Stage, impact: Impact) -> None:
         """An impact along a line is that of particles (or translating bodies) whose supports
@@ -492,6 +500,21 @@ def chain_assumptions(
     checks: list[Assumption] = []
     for record in formulation.stages:
         event, k = record.stage.event, record.stage.number
+        if isinstance(event, Impact) and record.approach is not None:
+            closing = real_value(record.approach, values)
+            if closing is not None:
+                checks.append(
+                    Assumption(
+                        f"approach in stage {k}",
+                        closing > 0,
+                        f"before the impact (v_A − v_B)·n = {closing:.4g}"
+                        + (
+                            " > 0"
+                            if closing > 0
+                            else f": {event.body} does not strike {event.other} (the line points from it toward {event.other})"
+                        ),
+                    )
+                )
         if isinstance(event, Impact):
             checks.append(
                 Assumption(
