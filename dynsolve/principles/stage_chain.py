@@ -511,7 +511,8 @@ def chain_assumptions(
                         + (
                             " > 0"
                             if closing > 0
-                            else f": {event.body} does not strike {event.other} (the line points from it toward {event.other})"
+                            else f": {event.body} does not strike {event.other} (the line "
+                            f"points from {event.body} toward {event.other})"
                         ),
                     )
                 )
