@@ -68,8 +68,13 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
     rigid = any(not b.particle for b in scene.bodies.values()) or bool(scene.links)
+    staged = _staged(scene, spec)
     try:
-        if scene.impacts:
+        if staged:
+            from dynsolve.principles.stage_chain import chain_formulation
+
+            formulation = chain_formulation(scene, symbols, given_values)
+        elif scene.impacts:
             from dynsolve.principles.impact import impact_formulation
 
             formulation = impact_formulation(scene)
@@ -87,10 +92,15 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             formulation = _states_only(scene)
         else:
             formulation = formulate(scene, symbols, slipping)
-        if scene.travels and not any(t.kind == "for" for t in scene.travels.values()):
+        if (
+            scene.travels
+            and not staged
+            and not any(t.kind == "for" for t in scene.travels.values())
+        ):
             formulation = _with_energy(formulation, scene, symbols, given_values)
-    except ValueError as exc:
-        raise SpecError(str(exc), Position(spec.file, 1, 1), hint="check the scene") from None
+    except ValueError as exc:  # a stage's error names its line
+        where = Position(spec.file, getattr(exc, "line", 0) or 1, getattr(exc, "column", 0) or 1)
+        raise SpecError(str(exc), where, hint="check the scene") from None
     if state_unknowns:
         formulation = replace(formulation, unknowns={**formulation.unknowns, **state_unknowns})
     symbols.update({s.name: s for s in formulation.unknowns})
@@ -109,7 +119,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         )
         for s, (value, dim, meaning) in formulation.derived.items()
     ]
-    targets = tuple(_target(item, spec, scene, formulation, symbols, dims) for item in spec.finds)
+    targets = _targets(spec, scene, formulation, symbols, dims, givens)
     _check_answers(spec)
     wanted = _wanted(targets, formulation)
     if wanted:  # every assumption is checked, whatever the find list asks
@@ -127,7 +137,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     report = DimensionReport(dims, (), frozenset())
     notes = formulation.notes + tuple(
         _inertia_note(t, item, scene)
-        for t, item in zip(targets, spec.finds, strict=True)
+        for t, item in zip(targets[: len(spec.finds)], spec.finds, strict=True)
         if item.ref is not None and item.ref.function == "I"
     )
     notes += tuple(
@@ -150,6 +160,74 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
     )
 
 
+def _staged(scene: Scene, spec: Spec) -> bool:
+    """Whether the scene is followed through stages: several travel or impact lines, an
+    impact with the ground, or a find that needs the states (T, work, …)."""
+    from dynsolve.derived import called_functions
+    from dynsolve.model.scene import GROUND
+    from dynsolve.stage_finds import STAGE_FUNCTIONS
+
+    events = scene.events
+    if len(events) == 1 and getattr(events[0], "kind", "") == "for":
+        return False
+    ground = any(i.other == GROUND and GROUND not in scene.bodies for i in scene.impacts)
+    asked = {item.ref.function for item in spec.finds if item.ref is not None}
+    asked |= called_functions(spec)
+    at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
+    return len(events) > 1 or ground or bool(events and (asked & set(STAGE_FUNCTIONS) or at_state))
+
+
+def _targets(
+    spec: Spec,
+    scene: Scene,
+    formulation: Formulation,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+    givens: list[GivenInfo],
+) -> tuple[Target, ...]:
+    """The find list's targets, with the ``define:`` lines' derived quantities (a define
+    listed in find takes its place and unit there; the others follow)."""
+    from dynsolve.derived import define_targets
+
+    names = {line.lhs.text for line in spec.defines}  # type: ignore[union-attr]
+    found = tuple(
+        _target(item, spec, scene, formulation, symbols, dims)
+        for item in spec.finds
+        if item.name not in names or item.ref is not None
+    )
+    if not spec.defines:
+        return found
+
+    def resolve(function: str, args: tuple[str, ...], where: Position) -> Target:
+        item = FindItem(f"{function}({', '.join(args)})", None, where.line, where.column)
+        return _quantity(function, args, item, scene, formulation, symbols, dims, where)
+
+    defined = {
+        t.name: t
+        for t in define_targets(
+            spec,
+            found,
+            {g.name: g.symbol for g in givens},
+            {g.name: g.dim for g in givens},
+            resolve,
+        )
+    }
+    ordered: list[Target] = []
+    for item in spec.finds:
+        if item.name in defined and item.ref is None:
+            where = Position(spec.file, item.line, item.column)
+            unit, _ = _unit(item, defined[item.name].dim, spec, where)
+            if item.unit is None:  # a derived energy is shown in J, not N·m
+                unit = natural_unit(defined[item.name].dim, spec.system, "E")
+            requested = item.unit is not None
+            ordered.append(replace(defined.pop(item.name), unit=unit, requested=requested))
+        else:
+            ordered.append(next(t for t in found if t.name == item.name))
+    for target in defined.values():
+        ordered.append(replace(target, unit=natural_unit(target.dim, spec.system, "E")))
+    return tuple(ordered)
+
+
 def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, str]:
     """How an asked-for inertia was found: the body's own I_G, then the parallel axis."""
     assert item.ref is not None
@@ -170,17 +248,38 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
 
     asked = {item.name for item in spec.finds if item.ref is None}
     found: dict[sympy.Symbol, Dim] = {}
+    stops = {n.text for n in _stopping_distances(spec)}
     for stmt in spec.scene:
         value = stmt.value
+        dim = _STATE_DIMS.get(stmt.kind)
+        if stmt.kind == "travel" and stmt.word != "for":  # a distance (by), not an angle
+            dim = Dim.of("length") if stmt.word == "" and stmt.direction is not None else None
         if (
-            stmt.kind in _STATE_DIMS
-            and (stmt.kind != "travel" or stmt.word == "for")
+            dim is not None
             and isinstance(value, Name)
             and value.text not in symbols
-            and value.text in asked
+            and (value.text in asked or value.text in stops)
         ):
-            found[sympy.Symbol(value.text, positive=True)] = _STATE_DIMS[stmt.kind]
+            extent = stmt.kind == "travel" and stmt.word == ""  # a distance may be 0
+            sign = {"nonnegative": True} if extent else {"positive": True}
+            found[sympy.Symbol(value.text, **sign)] = dim
     return found
+
+
+def _stopping_distances(spec: Spec) -> list[object]:
+    """The names of distances in ``travel B: by NAME, DIR, stops`` lines: how far it
+    goes until it stops is an unknown that the stop fixes (a rebound height)."""
+    from dynsolve.spec.ast import Name
+
+    return [
+        stmt.value
+        for stmt in spec.scene
+        if stmt.kind == "travel"
+        and stmt.word == ""
+        and stmt.direction is not None
+        and isinstance(stmt.value, Name)
+        and any(p.key == "stops" for p in stmt.props)
+    ]
 
 
 def _states_only(scene: Scene) -> Formulation:
@@ -367,6 +466,8 @@ def _target(
         function, args, trial = args[0], (), True
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
+    if item.unit is None and function in ("T", "work", "energy_lost"):
+        unit = natural_unit(dim, spec.system, "E")  # an energy, not a moment
     if target.kind == "steepest" and item.unit is None:
         unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
@@ -402,6 +503,12 @@ def _quantity(
     def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
         return Target(name, symbol, dim, "", False, False, kind, expr, **extra)  # type: ignore[arg-type]
 
+    from dynsolve.stage_finds import STAGE_FUNCTIONS, stage_quantity
+
+    staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
+    if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
+        kind, dim, expr, vector = stage_quantity(function, args, scene, formulation, where)
+        return target(kind, dim, expr, vector=vector)
     if function == "steepest":
         support = next((s for s in scene.supports if s.name == (args or ("",))[0]), None)
         if support is None or support.mu_s is None or scene.gravity is None:
@@ -658,7 +765,7 @@ def _point(name: str, scene: Scene, body: str, where: Position) -> Vec:
 
 
 def _check_answers(spec: Spec) -> None:
-    found = {f.name for f in spec.finds}
+    found = {f.name for f in spec.finds} | {d.lhs.text for d in spec.defines}  # type: ignore[union-attr]
     for answer in spec.answers:
         if answer.name not in found:
             raise SpecError(
@@ -682,6 +789,10 @@ def assess(
     checks: list[Assumption] = []
     slips: dict[str, int] = {}
     scene, formulation = problem.scene, problem.formulation
+    if formulation.stages:
+        from dynsolve.principles.stage_chain import chain_assumptions
+
+        return chain_assumptions(scene, formulation, substitution), slips
     if scene.travels and not formulation.reactions:
         return _between_states(problem, substitution), slips
     for support in scene.supports:

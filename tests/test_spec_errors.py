@@ -59,7 +59,8 @@ CASES: list[Case] = [
         ),
         SpecError, 3, 1,
         ("expected a section header", "'solution'"),
-        "sections are problem, source, units, given, scene, kinematics, equations, find, answers",
+        "sections are problem, source, units, given, scene, kinematics, equations, find, "
+        "define, answers",
     ),
     Case(
         "misspelt-section-equation",

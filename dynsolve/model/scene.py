@@ -42,6 +42,7 @@ WORDS: dict[str, Vec] = {
     "left": (sympy.Integer(-1), sympy.Integer(0)),
 }
 LENGTH, MASS, FORCE = Dim.of("length"), Dim.of("mass"), Dim.of("force")
+GROUND = "ground"  # `impact B with ground`: the fixed surface (unless a body is so named)
 
 
 @dataclass(frozen=True)
@@ -147,7 +148,8 @@ class Link:
 
 @dataclass(frozen=True)
 class Impact:
-    """A collision of two bodies along a line of impact (smooth: no impulse across it)."""
+    """A collision of two bodies along a line of impact (smooth: no impulse across it);
+    ``other`` is ``GROUND`` when the body strikes a fixed surface."""
 
     body: str
     other: str
@@ -252,6 +254,7 @@ class Scene:
     pivots: tuple[Pivot, ...] = ()  # eccentric impacts about a fixed point
     assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
+    events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
 
 
 class _Builder:
@@ -618,6 +621,7 @@ def build_scene(
     link_names = {stmt.name for stmt in spec.scene if stmt.kind == "link"}
     paths: dict[str, Path] = {}
     pivots: list[Pivot] = []
+    events: list[Travel | Impact | Pivot] = []
     movers: dict[str, Mover] = {}
     assumptions: list[sympy.core.relational.Relational] = []
     for stmt in spec.scene:
@@ -660,7 +664,8 @@ def build_scene(
             omegas[stmt.body] = -omega if stmt.word == "cw" else omega
         elif stmt.kind == "impact":
             builder.body(stmt.body, stmt.line, stmt.column)
-            builder.body(stmt.other, stmt.line, stmt.column)
+            if stmt.other != GROUND or GROUND in builder.bodies:
+                builder.body(stmt.other, stmt.line, stmt.column)
             assert stmt.value is not None and stmt.direction is not None
             e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
             numeric = real_value(e, builder.given_values)
@@ -680,8 +685,10 @@ def build_scene(
                     stmt.column,
                 )
             )
+            events.append(impacts[-1])
         elif stmt.kind == "travel":
             travels[stmt.body] = _travel(builder, stmt, link_names)
+            events.append(travels[stmt.body])
         elif stmt.kind == "velocity":
             builder.body(stmt.body, stmt.line, stmt.column)
             assert stmt.value is not None and stmt.direction is not None
@@ -693,6 +700,7 @@ def build_scene(
             motions[stmt.body] = stmt.word
         elif stmt.kind == "pivot":
             pivots.append(_pivot(builder, stmt))
+            events.append(pivots[-1])
         elif stmt.kind == "path":
             paths[stmt.name] = _path(builder, stmt)
         elif stmt.kind == "moves":
@@ -723,6 +731,7 @@ def build_scene(
         pivots=tuple(pivots),
         assumptions=tuple(assumptions),
         values=builder.given_values,
+        events=tuple(events),
     )
 
 

@@ -1,5 +1,9 @@
 """Impact of two bodies along a line: momentum conserved along it, restitution, smooth contact.
 
+A body striking the fixed ground keeps only the restitution equation: the ground's
+impulse acts along the line, so e v_1·n = −v_2·n, and the smooth surface leaves the
+component across the line unchanged.
+
 For particles (or bodies translating through the impact) with velocities v₁ before:
 m_A v_A1·n + m_B v_B1·n = m_A v_A2·n + m_B v_B2·n (no external impulse along the line of
 impact), e (v_A1 − v_B1)·n = (v_B2 − v_A2)·n (coefficient of restitution), and each
@@ -34,6 +38,8 @@ def impact_equations(
     """The two equations of the impact and the unknown components along the line after it."""
     n = impact.line
     A, B = impact.body, impact.other
+    if B not in masses:  # the fixed ground
+        return _on_ground(impact, before)
     after = {body: sympy.Symbol(f"vn_{body}", real=True) for body in (A, B)}
     v_A1, v_B1 = before.get(A, ZERO), before.get(B, ZERO)
     momentum = Equation(
@@ -52,6 +58,32 @@ def impact_equations(
         "coefficient of restitution: e (v_A1 − v_B1)·n = (v_B2 − v_A2)·n",
     )
     return (momentum, restitution), after
+
+
+def _on_ground(
+    impact: Impact, before: Mapping[str, Vec]
+) -> tuple[tuple[Equation, ...], dict[str, sympy.Symbol]]:
+    """A body striking the fixed ground: its normal component reversed and scaled by e.
+
+    >>> import sympy
+    >>> v = sympy.Symbol("v", positive=True)
+    >>> (eq,), after = _on_ground(Impact("ball", "ground", sympy.Rational(1, 2), (0, -1)),
+    ...                           {"ball": (0, -v)})
+    >>> sympy.solve(eq.residual, after["ball"])
+    [-v/2]
+    """
+    A = impact.body
+    along = sympy.Symbol(f"vn_{A}", real=True)
+    restitution = Equation(
+        impact.e * dot(before.get(A, ZERO), impact.line),
+        -along,
+        "restitution",
+        1,
+        f"{A} strikes the fixed {impact.other}: e v_1·n = −v_2·n (the {impact.other}'s impulse "
+        "acts along the line of impact, so momentum along it is not conserved; the smooth "
+        "surface leaves the component across it unchanged)",
+    )
+    return (restitution,), {A: along}
 
 
 def velocity_after(impact: Impact, body: str, along: sympy.Expr, before: Mapping[str, Vec]) -> Vec:

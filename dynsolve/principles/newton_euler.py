@@ -18,6 +18,7 @@ from typing import Any
 import sympy
 
 from dynsolve.model.scene import Body, Scene, Support, Vec
+from dynsolve.model.stages import StageRecord, State
 from dynsolve.names import pretty
 from dynsolve.numbers import tidy
 from dynsolve.system import Equation
@@ -87,6 +88,8 @@ class Formulation:
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
     # an unknown's value found by a second method: (unknown, value, how, what it measures)
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
+    states: tuple[State, ...] = ()  # the motion at each numbered state of a chain of stages
+    stages: tuple[StageRecord, ...] = ()  # what each stage found, in order
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

@@ -23,7 +23,7 @@ are named with the reason.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy
 
@@ -61,6 +61,8 @@ class Energy:
     idle: tuple[str, ...]  # the forces that do no work, each with its reason
     # the rate by a second method: (value, how, what the rate measures)
     second: tuple[float, str, str] | None = None
+    velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G in state 2, per body
+    works: Mapping[str, sympy.Expr] = field(default_factory=dict)  # U(1→2) per force's name
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -89,6 +91,12 @@ class _Work:
         self.terms: list[sympy.Expr] = []
         self.notes: list[str] = []
         self.idle: list[str] = []
+        self.named: dict[str, sympy.Expr] = {}  # each force's work, by its name
+
+    def by_name(self, name: str, term: sympy.Expr, note: str) -> None:
+        """Add the work ``term`` of the force called ``name`` (0 when it does none)."""
+        self.named[name] = self.named.get(name, sympy.Integer(0)) + tidy(term)
+        self.add(term, note)
 
     def moved(self, body: str, P: Vec) -> Vec:
         placement = self.placements.get(body)
@@ -109,9 +117,10 @@ class _Work:
                 continue
             work = mass * self.symbols["g"] * dot(self.scene.gravity, placement.shift)
             if _is_zero(work, self.values):
+                self.named[f"W_{name}"] = sympy.Integer(0)
                 self.idle.append(f"W_{name} (G moves across the weight)")
             else:
-                self.add(work, f"U_W = W·Δr_G ({name})")
+                self.by_name(f"W_{name}", work, f"U_W = W·Δr_G ({name})")
 
     def springs(self) -> None:
         for spring in self.scene.springs:
@@ -138,7 +147,8 @@ class _Work:
             end = end or spring.other_point
             s1 = _length(spring.point, spring.other_point) - spring.unstretched
             s2 = _length(start, end) - spring.unstretched
-            self.add(
+            self.by_name(
+                spring.name,
                 -spring.k * (s2**2 - s1**2) / 2,
                 f"U_{spring.name} = −½k(s₂² − s₁²), s₁ = {sympy.sstr(tidy(s1))}, "
                 f"s₂ = {sympy.sstr(tidy(s2))} ({how})",
@@ -150,7 +160,8 @@ class _Work:
                 turn = self.link_turns.get(load.body)
                 if turn is None:
                     turn = self.placements.get(load.body, STILL).turn
-                self.add(self.magnitude(load.name) * load.sense * turn, f"U_{load.name} = M Δθ")
+                work = self.magnitude(load.name) * load.sense * turn
+                self.by_name(load.name, work, f"U_{load.name} = M Δθ")
                 continue
             if load.body not in self.placements:
                 continue
@@ -158,9 +169,10 @@ class _Work:
             shift = (shift[0] - load.point[0], shift[1] - load.point[1])
             work = self.magnitude(load.name) * dot(load.direction, shift)
             if _is_zero(work, self.values):
+                self.named[load.name] = sympy.Integer(0)
                 self.idle.append(f"{load.name} (its point moves across it)")
             else:
-                self.add(work, f"U_{load.name} = F·Δr (constant force)")
+                self.by_name(load.name, work, f"U_{load.name} = F·Δr (constant force)")
 
     def magnitude(self, name: str) -> sympy.Expr:
         if name not in self.symbols:
@@ -211,7 +223,8 @@ class _Work:
                 "sense): split the travel where it turns back"
             )
         N = self.normal_force(support)
-        self.add(
+        self.by_name(
+            f"F_{support.name}",
             -support.mu_k * N * path,
             f"U_F = −μk N s at {support.name}, N = {sympy.sstr(N)} from ΣF_n = 0 "
             "(constant along the straight path)",
@@ -320,7 +333,19 @@ def _particle(
         found = speed_by_integration(scene, name, symbols, values)
         if found is not None:
             second = (found, FORCE_PATH, f"speed of {name}")
-    return Energy(equation, rate, {name: speed}, {}, (), tuple(work.idle), second)
+    length = _length(shift, ZERO)  # straight along the travel: its velocity's direction
+    velocity = (tidy(speed * shift[0] / length), tidy(speed * shift[1] / length))
+    return Energy(
+        equation,
+        rate,
+        {name: speed},
+        {},
+        (),
+        tuple(work.idle),
+        second,
+        {name: velocity},
+        work.named,
+    )
 
 
 def _mechanism(
@@ -357,7 +382,17 @@ def _mechanism(
         ratio = real_value(rates.omega.get(body, 0), values)
         if omega is not None and ratio:  # the rate of travel per unit |ω|
             second = (omega / abs(ratio), CONSTANT_ALPHA, change.rate_name)
-    return Energy(equation, rate, speeds, spins, relations, tuple(work.idle), second)
+    return Energy(
+        equation,
+        rate,
+        speeds,
+        spins,
+        relations,
+        tuple(work.idle),
+        second,
+        {n: (tidy(v[0]), tidy(v[1])) for n, v in v_G.items()},
+        work.named,
+    )
 
 
 def _initial_energy(scene: Scene, rates: Rates) -> sympy.Expr:

@@ -294,3 +294,4 @@ class Spec:
     system_line: int = 0
     scene: tuple[SceneStmt, ...] = ()
     kinematics: tuple[EquationStmt, ...] = ()  # rectilinear motion: a(t), a(v), a(x) or x(t)
+    defines: tuple[EquationStmt, ...] = ()  # derived finds: NAME = expression (scene mode)

@@ -68,15 +68,17 @@ MAX_UNIT_EXPONENT = 12
 MAX_STATEMENTS = 1000
 
 SECTIONS = (
-    "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "answers",
+    "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "define",
+    "answers",
 )  # fmt: skip
-BLOCK_SECTIONS = ("given", "scene", "kinematics", "equations", "find", "answers")
+BLOCK_SECTIONS = ("given", "scene", "kinematics", "equations", "find", "define", "answers")
 _FIELDS = {
     "given": "givens",
     "scene": "scene",
     "kinematics": "kinematics",
     "equations": "equations",
     "find": "finds",
+    "define": "defines",
     "answers": "answers",
 }
 SYSTEMS = {"si": "SI", "fps": "FPS"}
@@ -178,6 +180,8 @@ class _Sections:
     answers: list[Answer] | None = None
     scene: list[SceneStmt] | None = None
     kinematics: list[EquationStmt] | None = None
+    defines: list[EquationStmt] | None = None
+    define_line: int = 0
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -286,6 +290,7 @@ def _header(
         parts.system_line = line
     else:
         setattr(parts, _FIELDS[key], [])
+        parts.define_line = line if key == "define" else parts.define_line
         if rest:
             if key != "find":
                 raise SpecError(
@@ -323,6 +328,9 @@ def _body_line(
     elif section == "find":
         assert parts.finds is not None
         parts.finds.extend(_parse(text, "find_line", file, line, offset))
+    elif section == "define":
+        assert parts.defines is not None
+        parts.defines.append(_define(text, comment, file, line, offset))
     elif section == "scene":
         assert parts.scene is not None
         parts.scene.append(_parse(text, "scene_line", file, line, offset))
@@ -345,14 +353,29 @@ def _parse_answer(text: str, file: str, line: int, offset: int) -> Answer:
             raise further from None
 
 
-def _parse(text: str, start: str, file: str, line: int, offset: int) -> Any:
+def _define(text: str, comment: str, file: str, line: int, offset: int) -> EquationStmt:
+    """``NAME = EXPR``: a derived find, an expression of givens, finds and scene
+    quantities (``T(ram, 2)``), kept as written for the scene to resolve."""
+    lhs, relation, rhs = _parse(text, "equation_line", file, line, offset, scene_calls=True)
+    if relation != "=" or not isinstance(lhs, Name):
+        raise SpecError(
+            "a define line names one quantity: NAME = EXPRESSION",
+            Position(file, line, offset + 1),
+            hint="e.g. 'dE = T(ram, 2) - T(ram, 3)'",
+        )
+    return EquationStmt(lhs, "=", rhs, text, comment, line, offset + 1)
+
+
+def _parse(
+    text: str, start: str, file: str, line: int, offset: int, scene_calls: bool = False
+) -> Any:
     try:
         tree = _lark().parse(text, start=start)
     except lark.exceptions.UnexpectedInput as exc:
         raise _syntax_error(exc, text, start, file, line, offset) from None
     _check_depth(tree, file, line, offset)
     try:
-        return _Builder(file, line, offset).transform(tree)
+        return _Builder(file, line, offset, scene_calls).transform(tree)
     except lark.exceptions.VisitError as exc:
         if isinstance(exc.orig_exc, SpecError):
             raise exc.orig_exc from None
@@ -474,9 +497,10 @@ def _token_hint(token: str, kind: str, expected: list[str], form: str) -> str:
 class _Builder(Transformer_NonRecursive):
     """Turns lark's tree into AST nodes, enforcing number and exponent bounds."""
 
-    def __init__(self, file: str, line: int, offset: int) -> None:
+    def __init__(self, file: str, line: int, offset: int, scene_calls: bool = False) -> None:
         super().__init__()
         self.file, self.line, self.offset = file, line, offset
+        self.scene_calls = scene_calls  # a define line: T(ram, 2) names a scene quantity
 
     def _at(self, token: Token) -> Position:
         return Position(self.file, self.line, self.offset + (token.column or 1))
@@ -525,6 +549,8 @@ class _Builder(Transformer_NonRecursive):
     def call(self, children: list[Any]) -> Call:
         token, *args = children
         function = str(token)
+        if function not in FUNCTIONS and self.scene_calls:
+            return Call(function, tuple(args), self.line, self._col(token))  # e.g. T(ram, 2)
         if function not in FUNCTIONS:
             close = difflib.get_close_matches(function, FUNCTIONS, n=1)
             hint = (
@@ -993,6 +1019,12 @@ def _literal_value(expr: Expr) -> Fraction | None:
 
 
 def _finish(parts: _Sections, file: str) -> Spec:
+    if parts.defines and parts.scene is None:
+        raise SpecError(
+            "'define:' lists quantities of a scene; this spec has no 'scene:' section",
+            Position(file, parts.define_line, 1),
+            hint="in equation mode write the expression as an equation: 'dE = T1 - T2'",
+        )
     givens = tuple(parts.givens or ())
     _check_given_names(givens, file)
     return Spec(
@@ -1007,6 +1039,7 @@ def _finish(parts: _Sections, file: str) -> Spec:
         system_line=parts.system_line,
         scene=tuple(parts.scene or ()),
         kinematics=tuple(parts.kinematics or ()),
+        defines=tuple(parts.defines or ()),
     )
 
 
