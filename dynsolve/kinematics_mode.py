@@ -116,6 +116,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     )
     for item, target in zip(spec.finds, targets, strict=True):
         _check_after_start(item, target, initial["t"], values, file)
+    _check_usage(spec, givens, symbols)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
@@ -124,6 +125,19 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     return KinematicsProblem(
         spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion
     )
+
+
+def _check_usage(spec: Spec, givens: list[GivenInfo], symbols: Mapping[str, object]) -> None:
+    """A given never read by the relation or the finds, whose name is a near miss of an
+    initial condition taken as 0 (``x0`` for ``x_0``), is an error."""
+    from dynsolve.usage import check_near_misses
+
+    statement = spec.kinematics[0]
+    used = {n.text for side in (statement.lhs, statement.rhs) for n in iter_names(side)}
+    used |= {arg for item in spec.finds if item.ref is not None for arg in item.ref.args}
+    used |= {"t_0", "x_0", "v_0"}
+    defaulted = [n for n in ("t_0", "x_0", "v_0") if n not in symbols]
+    check_near_misses(givens, used, defaulted, spec.file)
 
 
 def _mass_times_a(
