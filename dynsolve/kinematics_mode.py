@@ -115,6 +115,9 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
         _target(item, motion, all_symbols, given_dims, spec, (values, initial, numeric))
         for item in spec.finds
     )
+    for item, target in zip(spec.finds, targets, strict=True):
+        _check_after_start(item, target, initial["t"], values, file)
+    _check_usage(spec, givens, symbols)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
@@ -123,6 +126,19 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     return KinematicsProblem(
         spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion
     )
+
+
+def _check_usage(spec: Spec, givens: list[GivenInfo], symbols: Mapping[str, object]) -> None:
+    """A given never read by the relation or the finds, whose name is a near miss of an
+    initial condition taken as 0 (``x0`` for ``x_0``), is an error."""
+    from dynsolve.usage import check_near_misses
+
+    statement = spec.kinematics[0]
+    used = {n.text for side in (statement.lhs, statement.rhs) for n in iter_names(side)}
+    used |= {arg for item in spec.finds if item.ref is not None for arg in item.ref.args}
+    used |= {"t_0", "x_0", "v_0"}
+    defaulted = [n for n in ("t_0", "x_0", "v_0") if n not in symbols]
+    check_near_misses(givens, used, defaulted, spec.file)
 
 
 def _mass_times_a(
@@ -220,6 +236,41 @@ def _target(
         )
     return Target(
         item.name, sympy.Symbol(item.name), dim, unit, item.unit is not None, False, "signed", expr
+    )
+
+
+def _check_after_start(
+    item: FindItem,
+    target: Target,
+    t_0: sympy.Expr,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    file: str,
+) -> None:
+    """Fail loudly when a time found (``t(x_1)``, ``t(v_1)``) comes before the start t₀:
+    the motion never reaches that value after t₀ on the branch the relation follows.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("kinematics:\\n  x = 2*t\\nfind: t_1 = t(x)", "k.dyn")
+    >>> target = Target("t_1", sympy.Symbol("t_1"), _DIMS["t"], "s", False, False, "signed",
+    ...                 sympy.Integer(-1))
+    >>> _check_after_start(spec.finds[0], target, sympy.Integer(0), {}, "k.dyn")
+    ... # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dynsolve.errors.SpecError: k.dyn:3:7: t_1 = -1 s comes before the start t_0 = 0 s ...
+    """
+    from dynsolve.numbers import real_value
+
+    if item.ref is None or item.ref.function != "t":
+        return
+    found, start = real_value(target.expr, values), real_value(t_0, values)
+    if found is None or start is None or found >= start - 1e-12 * max(1.0, abs(start)):
+        return
+    raise SpecError(
+        f"{target.name} = {found:.6g} s comes before the start t_0 = {start:.6g} s",
+        Position(file, item.line, item.column),
+        hint="the motion does not reach that value after t_0 on this branch: check the "
+        "value's sign and the sense of v_0",
     )
 
 

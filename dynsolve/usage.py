@@ -1,0 +1,48 @@
+"""Givens the problem never reads: a near-miss of a name that was defaulted is an error."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from dynsolve.equation_mode import GivenInfo
+from dynsolve.errors import Position, SpecError
+
+
+def check_near_misses(
+    givens: Iterable[GivenInfo], used: set[str], defaulted: Iterable[str], file: str
+) -> None:
+    """Raise for a given that is never used while its name is a near miss of a name the
+    problem took a default for (a typo ``x0`` for ``x_0`` would be solved with x_0 = 0).
+    A near miss differs only in underscores or case.
+
+    >>> from dynsolve.equation_mode import givens_of
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  x0 = 2 m\\nequations:\\n  y = 1\\nfind: y", "k.dyn")
+    >>> try:
+    ...     check_near_misses(givens_of(spec), {"y"}, ["x_0"], "k.dyn")
+    ... except SpecError as error:
+    ...     print(error.hint)
+    did you mean 'x_0'?
+    """
+    missing = list(defaulted)
+    for given in givens:
+        if given.name in used or given.given is None:
+            continue
+        close = [n for n in missing if _spelling(n) == _spelling(given.name)]
+        if close:
+            line, column = (given.given.line, given.given.column) if given.given else (1, 1)
+            raise SpecError(
+                f"the given '{given.name}' is never used, and {close[0]} is not given "
+                f"(it would be taken as 0)",
+                Position(file, line, column),
+                hint=f"did you mean '{close[0]}'?",
+            )
+
+
+def _spelling(name: str) -> str:
+    """A name without underscores, in lower case: ``x0``, ``X_0`` and ``x_0`` agree.
+
+    >>> _spelling("X_0")
+    'x0'
+    """
+    return name.replace("_", "").lower()
