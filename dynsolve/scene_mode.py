@@ -1182,18 +1182,19 @@ def free_bodies(
 
 
 def direction_word(dx: float, dy: float) -> str:
-    """The direction of a unit vector in words, else as an angle from +x.
+    """The direction of a vector in words, else as an angle from +x.
 
-    >>> direction_word(0.0, -1.0), direction_word(0.6, 0.8)
-    ('down', 'angle 53.1°')
+    >>> direction_word(0.0, -1.0), direction_word(0.6, 0.8), direction_word(1e-36, 1e-20)
+    ('down', 'angle 53.1°', 'up')
     """
     import math
 
-    if abs(dx) < 1e-12 and abs(dy) < 1e-12:
+    size = math.hypot(dx, dy)  # any length: the test is relative to it
+    if size == 0:
         return ""
-    if abs(dx) < 1e-12:
+    if abs(dx) < 1e-12 * size:
         return "up" if dy > 0 else "down"
-    if abs(dy) < 1e-12:
+    if abs(dy) < 1e-12 * size:
         return "right" if dx > 0 else "left"
     return f"angle {math.degrees(math.atan2(dy, dx)):.1f}°"
 

@@ -70,9 +70,30 @@ def _length(a: Vec, b: Vec) -> sympy.Expr:
     return tidy(sympy.sqrt(dot(d, d)))
 
 
-def _is_zero(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+def _norm(v: Vec) -> sympy.Expr:
+    return sympy.sqrt(dot(v, v))
+
+
+def _is_zero(
+    expr: sympy.Expr,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    scale: sympy.Expr = sympy.S.One,
+) -> bool:
+    """Whether ``expr`` is zero, numerically within 1e-12 of ``scale`` (its size if not zero).
+
+    The tolerance is relative, so a problem scaled by 10^k decides the same way:
+
+    >>> from sympy import Float
+    >>> _is_zero(Float("1e-14"), {}, Float("1e-8") ** 2), _is_zero(Float("1e-30"), {}, 1)
+    (False, True)
+    """
+    if tidy(expr) == 0:
+        return True
     number = real_value(expr, values)
-    return tidy(expr) == 0 or (number is not None and abs(number) < 1e-12)
+    size = real_value(scale, values)
+    if number is None or size is None:
+        return False
+    return abs(number) <= 1e-12 * abs(size)
 
 
 class _Work:
@@ -116,7 +137,8 @@ class _Work:
             if mass == 0:
                 continue
             work = mass * self.symbols["g"] * dot(self.scene.gravity, placement.shift)
-            if _is_zero(work, self.values):
+            size = mass * self.symbols["g"] * _norm(self.scene.gravity) * _norm(placement.shift)
+            if _is_zero(work, self.values, size):
                 self.named[f"W_{name}"] = sympy.Integer(0)
                 self.idle.append(f"W_{name} (G moves across the weight)")
             else:
@@ -134,7 +156,8 @@ class _Work:
                     spring.other_point[0] - spring.point[0],
                     spring.other_point[1] - spring.point[1],
                 )
-                if not _is_zero(shift[0] * line[1] - shift[1] * line[0], self.values):
+                cross = shift[0] * line[1] - shift[1] * line[0]
+                if not _is_zero(cross, self.values, _norm(shift) * _norm(line)):
                     raise ValueError(
                         f"the wound spring {spring.name} must pull along the motion of its "
                         "cord's end (keep it tangent to the rim, along its travel)"
@@ -168,7 +191,8 @@ class _Work:
             shift = self.moved(load.body, load.point)
             shift = (shift[0] - load.point[0], shift[1] - load.point[1])
             work = self.magnitude(load.name) * dot(load.direction, shift)
-            if _is_zero(work, self.values):
+            size = self.magnitude(load.name) * _norm(load.direction) * _norm(shift)
+            if _is_zero(work, self.values, size):
                 self.named[load.name] = sympy.Integer(0)
                 self.idle.append(f"{load.name} (its point moves across it)")
             else:
@@ -197,13 +221,16 @@ class _Work:
         placement = self.placements[support.body]
         P2 = self.moved(support.body, support.point)
         step = (P2[0] - support.point[0], P2[1] - support.point[1])
-        if not _is_zero(dot(step, support.normal), self.values):
+        if not _is_zero(
+            dot(step, support.normal), self.values, _norm(step) * _norm(support.normal)
+        ):
             raise ValueError(
                 f"{support.body} would leave its contact {support.name} on the way to state 2 "
                 "(a travel must run along the surface)"
             )
         path = _length(P2, support.point)
-        if support.smooth or _is_zero(path, self.values):
+        reach = sympy.Max(_norm(P2), _norm(support.point))
+        if support.smooth or _is_zero(path, self.values, reach):
             self.idle.append(f"N_{support.name} (normal to the motion)")
             return
         if support.mu_k is None:
