@@ -31,6 +31,7 @@ from dynsolve.spec.parser import iter_names
 from dynsolve.spec.printing import statement_latex, statement_text
 from dynsolve.system import Constraint, Equation, EquationSystem
 from dynsolve.units import GRAVITY, Dim, natural_unit
+from dynsolve.usage import unused_note
 
 
 @dataclass(frozen=True)
@@ -130,7 +131,11 @@ def build_problem(spec: Spec) -> Problem:
         wanted=(),
     )
     rows = tuple(_row(check, spec) for check in report.checks)
-    return Problem(spec, tuple(givens), system, report, targets, symbols, rows)
+    read = {sym.name for e in system.equations for sym in e.residual.free_symbols}
+    read |= {sym.name for c in system.constraints for sym in c.relation.free_symbols}
+    read |= {f.name for f in spec.finds}
+    notes = unused_note(givens, read)
+    return Problem(spec, tuple(givens), system, report, targets, symbols, rows, notes=notes)
 
 
 def _row(check: EquationCheck, spec: Spec) -> EquationRow:

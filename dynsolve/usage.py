@@ -3,9 +3,35 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
-from dynsolve.equation_mode import GivenInfo
 from dynsolve.errors import Position, SpecError
+
+if TYPE_CHECKING:
+    from dynsolve.equation_mode import GivenInfo
+
+
+def unused_note(givens: Iterable[GivenInfo], used: set[str]) -> tuple[tuple[str, str], ...]:
+    """A note naming every given that nothing reads (with its line), or no note.
+
+    A given the problem states but does not need (a distractor, a value for a later part)
+    is named rather than passed over in silence:
+
+    >>> from dynsolve.equation_mode import givens_of
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  h = 2 m\\nequations:\\n  y = 1\\nfind: y", "k.dyn")
+    >>> unused_note(givens_of(spec), {"y"})
+    (('unused givens', 'h (line 2) is given but not used'),)
+    """
+    unused = [
+        f"{g.name} (line {g.given.line})"
+        for g in givens
+        if g.given is not None and g.name not in used
+    ]
+    if not unused:
+        return ()
+    verb = "is" if len(unused) == 1 else "are"
+    return (("unused givens", f"{', '.join(unused)} {verb} given but not used"),)
 
 
 def check_near_misses(

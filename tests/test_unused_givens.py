@@ -4,6 +4,7 @@ import pytest
 
 from dynsolve.errors import SpecError
 from dynsolve.kinematics_mode import build_kinematics_problem
+from dynsolve.pipeline import solve_file
 from dynsolve.spec.parser import parse_spec
 
 TYPO = """given:
@@ -30,3 +31,21 @@ def test_correct_name_is_used() -> None:
     values = {g.symbol: g.value for g in problem.givens if g.value is not None}
     x_at_1 = float(problem.targets[0].expr.xreplace(values).subs(problem.symbols["t"], 1))
     assert x_at_1 == pytest.approx(6.0)
+
+
+def test_a_given_no_equation_reads_is_named_as_unused(tmp_path):
+    # F = m g needs only m: the height h is a distractor; it must be named, not passed over.
+    path = tmp_path / "unused.dyn"
+    path.write_text(
+        "given:\n  m = 3 kg\n  h = 2 m\nequations:\n  F = m*g\nfind: F\n", encoding="utf-8"
+    )
+    solution = solve_file(path)
+    notes = [c for c in solution.checks if c.name == "unused givens"]
+    assert [c.detail for c in notes] == ["h (line 3) is given but not used"]
+    assert solution.answers[0].value == pytest.approx(3 * 9.81)
+
+
+def test_every_given_used_gives_no_unused_note(tmp_path):
+    path = tmp_path / "used.dyn"
+    path.write_text("given:\n  m = 3 kg\nequations:\n  F = m*g\nfind: F\n", encoding="utf-8")
+    assert not [c for c in solve_file(path).checks if c.name == "unused givens"]
