@@ -117,6 +117,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     )
     for item, target in zip(spec.finds, targets, strict=True):
         _check_after_start(item, target, initial["t"], values, file)
+        _check_no_blow_up(item, motion, symbols, initial["t"], values, file)
     _check_usage(spec, givens, symbols)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
@@ -271,6 +272,71 @@ def _check_after_start(
         Position(file, item.line, item.column),
         hint="the motion does not reach that value after t_0 on this branch: check the "
         "value's sign and the sense of v_0",
+    )
+
+
+def _check_no_blow_up(
+    item: FindItem,
+    motion: Motion,
+    symbols: Mapping[str, sympy.Symbol],
+    t_0: sympy.Expr,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    file: str,
+) -> None:
+    """Fail loudly when x(t) or v(t) is not continuous from t₀ to a given time t₁: the motion
+    blows up (or leaves its law's domain) before t₁, so a value "at t₁" would be the other
+    branch of the formula, not this motion's.
+
+    a = v² from v₀ = 1 m/s gives v = 1/(1 − t), infinite at t = 1 s; v(2 s) = −1 m/s is not
+    a speed this particle ever has:
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> from dynsolve.principles.rectilinear import integrate_motion
+    >>> spec = parse_spec("kinematics:\\n  x = 2*t\\nfind: v_1 = v(t_1)", "k.dyn")
+    >>> zero, one, t_1 = sympy.Integer(0), sympy.Integer(1), sympy.Symbol("t_1")
+    >>> motion = integrate_motion(V**2, "a(v)", zero, zero, one)
+    >>> try:
+    ...     _check_no_blow_up(spec.finds[0], motion, {"t_1": t_1}, zero, {t_1: 2 * one}, "k.dyn")
+    ... except SpecError as error:
+    ...     print(error.message.split(":")[0])
+    v(t) is not finite at t = 1 s, before t_1 = 2 s
+    """
+    from sympy.calculus.util import continuous_domain
+
+    from dynsolve.numbers import real_value
+    from dynsolve.solve.blocks import BudgetExceeded, time_budget
+
+    ref = item.ref
+    if ref is None or ref.function not in ("x", "v") or len(ref.args) != 1:
+        return
+    law = motion.formulas.get(f"{ref.function}(t)")
+    at = symbols.get(ref.args[0])
+    if law is None or at is None:
+        return
+    start, end = real_value(t_0, values), real_value(at, values)
+    if (
+        start is None
+        or end is None
+        or end <= start
+        or law.xreplace(dict(values)).free_symbols - {T}
+    ):
+        return
+    law = law.xreplace(dict(values))
+    interval = sympy.Interval(sympy.nsimplify(start), sympy.nsimplify(end))
+    try:
+        with time_budget(2.0):
+            domain = continuous_domain(law, T, interval)
+    except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
+        return  # undecided: the substitution and root checks still apply
+    if domain == interval:
+        return
+    gap = sympy.Complement(interval, domain)
+    first = float(gap.inf) if gap.inf.is_finite else end
+    raise SpecError(
+        f"{ref.function}(t) is not finite at t = {first:.6g} s, before {ref.args[0]} = "
+        f"{end:.6g} s: the motion blows up (or leaves its law's domain) there",
+        Position(file, item.line, item.column),
+        hint="ask for a time before it, or check the law's sign and the initial conditions",
     )
 
 
