@@ -38,3 +38,26 @@ def test_unknown_name_in_a_direction_vector_is_a_clean_error(tmp_path, line, col
     result = CliRunner().invoke(app, ["solve", str(spec)])
     assert result.exit_code == 2, result.output
     assert f"dir.dyn:9:{column}: 'tan_beta' in the scene is not a given" in result.output
+
+
+DRAG = """\
+problem: drag a = -k v^2 with an answer that find does not list
+given:
+  k = 0.5 1/m
+  v_0 = 20 m/s
+kinematics:
+  a = -k*v^2
+find: v_x = v(x)
+answers:
+  v_t = v_0/(1 + k*v_0*t)
+"""
+
+
+def test_kinematics_answer_not_in_find_is_a_clean_error(tmp_path):
+    # Fuzz seed 1, input 26290 (a mutation of problems/kinematics/drag_a_of_v.dyn renamed a
+    # find item): KeyError 'v_t' in the answer-key comparison. Equation mode already refused it.
+    spec = tmp_path / "drag.dyn"
+    spec.write_text(DRAG, encoding="utf-8")
+    result = CliRunner().invoke(app, ["solve", str(spec)])
+    assert result.exit_code == 2, result.output
+    assert "drag.dyn:9:3: answer 'v_t' is not in find (hint: did you mean 'v_x'?)" in result.output
