@@ -219,6 +219,19 @@ def _check_finds(spec: Spec, unknowns: list[str], given: set[str]) -> None:
             close = difflib.get_close_matches(item.name, unknowns + sorted(given), n=1)
             hint = f"did you mean '{close[0]}'?" if close else "use a name from the equations"
             raise SpecError(f"'{item.name}' in find appears in no equation", where, hint)
+    check_answers_in_find(spec)
+
+
+def check_answers_in_find(spec: Spec) -> None:
+    """Refuse an answer whose name is not in ``find`` (it would have nothing to compare with).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> text = "kinematics:\\n  x = 2*t\\nfind: v_t = v(t)\\nanswers:\\n  w = 1"
+    >>> check_answers_in_find(parse_spec(text, "k.dyn"))
+    Traceback (most recent call last):
+    dynsolve.errors.SpecError: k.dyn:5:3: answer 'w' is not in find (hint: add 'w' to find)
+    """
+    seen = {item.name for item in spec.finds}
     for answer in spec.answers:
         if answer.name not in seen:
             close = difflib.get_close_matches(answer.name, sorted(seen), n=1)

@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 import sympy
 
 from dynsolve.dimensions import DimensionReport, check_dimensions
-from dynsolve.equation_mode import GivenInfo, Target, givens_of
+from dynsolve.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.names import latex_name, pretty
@@ -87,6 +87,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
             Position(file, spec.kinematics[1].line if spec.kinematics[1:] else 1, 1),
             hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
         )
+    check_answers_in_find(spec)
     givens = givens_of(spec)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     statement = spec.kinematics[0]

@@ -359,6 +359,7 @@ class _Builder:
             target = self.fixed[direction.point]
             return _unit((target[0] - origin[0], target[1] - origin[1]))
         assert direction.vector is not None
+        _known_names(self, direction.vector, self.symbols)
         x, y = (to_sympy(c, self.symbols) for c in direction.vector)
         return _unit((x, y))
 
