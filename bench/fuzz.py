@@ -37,7 +37,7 @@ def make_input(seed: int, index: int, solve_fraction: float, seeds: list[str]) -
     """The (stage, text) of input ``index``: stage is "parse" or "solve"."""
     rng = random.Random(seed * 1_000_003 + index)
     stage = "solve" if rng.random() < solve_fraction else "parse"
-    built = stage == "parse" and rng.random() < 0.5
+    built = rng.random() < 0.5
     return stage, grammar_spec(rng) if built else mutated_problem(rng, seeds)
 
 

@@ -19,8 +19,8 @@ PROBLEMS = Path(__file__).resolve().parent.parent / "problems"
 NAMES = ("m", "g", "r", "k_O", "alpha", "omega", "T", "a", "v_0", "x", "theta", "I_O", "t", "y")
 UNITS = ("kg", "m", "s", "N", "N*m", "m/s", "m/s^2", "rad/s", "deg", "lb", "ft", "kg*m^2", "1/s")
 UNITS_ODD = ("N^-2", "m^(1/2)", "kgs", "(m/s)^3", "rev/min", "N·m", "2*m", "m^99", "s^(-1/3)")
-FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "atan2", "abs", "max", "min", "asin")
-NUMBERS = ("0", "1", "2", "0.5", "-3", "9.81", "1e3", "1e-9", "1e300", "1e-300", "123456789", ".5")
+FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "atan2", "abs", "asin", "acos")
+NUMBERS = ("0", "1", "2", "0.5", "-3", "9.81", "1e3", "1e-9", "1e30", "1e-30", "123456789", ".5")
 RELATIONS = ("=", "=", "=", ">=", "<=", ">", "<")
 SECTIONS = ("given", "equations", "find", "answers", "scene", "kinematics")
 SCENE_LINES = (
@@ -64,8 +64,12 @@ def expression(rng: random.Random, depth: int = 0) -> str:
         return f"({expression(rng, depth + 1)})"
     if pick == 5:
         return f"-{expression(rng, depth + 1)}"
-    args = ", ".join(expression(rng, depth + 1) for _ in range(rng.randint(1, 2)))
-    return f"{rng.choice(FUNCTIONS)}({args})"
+    function = rng.choice(FUNCTIONS)
+    count = 2 if function == "atan2" else 1
+    if rng.random() < 0.05:
+        count = 3 - count
+    args = ", ".join(expression(rng, depth + 1) for _ in range(count))
+    return f"{function}({args})"
 
 
 def unit(rng: random.Random) -> str:
@@ -108,7 +112,32 @@ def section_line(rng: random.Random, section: str) -> str:
 
 
 def grammar_spec(rng: random.Random) -> str:
-    """A whole spec: a header, then a few sections with a few lines each."""
+    """A whole spec: a free mix of sections, or (more often) a coherent equation-mode one."""
+    return coherent_spec(rng) if rng.random() < 0.6 else section_mix(rng)
+
+
+def coherent_spec(rng: random.Random) -> str:
+    """An equation-mode spec whose finds are the equations' unknowns, so it reaches the solver."""
+    names = rng.sample(NAMES, rng.randint(2, 6))
+    unknowns = names[: rng.randint(1, min(3, len(names) - 1))]
+    givens = names[len(unknowns) :]
+    lines = ["problem: fuzz", f"units: {rng.choice(('SI', 'FPS'))}", "given:"]
+    lines.extend(f"  {name} = {quantity(rng)}" for name in givens)
+    lines.append("equations:")
+    for unknown in unknowns:
+        rhs = expression(rng).replace(rng.choice(NAMES), rng.choice(givens))
+        relation = "=" if rng.random() < 0.9 else rng.choice(RELATIONS)
+        lines.append(f"  {unknown} {relation} {rhs}")
+    lines.append(f"find: {', '.join(unknowns)}")
+    if rng.random() < 0.5:
+        lines.append("answers:")
+        for unknown in rng.sample(unknowns, rng.randint(1, len(unknowns))):
+            lines.append(f"  {unknown} {section_line(rng, 'answers').partition(' ')[2]}")
+    return "\n".join(lines) + "\n"
+
+
+def section_mix(rng: random.Random) -> str:
+    """A header, then a few sections of any kind with a few lines each."""
     lines = ["problem: fuzz"]
     if rng.random() < 0.5:
         lines.append(f"units: {rng.choice(('SI', 'FPS', 'cgs'))}")
