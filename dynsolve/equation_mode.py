@@ -120,13 +120,7 @@ def build_problem(spec: Spec) -> Problem:
         unknowns=tuple(symbols[n] for n in unknown_names),
         knowns={g.symbol: g.value for g in givens if g.value is not None},
         constraints=tuple(
-            Constraint(
-                relation(s.relation, to_sympy(s.lhs, symbols), to_sympy(s.rhs, symbols)),
-                _plain(s),
-                s.line,
-            )
-            for s in spec.equations
-            if s.relation != "="
+            _constraint(s, symbols, file) for s in spec.equations if s.relation != "="
         ),
         wanted=(),
     )
@@ -136,6 +130,31 @@ def build_problem(spec: Spec) -> Problem:
     read |= {f.name for f in spec.finds}
     notes = unused_note(givens, read)
     return Problem(spec, tuple(givens), system, report, targets, symbols, rows, notes=notes)
+
+
+def _constraint(
+    statement: EquationStmt, symbols: Mapping[str, sympy.Symbol], file: str
+) -> Constraint:
+    """A constraint line as a sympy relational; a side that is not real is a positioned error.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("equations:\\n  a <= sqrt(asin(2))\\n  a = 1\\nfind: a", "c.dyn")
+    >>> try:
+    ...     _constraint(spec.equations[0], {"a": sympy.Symbol("a")}, "c.dyn")
+    ... except SpecError as error:
+    ...     print(error.position.line, error.message)
+    2 this constraint compares a value that is not a real number
+    """
+    lhs, rhs = to_sympy(statement.lhs, symbols), to_sympy(statement.rhs, symbols)
+    try:
+        built = relation(statement.relation, lhs, rhs)
+    except TypeError:  # sympy refuses to order a side it knows is not real
+        raise SpecError(
+            "this constraint compares a value that is not a real number",
+            Position(file, statement.line, statement.column),
+            hint="check square roots of negative numbers and asin/acos outside [-1, 1]",
+        ) from None
+    return Constraint(built, _plain(statement), statement.line)
 
 
 def _row(check: EquationCheck, spec: Spec) -> EquationRow:

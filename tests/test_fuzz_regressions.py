@@ -61,3 +61,17 @@ def test_kinematics_answer_not_in_find_is_a_clean_error(tmp_path):
     result = CliRunner().invoke(app, ["solve", str(spec)])
     assert result.exit_code == 2, result.output
     assert "drag.dyn:9:3: answer 'v_t' is not in find (hint: did you mean 'v_x'?)" in result.output
+
+
+def test_a_constraint_with_a_side_that_is_not_real_is_a_clean_error(tmp_path):
+    # Fuzz seed 2, input 37548: asin(1e15) is not real, and sympy's `<=` raised TypeError
+    # ("Invalid comparison of non-real ...") with a traceback.
+    spec = tmp_path / "c.dyn"
+    spec.write_text(
+        "equations:\n  a <= sqrt(asin(-1e-9+sqrt(1e30)))\n  a = 1\nfind: a\n", encoding="utf-8"
+    )
+    result = CliRunner().invoke(app, ["solve", str(spec)])
+    assert result.exit_code == 2, result.output
+    assert "c.dyn:2:3: this constraint compares a value that is not a real number" in (
+        result.output
+    )
