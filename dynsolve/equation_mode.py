@@ -15,7 +15,7 @@
 from __future__ import annotations
 
 import difflib
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -241,8 +241,8 @@ def _check_finds(spec: Spec, unknowns: list[str], given: set[str]) -> None:
     check_answers_in_find(spec)
 
 
-def check_answers_in_find(spec: Spec) -> None:
-    """Refuse an answer whose name is not in ``find`` (it would have nothing to compare with).
+def check_answers_in_find(spec: Spec, also: Iterable[str] = ()) -> None:
+    """Refuse an answer whose name is not in ``find`` or ``also`` (nothing to compare it with).
 
     >>> from dynsolve.spec.parser import parse_spec
     >>> text = "kinematics:\\n  x = 2*t\\nfind: v_t = v(t)\\nanswers:\\n  w = 1"
@@ -250,7 +250,7 @@ def check_answers_in_find(spec: Spec) -> None:
     Traceback (most recent call last):
     dynsolve.errors.SpecError: k.dyn:5:3: answer 'w' is not in find (hint: add 'w' to find)
     """
-    seen = {item.name for item in spec.finds}
+    seen = {item.name for item in spec.finds} | set(also)
     for answer in spec.answers:
         if answer.name not in seen:
             close = difflib.get_close_matches(answer.name, sorted(seen), n=1)

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.dimensions import DimensionReport, check_dimensions
-from dynsolve.equation_mode import Target, givens_of
+from dynsolve.equation_mode import Target, check_answers_in_find, givens_of
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import latex_number, latex_unit, pretty_unit
@@ -170,7 +170,7 @@ class _Builder:
         else:
             self._polar()
         targets = tuple(self._target(item) for item in self.spec.finds)
-        self._check_answers()
+        check_answers_in_find(self.spec)
         rows = tuple(
             relation_row(s, check.dim, self.spec, _note(s))
             for s, check in zip(statements, report.checks, strict=True)
@@ -546,16 +546,6 @@ class _Builder:
             else:
                 message = f"{pretty(quantity)} is undefined at {argument}: the speed is zero there"
             raise SpecError(message, at, hint="ask at another time")
-
-    def _check_answers(self) -> None:
-        for answer in self.spec.answers:
-            if answer.name not in self.targets:
-                close = difflib.get_close_matches(answer.name, list(self.targets), n=1)
-                raise SpecError(
-                    f"'{answer.name}' in answers is not in find",
-                    self.at(answer.line, answer.column),
-                    hint=f"did you mean '{close[0]}'?" if close else "add it to find:",
-                )
 
     # ---- what is shown
     def _shown(self, expr: sympy.Expr, dim: Dim) -> tuple[str, str]:

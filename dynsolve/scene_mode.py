@@ -15,7 +15,7 @@ from dataclasses import dataclass, field, replace
 import sympy
 
 from dynsolve.dimensions import DimensionReport, sympy_dimension
-from dynsolve.equation_mode import GivenInfo, Target, givens_of
+from dynsolve.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import parallel_axis
@@ -120,7 +120,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         for s, (value, dim, meaning) in formulation.derived.items()
     ]
     targets = _targets(spec, scene, formulation, symbols, dims, givens)
-    _check_answers(spec)
+    check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     wanted = _wanted(targets, formulation)
     if wanted:  # every assumption is checked, whatever the find list asks
         wanted += tuple(s for s in _checked(scene, formulation) if s not in wanted)
@@ -762,17 +762,6 @@ def _point(name: str, scene: Scene, body: str, where: Position) -> Vec:
     raise SpecError(
         f"there is no point '{name}'", where, hint="declare it with 'point NAME: (x, y)'"
     )
-
-
-def _check_answers(spec: Spec) -> None:
-    found = {f.name for f in spec.finds} | {d.lhs.text for d in spec.defines}  # type: ignore[union-attr]
-    for answer in spec.answers:
-        if answer.name not in found:
-            raise SpecError(
-                f"answer '{answer.name}' is not in find",
-                Position(spec.file, answer.line, answer.column),
-                hint=f"add '{answer.name}' to find",
-            )
 
 
 # ---- after solving: assumptions and diagrams
