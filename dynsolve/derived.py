@@ -7,7 +7,7 @@ equation before it becomes sympy. A rotation or a component enters with its sign
 along its axis), a vector by its magnitude.
 
 >>> import sympy
->>> from dynsolve.equation_mode import Target
+>>> from dynsolve.modes.equation_mode import Target
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec("scene:\\n  gravity\\ndefine:\\n  twice = 2*v", "d.dyn")
 >>> v = Target("v", sympy.Symbol("v"), Dim(1, 0, -1), "m/s", False, False, "magnitude",
@@ -26,9 +26,9 @@ from dataclasses import replace
 import sympy
 
 from dynsolve.dimensions import check_dimensions
-from dynsolve.equation_mode import Target
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
+from dynsolve.modes.equation_mode import Target
 from dynsolve.spec.ast import Binary, Call, EquationStmt, Expr, Name, Num, Spec, Unary
 from dynsolve.spec.parser import FUNCTIONS
 from dynsolve.units import Dim

@@ -22,10 +22,10 @@ import sympy
 from dynsolve.answer_key import compare, compare_magnitude
 from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
-from dynsolve.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
+from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value
 from dynsolve.quantities import convert
@@ -54,7 +54,7 @@ RESIDUAL_LIMIT = 1e-9
 
 class SolvableProblem(Protocol):
     """What the pipeline needs of a problem, whichever front end built it
-    (:class:`~dynsolve.equation_mode.Problem`, ``SceneProblem``, ``KinematicsProblem``)."""
+    (:class:`~dynsolve.modes.equation_mode.Problem`, ``SceneProblem``, ``KinematicsProblem``)."""
 
     spec: Spec
     givens: tuple[GivenInfo, ...]
@@ -75,7 +75,7 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
     try:
         with step("building the equations"):
             if spec.kinematics:
-                from dynsolve.kinematics_mode import build_kinematics_problem
+                from dynsolve.modes.kinematics_mode import build_kinematics_problem
 
                 return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
             if spec.scene:
@@ -88,7 +88,7 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
-    from dynsolve.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
+    from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -374,7 +374,7 @@ class _View:
     def scene_value(self, target: Target) -> sympy.Expr | None:
         """A scene target's value: signed along its axis, or a vector's magnitude."""
         if target.kind == "steepest":
-            from dynsolve.scene_mode import steepest
+            from dynsolve.modes.scene_mode import steepest
 
             assert target.expr is not None
             contact = target.expr.name
@@ -402,7 +402,7 @@ class _View:
         return value
 
     def direction(self, target: Target, value: float) -> str:
-        from dynsolve.scene_mode import direction_of
+        from dynsolve.modes.scene_mode import direction_of
 
         if target.kind == "vector" and target.vector is not None:
             values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
@@ -410,7 +410,7 @@ class _View:
             y = self.number((sympy.Integer(0) + target.vector[1]).xreplace(values))
             if x is None or y is None or value == 0:
                 return ""
-            from dynsolve.scene_mode import direction_word
+            from dynsolve.modes.scene_mode import direction_word
 
             return direction_word(x / value, y / value)
         axis = None
@@ -422,7 +422,7 @@ class _View:
         return direction_of(target.kind, value, axis)
 
     def answer(self, target: object) -> AnswerRow:
-        from dynsolve.equation_mode import Target
+        from dynsolve.modes.equation_mode import Target
 
         assert isinstance(target, Target)
         value = self.computed(target.name)

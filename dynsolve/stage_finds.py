@@ -27,9 +27,9 @@ import sympy
 from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import Impact, Pivot, Scene, Travel
 from dynsolve.model.stages import StageRecord, State
+from dynsolve.modes.scene_mode import _body
 from dynsolve.numbers import tidy
 from dynsolve.principles.newton_euler import Formulation, dot
-from dynsolve.scene_mode import _body
 from dynsolve.units import Dim
 
 STAGE_FUNCTIONS = ("T", "work", "energy_lost", "impulse")

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from dynsolve.errors import Position, SpecError
 
 if TYPE_CHECKING:
-    from dynsolve.equation_mode import GivenInfo
+    from dynsolve.modes.equation_mode import GivenInfo
 
 
 def unused_note(givens: Iterable[GivenInfo], used: set[str]) -> tuple[tuple[str, str], ...]:
@@ -17,7 +17,7 @@ def unused_note(givens: Iterable[GivenInfo], used: set[str]) -> tuple[tuple[str,
     A given the problem states but does not need (a distractor, a value for a later part)
     is named rather than passed over in silence:
 
-    >>> from dynsolve.equation_mode import givens_of
+    >>> from dynsolve.modes.equation_mode import givens_of
     >>> from dynsolve.spec.parser import parse_spec
     >>> spec = parse_spec("given:\\n  h = 2 m\\nequations:\\n  y = 1\\nfind: y", "k.dyn")
     >>> unused_note(givens_of(spec), {"y"})
@@ -41,7 +41,7 @@ def check_near_misses(
     problem took a default for (a typo ``x0`` for ``x_0`` would be solved with x_0 = 0).
     A near miss differs only in underscores or case.
 
-    >>> from dynsolve.equation_mode import givens_of
+    >>> from dynsolve.modes.equation_mode import givens_of
     >>> from dynsolve.spec.parser import parse_spec
     >>> spec = parse_spec("given:\\n  x0 = 2 m\\nequations:\\n  y = 1\\nfind: y", "k.dyn")
     >>> try:

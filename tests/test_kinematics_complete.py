@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from dynsolve.errors import SpecError
-from dynsolve.kinematics_mode import build_kinematics_problem
+from dynsolve.modes.kinematics_mode import build_kinematics_problem
 from dynsolve.pipeline import solve_file
 from dynsolve.spec.parser import parse_file, parse_spec
 

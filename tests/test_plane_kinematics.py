@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 from dynsolve.cli import app
 from dynsolve.errors import DimensionError, SpecError
-from dynsolve.kinematics_mode import build_kinematics_problem
+from dynsolve.modes.kinematics_mode import build_kinematics_problem
 from dynsolve.pipeline import solve_file
 from dynsolve.principles.curvilinear import path_components
 from dynsolve.principles.rectilinear import T, crossing_times, extreme_time

@@ -3,7 +3,7 @@
 import pytest
 
 from dynsolve.errors import SpecError
-from dynsolve.kinematics_mode import build_kinematics_problem
+from dynsolve.modes.kinematics_mode import build_kinematics_problem
 from dynsolve.pipeline import solve_file
 from dynsolve.spec.parser import parse_spec
 

@@ -1,6 +1,6 @@
 """Turn a scene-mode spec into a problem: model, Newton–Euler equations, targets, assumptions.
 
-The result has the same shape as an equation-mode :class:`~dynsolve.equation_mode.Problem`
+The result has the same shape as an equation-mode :class:`~dynsolve.modes.equation_mode.Problem`
 (givens, equation system, targets, dimensions), plus the scene's free-body diagrams
 and the assumptions to check once it is solved.
 """
@@ -15,11 +15,11 @@ from dataclasses import dataclass, field, replace
 import sympy
 
 from dynsolve.dimensions import DimensionReport, sympy_dimension
-from dynsolve.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import parallel_axis
 from dynsolve.model.scene import Path, Scene, Vec, build_scene
+from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate

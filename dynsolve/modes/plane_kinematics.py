@@ -39,12 +39,12 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.dimensions import DimensionReport, check_dimensions
-from dynsolve.equation_mode import Target, check_answers_in_find, givens_of
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import latex_number, latex_unit, pretty_unit
 from dynsolve.format import quantity as format_quantity
-from dynsolve.kinematics_mode import KinematicsProblem, relation_row
+from dynsolve.modes.equation_mode import Target, check_answers_in_find, givens_of
+from dynsolve.modes.kinematics_mode import KinematicsProblem, relation_row
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.curvilinear import path_components, polar_components

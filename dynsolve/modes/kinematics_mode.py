@@ -1,7 +1,7 @@
 """Turn a kinematics spec into a problem: the given motion, integrated.
 
 A section naming plane components (``y``, ``v_x``, ``a_y``, ``r``, ``theta`` …) is plane
-motion, built by :mod:`dynsolve.plane_kinematics`. Otherwise it gives one relation of
+motion, built by :mod:`dynsolve.modes.plane_kinematics`. Otherwise it gives one relation of
 rectilinear motion, ``a = …`` in t, v or x, or ``x = …`` /
 ``v = …`` in t; the initial conditions are the givens ``t_0``, ``x_0``, ``v_0`` (zero
 when absent, except ``v_0``, which a(t), a(v) and a(x) need). ``find`` names relations
@@ -30,9 +30,9 @@ from dataclasses import dataclass, replace
 import sympy
 
 from dynsolve.dimensions import DimensionReport, check_dimensions
-from dynsolve.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
+from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.principles.rectilinear import KINDS, Motion, T, V, X, integrate_motion
 from dynsolve.quantities import resolve_unit
@@ -69,14 +69,14 @@ class KinematicsProblem:
 
 def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     """Check the given relation's units, integrate it, and resolve the find list
-    (plane motion, with two relations, is handed to :mod:`dynsolve.plane_kinematics`).
+    (plane motion, with two relations, is handed to :mod:`dynsolve.modes.plane_kinematics`).
 
     >>> from dynsolve.spec.parser import parse_spec
     >>> text = "given:\\n  c = 2 m/s\\nkinematics:\\n  x = c*t\\n  y = c*t\\nfind: v_t = v(t)"
     >>> build_kinematics_problem(parse_spec(text, "k.dyn")).targets[0].expr
     sqrt(2)*c
     """
-    from dynsolve.plane_kinematics import build_plane_problem, is_plane
+    from dynsolve.modes.plane_kinematics import build_plane_problem, is_plane
 
     if is_plane(spec):
         return build_plane_problem(spec)
