@@ -41,11 +41,11 @@ from dynsolve.results import (
     Solution,
     Step,
 )
-from dynsolve.solve import solve_system
-from dynsolve.solve.outcome import Outcome
-from dynsolve.solve.roots import truth
+from dynsolve.solver import solve_system
+from dynsolve.solver.outcome import Outcome
+from dynsolve.solver.roots import truth
 from dynsolve.spec.ast import Spec
-from dynsolve.spec.parser import parse_file
+from dynsolve.spec.parser import parse_file, parse_spec
 from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
@@ -72,6 +72,28 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
     """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
     with step("parsing the spec"):
         spec = parse_file(path)
+    return solve_spec(spec, options)
+
+
+def solve_text(text: str, name: str = "<spec>", options: SolveOptions | None = None) -> Solution:
+    """Parse, solve and check a spec's text (from stdin or a string); ``name`` in positions.
+
+    >>> solve_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n").answers[0].shown
+    '19.6 N'
+    """
+    with step("parsing the spec"):
+        spec = parse_spec(text, name)
+    return solve_spec(spec, options)
+
+
+def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
+    """Solve and check a parsed spec: kinematics, scene or equation mode, by its sections.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n")
+    >>> solve_spec(spec).answers[0].shown
+    '19.6 N'
+    """
     try:
         with step("building the equations"):
             if spec.kinematics:
@@ -318,7 +340,7 @@ class _View:
         return self.problem.rows
 
     def step(self, index: int, block: object) -> Step:
-        from dynsolve.solve.outcome import Block
+        from dynsolve.solver.outcome import Block
 
         assert isinstance(block, Block)
         equations = self.problem.system.equations
@@ -452,7 +474,7 @@ class _View:
     def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
         """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the
         formula is the same for every positive value of the givens; else as it is."""
-        from dynsolve.solve.roots import sign_of
+        from dynsolve.solver.roots import sign_of
 
         if target.kind != "rotation" or value.free_symbols & set(self.problem.system.unknowns):
             return value, ""

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.dimensions import DimensionReport, EquationCheck, check_dimensions
-from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.errors import DimensionError, DynsolveError, Position, SpecError, with_others
 from dynsolve.expressions import relation, to_sympy
 from dynsolve.format import pretty_unit
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
@@ -192,17 +192,28 @@ def _plain(statement: EquationStmt) -> str:
 def givens_of(spec: Spec) -> list[GivenInfo]:
     """Every given resolved (and g, with its default value unless the spec gives it)."""
     out: list[GivenInfo] = []
+    errors: list[DynsolveError] = []
     for given in spec.givens:
         symbol = sympy.Symbol(given.name, positive=True)
         if given.quantity is not None:
-            value, dim = resolve_quantity(given.quantity, spec.system, spec.file)
+            try:
+                value, dim = resolve_quantity(given.quantity, spec.system, spec.file)
+            except DynsolveError as error:  # every bad unit of the givens at once
+                errors.append(error)
+                continue
             if value.is_zero or value.is_negative:  # magnitudes may be zero or signed
                 symbol = sympy.Symbol(given.name, real=True)
             out.append(GivenInfo(given.name, symbol, value, dim, given))
         else:
             assert given.dimension is not None
-            dim = resolve_dimension(given.dimension, spec.file)
+            try:
+                dim = resolve_dimension(given.dimension, spec.file)
+            except DynsolveError as error:
+                errors.append(error)
+                continue
             out.append(GivenInfo(given.name, symbol, None, dim, given))
+    if errors:
+        raise with_others(errors)
     for info in out:
         if info.name == "g" and info.dim != Dim(1, 0, -2):
             assert info.given is not None

@@ -428,6 +428,20 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
     return "\\subsection*{Answers}\n" + _table(spec, header, rows)
 
 
+def answers_math(solution: Solution) -> str:
+    """The answers as one display-math block (what Jupyter shows for ``_repr_latex_``).
+
+    >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
+    >>> answers_math(Solution("t.dyn", "", "", "SI", "exact", (), (), (), (answer,), (), (), ""))
+    '$$\\\\begin{aligned} T &= 106\\\\,\\\\mathrm{N} \\\\end{aligned}$$'
+    """
+    rows = [
+        f"{latex_name(a.name)} &= {safe_math(a.latex).strip() or escape_latex(a.shown)}"
+        for a in solution.answers
+    ]
+    return "$$\\begin{aligned} " + " \\\\ ".join(rows) + " \\end{aligned}$$" if rows else ""
+
+
 def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:
     value = _math(answer.latex) or f"\\textit{{{escape_latex(answer.shown)}}}"
     cells = [_name(answer.name), value]

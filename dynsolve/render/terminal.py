@@ -92,7 +92,10 @@ def _givens(solution: Solution) -> Table:
     table = _table("", "as written", "in SI", "")
     for g in solution.givens:
         table.add_row(
-            Text(pretty(g.name), style="bold"), g.written, g.si, Text(g.description, style="dim")
+            Text(pretty(g.name), style="bold"),
+            Text(g.written),
+            Text(g.si),
+            Text(g.description, style="dim"),
         )
     return table
 
@@ -127,7 +130,9 @@ def _step(step: Step) -> RenderableType:
 def _answers(solution: Solution) -> Table:
     table = _table("", "value", "")
     for a in solution.answers:
-        table.add_row(Text(pretty(a.name), style="bold"), Text(a.shown, style="bold"), a.direction)
+        table.add_row(
+            Text(pretty(a.name), style="bold"), Text(a.shown, style="bold"), Text(a.direction)
+        )
     return table
 
 
@@ -135,7 +140,7 @@ def _checks(checks: tuple[Check, ...]) -> Table:
     table = _table("", "check", "detail")
     for c in checks:
         mark = Text("✓", style="green") if c.passed else Text("✗", style="bold red")
-        table.add_row(mark, c.name, c.detail)
+        table.add_row(mark, Text(c.name), Text(c.detail))
     return table
 
 
@@ -178,9 +183,9 @@ def failures_table(failures: list[tuple[str, KeyComparison | Check | str]]) -> T
     table.add_column("file")
     table.add_column("check")
     table.add_column("detail", overflow="fold")
-    for file, failure in failures:
+    for file, failure in failures:  # spec text is not rich markup: "[kg]" stays as written
         if isinstance(failure, str):
-            table.add_row(file, "input", failure)
+            table.add_row(Text(file), "input", Text(failure))
         else:
-            table.add_row(file, failure.name, failure.detail)
+            table.add_row(Text(file), Text(failure.name), Text(failure.detail))
     return table
