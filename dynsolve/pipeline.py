@@ -46,6 +46,7 @@ from dynsolve.solver.outcome import Outcome
 from dynsolve.solver.roots import truth
 from dynsolve.spec.ast import Spec
 from dynsolve.spec.parser import parse_file, parse_spec
+from dynsolve.suspicious import suspicious_notes
 from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
@@ -198,6 +199,7 @@ def solve_problem(
         key=key,
         status=outcome.status,
         messages=outcome.messages,
+        warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
     )
 
 
@@ -306,14 +308,14 @@ class _View:
             number_text = given.quantity.text
             written = f"{number_text} {pretty_unit(unit_text)}".strip()
             description = given.description
-        si_unit = natural_unit(info.dim, "SI", info.name)
+        base_unit = natural_unit(info.dim, self.system, info.name)
         if info.dim.dimensionless and unit_text:
-            si_unit = "rad"
-        si_value = convert(float(info.value), si_unit, self.system)
-        si = format_quantity(si_value, si_unit, 4, trim=True)
+            base_unit = "rad"
+        base_value = convert(float(info.value), base_unit, self.system)
+        base = format_quantity(base_value, base_unit, 4, trim=True)
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
         return GivenRow(
-            info.name, written, si, description, False, latex_name(info.name), latex_value
+            info.name, written, base, description, False, latex_name(info.name), latex_value
         )
 
     def derived_row(self, info: GivenInfo) -> GivenRow:
@@ -321,8 +323,8 @@ class _View:
         assert info.formula is not None and info.value is not None
         formula = self.text(info.formula)
         value = self.number(info.value)
-        unit = natural_unit(info.dim, "SI", info.name)
-        si = (
+        unit = natural_unit(info.dim, self.system, info.name)
+        base = (
             "—"
             if value is None
             else format_quantity(convert(value, unit, self.system), unit, 4, trim=True)
@@ -330,7 +332,7 @@ class _View:
         written = f"= {formula}"
         latex = self.latex(info.formula)
         return GivenRow(
-            info.name, written, si, info.note, value is None, latex_name(info.name), latex
+            info.name, written, base, info.note, value is None, latex_name(info.name), latex
         )
 
     def _g_unit(self) -> str:

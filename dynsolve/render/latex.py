@@ -269,7 +269,8 @@ def render_latex(solution: Solution) -> str:
     """
     body = [
         _title(solution),
-        _givens_section(solution.givens),
+        *(f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings),
+        _givens_section(solution.givens, solution.system),
         *_free_body_section(solution.free_body),
         *_assumptions_section(solution.assumptions),
         _equations_section(solution.equations),
@@ -328,17 +329,22 @@ def _table(spec: str, header: Sequence[str], rows: Iterable[Sequence[str]]) -> s
 # ---- given
 
 
-def _givens_section(givens: Sequence[GivenRow]) -> str:
+def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
     if not givens:
         return "\\subsection*{Given}\nNo givens."
-    header = ["Symbol", "Value", "SI value", "Description"]
+    header = ["Symbol", "Value", f"{escape_latex(system)} value", "Description"]
     rows = [_given_cells(g) for g in givens]
     return "\\subsection*{Given}\n" + _table(r"@{}lllp{0.4\linewidth}@{}", header, rows)
 
 
 def _given_cells(given: GivenRow) -> list[str]:
     value = escape_latex(given.written) if given.symbolic else _math(given.latex_value)
-    return [_math(given.latex_name), value, escape_latex(given.si), escape_latex(given.description)]
+    return [
+        _math(given.latex_name),
+        value,
+        escape_latex(given.base),
+        escape_latex(given.description),
+    ]
 
 
 # ---- equations

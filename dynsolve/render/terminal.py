@@ -48,6 +48,7 @@ def solution_renderable(solution: Solution) -> RenderableType:
     kinetic diagram: I_G α
     """
     parts: list[RenderableType] = [_title(solution)]
+    parts += [Text(f"⚠ warning: {w}", style="yellow") for w in solution.warnings]
     if solution.givens:
         parts += [_heading("Given"), _givens(solution)]
     if solution.free_body:
@@ -81,7 +82,7 @@ def _title(solution: Solution) -> Panel:
     return Panel(subtitle, title=Text(solution.title, style="bold"), title_align="left")
 
 
-def _table(*columns: str) -> Table:
+def _table(*columns: str | Text) -> Table:
     table = Table(box=None, padding=(0, 2, 0, 0), show_header=True, header_style="dim")
     for column in columns:
         table.add_column(column)
@@ -89,12 +90,12 @@ def _table(*columns: str) -> Table:
 
 
 def _givens(solution: Solution) -> Table:
-    table = _table("", "as written", "in SI", "")
+    table = _table("", "as written", Text(f"in {solution.system}"), "")
     for g in solution.givens:
         table.add_row(
             Text(pretty(g.name), style="bold"),
             Text(g.written),
-            Text(g.si),
+            Text(g.base),
             Text(g.description, style="dim"),
         )
     return table
