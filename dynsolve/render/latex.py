@@ -23,6 +23,7 @@ from pathlib import PurePath
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
+from dynsolve.render import Layout, sheet_plan
 from dynsolve.results import (
     AnswerRow,
     Assumption,
@@ -242,8 +243,12 @@ def _concat(pieces: list[Piece]) -> str:
 # ---- document -------------------------------------------------------------------------
 
 
-def render_latex(solution: Solution) -> str:
+def render_latex(solution: Solution, layout: Layout = "full") -> str:
     """The solution as a standalone LaTeX document (article class) for pdflatex.
+
+    ``layout``: ``full`` (everything), ``handout`` (the derivation a teacher hands out: no
+    file name or status, no answer-key column, no checks) or ``key`` (the answers with the
+    key and the checks, for whoever marks).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -267,18 +272,25 @@ def render_latex(solution: Solution) -> str:
     >>> "\\\\item[$\\\\checkmark$] \\\\textbf{cord T taut} (holds)" in tex
     True
     """
-    body = [
-        _title(solution),
-        *(f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings),
-        _givens_section(solution.givens, solution.system),
-        *_free_body_section(solution.free_body),
-        *_assumptions_section(solution.assumptions),
-        _equations_section(solution.equations),
-        _solution_section(solution.steps),
-        _answers_section(solution.answers, solution.key),
-        _checks_section(solution.checks),
-    ]
-    preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if solution.free_body else "")
+    plan = sheet_plan(layout)
+    key = solution.key if "key" in plan else ()
+    parts: dict[str, Callable[[], list[str]]] = {
+        "title": lambda: [_title(solution)],
+        "handout_title": lambda: [_title(solution, handout=True)],
+        "warnings": lambda: [
+            f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings
+        ],
+        "givens": lambda: [_givens_section(solution.givens, solution.system)],
+        "free_body": lambda: _free_body_section(solution.free_body),
+        "assumptions": lambda: _assumptions_section(solution.assumptions),
+        "equations": lambda: [_equations_section(solution.equations)],
+        "steps": lambda: [_solution_section(solution.steps)],
+        "answers": lambda: [_answers_section(solution.answers, key)],
+        "checks": lambda: [_checks_section(solution.checks)],
+    }
+    body = [section for name in plan if name in parts for section in parts[name]()]
+    drawn = solution.free_body and "free_body" in plan
+    preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
@@ -292,11 +304,13 @@ def _name(name: str) -> str:
     return _math(latex_name(name))
 
 
-def _title(solution: Solution) -> str:
+def _title(solution: Solution, handout: bool = False) -> str:
     title = escape_latex(solution.title.strip() or PurePath(solution.file).name or "Problem")
     lines = [f"\\section*{{{title}}}"]
     if solution.source.strip():
         lines.append(f"{{\\large\\itshape {escape_latex(solution.source)}\\par}}")
+    if handout:  # the handout names no file, status or solver remarks
+        return "\n".join(lines)
     lines.append(r"\smallskip")
     lines.append(f"{{\\small {_summary(solution)}\\par}}")
     lines.extend(_messages(solution.messages))
@@ -450,6 +464,8 @@ def answers_math(solution: Solution) -> str:
 
 def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:
     value = _math(answer.latex) or f"\\textit{{{escape_latex(answer.shown)}}}"
+    if answer.direction:
+        value += f" {escape_latex(answer.direction)}"
     cells = [_name(answer.name), value]
     if keyed:
         cells += [escape_latex(pretty_unit(key.expected)), _mark(key.passed)] if key else ["", ""]
