@@ -40,6 +40,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 from dynsolve.solver import solve_system
 from dynsolve.solver.outcome import Outcome
@@ -119,12 +120,15 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     trial: Mapping[sympy.Symbol, sympy.Expr] = {}
     trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
     failed: tuple[Assumption, ...] = ()
+    trials: list[tuple[SolvableProblem, Outcome, tuple[Assumption, ...]]] = []
     slipping: dict[str, int] = {}
     for _ in range(RESOLVES):  # a slide contradicted, then a stick that slips the other way
         if not slips or slips.items() <= slipping.items():
             break
         trial = trial or outcome.values
-        failed += tuple(a for a in assumptions if _resolved(a))
+        rejected = tuple(a for a in assumptions if _resolved(a))
+        trials.append((problem, outcome, rejected))
+        failed += rejected
         slipping |= slips
         problem = build_scene_problem(spec, slipping)
         problem = replace(
@@ -137,7 +141,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         outcome = solve_system(problem.system, options)
         assumptions, slips = assess(problem, outcome.values)
     assumptions = failed + assumptions
-    return solve_problem(
+    solution = solve_problem(
         problem,
         options,
         outcome,
@@ -145,6 +149,39 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         assumptions,
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values),
+    )
+    shown = tuple(_trial(*each, outcome, options) for each in trials)
+    return replace(solution, trials=shown) if shown else solution
+
+
+def _trial(
+    problem: SolvableProblem,
+    outcome: Outcome,
+    rejected: tuple[Assumption, ...],
+    final: Outcome,
+    options: SolveOptions,
+) -> Trial:
+    """A rejected trial as the derivation shows it, with a remark for each unknown whose
+    sign the re-solve reversed (α turning the other way once the wheel slips)."""
+    view = _View(problem, outcome, {}, options)
+    steps = tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1))
+    after = {symbol.name: value for symbol, value in final.values.items()}
+    remarks = []
+    for symbol, value in outcome.values.items():
+        before_value, after_value = real_value(value), real_value(after.get(symbol.name, 0))
+        if before_value and after_value and (before_value > 0) != (after_value > 0):
+            before_text = view.shown(symbol.name, value)[0]
+            after_text = view.shown(symbol.name, after[symbol.name])[0]
+            remarks.append(
+                f"{pretty(symbol.name)} changes sign: {before_text} in the trial, "
+                f"{after_text} after the re-solve"
+            )
+    return Trial(
+        " and ".join(a.name for a in rejected),
+        view.equation_rows(),
+        steps,
+        "; ".join(a.detail for a in rejected),
+        tuple(remarks),
     )
 
 

@@ -36,6 +36,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 
 PREAMBLE = r"""\documentclass[11pt]{article}
@@ -283,6 +284,7 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
         "free_body": lambda: _free_body_section(solution.free_body),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
+        "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [_equations_section(solution.equations)],
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
@@ -397,6 +399,20 @@ def _dimension(row: EquationRow) -> str:
 
 
 # ---- solution steps
+
+
+def _trial_section(trial: Trial) -> str:
+    """A case assumed first: its equations and solve, then the check that rejected it."""
+    equations = _equations_section(trial.equations).replace(
+        "\\subsection*{Equations}", "\\subsubsection*{Equations}"
+    )
+    steps = _solution_section(trial.steps).replace(
+        "\\subsection*{Solution}", "\\subsubsection*{Solution}"
+    )
+    title = f"\\subsection*{{Trial: {escape_latex(trial.assumption)} (assumed, then checked)}}"
+    verdict = f"\\textbf{{Check:}} $\\times$ {escape_latex(trial.verdict)}"
+    remarks = [f"\\textit{{Remark:}} {escape_latex(r)}" for r in trial.remarks]
+    return "\n\n".join([title, equations, steps, verdict, *remarks])
 
 
 def _solution_section(steps: Sequence[Step]) -> str:

@@ -28,6 +28,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
@@ -91,6 +92,7 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
         "free_body": lambda: _free_body_section(solution.free_body),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
+        "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [_equations_section(solution.equations)],
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
@@ -192,6 +194,16 @@ def _dimension(row: EquationRow) -> str:
     text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
     shown = escape_markdown(text)
     return f"{shown} ✓" if row.dimension_ok else f"**dimensions differ**: {shown} ✗"
+
+
+def _trial_section(trial: Trial) -> str:
+    """A case assumed first: its equations and solve, then the check that rejected it."""
+    equations = _equations_section(trial.equations).replace("## Equations", "### Equations")
+    steps = _solution_section(trial.steps).replace("## Solution", "### Solution")
+    verdict = f"**Check:** ✗ {escape_markdown(trial.verdict)}"
+    remarks = [f"*Remark:* {escape_markdown(r)}" for r in trial.remarks]
+    title = f"## Trial: {escape_markdown(trial.assumption)} (assumed, then checked)"
+    return "\n\n".join([title, equations, steps, verdict, *remarks])
 
 
 def _solution_section(steps: Sequence[Step]) -> str:
