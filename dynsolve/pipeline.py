@@ -395,6 +395,7 @@ class _View:
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
+            numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
                     name=symbol.name,
@@ -402,6 +403,8 @@ class _View:
                     formula_latex=self.latex(formula) if show_formula else "",
                     value=value_text,
                     value_latex=value_latex,
+                    substituted=numbers[0] if numbers else "",
+                    substituted_latex=numbers[1] if numbers else "",
                 )
             )
         discarded = tuple(
@@ -418,6 +421,31 @@ class _View:
             discarded=discarded,
             note=block.note,
         )
+
+    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+        """(text, latex) of ``formula`` with every symbol replaced by its number in base
+        units, unevaluated, as a hand calculation writes it; None where a symbol has no
+        number (a symbolic problem) or the formula is a bare symbol."""
+        if isinstance(formula, sympy.Symbol):
+            return None
+        values = {**self.knowns, **self.outcome.values}
+        names: dict[sympy.Symbol, str] = {}
+        for symbol in formula.free_symbols:
+            number = real_value(values[symbol]) if symbol in values else None
+            if number is None:
+                return None
+            text = sig(number, 4)
+            if "." in text and "e" not in text:
+                text = text.rstrip("0").rstrip(".")
+            names[symbol] = f"({text})" if text.startswith("-") else text
+        # placeholders sort as the symbols do, so the terms keep the formula's order
+        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
+        shown = formula.xreplace(placeholders)
+        text = sympy.sstr(shown).replace("**", "^")
+        latex = sympy.latex(shown, symbol_names={placeholders[s]: n for s, n in names.items()})
+        for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
+            text = text.replace(placeholders[symbol].name, names[symbol])
+        return text, latex
 
     def computed(self, name: str) -> sympy.Expr | None:
         target = next((t for t in self.problem.targets if t.name == name), None)

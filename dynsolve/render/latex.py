@@ -438,8 +438,9 @@ def _result(result: Formula) -> str:
     """``T &= \\frac{...}{...} = 106\\,\\mathrm{N}``; the value alone when no formula."""
     formula = safe_math(result.formula_latex).strip()
     value = safe_math(result.value_latex).strip()
-    parts = [p for p in (formula, value) if p]
-    if len(parts) == 2 and formula == value:
+    numbers = safe_math(result.substituted_latex).strip()
+    parts = [p for p in (formula, numbers, value) if p]
+    if len(parts) >= 2 and formula == value:
         parts = [formula]
     return f"{safe_math(latex_name(result.name))} &= " + " = ".join(parts or ["?"])
 
