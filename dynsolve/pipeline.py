@@ -52,6 +52,7 @@ from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
+NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
 
 
 class SolvableProblem(Protocol):
@@ -669,8 +670,15 @@ class _View:
             return Check("structure", False, "no root satisfies the constraints")
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
-        unknowns = len(self.problem.system.unknowns)
-        detail = f"{_count(unknowns, 'unknown')} from {_count(len(lines), 'equation')}"
+        unknowns = [pretty(s.name) for s in self.problem.system.unknowns]
+        named = ", ".join(unknowns[:NAMED_UNKNOWNS]) + (
+            ", …" if len(unknowns) > NAMED_UNKNOWNS else ""
+        )
+        detail = (
+            f"{_count(len(unknowns), 'unknown')} ({named}) from {_count(len(lines), 'equation')}"
+            if unknowns
+            else f"no unknowns; {_count(len(lines), 'equation')}"
+        )
         if outcome.redundant:
             detail += "; redundant and consistent: " + ", ".join(
                 lines[i] for i in outcome.redundant

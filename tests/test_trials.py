@@ -72,3 +72,12 @@ def test_each_step_puts_the_numbers_in(pole) -> None:
     assert alpha.substituted == "(-3*981*0.25 + 3*400 - 2*400*0.5)/(2*75)"
     assert alpha.value == "0.428 rad/s²"
     assert "\\cdot" in alpha.substituted_latex
+
+
+def test_the_structure_check_names_the_unknowns(pole) -> None:
+    # Hibbeler 17.15 writes "five unknowns" before solving; the scene has four here:
+    # F_A (μk N_A once slipping), N_A, a_Gx, a_Gy, α minus the friction now known
+    structure = next(c for c in pole.checks if c.name == "structure")
+    assert structure.detail.startswith("4 unknowns (")
+    for name in ("N_A", "a_Gx", "a_Gy", "α"):
+        assert name in structure.detail
