@@ -128,7 +128,10 @@ def _version(value: bool) -> None:
 @app.callback()
 def main_callback(
     version: Annotated[
-        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")
+        bool,
+        typer.Option(
+            "--version", callback=_version, is_eager=True, help="Show the version.", metavar=""
+        ),
     ] = False,
 ) -> None:
     """Solve and check engineering-dynamics problems written as plain-text .dyn specs.
@@ -172,13 +175,16 @@ def solve(
         bool,
         typer.Option(
             "--handout",
+            metavar="",
             help="LaTeX/Markdown/PDF: the sheet a teacher hands out (no answer key, checks "
             "or file name).",
         ),
     ] = False,
     key: Annotated[
         bool,
-        typer.Option("--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks."),
+        typer.Option(
+            "--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks.", metavar=""
+        ),
     ] = False,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
