@@ -423,7 +423,7 @@ _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 def _dimension(row: EquationRow) -> str:
     """``[force, N] ✓`` from ``force [N]``, or a marked mismatch."""
     match = _DIMENSION.match(row.dimension.strip())
-    text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
+    text = f"{match.group(1)}, {pretty_unit(match.group(2))}" if match else row.dimension.strip()
     shown = f"{{[}}{escape_latex(text)}{{]}}" if text else ""
     if row.dimension_ok:
         return f"{shown}~$\\checkmark$"
