@@ -72,6 +72,11 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
     """Parse, solve and check one ``.dyn`` file (equation mode, or scene mode with a scene)."""
     with step("parsing the spec"):
         spec = parse_file(path)
+    return solve_spec(spec, options)
+
+
+def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
+    """Solve and check a parsed spec (a file's, or a student's variant of it)."""
     try:
         with step("building the equations"):
             if spec.kinematics:
