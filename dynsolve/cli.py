@@ -141,6 +141,14 @@ def solve(
     ] = Mode.exact,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
+    variant: Annotated[
+        str | None,
+        typer.Option(help="Solve this student's variant (with --variants).", show_default=False),
+    ] = None,
+    variants: Annotated[
+        Path | None,
+        typer.Option(help="The variants file written by 'dynsolve variants'.", show_default=False),
+    ] = None,
 ) -> None:
     """Solve one spec and show its unit-checked derivation.
 
@@ -151,11 +159,13 @@ def solve(
     """
     if output is not None:
         _refuse_overwriting_input(file, output)
+    cells = _variant_cells(variant, variants)
     budget = Budget(time_budget, memory_budget)
     width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
     target = _Target(format.value, output is None, width, terminal, colours)
-    outcome = _in_worker(solve_and_render, (file, mode.value, budget, target), budget)
+    job = (file, mode.value, budget, target, cells)
+    outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
         _report(outcome.errors)
         raise typer.Exit(ExitCode.BAD_INPUT)
@@ -214,6 +224,102 @@ def check(
     raise typer.Exit(worst)
 
 
+class UnitsChoice(enum.StrEnum):
+    """Units of the variants: as drawn (si), US customary twins (us), or both."""
+
+    si = "si"
+    us = "us"
+    both = "both"
+
+
+@app.command("variants")
+def variants_command(
+    file: Annotated[Path, typer.Argument(help="The .dyn spec with a vary: section.")],
+    roster: Annotated[Path, typer.Option(help="CSV of students (column student or id).")],
+    seed: Annotated[int, typer.Option(help="Seed: the same seed draws the same variants.")],
+    output: Annotated[Path, typer.Option("--output", "-o", help="The variants CSV to write.")],
+    units: Annotated[
+        UnitsChoice, typer.Option(help="si: as drawn; us: US customary; both: a twin row each.")
+    ] = UnitsChoice.si,
+    mode: Annotated[Mode, typer.Option(help="Solve mode for each variant.")] = Mode.exact,
+) -> None:
+    """Draw each student's givens from the spec's vary: ranges, solve and check each one.
+
+    A variant whose assumptions (no slip, contact kept, ...) or checks come out otherwise
+    than the base problem's is redrawn. Reproducible: a student's variant depends only on
+    the seed and their id (docs/grading.md, "Variants").
+    """
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.generate import make_variants
+    from dynsolve.grade.variants import read_roster, write_variants
+    from dynsolve.spec.parser import parse_file
+    from dynsolve.system import SolveOptions
+
+    _refuse_overwriting_input(file, output)
+    try:
+        spec = parse_file(file)
+        students = read_roster(roster)
+        with _counter(len(students)) as advance:
+            rows = make_variants(
+                spec, students, seed, units.value, SolveOptions(mode=mode.value), advance
+            )
+        names = list(dict.fromkeys(n for row in rows for n in row.cells))
+        write_variants(output, rows, names)
+    except DynsolveError as error:
+        _report(_messages(error))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    stderr.print(f"wrote {output}: {len(rows)} variants of {len(students)} students")
+
+
+def _variant_cells(student: str | None, variants: Path | None) -> tuple[str, dict[str, str]] | None:
+    """One student's row of a variants file, for ``solve --variant``."""
+    if student is None and variants is None:
+        return None
+    if student is None or variants is None:
+        _fail("--variant and --variants go together", "give both, or neither")
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.variants import read_variants
+
+    assert student is not None and variants is not None
+    try:
+        table = read_variants(variants)
+    except DynsolveError as error:
+        _report(_messages(error))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    if student not in table:
+        import difflib
+
+        close = difflib.get_close_matches(student, list(table), n=1)
+        _fail(
+            f"no student '{student}' in {variants}",
+            f"did you mean '{close[0]}'?" if close else "check the id",
+        )
+    return student, table[student]
+
+
+class _counter:
+    """A progress bar on stderr (when it is a terminal) advanced by the callable it yields."""
+
+    def __init__(self, total: int) -> None:
+        self.total = total
+        self.progress: object = None
+
+    def __enter__(self) -> Callable[[int], None]:
+        if self.total < CHECK_PROGRESS_THRESHOLD or not stderr.is_terminal:
+            return lambda done: None
+        from rich.progress import Progress
+
+        progress = Progress(console=stderr, transient=True)
+        progress.start()
+        task = progress.add_task("variants", total=self.total)
+        self.progress = progress
+        return lambda done: progress.update(task, completed=done)
+
+    def __exit__(self, *exc: object) -> None:
+        if self.progress is not None:
+            self.progress.stop()  # type: ignore[attr-defined]
+
+
 def _collect(paths: list[Path]) -> list[Path]:
     files: list[Path] = []
     for path in paths:
@@ -237,14 +343,29 @@ def _progress(items: Iterator[_Outcome], total: int) -> Iterator[_Outcome]:
     yield from track(items, total=total, description="checking", console=stderr, transient=True)
 
 
-def solve_and_render(file: Path, mode: str, budget: Budget, target: _Target) -> _Done | _Refused:
-    """The worker's job for ``solve``: solve, check and render one spec to text."""
+def solve_and_render(
+    file: Path,
+    mode: str,
+    budget: Budget,
+    target: _Target,
+    variant: tuple[str, dict[str, str]] | None = None,
+) -> _Done | _Refused:
+    """The worker's job for ``solve``: solve, check and render one spec (or one student's
+    variant of it: their givens replaced, the answer key dropped) to text."""
     from dynsolve.budget import step
     from dynsolve.errors import DynsolveError
     from dynsolve.pipeline import solve_file
 
     try:
-        solution = solve_file(file, _options(mode, budget))
+        if variant is None:
+            solution = solve_file(file, _options(mode, budget))
+        else:
+            from dynsolve.grade.substitute import with_variant
+            from dynsolve.pipeline import solve_spec
+            from dynsolve.spec.parser import parse_file
+
+            spec = with_variant(parse_file(file), variant[1], variant[0])
+            solution = solve_spec(spec, _options(mode, budget))
         with step("rendering the output"):
             text = _render(solution, target)
     except DynsolveError as error:
