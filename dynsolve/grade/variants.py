@@ -7,7 +7,8 @@ customary twin, whose id is the student's id followed by ``@US``.
 
 >>> import pathlib, tempfile
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "v.csv"
->>> rows = [VariantRow("s01", "SI", {"m": "45 kg"}), VariantRow("s01@US", "US", {"m": "3.083 slug"})]
+>>> rows = [VariantRow("s01", "SI", {"m": "45 kg"}),
+...         VariantRow("s01@US", "US", {"m": "3.083 slug"})]
 >>> write_variants(path, rows, ("m",))
 >>> read_variants(path)
 {'s01': {'m': '45 kg'}, 's01@US': {'m': '3.083 slug'}}
