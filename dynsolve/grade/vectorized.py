@@ -1,0 +1,358 @@
+"""Solve once, evaluate many: a problem's answers as closed forms in its varied givens.
+
+:func:`build_closed_form` solves the problem with the varied givens left as symbols (the
+others substituted), checks that every answer is a closed form in them, and compiles the
+answers and the conditions the base solve relied on (declared constraints; in a scene,
+contact kept, no slip, cord taut) with ``sympy.lambdify(..., "numpy")``.
+:func:`evaluate` then computes every variant at once, and marks the rows the closed form
+does not answer: a condition that comes out otherwise than in the base problem (a root
+choice or an assumption that flips), a value at the edge of a condition, a value that is
+not finite, or a given whose sign breaks the symbol's assumption. Those rows are solved
+one by one (:mod:`dynsolve.grade.expected`).
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   m = 2 kg
+...   F = 10 N
+... equations:
+...   F = m*a
+... find: a
+... ''', "p.dyn")
+>>> form = build_closed_form(spec, ("m",))
+>>> batch = evaluate(form, [{"m": "4 kg"}, {"m": "5000 g"}])
+>>> [float(v) for v in batch.values["a"]], batch.fast.tolist()
+([2.5, 2.0], [True, True])
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+import sympy
+
+from dynsolve.errors import DynsolveError
+from dynsolve.grade.substitute import read_cell
+from dynsolve.quantities import resolve_quantity
+from dynsolve.spec.ast import Spec
+from dynsolve.system import SolveOptions
+from dynsolve.units import Dim, system_factor
+
+EDGE = 1e-9  # a condition within this fraction of its edge is decided by a full solve
+IMPENDING = 1e-9  # as scene mode: |F| ≤ μs N (1 + 1e-9) still holds
+
+
+class NotClosedForm(Exception):
+    """The problem has no usable closed form in its varied givens (the reason says why)."""
+
+
+@dataclass(frozen=True)
+class TargetForm:
+    """How one find is read from the compiled outputs."""
+
+    name: str
+    kind: str  # as Target.kind: signed, rotation, along, vector, magnitude
+    unit: str  # display unit (as ``dynsolve solve`` shows it)
+    dim: Dim
+    outputs: tuple[int, ...]  # value; or x, y of a vector
+    axis: tuple[int, int] | None = None  # outputs of an "along" axis
+
+
+@dataclass(frozen=True)
+class Condition:
+    """A condition the base solve relied on, and how it came out there."""
+
+    label: str
+    kind: str  # ">=0", ">0", "<=0", "<0", or "no slip" (outputs F, mu, N)
+    outputs: tuple[int, ...]
+    holds: bool
+
+
+@dataclass(frozen=True)
+class ClosedForm:
+    """A problem's answers and conditions compiled for arrays of the varied givens."""
+
+    spec: Spec
+    names: tuple[str, ...]  # varied givens, in the compiled function's argument order
+    positive: tuple[bool, ...]  # whether each given's symbol is taken as positive
+    base: tuple[float, ...]  # each varied given's base value (base units)
+    targets: tuple[TargetForm, ...]
+    conditions: tuple[Condition, ...]
+    function: Callable[..., Any] = field(repr=False)
+    build_seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class Batch:
+    """Every variant evaluated: values in SI base units, directions, and which rows count."""
+
+    values: Mapping[str, np.ndarray]  # SI base units; a magnitude where a direction is shown
+    directions: Mapping[str, list[str]]
+    fast: np.ndarray  # bool per row: the closed form answers this row
+    errors: Mapping[int, str]  # row → why its cells cannot be read
+    why_slow: Mapping[int, str]  # row → why it needs a full solve
+
+
+def build_closed_form(
+    spec: Spec, varied: Sequence[str], options: SolveOptions | None = None
+) -> ClosedForm:
+    """Solve ``spec`` with the givens in ``varied`` as symbols and compile the answers;
+    :class:`NotClosedForm` when a closed form does not exist or cannot be trusted."""
+    from dynsolve.solve import solve_system
+
+    start = time.perf_counter()
+    options = options or SolveOptions()
+    problem, conditions_of = _problem(spec, options)
+    infos = {g.name: g for g in problem.givens if g.given is not None and g.value is not None}
+    missing = [n for n in varied if n not in infos]
+    if missing:
+        raise NotClosedForm(f"{missing[0]} is not a given with a value")
+    symbols = tuple(infos[n].symbol for n in varied)
+    chosen = set(symbols)
+    fixed = {s: v for s, v in problem.system.knowns.items() if s not in chosen}
+    for info in problem.givens:
+        if info.formula is not None:  # a derived quantity: from the givens as they vary
+            fixed[info.symbol] = info.formula.xreplace(fixed)
+    system = replace(problem.system, knowns=fixed)
+    try:
+        outcome = solve_system(system, options)
+    except DynsolveError as error:
+        raise NotClosedForm(f"the symbolic solve stops: {error.message}") from None
+    if outcome.ambiguous:
+        names = ", ".join(u.name for u in outcome.ambiguous)
+        raise NotClosedForm(f"the root of {names} cannot be chosen for every value of the givens")
+    if outcome.status != "solved":
+        raise NotClosedForm(f"the symbolic solve ends '{outcome.status}'")
+    if any(b.method == "numeric" for b in outcome.blocks):
+        raise NotClosedForm("a block is solved numerically, not in closed form")
+    values = {**fixed, **outcome.values}
+    exprs: list[sympy.Expr] = []
+
+    def output(expr: object) -> int:
+        expr = (sympy.Integer(0) + expr).xreplace(values)  # type: ignore[operator]
+        if expr.free_symbols - chosen:
+            others = ", ".join(sorted(str(s) for s in expr.free_symbols - chosen))
+            raise NotClosedForm(f"an answer depends on {others}, not only on the varied givens")
+        if expr.has(sympy.Piecewise, sympy.nan, sympy.zoo, sympy.oo):
+            raise NotClosedForm("an answer is piecewise or not finite in closed form")
+        exprs.append(expr)
+        return len(exprs) - 1
+
+    targets = tuple(_target_form(t, output, values, problem) for t in problem.targets)
+    conditions = tuple(conditions_of(problem, outcome.values, output))
+    function = sympy.lambdify(symbols, exprs, "numpy", cse=True)
+    return ClosedForm(
+        spec,
+        tuple(varied),
+        tuple(bool(s.is_positive) for s in symbols),
+        tuple(float(infos[n].value) for n in varied),  # type: ignore[arg-type]
+        targets,
+        conditions,
+        function,
+        time.perf_counter() - start,
+    )
+
+
+def _problem(spec: Spec, options: SolveOptions) -> tuple[Any, Callable[..., list[Condition]]]:
+    """The base problem as the pipeline builds it, and how to read its conditions."""
+    if spec.kinematics:
+        raise NotClosedForm("motion from a(t), a(v) or a(x) is solved per variant")
+    if not spec.scene:
+        from dynsolve.modes.equation_mode import build_problem
+
+        return build_problem(spec), _constraints
+    from dynsolve.modes.scene_mode import assess, build_scene_problem
+    from dynsolve.solve import solve_system
+
+    problem = build_scene_problem(spec)
+    scene, formulation = problem.scene, problem.formulation
+    if formulation.stages or scene.travels or scene.impacts or scene.pivots:
+        raise NotClosedForm("a scene with stages, travel or impacts is solved per variant")
+    outcome = solve_system(problem.system, options)
+    assumptions, slips = assess(problem, outcome.values)
+    if slips:
+        raise NotClosedForm("the base problem re-solves a slipping contact")
+    return problem, lambda p, v, output: _assumptions(p, assumptions, output)
+
+
+def _constraints(problem: Any, solved: object, output: Callable[[object], int]) -> list[Condition]:
+    """Declared constraints (they chose the root): held in the base problem."""
+    out = []
+    for constraint in problem.system.constraints:
+        relation = constraint.relation
+        kind = {">=": ">=0", ">": ">0", "<=": "<=0", "<": "<0"}.get(relation.rel_op)
+        if kind is None:
+            raise NotClosedForm(f"constraint {constraint.text} is not an inequality")
+        index = output(relation.lhs - relation.rhs)
+        out.append(Condition(f"constraint {constraint.text}", kind, (index,), True))
+    return out
+
+
+def _assumptions(
+    problem: Any, assumptions: Sequence[Any], output: Callable[[object], int]
+) -> list[Condition]:
+    """A scene's assumptions as conditions: contact kept, no slip, cord taut."""
+    reactions = problem.formulation.reactions
+    supports = {s.name: s for s in problem.scene.supports}
+    out = []
+    for assumption in assumptions:
+        name = assumption.name
+        if name.startswith("contact at ") and name.endswith(" kept"):
+            support = name.removeprefix("contact at ").removesuffix(" kept")
+            index = output(reactions[f"N_{support}"][0])
+            out.append(Condition(name, ">=0", (index,), assumption.holds))
+        elif name.startswith("cord ") and name.endswith(" taut"):
+            cord = name.removeprefix("cord ").removesuffix(" taut")
+            out.append(Condition(name, ">=0", (output(reactions[cord][0]),), assumption.holds))
+        elif name.startswith("no slip at ") and name[11:] in supports:
+            support = supports[name[11:]]
+            mu = support.mu_s if support.mu_s is not None else support.mu_k
+            outputs = (
+                output(reactions[f"F_{support.name}"][0]),
+                output(mu),
+                output(reactions[f"N_{support.name}"][0]),
+            )
+            out.append(Condition(name, "no slip", outputs, assumption.holds))
+        else:
+            raise NotClosedForm(f"assumption '{name}' is checked per variant")
+    return out
+
+
+def _target_form(
+    target: Any, output: Callable[[object], int], values: Mapping[sympy.Symbol, Any], problem: Any
+) -> TargetForm:
+    if target.trial or target.kind not in ("signed", "rotation", "along", "vector", "magnitude"):
+        raise NotClosedForm(f"{target.name} ({target.kind}) is answered per variant")
+    if target.vector is not None:
+        outputs: tuple[int, ...] = (output(target.vector[0]), output(target.vector[1]))
+    elif target.expr is not None:
+        outputs = (output(target.expr),)
+    elif target.symbol in values:
+        outputs = (output(values[target.symbol]),)
+    elif any(g.name == target.name for g in problem.givens):
+        outputs = (output(target.symbol),)
+    else:
+        raise NotClosedForm(f"{target.name} is not determined")
+    axis = None
+    if target.kind == "along" and target.axis is not None:
+        axis = (output(target.axis[0]), output(target.axis[1]))
+    return TargetForm(target.name, target.kind, target.unit, target.dim, outputs, axis)
+
+
+def given_arrays(
+    form: ClosedForm, rows: Sequence[Mapping[str, str]]
+) -> tuple[list[np.ndarray], dict[int, str]]:
+    """Each varied given's values over the rows, in base units; rows whose cells cannot be
+    read (their reason) get the base value and are reported."""
+    cache: dict[str, float] = {}
+    errors: dict[int, str] = {}
+    system, file = form.spec.system, form.spec.file
+    dims = {g.name: g for g in form.spec.givens}
+    columns = []
+    for name, base in zip(form.names, form.base, strict=True):
+        column = np.full(len(rows), base)
+        expected = resolve_quantity(dims[name].quantity, system, file)[1]  # type: ignore[arg-type]
+        for i, row in enumerate(rows):
+            text = row.get(name, "").strip()
+            if not text:
+                continue
+            if text not in cache:
+                try:
+                    value, dim = resolve_quantity(read_cell(text), system, file)
+                except DynsolveError as error:
+                    errors.setdefault(i, f"cannot read {name} = '{text[:40]}': {error.message}")
+                    continue
+                if dim != expected:
+                    errors.setdefault(
+                        i, f"{name} = '{text[:40]}' is {dim.name}, not {expected.name}"
+                    )
+                    continue
+                cache[text] = float(value)
+            column[i] = cache[text]
+        columns.append(column)
+    return columns, errors
+
+
+def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
+    """Every row at once (see the module docstring for the rows it leaves to a full solve)."""
+    arrays, errors = given_arrays(form, rows)
+    n = len(rows)
+    with np.errstate(all="ignore"):
+        raw = [np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in form.function(*arrays)]
+    fast = np.ones(n, dtype=bool)
+    why: dict[int, str] = {}
+
+    def slow(mask: np.ndarray, reason: str) -> None:
+        for i in np.flatnonzero(mask & fast):
+            why.setdefault(int(i), reason)
+        fast[mask] = False
+
+    for i in errors:
+        fast[i] = False
+    for name, positive, column in zip(form.names, form.positive, arrays, strict=True):
+        if positive:
+            slow(~(column > 0), f"{name} is not positive, as the closed form assumes")
+    for condition in form.conditions:
+        holds, edge = _condition(condition, raw)
+        slow(edge, f"{condition.label} is at its edge")
+        slow(
+            holds != condition.holds, f"{condition.label} {'fails' if condition.holds else 'holds'}"
+        )
+    values: dict[str, np.ndarray] = {}
+    directions: dict[str, list[str]] = {}
+    for target in form.targets:
+        value, words = _answer(target, raw, form.spec.system)
+        slow(~np.isfinite(value), f"{target.name} is not finite in closed form")
+        values[target.name], directions[target.name] = value, words
+    return Batch(values, directions, fast, errors, why)
+
+
+def _condition(condition: Condition, raw: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Whether the condition holds on each row, and whether the row is at its edge."""
+    if condition.kind == "no slip":
+        F, mu, N = (raw[i] for i in condition.outputs)
+        limit = mu * N
+        holds = np.abs(F) <= limit * (1 + IMPENDING)
+        edge = np.abs(np.abs(F) - limit) <= 1e3 * EDGE * np.abs(limit)
+        return holds, edge | ~np.isfinite(F) | ~np.isfinite(limit)
+    (x,) = (raw[i] for i in condition.outputs)
+    holds = {">=0": x >= 0, ">0": x > 0, "<=0": x <= 0, "<0": x < 0}[condition.kind]
+    scale = np.max(np.abs(x)) if x.size else 0.0
+    return holds, (np.abs(x) <= EDGE * max(float(scale), 1e-300)) | ~np.isfinite(x)
+
+
+def _answer(
+    target: TargetForm, raw: Sequence[np.ndarray], system: str
+) -> tuple[np.ndarray, list[str]]:
+    """A find's values in SI base units, as ``dynsolve solve`` shows them (magnitudes where a
+    direction is stated), and the direction words."""
+    from dynsolve.modes.scene_mode import direction_of, direction_word
+
+    factor = system_factor(target.dim, system)  # type: ignore[arg-type]
+    n = len(raw[0]) if raw else 0
+    if target.kind == "vector":
+        x, y = (raw[i] for i in target.outputs)
+        size = np.hypot(x, y)
+        words = [
+            direction_word(float(a) / float(s), float(b) / float(s)) if s > 0 else ""
+            for a, b, s in zip(x, y, size, strict=True)
+        ]
+        return size * factor, words
+    value = raw[target.outputs[0]]
+    if target.kind == "signed":
+        return value * factor, [""] * n
+    if target.kind == "rotation":
+        words = np.where(value > 0, "ccw", np.where(value < 0, "cw", "")).tolist()
+    elif target.kind == "along" and target.axis is not None:
+        ax, ay = (raw[i] for i in target.axis)
+        words = [
+            direction_of("along", float(v), (float(a), float(b)))
+            for v, a, b in zip(value, ax, ay, strict=True)
+        ]
+    else:
+        words = [""] * n
+    return np.abs(value) * factor, words
