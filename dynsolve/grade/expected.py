@@ -27,6 +27,7 @@ per variant and ``reason`` says why.
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, replace
 
@@ -76,7 +77,8 @@ class ExpectedAnswers:
     students: Mapping[str, StudentExpected]
     path: str  # "vectorized", "per-variant" or "mixed: N vectorized, M per-variant"
     reason: str = ""  # why the vectorized path was not used, or not for every row
-    build_seconds: float = 0.0  # the one-time symbolic build
+    build_seconds: float = 0.0  # the one-time symbolic build and its check by full solves
+    evaluate_seconds: float = 0.0  # every variant through the closed form (cells read too)
     counts: Mapping[str, int] = field(default_factory=dict)
 
     def __getitem__(self, student: str) -> StudentExpected:
@@ -111,13 +113,17 @@ def expected_answers(
     elif vectorize:
         reason = "no given varies"
     out: dict[str, StudentExpected] = {}
+    evaluate_seconds = verify_seconds = 0.0
     if form is not None:
+        start = time.perf_counter()
         batch = evaluate(form, rows)
+        out = _from_batch(form, batch, students)
+        evaluate_seconds = time.perf_counter() - start
         disagreement = _verify(spec, form, batch, students, rows, options)
+        verify_seconds = time.perf_counter() - start - evaluate_seconds
         if disagreement:
-            reason, form = disagreement, None
+            reason, form, out = disagreement, None, {}
         else:
-            out = _from_batch(form, batch, students)
             reasons = dict.fromkeys(batch.why_slow.values())
             reason = "; ".join(list(reasons)[:5])
     solved: dict[tuple[tuple[str, str], ...], StudentExpected] = {}  # same cells, same solve
@@ -137,9 +143,9 @@ def expected_answers(
         if not counts["vectorized"]
         else f"mixed: {counts['vectorized']} vectorized, {counts['per-variant']} per-variant"
     )
-    build = form.build_seconds if form is not None else 0.0
+    build = (form.build_seconds if form is not None else 0.0) + verify_seconds
     ordered = {s: out[s] for s in students}
-    return ExpectedAnswers(ordered, path, reason, build, counts)
+    return ExpectedAnswers(ordered, path, reason, build, evaluate_seconds, counts)
 
 
 def _from_batch(form: ClosedForm, batch: Batch, students: list[str]) -> dict[str, StudentExpected]:
