@@ -50,9 +50,7 @@ def main() -> None:
     plan = vary_plan(spec)
     options = SolveOptions()
     start = time.perf_counter()
-    variants = {
-        f"s{i:05d}": draw(plan, args.seed, f"s{i:05d}") for i in range(args.students)
-    }
+    variants = {f"s{i:05d}": draw(plan, args.seed, f"s{i:05d}") for i in range(args.students)}
     drawing = time.perf_counter() - start
 
     result = expected_answers(spec, variants, options)
@@ -76,7 +74,10 @@ def main() -> None:
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # KiB on Linux
 
     rows = [
-        ("problem", str(args.problem.relative_to(ROOT) if args.problem.is_absolute() else args.problem)),
+        (
+            "problem",
+            str(args.problem.relative_to(ROOT) if args.problem.is_absolute() else args.problem),
+        ),
         ("students", f"{args.students} ({failed} failed)"),
         ("path", result.path + (f" ({result.reason})" if result.reason else "")),
         ("drawing the variants", f"{drawing:.2f} s (not in the figures below)"),
@@ -84,7 +85,10 @@ def main() -> None:
         ("vectorized evaluation, all students", f"{result.evaluate_seconds:.3f} s (target < 2 s)"),
         (f"per-variant solve, mean of {len(sample)}", f"{per_solve * 1000:.1f} ms"),
         ("per-variant, extrapolated to all", f"{extrapolated:.0f} s"),
-        ("ratio per-variant / vectorized", f"{extrapolated / result.evaluate_seconds:.0f}x (target >= 100x)"),
+        (
+            "ratio per-variant / vectorized",
+            f"{extrapolated / result.evaluate_seconds:.0f}x (target >= 100x)",
+        ),
         (
             "ratio per-variant / (build + vectorized)",
             f"{extrapolated / (result.build_seconds + result.evaluate_seconds):.0f}x",

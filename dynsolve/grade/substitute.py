@@ -12,7 +12,7 @@ import functools
 from collections.abc import Mapping
 from dataclasses import replace
 
-from dynsolve.errors import Position, SpecError, UnitError
+from dynsolve.errors import DynsolveError, Position, SpecError, UnitError
 from dynsolve.quantities import resolve_quantity
 from dynsolve.spec.ast import Quantity, Spec
 from dynsolve.spec.parser import parse_quantity
@@ -49,7 +49,7 @@ def with_variant(
             quantity = read_cell(text.strip())
             _, dim = resolve_quantity(quantity, spec.system, spec.file)
             _, expected = resolve_quantity(given.quantity, spec.system, spec.file)
-        except SpecError as error:
+        except DynsolveError as error:
             raise VariantError(
                 f"student {student}: cannot read {name} = '{text[:40]}': {error.message}",
                 where,
