@@ -113,6 +113,7 @@ def expected_answers(
     elif vectorize:
         reason = "no given varies"
     out: dict[str, StudentExpected] = {}
+    why: dict[str, str] = {}
     evaluate_seconds = verify_seconds = 0.0
     if form is not None:
         start = time.perf_counter()
@@ -124,6 +125,7 @@ def expected_answers(
         if disagreement:
             reason, form, out = disagreement, None, {}
         else:
+            why = {students[i]: text for i, text in batch.why_slow.items()}
             reasons = dict.fromkeys(batch.why_slow.values())
             reason = "; ".join(list(reasons)[:5])
     solved: dict[tuple[tuple[str, str], ...], StudentExpected] = {}  # same cells, same solve
@@ -132,7 +134,7 @@ def expected_answers(
             key = tuple(sorted(row.items()))
             if key not in solved:
                 solved[key] = per_variant(spec, student, row, options)
-            out[student] = replace(solved[key], student=student)
+            out[student] = replace(solved[key], student=student, why=why.get(student, reason))
     counts = {"vectorized": 0, "per-variant": 0}
     for each in out.values():
         counts[each.path] += 1
