@@ -48,6 +48,8 @@ def main() -> None:
 
     spec = parse_file(args.problem)
     plan = vary_plan(spec)
+    if not plan:
+        sys.exit(f"{args.problem} has no vary: section (add one, see docs/grading.md)")
     options = SolveOptions()
     start = time.perf_counter()
     variants = {f"s{i:05d}": draw(plan, args.seed, f"s{i:05d}") for i in range(args.students)}
