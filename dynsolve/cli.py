@@ -256,6 +256,8 @@ def variants_command(
     from dynsolve.system import SolveOptions
 
     _refuse_overwriting_input(file, output)
+    if output.exists() and roster.exists() and output.resolve() == roster.resolve():
+        _fail(f"refusing to write the variants over the roster {roster}", "choose another -o")
     try:
         spec = parse_file(file)
         students = read_roster(roster)
