@@ -169,3 +169,21 @@ def test_vectorized_equals_per_variant(path: Path, data: st.DataObject) -> None:
         value = float(batch.values[name][0])
         assert math.isclose(value, expected.value, rel_tol=AGREE, abs_tol=1e-12), name
         assert batch.directions[name][0] == expected.direction, name
+
+
+def test_tipping_and_a_stated_slide_are_vectorized() -> None:
+    # Hibbeler's crate (tr_hib_crate.dyn): N_C = m g = 490.5 N, F_C = μk N_C = 98.1 N left;
+    # ΣM_G = 0: N_C x − 0.3 P − 0.5 F_C = 0 → x = (0.3 P + 49.05)/490.5, within the 1-m base
+    # (|x| ≤ 0.5 m) while P ≤ 654 N. a_G = (P − 98.1)/50.
+    #   P = 600 N: x = 0.46697 m, a_G = 10.038 m/s²;  P = 650 N: x = 0.49755 m;
+    #   P = 660 N: x = 0.50367 m > 0.5 m, the crate tips: solved per variant, and that solve
+    #   fails its tipping check, so the student's expected answer is refused with the reason.
+    spec = parse_file(ROOT / "problems" / "seed" / "tr_hib_crate.dyn")
+    variants = {"a": {"P": "600 N"}, "b": {"P": "650 N"}, "c": {"P": "660 N"}}
+    result = expected_answers(spec, variants, OPTIONS)
+    assert result.path == "mixed: 2 vectorized, 1 per-variant"
+    assert result["c"].why == "no tipping on base C fails"
+    assert "no tipping on base C" in result["c"].error
+    assert result["a"].answers["x"].value == pytest.approx((180 + 49.05) / 490.5, rel=1e-12)
+    assert result["a"].answers["a_G"].value == pytest.approx((600 - 98.1) / 50, rel=1e-12)
+    assert result["b"].answers["x"].value == pytest.approx((195 + 49.05) / 490.5, rel=1e-12)

@@ -4,9 +4,11 @@ answers, a full solve per variant elsewhere, and which path each student took.
 Values are floats in SI base units (kg, m, s, rad), whatever the problem's unit system
 and the find's display unit; where ``dynsolve solve`` shows a magnitude with a direction
 (scene mode: cw/ccw, up/down, an angle), ``value`` is that magnitude and ``direction``
-the word. The fast path is checked against full solves of a sample of its rows
-(``VERIFY`` rows, relative agreement ``AGREE``); if they disagree, every row is solved
-per variant and ``reason`` says why.
+the word. The fast path is checked against
+full solves of a sample of its rows (the first, middle and last, and for each condition the
+row nearest its edge): each must take the base problem's branch (same assumptions and
+checks) and agree within ``AGREE`` relative; if not, every row is solved per variant and
+``reason`` says why.
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec('''
@@ -32,6 +34,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, replace
 
 from dynsolve.errors import DynsolveError
+from dynsolve.grade.generate import signature
 from dynsolve.grade.substitute import with_variant
 from dynsolve.grade.variants import read_variants
 from dynsolve.grade.vectorized import Batch, ClosedForm, NotClosedForm, build_closed_form, evaluate
@@ -43,7 +46,6 @@ from dynsolve.units import Dim, base_unit
 
 __all__ = ["Expected", "ExpectedAnswers", "StudentExpected", "expected_answers", "read_variants"]
 
-VERIFY = 3  # fast-path rows checked against a full solve
 AGREE = 1e-9  # relative agreement required between the two paths
 
 
@@ -177,9 +179,21 @@ def _verify(
 ) -> str:
     """Full solves of a few fast rows must agree with the closed form ("" when they do)."""
     fast = [i for i in range(len(rows)) if batch.fast[i]]
-    sample = sorted({fast[0], fast[len(fast) // 2], fast[-1]}) if fast else []
-    for i in sample[:VERIFY]:
-        slow = per_variant(spec, students[i], rows[i], options)
+    if not fast:
+        return ""
+    sample = sorted({fast[0], fast[len(fast) // 2], fast[-1], *batch.closest})
+    base = signature(_solve(spec, "base", {}, options))  # type: ignore[arg-type]
+    for i in sample:
+        solution = _solve(spec, students[i], rows[i], options)
+        if isinstance(solution, str):
+            return f"student {students[i]}: the full solve fails ({solution})"
+        branch = base.differs(signature(solution))
+        if branch:
+            return (
+                f"student {students[i]}: the closed form takes the base problem's branch, but "
+                f"a full solve differs: {branch}"
+            )
+        slow = _from_solution(students[i], solution)
         if slow.error:
             return f"student {students[i]}: the full solve fails ({slow.error})"
         for name, expected in slow.answers.items():
@@ -200,14 +214,22 @@ def per_variant(
     spec: Spec, student: str, cells: Mapping[str, str], options: SolveOptions
 ) -> StudentExpected:
     """One student's expected answers by a full solve of their variant."""
+    solution = _solve(spec, student, cells, options)
+    if isinstance(solution, str):
+        return StudentExpected(student, {}, "per-variant", solution)
+    return _from_solution(student, solution)
+
+
+def _solve(
+    spec: Spec, student: str, cells: Mapping[str, str], options: SolveOptions
+) -> Solution | str:
+    """The full solve of a student's variant, or why it cannot be solved."""
     from dynsolve.pipeline import solve_spec
 
     try:
-        solution = solve_spec(with_variant(spec, cells, student), options)
+        return solve_spec(with_variant(spec, cells, student), options)
     except DynsolveError as error:
-        message = error.message.removeprefix(f"student {student}: ")
-        return StudentExpected(student, {}, "per-variant", message)
-    return _from_solution(student, solution)
+        return error.message.removeprefix(f"student {student}: ")
 
 
 def _from_solution(student: str, solution: Solution) -> StudentExpected:

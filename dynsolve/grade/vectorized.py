@@ -95,6 +95,7 @@ class Batch:
     fast: np.ndarray  # bool per row: the closed form answers this row
     errors: Mapping[int, str]  # row → why its cells cannot be read
     why_slow: Mapping[int, str]  # row → why it needs a full solve
+    closest: tuple[int, ...] = ()  # per condition, the answered row nearest its edge
 
 
 def build_closed_form(
@@ -145,6 +146,11 @@ def build_closed_form(
     targets = tuple(_target_form(t, output, values, problem) for t in problem.targets)
     conditions = tuple(conditions_of(problem, outcome.values, output))
     function = sympy.lambdify(symbols, exprs, "numpy", cse=True)
+    base = [np.array([float(infos[n].value)]) for n in varied]  # type: ignore[arg-type]
+    raw = [np.broadcast_to(_real(v), (1,)) for v in function(*base)]
+    for condition in conditions:  # the compiled conditions must say what the base solve said
+        if bool(_condition(condition, raw)[0][0]) != condition.holds:
+            raise NotClosedForm(f"{condition.label}: the closed form disagrees with the base solve")
     return ClosedForm(
         spec,
         tuple(varied),
@@ -217,9 +223,58 @@ def _assumptions(
                 output(reactions[f"N_{support.name}"][0]),
             )
             out.append(Condition(name, "no slip", outputs, assumption.holds))
+        elif name.startswith("sliding at ") and name[11:] in supports:
+            out.extend(_slide(problem, supports[name[11:]], assumption, output))
+        elif name.startswith("no tipping on base ") and name[19:] in supports:
+            out.append(_tipping(problem, supports[name[19:]], assumption, output))
         else:
             raise NotClosedForm(f"assumption '{name}' is checked per variant")
     return out
+
+
+def _slide(
+    problem: Any, support: Any, assumption: Any, output: Callable[[object], int]
+) -> list[Condition]:
+    """A stated ``slides DIR`` (as scene mode's ``_declared_slide``): the contact point moves
+    that way, or, from rest and without a μs, starts to; anything else is per variant."""
+    from dynsolve.model.scene import ZERO
+    from dynsolve.principles.newton_euler import point_acceleration
+
+    scene = problem.scene
+    if support.kind == "contact" and scene.motions.get(support.body) == "translation":
+        return []  # a driven wheel's slide: stated, not checked
+    if not assumption.holds:
+        raise NotClosedForm(f"assumption '{assumption.name}' fails in the base problem")
+    kin = problem.formulation.kinematics.get(support.body)
+    G = scene.bodies[support.body].G
+    omega = kin.omega if kin else scene.omegas.get(support.body, sympy.Integer(0))
+    v_G = scene.velocities.get(support.body, ZERO)
+    r = (support.point[0] - G[0], support.point[1] - G[1])
+    v_P = (v_G[0] - omega * r[1], v_G[1] + omega * r[0])
+    along = -support.friction_sense
+    tangent = support.tangent
+    v = sympy.expand(along * (v_P[0] * tangent[0] + v_P[1] * tangent[1]))
+    if v != 0:
+        return [Condition(assumption.name, ">0", (output(v),), True)]
+    if kin is None or support.mu_s is not None:
+        raise NotClosedForm(f"assumption '{assumption.name}' is checked per variant")
+    a_P = point_acceleration(kin, G, support.point)
+    a = along * (a_P[0] * tangent[0] + a_P[1] * tangent[1])
+    return [Condition(assumption.name, ">=0", (output(a),), True)]
+
+
+def _tipping(
+    problem: Any, support: Any, assumption: Any, output: Callable[[object], int]
+) -> Condition:
+    """No tipping on a base (as scene mode's ``_tipping``): N acts within the base."""
+    body = problem.scene.bodies[support.body]
+    t = support.tangent
+    foot = (body.G[0] - support.point[0]) * t[0] + (body.G[1] - support.point[1]) * t[1]
+    length = (support.end[0] - support.point[0]) * t[0] + (support.end[1] - support.point[1]) * t[1]
+    where = sympy.Symbol(f"x_{support.name}", real=True)  # an unknown unless a reaction
+    x = problem.formulation.reactions.get(f"x_{support.name}", (where,))[0]
+    outputs = (output(x), output(-foot), output(length - foot))
+    return Condition(assumption.name, "within", outputs, assumption.holds)
 
 
 def _target_form(
@@ -282,7 +337,7 @@ def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
     arrays, errors = given_arrays(form, rows)
     n = len(rows)
     with np.errstate(all="ignore"):
-        raw = [np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in form.function(*arrays)]
+        raw = [np.broadcast_to(_real(v), (n,)) for v in form.function(*arrays)]
     fast = np.ones(n, dtype=bool)
     why: dict[int, str] = {}
 
@@ -296,8 +351,10 @@ def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
     for name, positive, column in zip(form.names, form.positive, arrays, strict=True):
         if positive:
             slow(~(column > 0), f"{name} is not positive, as the closed form assumes")
+    margins = []
     for condition in form.conditions:
-        holds, edge = _condition(condition, raw)
+        holds, edge, margin = _condition(condition, raw)
+        margins.append(margin)
         slow(edge, f"{condition.label} is at its edge")
         slow(
             holds != condition.holds, f"{condition.label} {'fails' if condition.holds else 'holds'}"
@@ -308,21 +365,49 @@ def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
         value, words = _answer(target, raw, form.spec.system)
         slow(~np.isfinite(value), f"{target.name} is not finite in closed form")
         values[target.name], directions[target.name] = value, words
-    return Batch(values, directions, fast, errors, why)
+    closest = tuple(  # per condition, the answered row nearest its edge
+        int(np.flatnonzero(fast)[np.argmin(margin[fast])]) for margin in margins if fast.any()
+    )
+    return Batch(values, directions, fast, errors, why, closest)
 
 
-def _condition(condition: Condition, raw: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """Whether the condition holds on each row, and whether the row is at its edge."""
+def _real(value: object) -> np.ndarray:
+    """Output values as floats; a value with an imaginary part becomes NaN (a full solve
+    then decides), never its real part alone.
+
+    >>> _real(np.array([1 + 0j, 2 + 1j])).tolist()
+    [1.0, nan]
+    """
+    array = np.asarray(value)
+    if np.iscomplexobj(array):
+        real = array.real
+        return np.where(np.abs(array.imag) <= 1e-12 * np.abs(real), real, np.nan)
+    return array.astype(float)
+
+
+def _condition(
+    condition: Condition, raw: Sequence[np.ndarray]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Whether the condition holds on each row, whether the row is at its edge, and how far
+    from the edge it is (relative; NaN where not finite)."""
     if condition.kind == "no slip":
         F, mu, N = (raw[i] for i in condition.outputs)
         limit = mu * N
         holds = np.abs(F) <= limit * (1 + IMPENDING)
-        edge = np.abs(np.abs(F) - limit) <= 1e3 * EDGE * np.abs(limit)
-        return holds, edge | ~np.isfinite(F) | ~np.isfinite(limit)
+        margin = np.abs(np.abs(F) - limit) / np.abs(limit)
+        edge = margin <= 1e3 * EDGE
+        return holds, edge | ~np.isfinite(margin), margin
+    if condition.kind == "within":
+        x, low, high = (raw[i] for i in condition.outputs)
+        lo, hi = np.minimum(low, high), np.maximum(low, high)
+        holds = (lo <= x) & (x <= hi)
+        margin = np.minimum(np.abs(x - lo), np.abs(x - hi)) / np.maximum(np.abs(lo), np.abs(hi))
+        return holds, (margin <= EDGE) | ~np.isfinite(margin), margin
     (x,) = (raw[i] for i in condition.outputs)
     holds = {">=0": x >= 0, ">0": x > 0, "<=0": x <= 0, "<0": x < 0}[condition.kind]
-    scale = np.max(np.abs(x)) if x.size else 0.0
-    return holds, (np.abs(x) <= EDGE * max(float(scale), 1e-300)) | ~np.isfinite(x)
+    finite = np.abs(x[np.isfinite(x)])
+    margin = np.abs(x) / max(float(np.max(finite)) if finite.size else 0.0, 1e-300)
+    return holds, (margin <= EDGE) | ~np.isfinite(margin), margin
 
 
 def _answer(
