@@ -326,3 +326,15 @@ def test_variants_of_a_spec_without_vary_is_an_error(tmp_path: Path) -> None:
     assert result.exit_code == ExitCode.BAD_INPUT
     assert "has no 'vary:' section" in result.output
     assert not out.exists()
+
+
+def test_allow_changes_keeps_variants_whose_assumptions_differ() -> None:
+    # M = 25 and 30 N·m slip (M > 22.07 N·m, see wheel_couple.dyn); with 'allow changes'
+    # they are kept, each solved with kinetic friction and its checks passing.
+    text = WHEEL.read_text().replace("vary:\n", "vary:\n  allow changes\n")
+    spec = parse_spec(text, "wheel.dyn")
+    rows = make_variants(spec, [f"s{i}" for i in range(30)], seed=3)
+    values = {r.cells["M"] for r in rows}
+    assert values & {"25 N*m", "30 N*m"}
+    plan = vary_plan(spec)
+    assert all(r.cells == draw(plan, 3, r.student) for r in rows)  # first draws, none redrawn

@@ -3,8 +3,10 @@
 A variant is kept when it solves with the same outcome as the base problem: the same
 status, every assumption (no slip, contact kept, cord taut, …) holding or failing as in
 the base problem, and no check failing that passes there (the answer key is the base
-problem's, so it is not compared). Otherwise it is redrawn, at most ``MAX_ATTEMPTS``
-times, then refused with an error that names the student.
+problem's, so it is not compared); otherwise it is redrawn, at most ``MAX_ATTEMPTS``
+times, then refused with an error that names the student. With ``allow changes`` in the
+``vary`` section only the checks count: a variant may slip where the base problem rolls
+(re-solved with kinetic friction and checked).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec('''
@@ -30,7 +32,7 @@ from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.format import sig
 from dynsolve.grade.substitute import read_cell, with_variant
 from dynsolve.grade.variants import TWIN_SUFFIX, VariantRow
-from dynsolve.grade.vary import Variation, draw, vary_plan
+from dynsolve.grade.vary import Variation, allows_changes, draw, vary_plan
 from dynsolve.quantities import resolve_quantity, unit_info
 from dynsolve.results import Solution
 from dynsolve.spec.ast import Spec
@@ -49,8 +51,12 @@ class Signature:
     assumptions: tuple[tuple[str, bool], ...]
     failed: tuple[str, ...]  # checks that fail (answer key left out)
 
-    def differs(self, other: Signature) -> str:
-        """Why ``other`` (a variant) is not like ``self`` (the base); "" when it is."""
+    def differs(self, other: Signature, allow_changes: bool = False) -> str:
+        """Why ``other`` (a variant) is not like ``self`` (the base); "" when it is. With
+        ``allow_changes``, its assumptions may differ (its checks must still pass)."""
+        if allow_changes:
+            new = sorted(set(other.failed) - set(self.failed))
+            return f"check '{new[0]}' fails" if new else ""
         if other.status != self.status:
             return f"the solve ends '{other.status}', not '{self.status}'"
         mine = dict(self.assumptions)
@@ -140,7 +146,9 @@ def _checked_draw(
     raise SpecError(
         f"student {student}: no valid variant in {MAX_ATTEMPTS} draws; the last one: {reason}",
         Position(spec.file, plan[0].line, 1),
-        hint=f"narrow the vary ranges (lines {lines}) to where the base problem's assumptions hold",
+        hint=f"narrow the vary ranges (lines {lines}) to where the base problem's "
+        "assumptions hold, or write 'allow changes' in 'vary:' to keep variants whose "
+        "assumptions differ",
     )
 
 
@@ -154,7 +162,7 @@ def _why_not(
         solution = solve_spec(with_variant(spec, cells, student), options)
     except DynsolveError as error:
         return error.message
-    return base.differs(signature(solution))
+    return base.differs(signature(solution), allows_changes(spec))
 
 
 def us_twin(spec: Spec, cells: dict[str, str]) -> dict[str, str]:

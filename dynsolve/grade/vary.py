@@ -86,7 +86,14 @@ class Variation:
 def vary_plan(spec: Spec) -> tuple[Variation, ...]:
     """Each ``vary`` line checked against its given (same dimension) and resolved."""
     givens = {g.name: g for g in spec.givens}
-    return tuple(_variation(stmt, givens[stmt.name], spec) for stmt in spec.vary)
+    return tuple(
+        _variation(stmt, givens[stmt.name], spec) for stmt in spec.vary if stmt.kind != "allow"
+    )
+
+
+def allows_changes(spec: Spec) -> bool:
+    """Whether the ``vary`` section says ``allow changes`` (assumptions may differ)."""
+    return any(stmt.kind == "allow" for stmt in spec.vary)
 
 
 def _variation(stmt: VaryStmt, given: Given, spec: Spec) -> Variation:

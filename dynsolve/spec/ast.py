@@ -284,12 +284,14 @@ class SceneStmt:
 class VaryStmt:
     """A ``vary`` line: a range ``m = 40..60 kg step 5`` or ``k = ±10% sigfig 3``.
 
-    ``kind`` is "range" (``low``, ``high``, ``step`` in ``unit``) or "percent"
-    (``percent`` of the given's value either side, rounded to ``sigfig`` figures).
+    ``kind`` is "range" (``low``, ``high``, ``step`` in ``unit``), "percent"
+    (``percent`` of the given's value either side, rounded to ``sigfig`` figures), or
+    "allow" (the line ``allow changes``: a variant's assumptions may differ from the base
+    problem's; ``name`` is empty).
     """
 
     name: str
-    kind: Literal["range", "percent"]
+    kind: Literal["range", "percent", "allow"]
     low: Fraction = Fraction(0)
     high: Fraction = Fraction(0)
     step: Fraction = Fraction(0)

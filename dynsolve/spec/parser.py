@@ -1091,6 +1091,8 @@ def _checked_vary(
     seen: dict[str, int] = {}
     for stmt in vary:
         where = Position(file, stmt.line, stmt.column)
+        if stmt.kind == "allow":
+            continue
         if stmt.name not in valued:
             symbolic = any(g.name == stmt.name for g in givens)
             close = difflib.get_close_matches(stmt.name, sorted(valued), n=1)

@@ -35,11 +35,18 @@ _RANGE = re.compile(
 _PERCENT = re.compile(
     rf"(?:\+-|±)\s*(?P<percent>{_NUMBER})\s*%\s*(?:sigfig\s+(?P<sigfig>\d+))?\s*$"
 )
+_ALLOW = re.compile(r"\s*allow\s+changes\s*")
 _FORMS = "'NAME = LOW..HIGH UNIT step STEP' or 'NAME = ±P% sigfig N'"
 
 
 def parse_vary_line(text: str, file: str, line: int, offset: int) -> VaryStmt:
-    """Parse ``text`` (a ``vary`` line without its comment); ``offset`` columns precede it."""
+    """Parse ``text`` (a ``vary`` line without its comment); ``offset`` columns precede it.
+
+    >>> parse_vary_line("allow changes", "p.dyn", 9, 2).kind
+    'allow'
+    """
+    if _ALLOW.fullmatch(text):
+        return VaryStmt("", "allow", text=text.strip(), line=line, column=offset + 1)
     head = _NAME.match(text)
     if head is None:
         raise SpecError(
