@@ -10,7 +10,7 @@ import enum
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, TypeVar
+from typing import TYPE_CHECKING, Annotated, NoReturn, TypeVar
 
 import typer
 from rich.console import Console
@@ -18,6 +18,7 @@ from rich.console import Console
 from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
+    from dynsolve.errors import ErrorReport
     from dynsolve.results import Check, Solution
     from dynsolve.system import SolveOptions
 
@@ -37,6 +38,16 @@ class OutputFormat(enum.StrEnum):
     json = "json"
     markdown = "markdown"
     latex = "latex"
+    pdf = "pdf"
+
+
+SUFFIX_FORMATS = {
+    ".json": OutputFormat.json,
+    ".md": OutputFormat.markdown,
+    ".markdown": OutputFormat.markdown,
+    ".tex": OutputFormat.latex,
+    ".pdf": OutputFormat.pdf,
+}
 
 
 class Mode(enum.StrEnum):
@@ -69,7 +80,7 @@ class _Done:
 class _Refused:
     """A spec that could not be solved: bad input, unreadable, or over the budget."""
 
-    errors: tuple[str, ...]
+    errors: tuple[ErrorReport, ...]
 
 
 _Outcome = TypeVar("_Outcome")
@@ -96,12 +107,13 @@ MemoryBudget = Annotated[
 app = typer.Typer(
     help="Solve and check engineering-dynamics problems written as plain-text .dyn specs.",
     no_args_is_help=True,
-    add_completion=False,
+    add_completion=True,
     context_settings={"help_option_names": ["-h", "--help"]},
 )
 stdout = Console(highlight=False)
 stderr = Console(stderr=True, highlight=False)
 CHECK_PROGRESS_THRESHOLD = 8  # show a progress bar from this many files on
+STDIN_NAME = "<stdin>"
 
 
 def _version(value: bool) -> None:
@@ -128,13 +140,29 @@ def main_callback(
 
 @app.command()
 def solve(
-    file: Annotated[Path, typer.Argument(help="The .dyn spec to solve.", show_default=False)],
+    file: Annotated[
+        str,
+        typer.Argument(
+            help="The .dyn spec to solve ('-' reads it from stdin).",
+            show_default=False,
+            metavar="FILE",
+        ),
+    ],
     format: Annotated[
-        OutputFormat, typer.Option("--format", "-f", help="Output format.")
-    ] = OutputFormat.text,
+        OutputFormat | None,
+        typer.Option(
+            "--format",
+            "-f",
+            help="Output format [default: text, or from the -o file's suffix: "
+            ".json, .md, .tex, .pdf (compiled with pdflatex)].",
+            show_default=False,
+        ),
+    ] = None,
     output: Annotated[
         Path | None,
-        typer.Option("--output", "-o", help="Write to this file instead of the terminal."),
+        typer.Option(
+            "--output", "-o", help="Write to this file instead of the terminal.", metavar="FILE"
+        ),
     ] = None,
     mode: Annotated[
         Mode, typer.Option(help="exact: rationals and formulas; numeric: floating point.")
@@ -157,21 +185,28 @@ def solve(
     and answer passes, 1 when one fails, 2 for bad input or past the time or
     memory budget (the whole run: parsing, solving, checks and output).
     """
-    if output is not None:
-        _refuse_overwriting_input(file, output)
+    chosen = format or _format_of(output)
+    if output is not None and file != "-":
+        _refuse_overwriting_input(Path(file), output)
+    elif output is not None:
+        _refuse_unwritable(output)
+    source = _read_stdin(chosen) if file == "-" else ("file", file)
     cells = _variant_cells(variant, variants)
     budget = Budget(time_budget, memory_budget)
     width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
-    target = _Target(format.value, output is None, width, terminal, colours)
-    job = (file, mode.value, budget, target, cells)
+    rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
+    target = _Target(rendered, output is None, width, terminal, colours)
+    job = (source, mode.value, budget, target, cells)
     outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
-        _report(outcome.errors)
+        _report(outcome.errors, chosen)
         raise typer.Exit(ExitCode.BAD_INPUT)
     if output is None:
         stdout.file.write(outcome.text)
         stdout.file.flush()
+    elif chosen == OutputFormat.pdf:
+        _write_pdf(output, outcome.text)
     else:
         _write_output(output, outcome.text)
     raise typer.Exit(outcome.exit_code)
@@ -181,7 +216,11 @@ def solve(
 def check(
     paths: Annotated[
         list[Path],
-        typer.Argument(help="Spec files or folders (searched for *.dyn).", show_default=False),
+        typer.Argument(
+            help="Spec files or folders (searched for *.dyn).",
+            show_default=False,
+            metavar="PATH...",
+        ),
     ],
     mode: Annotated[Mode, typer.Option(help="Solve mode for every spec.")] = Mode.exact,
     time_budget: TimeBudget = DEFAULT_SECONDS,
@@ -207,7 +246,7 @@ def check(
     for file, result in zip(files, _progress(outcomes, len(files)), strict=True):
         outcome = _refused_if_stopped(result)
         if isinstance(outcome, _Refused):
-            failures.extend((str(file), error) for error in outcome.errors)
+            failures.extend((str(file), error.text) for error in outcome.errors)
             malformed += 1
         elif outcome:
             failures.extend((str(file), check) for check in outcome)
@@ -268,9 +307,15 @@ def variants_command(
         names = list(dict.fromkeys(n for row in rows for n in row.cells))
         write_variants(output, rows, names)
     except DynsolveError as error:
-        _report(_messages(error))
+        _report(_reports(error, _where(error)))
         raise typer.Exit(ExitCode.BAD_INPUT) from None
     stderr.print(f"wrote {output}: {len(rows)} variants of {len(students)} students")
+
+
+def _where(error: Exception) -> tuple[str, str] | None:
+    """The file an error points into (a spec, a roster, a variants file), for its line."""
+    position = getattr(error, "position", None)
+    return ("file", position.file) if position is not None and position.file else None
 
 
 def _variant_cells(student: str | None, variants: Path | None) -> tuple[str, dict[str, str]] | None:
@@ -286,7 +331,7 @@ def _variant_cells(student: str | None, variants: Path | None) -> tuple[str, dic
     try:
         table = read_variants(variants)
     except DynsolveError as error:
-        _report(_messages(error))
+        _report(_reports(error, _where(error)))
         raise typer.Exit(ExitCode.BAD_INPUT) from None
     if student not in table:
         import difflib
@@ -346,32 +391,37 @@ def _progress(items: Iterator[_Outcome], total: int) -> Iterator[_Outcome]:
 
 
 def solve_and_render(
-    file: Path,
+    source: tuple[str, str],
     mode: str,
     budget: Budget,
     target: _Target,
     variant: tuple[str, dict[str, str]] | None = None,
 ) -> _Done | _Refused:
-    """The worker's job for ``solve``: solve, check and render one spec (or one student's
-    variant of it: their givens replaced, the answer key dropped) to text."""
+    """The worker's job for ``solve``: solve, check and render one spec (a file's path, or
+    stdin's text; or one student's variant of it: their givens replaced, the answer key
+    dropped) to text."""
     from dynsolve.budget import step
     from dynsolve.errors import DynsolveError
-    from dynsolve.pipeline import solve_file
+    from dynsolve.pipeline import solve_file, solve_text
 
+    kind, value = source
     try:
-        if variant is None:
-            solution = solve_file(file, _options(mode, budget))
-        else:
+        if variant is not None:
             from dynsolve.grade.substitute import with_variant
             from dynsolve.pipeline import solve_spec
-            from dynsolve.spec.parser import parse_file
+            from dynsolve.spec.parser import parse_file, parse_spec
 
-            spec = with_variant(parse_file(file), variant[1], variant[0])
+            spec = parse_file(value) if kind == "file" else parse_spec(value, STDIN_NAME)
+            spec = with_variant(spec, variant[1], variant[0])
             solution = solve_spec(spec, _options(mode, budget))
+        elif kind == "file":
+            solution = solve_file(value, _options(mode, budget))
+        else:
+            solution = solve_text(value, STDIN_NAME, _options(mode, budget))
         with step("rendering the output"):
             text = _render(solution, target)
     except DynsolveError as error:
-        return _Refused(_messages(error))
+        return _Refused(_reports(error, source))
     return _Done(text, ExitCode.OK if solution.passed else ExitCode.FAILED)
 
 
@@ -383,7 +433,7 @@ def solve_and_check(file: Path, mode: str, budget: Budget) -> tuple[Check, ...] 
     try:
         solution = solve_file(file, _options(mode, budget))
     except DynsolveError as error:
-        return _Refused(_messages(error))
+        return _Refused(_reports(error, ("file", str(file))))
     return tuple(c for c in solution.checks if not c.passed)
 
 
@@ -425,47 +475,110 @@ def _in_worker(
     try:
         return run(job, args, budget)
     except DynsolveError as error:
-        return _Refused(_messages(error))
+        return _Refused(_reports(error))
 
 
 def _refused_if_stopped(outcome: _Outcome | Exception) -> _Outcome | _Refused:
     """A job's outcome; the reason as _Refused when the budget or a bug stopped it."""
-    from dynsolve.errors import DynsolveError
+    from dynsolve.errors import DynsolveError, ErrorReport
 
     if isinstance(outcome, DynsolveError):
-        return _Refused(_messages(outcome))
+        return _Refused(_reports(outcome))
     if isinstance(outcome, Exception):
         last = str(outcome).strip().splitlines()[-1:] or ["no detail"]
-        return _Refused((f"internal error (a bug in dynsolve; please report it): {last[0]}",))
+        bug = f"internal error (a bug in dynsolve; please report it): {last[0]}"
+        return _Refused((ErrorReport(bug),))
     return outcome
 
 
-def _messages(error: Exception) -> tuple[str, ...]:
-    return tuple(str(each) for each in (error, *getattr(error, "others", ())))
+def _reports(error: Exception, source: tuple[str, str] | None = None) -> tuple[ErrorReport, ...]:
+    """``error`` and the others it carries, each with the spec line it points at."""
+    from dynsolve.errors import ErrorReport, all_errors
+
+    text = _spec_text(source) if source is not None else None
+    return tuple(ErrorReport.of(each, text) for each in all_errors(error))  # type: ignore[arg-type]
+
+
+def _spec_text(source: tuple[str, str]) -> str | None:
+    """The spec's text, for quoting the line an error points at (None when unreadable)."""
+    from dynsolve.files import FileAccessError, read_capped
+    from dynsolve.spec.parser import MAX_FILE_BYTES
+
+    kind, value = source
+    if kind != "file":
+        return value
+    try:
+        return read_capped(value, MAX_FILE_BYTES).decode("utf-8-sig", errors="replace")
+    except FileAccessError:
+        return None
+
+
+def _read_stdin(chosen: OutputFormat) -> tuple[str, str]:
+    """("text", the spec read from stdin), byte-capped like a file."""
+    import sys
+
+    from dynsolve.errors import ErrorReport, Position, SpecError
+    from dynsolve.spec.parser import MAX_FILE_BYTES
+
+    raw = sys.stdin.buffer.read(MAX_FILE_BYTES + 1)
+    try:
+        if len(raw) > MAX_FILE_BYTES:
+            raise SpecError(
+                f"{STDIN_NAME} is over {MAX_FILE_BYTES} bytes; specs are limited to that",
+                Position(STDIN_NAME, 1, 1),
+                hint="split the problem into several files",
+            )
+        return ("text", raw.decode("utf-8-sig"))
+    except UnicodeDecodeError:
+        error = SpecError("stdin is not valid UTF-8 text", Position(STDIN_NAME, 1, 1), "send UTF-8")
+    except SpecError as exc:
+        error = exc
+    _report((ErrorReport.of(error),), chosen)
+    raise typer.Exit(ExitCode.BAD_INPUT)
+
+
+def _format_of(output: Path | None) -> OutputFormat:
+    """The format an output path's suffix asks for (text when it names none)."""
+    if output is None:
+        return OutputFormat.text
+    return SUFFIX_FORMATS.get(output.suffix.lower(), OutputFormat.text)
 
 
 def _refuse_overwriting_input(spec: Path, output: Path) -> None:
-    from dynsolve.files import FileAccessError, check_writable
-
     same = output.exists() and spec.exists() and output.resolve() == spec.resolve()
     if same or output.suffix.lower() == ".dyn":
         _fail(f"refusing to write output to {output}: it is a spec file", "choose another -o path")
+    _refuse_unwritable(output)
+
+
+def _refuse_unwritable(output: Path) -> None:
+    from dynsolve.files import FileAccessError, check_writable
+
     try:
         check_writable(output)  # before any work: a device, FIFO or /proc file is refused
     except FileAccessError as error:
-        _report((str(error),))
-        raise typer.Exit(ExitCode.BAD_INPUT) from None
+        _fail_with(error)
 
 
-def _write_output(output: Path, text: str) -> None:
+def _write_output(output: Path, text: str | bytes) -> None:
     from dynsolve.files import FileAccessError, write_text
 
     try:
         write_text(output, text)
     except FileAccessError as error:
-        _report((str(error),))
-        raise typer.Exit(ExitCode.BAD_INPUT) from None
-    stderr.print(f"wrote {output}")
+        _fail_with(error)
+    stderr.print(f"wrote {output}", markup=False)
+
+
+def _write_pdf(output: Path, latex: str) -> None:
+    from dynsolve.errors import DynsolveError
+    from dynsolve.pdf import compile_pdf
+
+    try:
+        pdf = compile_pdf(latex)
+    except DynsolveError as error:
+        _fail_with(error)
+    _write_output(output, pdf)
 
 
 def _fail(message: str, hint: str) -> None:
@@ -473,9 +586,22 @@ def _fail(message: str, hint: str) -> None:
     raise typer.Exit(ExitCode.BAD_INPUT)
 
 
-def _report(messages: tuple[str, ...]) -> None:
-    for message in messages:
-        stderr.out(f"error: {message}", highlight=False)
+def _fail_with(error: Exception) -> NoReturn:
+    from dynsolve.errors import ErrorReport
+
+    _report((ErrorReport.of(error),))
+    raise typer.Exit(ExitCode.BAD_INPUT)
+
+
+def _report(reports: tuple[ErrorReport, ...], chosen: OutputFormat = OutputFormat.text) -> None:
+    """Errors to stderr, each with its source line and caret; as JSON on stdout too for
+    ``--format json``."""
+    from dynsolve.render.errors import error_text, errors_json
+
+    for report in reports:
+        stderr.out(error_text(report), highlight=False)
+    if chosen == OutputFormat.json:
+        stdout.out(errors_json(reports), highlight=False)
 
 
 def main() -> None:

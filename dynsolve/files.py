@@ -109,8 +109,9 @@ def check_writable(path: Path) -> None:
         )
 
 
-def write_text(path: Path, text: str) -> None:
-    """Write ``text`` to the regular file ``path`` atomically; on any failure the old file stays.
+def write_text(path: Path, text: str | bytes) -> None:
+    """Write ``text`` (or bytes) to the regular file ``path`` atomically; on any failure the
+    old file stays.
 
     Raises FileAccessError for a special target or a write error (no space, no
     permission, read-only file system).
@@ -124,8 +125,9 @@ def write_text(path: Path, text: str) -> None:
     except OSError as error:
         raise _write_error(path, error) from None
     try:
-        with os.fdopen(handle, "w", encoding="utf-8", newline="") as stream:
-            stream.write(text)
+        data = text.encode("utf-8") if isinstance(text, str) else text
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
             stream.flush()
             os.fsync(stream.fileno())
         os.chmod(temporary, _file_mode(real))

@@ -41,11 +41,12 @@ from dynsolve.results import (
     Solution,
     Step,
 )
-from dynsolve.solve import solve_system
-from dynsolve.solve.outcome import Outcome
-from dynsolve.solve.roots import truth
+from dynsolve.solver import solve_system
+from dynsolve.solver.outcome import Outcome
+from dynsolve.solver.roots import truth
 from dynsolve.spec.ast import Spec
-from dynsolve.spec.parser import parse_file
+from dynsolve.spec.parser import parse_file, parse_spec
+from dynsolve.suspicious import suspicious_notes
 from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
@@ -75,8 +76,25 @@ def solve_file(path: str | Path, options: SolveOptions | None = None) -> Solutio
     return solve_spec(spec, options)
 
 
+def solve_text(text: str, name: str = "<spec>", options: SolveOptions | None = None) -> Solution:
+    """Parse, solve and check a spec's text (from stdin or a string); ``name`` in positions.
+
+    >>> solve_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n").answers[0].shown
+    '19.6 N'
+    """
+    with step("parsing the spec"):
+        spec = parse_spec(text, name)
+    return solve_spec(spec, options)
+
+
 def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
-    """Solve and check a parsed spec (a file's, or a student's variant of it)."""
+    """Solve and check a parsed spec: kinematics, scene or equation mode, by its sections.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n")
+    >>> solve_spec(spec).answers[0].shown
+    '19.6 N'
+    """
     try:
         with step("building the equations"):
             if spec.kinematics:
@@ -181,6 +199,7 @@ def solve_problem(
         key=key,
         status=outcome.status,
         messages=outcome.messages,
+        warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
     )
 
 
@@ -289,14 +308,14 @@ class _View:
             number_text = given.quantity.text
             written = f"{number_text} {pretty_unit(unit_text)}".strip()
             description = given.description
-        si_unit = natural_unit(info.dim, "SI", info.name)
+        base_unit = natural_unit(info.dim, self.system, info.name)
         if info.dim.dimensionless and unit_text:
-            si_unit = "rad"
-        si_value = convert(float(info.value), si_unit, self.system)
-        si = format_quantity(si_value, si_unit, 4, trim=True)
+            base_unit = "rad"
+        base_value = convert(float(info.value), base_unit, self.system)
+        base = format_quantity(base_value, base_unit, 4, trim=True)
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
         return GivenRow(
-            info.name, written, si, description, False, latex_name(info.name), latex_value
+            info.name, written, base, description, False, latex_name(info.name), latex_value
         )
 
     def derived_row(self, info: GivenInfo) -> GivenRow:
@@ -304,8 +323,8 @@ class _View:
         assert info.formula is not None and info.value is not None
         formula = self.text(info.formula)
         value = self.number(info.value)
-        unit = natural_unit(info.dim, "SI", info.name)
-        si = (
+        unit = natural_unit(info.dim, self.system, info.name)
+        base = (
             "—"
             if value is None
             else format_quantity(convert(value, unit, self.system), unit, 4, trim=True)
@@ -313,7 +332,7 @@ class _View:
         written = f"= {formula}"
         latex = self.latex(info.formula)
         return GivenRow(
-            info.name, written, si, info.note, value is None, latex_name(info.name), latex
+            info.name, written, base, info.note, value is None, latex_name(info.name), latex
         )
 
     def _g_unit(self) -> str:
@@ -323,7 +342,7 @@ class _View:
         return self.problem.rows
 
     def step(self, index: int, block: object) -> Step:
-        from dynsolve.solve.outcome import Block
+        from dynsolve.solver.outcome import Block
 
         assert isinstance(block, Block)
         equations = self.problem.system.equations
@@ -457,7 +476,7 @@ class _View:
     def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
         """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the
         formula is the same for every positive value of the givens; else as it is."""
-        from dynsolve.solve.roots import sign_of
+        from dynsolve.solver.roots import sign_of
 
         if target.kind != "rotation" or value.free_symbols & set(self.problem.system.unknowns):
             return value, ""

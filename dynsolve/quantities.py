@@ -50,11 +50,22 @@ def resolve_unit(unit: UnitExpr, file: str) -> UnitInfo:
         except ValueError as exc:
             raise UnitError(str(exc), where, hint="dynsolve handles mechanical units") from None
         if named is None:
-            raise UnitError(
-                f"unknown unit '{factor.name}'", where, suggest_unit(factor.name) or "see docs"
-            )
+            raise UnitError(f"unknown unit '{factor.name}'", where, _unit_hint(factor.name))
         result = result * named**factor.exponent
     return result
+
+
+def _unit_hint(name: str) -> str:
+    """A hint for an unknown unit: a power written without '^' (``s2``), or the nearest name.
+
+    >>> _unit_hint("s2")
+    "write the power with '^': 's^2'"
+    """
+    stem = name.rstrip("0123456789")
+    power = name[len(stem) :]
+    if stem and power and power != "0" and unit_named(stem) is not None:
+        return f"write the power with '^': '{stem}^{power}'"
+    return suggest_unit(name) or "see docs/spec-language.md for the units dynsolve knows"
 
 
 def _example_unit(dimension: str) -> str:

@@ -10,11 +10,11 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class GivenRow:
-    """A given as written and in SI."""
+    """A given as written and in the base units of the problem's system (SI or FPS)."""
 
     name: str
     written: str  # "40 lb", or "mass" for a symbolic given
-    si: str  # "177.9 N"
+    base: str  # in the system's base units: "177.9 N" (SI), "40 lb" (FPS)
     description: str
     symbolic: bool
     latex_name: str
@@ -148,6 +148,7 @@ class Solution:
     messages: tuple[str, ...] = ()
     free_body: tuple[FreeBody, ...] = ()
     assumptions: tuple[Assumption, ...] = ()
+    warnings: tuple[str, ...] = ()  # likely slips in the spec: a bare-number angle, lb as a mass
 
     @property
     def passed(self) -> bool:

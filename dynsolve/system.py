@@ -1,7 +1,7 @@
 """The equation system handed to the solver: equations, unknowns, known values, constraints.
 
 It is plain, immutable data built by a front end (equation mode today, scene mode
-later) and consumed by :func:`dynsolve.solve.solve_system`.
+later) and consumed by :func:`dynsolve.solver.solve_system`.
 
 >>> import sympy
 >>> T, m, g = sympy.symbols("T m g", positive=True)

@@ -224,7 +224,7 @@ def test_bounds_of_known_values() -> None:
 def test_an_underflowing_coefficient_does_not_reach_math_log() -> None:
     # 1e-400 is a nonzero sympy Float whose float() is 0.0: no scale can be taken from it;
     # x^3 + x = 1e-400 has the single real root x = 1e-400 (to first order), i.e. about 0
-    from dynsolve.solve.blocks import numeric_roots
+    from dynsolve.solver.blocks import numeric_roots
 
     x = sympy.Symbol("x")
     roots = numeric_roots([x**3 + x - sympy.Float("1e-400")], [x])

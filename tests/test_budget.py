@@ -19,7 +19,7 @@ from typer.testing import CliRunner, Result
 from dynsolve import budget
 from dynsolve.budget import Budget, OverBudget, WorkerFailed, run, run_each, step
 from dynsolve.cli import ExitCode, _Done, _Target, app, solve_and_render
-from dynsolve.solve.blocks import BudgetExceeded, time_budget
+from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
 ROOT = Path(__file__).resolve().parent.parent
 DRAG_FALL = ROOT / "problems" / "kinematics" / "drag_fall.dyn"
@@ -137,7 +137,7 @@ def test_the_spawn_start_method_of_macos_and_windows_works(monkeypatch: pytest.M
     # a fresh interpreter imports the job by name: what runs on macOS and Windows
     monkeypatch.setattr(budget, "START_METHOD", "spawn")
     target = _Target("json", True, 80, False, None)
-    outcome = run(solve_and_render, (DRUM_FILE, "exact", Budget(), target), Budget())
+    outcome = run(solve_and_render, (("file", str(DRUM_FILE)), "exact", Budget(), target), Budget())
     assert isinstance(outcome, _Done) and outcome.exit_code == ExitCode.OK
     # Hibbeler 17.11: T = 106 N (14715/139 N by hand, see tests/test_cli.py)
     assert '"T"' in outcome.text and "105.86" in outcome.text

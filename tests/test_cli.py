@@ -330,7 +330,7 @@ def test_a_missing_file_exits_2_with_a_clear_message(workdir: Path, command: str
 @pytest.mark.parametrize(
     "options",
     [
-        pytest.param(["--format", "pdf"], id="format-pdf"),
+        pytest.param(["--format", "docx"], id="format-docx"),
         pytest.param(["--mode", "fast"], id="mode-fast"),
         pytest.param(["--time-budget", "0"], id="time-budget-0"),
         pytest.param(["--no-such-option"], id="unknown-option"),

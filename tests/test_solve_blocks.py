@@ -9,9 +9,9 @@ import pytest
 import sympy
 from sympy import Rational
 
-from dynsolve.solve.blocks import Candidate, solve_block, time_budget
-from dynsolve.solve.residuals import equation_residual
-from dynsolve.solve.roots import AMBIGUOUS, choose_root, enters_only_squared, truth
+from dynsolve.solver.blocks import Candidate, solve_block, time_budget
+from dynsolve.solver.residuals import equation_residual
+from dynsolve.solver.roots import AMBIGUOUS, choose_root, enters_only_squared, truth
 from dynsolve.system import Constraint, Equation, SolveOptions
 
 x, y, v = sympy.symbols("x y v")

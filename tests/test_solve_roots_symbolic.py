@@ -8,8 +8,8 @@ positive values of the givens.
 
 import sympy
 
-from dynsolve.solve import solve_system
-from dynsolve.solve.roots import sampled, truth
+from dynsolve.solver import solve_system
+from dynsolve.solver.roots import sampled, truth
 from dynsolve.system import Constraint, Equation, EquationSystem
 
 k, W, g, L, s = sympy.symbols("k W g L s", positive=True)

@@ -6,7 +6,7 @@ import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dynsolve.solve.structure import analyse_structure, maximum_matching
+from dynsolve.solver.structure import analyse_structure, maximum_matching
 from dynsolve.system import Equation, EquationSystem
 
 x, y, z, w = sympy.symbols("x y z w")

@@ -6,7 +6,7 @@ import pytest
 import sympy
 from sympy import Rational
 
-from dynsolve.solve import solve_system
+from dynsolve.solver import solve_system
 from dynsolve.system import Constraint, Equation, EquationSystem, SolveOptions
 
 x, y, z, v = sympy.symbols("x y z v")

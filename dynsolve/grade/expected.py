@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 
 from dynsolve.errors import DynsolveError
@@ -98,8 +98,12 @@ def expected_answers(
     variants: Mapping[str, Mapping[str, str]],
     options: SolveOptions,
     vectorize: bool = True,
+    progress: Callable[[int, int], None] | None = None,
 ) -> ExpectedAnswers:
-    """Expected answers of every student in ``variants`` (student → {given: cell text})."""
+    """Expected answers of every student in ``variants`` (student → {given: cell text}).
+
+    ``vectorize=False`` solves every variant (the baseline); ``progress(done, total)`` is
+    called as students are answered (the vectorized ones at once, then one by one)."""
     students = list(variants)
     rows = [dict(variants[s]) for s in students]
     names = tuple(dict.fromkeys(n for row in rows for n, text in row.items() if text.strip()))
@@ -131,12 +135,18 @@ def expected_answers(
             reasons = dict.fromkeys(batch.why_slow.values())
             reason = "; ".join(list(reasons)[:5])
     solved: dict[tuple[tuple[str, str], ...], StudentExpected] = {}  # same cells, same solve
+    done = len(out)
+    if progress is not None:
+        progress(done, len(students))
     for student, row in zip(students, rows, strict=True):
         if student not in out:
             key = tuple(sorted(row.items()))
             if key not in solved:
                 solved[key] = per_variant(spec, student, row, options)
             out[student] = replace(solved[key], student=student, why=why.get(student, reason))
+            done += 1
+            if progress is not None:
+                progress(done, len(students))
     counts = {"vectorized": 0, "per-variant": 0}
     for each in out.values():
         counts[each.path] += 1

@@ -103,7 +103,7 @@ def build_closed_form(
 ) -> ClosedForm:
     """Solve ``spec`` with the givens in ``varied`` as symbols and compile the answers;
     :class:`NotClosedForm` when a closed form does not exist or cannot be trusted."""
-    from dynsolve.solve import solve_system
+    from dynsolve.solver import solve_system
 
     start = time.perf_counter()
     options = options or SolveOptions()
@@ -172,7 +172,7 @@ def _problem(spec: Spec, options: SolveOptions) -> tuple[Any, Callable[..., list
 
         return build_problem(spec), _constraints
     from dynsolve.modes.scene_mode import assess, build_scene_problem
-    from dynsolve.solve import solve_system
+    from dynsolve.solver import solve_system
 
     problem = build_scene_problem(spec)
     scene, formulation = problem.scene, problem.formulation

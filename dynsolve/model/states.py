@@ -35,7 +35,7 @@ import sympy
 
 from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
 from dynsolve.numbers import tidy
-from dynsolve.solve.roots import sign_of
+from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 

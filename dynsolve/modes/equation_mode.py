@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.dimensions import DimensionReport, EquationCheck, check_dimensions
-from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.errors import DimensionError, DynsolveError, Position, SpecError, with_others
 from dynsolve.expressions import relation, to_sympy
 from dynsolve.format import pretty_unit
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
@@ -29,6 +29,7 @@ from dynsolve.results import EquationRow, Step
 from dynsolve.spec.ast import EquationStmt, FindItem, Given, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.spec.printing import statement_latex, statement_text
+from dynsolve.suspicious import likely_typos
 from dynsolve.system import Constraint, Equation, EquationSystem
 from dynsolve.units import GRAVITY, Dim, natural_unit
 from dynsolve.usage import unused_note
@@ -108,10 +109,16 @@ def build_problem(spec: Spec) -> Problem:
     _check_finds(spec, unknown_names, given_names)
     requested = _requested_dimensions(spec)
     known_dims = {g.name: g.dim for g in givens} | {"pi": Dim()}
-    report = check_dimensions(
-        spec.equations, known_dims, file, spec.system, requested,
-        wanted=tuple(f.name for f in spec.finds),
-    )  # fmt: skip
+    try:
+        report = check_dimensions(
+            spec.equations, known_dims, file, spec.system, requested,
+            wanted=tuple(f.name for f in spec.finds),
+        )  # fmt: skip
+    except DynsolveError as error:  # a misspelt name is a new unknown of unknown dimension
+        typos = likely_typos(spec)
+        if typos:
+            error.hint = "; ".join([*typos, error.hint] if error.hint else typos)
+        raise
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     symbols.update({n: sympy.Symbol(n, real=True) for n in unknown_names})
     targets = tuple(_target(f, report, symbols, given_names, spec) for f in spec.finds)
@@ -192,17 +199,28 @@ def _plain(statement: EquationStmt) -> str:
 def givens_of(spec: Spec) -> list[GivenInfo]:
     """Every given resolved (and g, with its default value unless the spec gives it)."""
     out: list[GivenInfo] = []
+    errors: list[DynsolveError] = []
     for given in spec.givens:
         symbol = sympy.Symbol(given.name, positive=True)
         if given.quantity is not None:
-            value, dim = resolve_quantity(given.quantity, spec.system, spec.file)
+            try:
+                value, dim = resolve_quantity(given.quantity, spec.system, spec.file)
+            except DynsolveError as error:  # every bad unit of the givens at once
+                errors.append(error)
+                continue
             if value.is_zero or value.is_negative:  # magnitudes may be zero or signed
                 symbol = sympy.Symbol(given.name, real=True)
             out.append(GivenInfo(given.name, symbol, value, dim, given))
         else:
             assert given.dimension is not None
-            dim = resolve_dimension(given.dimension, spec.file)
+            try:
+                dim = resolve_dimension(given.dimension, spec.file)
+            except DynsolveError as error:
+                errors.append(error)
+                continue
             out.append(GivenInfo(given.name, symbol, None, dim, given))
+    if errors:
+        raise with_others(errors)
     for info in out:
         if info.name == "g" and info.dim != Dim(1, 0, -2):
             assert info.given is not None

@@ -305,7 +305,7 @@ def _check_no_blow_up(
     from sympy.calculus.util import continuous_domain
 
     from dynsolve.numbers import real_value
-    from dynsolve.solve.blocks import BudgetExceeded, time_budget
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
     ref = item.ref
     if ref is None or ref.function not in ("x", "v") or len(ref.args) != 1:

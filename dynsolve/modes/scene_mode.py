@@ -620,7 +620,7 @@ def steepest(
     it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
     friction at its limit, |F| = μs N, in the sense it has in the solution ``values``.
     """
-    from dynsolve.solve import solve_system
+    from dynsolve.solver import solve_system
 
     scene, formulation = problem.scene, problem.formulation
     support = next(s for s in scene.supports if s.name == contact)

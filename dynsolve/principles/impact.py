@@ -131,7 +131,7 @@ def pivot_formulation(
     >>> sympy.solve(f.equations[0].residual, list(f.unknowns)), f.after_omega  # -12 = 6.5 ω
     ([24/13], {'cube': -omega_1_cube})
     """
-    from dynsolve.solve.roots import sign_of
+    from dynsolve.solver.roots import sign_of
 
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}

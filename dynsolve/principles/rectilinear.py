@@ -211,7 +211,7 @@ def _invert(
 ) -> sympy.Expr | None:
     """Solve ``argument = relation(variable)`` for ``variable``; the branch through
     (``at``, ``value``). None when sympy cannot invert it."""
-    from dynsolve.solve.blocks import BudgetExceeded, time_budget
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
     if relation.has(sympy.Integral):
         return None

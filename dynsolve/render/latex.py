@@ -269,7 +269,8 @@ def render_latex(solution: Solution) -> str:
     """
     body = [
         _title(solution),
-        _givens_section(solution.givens),
+        *(f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings),
+        _givens_section(solution.givens, solution.system),
         *_free_body_section(solution.free_body),
         *_assumptions_section(solution.assumptions),
         _equations_section(solution.equations),
@@ -328,17 +329,22 @@ def _table(spec: str, header: Sequence[str], rows: Iterable[Sequence[str]]) -> s
 # ---- given
 
 
-def _givens_section(givens: Sequence[GivenRow]) -> str:
+def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
     if not givens:
         return "\\subsection*{Given}\nNo givens."
-    header = ["Symbol", "Value", "SI value", "Description"]
+    header = ["Symbol", "Value", f"{escape_latex(system)} value", "Description"]
     rows = [_given_cells(g) for g in givens]
     return "\\subsection*{Given}\n" + _table(r"@{}lllp{0.4\linewidth}@{}", header, rows)
 
 
 def _given_cells(given: GivenRow) -> list[str]:
     value = escape_latex(given.written) if given.symbolic else _math(given.latex_value)
-    return [_math(given.latex_name), value, escape_latex(given.si), escape_latex(given.description)]
+    return [
+        _math(given.latex_name),
+        value,
+        escape_latex(given.base),
+        escape_latex(given.description),
+    ]
 
 
 # ---- equations
@@ -426,6 +432,20 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
     rows = [_answer_cells(a, expected.get(a.name), bool(expected)) for a in answers]
     spec = "@{}ll" + ("lc" if expected else "") + "@{}"
     return "\\subsection*{Answers}\n" + _table(spec, header, rows)
+
+
+def answers_math(solution: Solution) -> str:
+    """The answers as one display-math block (what Jupyter shows for ``_repr_latex_``).
+
+    >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
+    >>> answers_math(Solution("t.dyn", "", "", "SI", "exact", (), (), (), (answer,), (), (), ""))
+    '$$\\\\begin{aligned} T &= 106\\\\,\\\\mathrm{N} \\\\end{aligned}$$'
+    """
+    rows = [
+        f"{latex_name(a.name)} &= {safe_math(a.latex).strip() or escape_latex(a.shown)}"
+        for a in solution.answers
+    ]
+    return "$$\\begin{aligned} " + " \\\\ ".join(rows) + " \\end{aligned}$$" if rows else ""
 
 
 def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:

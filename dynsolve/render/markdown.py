@@ -83,7 +83,7 @@ def render_markdown(solution: Solution) -> str:
     """
     sections = [
         _title(solution),
-        _givens_section(solution.givens),
+        _givens_section(solution.givens, solution.system),
         *_free_body_section(solution.free_body),
         *_assumptions_section(solution.assumptions),
         _equations_section(solution.equations),
@@ -140,21 +140,23 @@ def _title(solution: Solution) -> str:
     lines.append(" · ".join(facts))
     if solution.messages:
         lines += ["", *(f"- {escape_markdown(m)}" for m in solution.messages)]
+    if solution.warnings:
+        lines += ["", *(f"- **Warning:** {escape_markdown(w)}" for w in solution.warnings)]
     return "\n".join(lines)
 
 
-def _givens_section(givens: Sequence[GivenRow]) -> str:
+def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
     if not givens:
         return "## Given\n\nNo givens."
     rows = [_given_cells(g) for g in givens]
-    header = ["Symbol", "Value", "SI value", "Description"]
+    header = ["Symbol", "Value", f"{escape_markdown(system)} value", "Description"]
     return "## Given\n\n" + _table(header, [":--"] * 4, rows)
 
 
 def _given_cells(given: GivenRow) -> list[str]:
     value = escape_markdown(given.written) if given.symbolic else _cell_math(given.latex_value)
-    si = escape_markdown(given.si)
-    return [_cell_math(given.latex_name), value, si, escape_markdown(given.description)]
+    base = escape_markdown(given.base)
+    return [_cell_math(given.latex_name), value, base, escape_markdown(given.description)]
 
 
 def _equations_section(equations: Sequence[EquationRow]) -> str:

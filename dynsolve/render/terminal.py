@@ -14,6 +14,7 @@ from __future__ import annotations
 import io
 
 from rich.console import Console, Group, RenderableType
+from rich.padding import Padding
 from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
@@ -23,6 +24,7 @@ from dynsolve.names import pretty
 from dynsolve.results import Assumption, Check, FreeBody, KeyComparison, Solution, Step
 
 WIDTH = 100
+STEP_INDENT = 5  # columns before a step's results
 
 
 def solution_renderable(solution: Solution) -> RenderableType:
@@ -48,6 +50,7 @@ def solution_renderable(solution: Solution) -> RenderableType:
     kinetic diagram: I_G α
     """
     parts: list[RenderableType] = [_title(solution)]
+    parts += [Text(f"⚠ warning: {w}", style="yellow") for w in solution.warnings]
     if solution.givens:
         parts += [_heading("Given"), _givens(solution)]
     if solution.free_body:
@@ -75,24 +78,31 @@ def _heading(text: str) -> Text:
 
 
 def _title(solution: Solution) -> Panel:
-    subtitle = Text(f"{solution.file} · units {solution.system} · {solution.mode} mode")
+    """The title, source and facts inside the panel, where they fold (a panel's own title
+    line would be cut at the terminal's width)."""
+    text = Text(solution.title, style="bold") + Text("\n") if solution.title else Text()
     if solution.source:
-        subtitle = Text(f"{solution.source}\n") + subtitle
-    return Panel(subtitle, title=Text(solution.title, style="bold"), title_align="left")
+        text += Text(f"{solution.source}\n")
+    text += Text(f"{solution.file} · units {solution.system} · {solution.mode} mode")
+    text.overflow = "fold"
+    return Panel(text)
 
 
-def _table(*columns: str) -> Table:
+def _table(*columns: str | Text) -> Table:
     table = Table(box=None, padding=(0, 2, 0, 0), show_header=True, header_style="dim")
     for column in columns:
-        table.add_column(column)
+        table.add_column(column, overflow="fold")  # never cut with "…": long names fold
     return table
 
 
 def _givens(solution: Solution) -> Table:
-    table = _table("", "as written", "in SI", "")
+    table = _table("", "as written", Text(f"in {solution.system}"), "")
     for g in solution.givens:
         table.add_row(
-            Text(pretty(g.name), style="bold"), g.written, g.si, Text(g.description, style="dim")
+            Text(pretty(g.name), style="bold"),
+            Text(g.written),
+            Text(g.base),
+            Text(g.description, style="dim"),
         )
     return table
 
@@ -114,20 +124,21 @@ def _step(step: Step) -> RenderableType:
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
-        rows.append(
-            Text(f"     {pretty(result.name)}{formula} = ") + Text(result.value, style="bold")
-        )
+        rows.append(Text(f"{pretty(result.name)}{formula} = ") + Text(result.value, style="bold"))
     for discarded in step.discarded:
-        rows.append(Text(f"     discarded {discarded}", style="yellow"))
+        rows.append(Text(f"discarded {discarded}", style="yellow"))
     if step.note:
-        rows.append(Text(f"     note: {step.note}", style="dim"))
-    return Group(*rows)
+        rows.append(Text(f"note: {step.note}", style="dim"))
+    # wrapped lines keep the indent of their result, instead of falling back to column 0
+    return Group(head, *(Padding(row, (0, 0, 0, STEP_INDENT)) for row in rows[1:]))
 
 
 def _answers(solution: Solution) -> Table:
     table = _table("", "value", "")
     for a in solution.answers:
-        table.add_row(Text(pretty(a.name), style="bold"), Text(a.shown, style="bold"), a.direction)
+        table.add_row(
+            Text(pretty(a.name), style="bold"), Text(a.shown, style="bold"), Text(a.direction)
+        )
     return table
 
 
@@ -135,7 +146,7 @@ def _checks(checks: tuple[Check, ...]) -> Table:
     table = _table("", "check", "detail")
     for c in checks:
         mark = Text("✓", style="green") if c.passed else Text("✗", style="bold red")
-        table.add_row(mark, c.name, c.detail)
+        table.add_row(mark, Text(c.name), Text(c.detail))
     return table
 
 
@@ -178,9 +189,9 @@ def failures_table(failures: list[tuple[str, KeyComparison | Check | str]]) -> T
     table.add_column("file")
     table.add_column("check")
     table.add_column("detail", overflow="fold")
-    for file, failure in failures:
+    for file, failure in failures:  # spec text is not rich markup: "[kg]" stays as written
         if isinstance(failure, str):
-            table.add_row(file, "input", failure)
+            table.add_row(Text(file), "input", Text(failure))
         else:
-            table.add_row(file, failure.name, failure.detail)
+            table.add_row(Text(file), Text(failure.name), Text(failure.detail))
     return table

@@ -30,7 +30,7 @@ from typing import Any
 import lark
 from lark import Token, Transformer_NonRecursive
 
-from dynsolve.errors import Position, SpecError
+from dynsolve.errors import Position, SpecError, with_others
 from dynsolve.files import read_capped
 from dynsolve.spec.ast import (
     Answer,
@@ -57,6 +57,7 @@ from dynsolve.spec.ast import (
 )
 
 MAX_FILE_BYTES = 256 * 1024
+MAX_ERRORS = 20  # bad lines reported at once
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")  # only these end a line (not \f, \v, \u2028 …)
 _SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " ", "\u2007": " "})
 MAX_LINES = 5000
@@ -150,7 +151,15 @@ def _lark() -> lark.Lark:
 def parse_file(path: str | Path) -> Spec:
     """Read and parse a ``.dyn`` file, bounding its size and checking its encoding."""
     shown = str(path)
-    raw = read_capped(path, MAX_FILE_BYTES)  # a byte cap, not stat: /dev/zero, FIFOs
+    return parse_bytes(read_capped(path, MAX_FILE_BYTES), shown)  # a byte cap, not stat
+
+
+def parse_bytes(raw: bytes, shown: str = "<spec>") -> Spec:
+    """Parse a spec's bytes (read from a file or stdin), bounding their size and encoding.
+
+    >>> parse_bytes(b"given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n").finds[0].name
+    'W'
+    """
     if len(raw) > MAX_FILE_BYTES:
         raise SpecError(
             f"{shown} is over {MAX_FILE_BYTES} bytes; specs are limited to {MAX_FILE_BYTES} bytes",
@@ -206,6 +215,7 @@ def parse_spec(text: str, file: str = "<spec>") -> Spec:
             hint="split the problem into several files",
         )
     parts = _Sections()
+    errors: list[SpecError] = []
     seen: dict[str, int] = {}
     current: str | None = None
     statements = 0
@@ -237,7 +247,14 @@ def parse_spec(text: str, file: str = "<spec>") -> Spec:
                 Position(file, number, indent + 1),
                 hint="split the problem into several files",
             )
-        _body_line(current, content.strip(), comment, file, number, indent, parts)
+        try:
+            _body_line(current, content.strip(), comment, file, number, indent, parts)
+        except SpecError as error:  # report every bad line at once, up to a limit
+            errors.append(error)
+            if len(errors) >= MAX_ERRORS:
+                break
+    if errors:
+        raise with_others(errors)
     return _finish(parts, file)
 
 

@@ -23,11 +23,11 @@ from dataclasses import dataclass, field
 import sympy
 
 from dynsolve.magnitude import Bound, OutOfRange, bound, value_bound
-from dynsolve.solve.blocks import DEFAULT_OPTIONS, BlockSolution, as_expr, solve_block
-from dynsolve.solve.outcome import Block, Outcome, Status
-from dynsolve.solve.residuals import all_residuals, equation_residual, is_satisfied
-from dynsolve.solve.roots import RootChoice, choose_root
-from dynsolve.solve.structure import StructuralBlock, Structure, analyse_structure
+from dynsolve.solver.blocks import DEFAULT_OPTIONS, BlockSolution, as_expr, solve_block
+from dynsolve.solver.outcome import Block, Outcome, Status
+from dynsolve.solver.residuals import all_residuals, equation_residual, is_satisfied
+from dynsolve.solver.roots import RootChoice, choose_root
+from dynsolve.solver.structure import StructuralBlock, Structure, analyse_structure
 from dynsolve.system import Constraint, Equation, EquationSystem, SolveOptions
 
 __all__ = ["solve_system"]

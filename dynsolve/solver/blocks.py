@@ -4,7 +4,7 @@ A block is a square set of equations (residuals ``lhs - rhs``) in its own unknow
 knowns and the values of earlier blocks are given. The result is every candidate
 root found, each with its values and, when shown, its formulas in terms of the
 knowns and earlier unknowns kept as symbols. Choosing among the candidates is
-:mod:`dynsolve.solve.roots`'s job.
+:mod:`dynsolve.solver.roots`'s job.
 
 * linear blocks: ``linear_eq_to_matrix`` + ``linsolve`` — exact, method ``linear``;
   a singular matrix leaves the dependent unknowns *free* (under-determined);
@@ -40,7 +40,7 @@ from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
 from dynsolve.numbers import mpmath_function
-from dynsolve.solve.outcome import Method
+from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
 FORMULA_MAX_OPS = 60  # formulas longer than this (sympy.count_ops) are not shown

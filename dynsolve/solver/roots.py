@@ -17,7 +17,7 @@ Sign and realness questions about symbolic values (free given symbols, created
 root is kept, never discarded.
 
 >>> import sympy
->>> from dynsolve.solve.blocks import Candidate
+>>> from dynsolve.solver.blocks import Candidate
 >>> v = sympy.Symbol("v")
 >>> choice = choose_root([Candidate({v: -3}), Candidate({v: 3})], [v], [v**2 - 9], {})
 >>> dict(choice.values), [d.reason for d in choice.discarded]
@@ -35,9 +35,9 @@ import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
 from dynsolve.numbers import real_value
-from dynsolve.solve.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
-from dynsolve.solve.outcome import DiscardedRoot
-from dynsolve.solve.residuals import equation_residual, is_satisfied
+from dynsolve.solver.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
+from dynsolve.solver.outcome import DiscardedRoot
+from dynsolve.solver.residuals import equation_residual, is_satisfied
 from dynsolve.system import Constraint, Equation
 
 AMBIGUOUS = "ambiguous: declare a constraint to choose"
@@ -74,7 +74,7 @@ def choose_root(
     ``checks`` are surplus equations, with their indices, that also judge the roots.
 
     >>> import sympy
-    >>> from dynsolve.solve.blocks import Candidate
+    >>> from dynsolve.solver.blocks import Candidate
     >>> from dynsolve.system import Constraint
     >>> w = sympy.Symbol("omega")
     >>> positive = Constraint(w >= 0, "omega >= 0", 12)

@@ -34,8 +34,8 @@ from collections.abc import Collection, Mapping, Sequence
 
 import sympy
 
-from dynsolve.solve.blocks import as_expr, substitute
-from dynsolve.solve.outcome import Residual
+from dynsolve.solver.blocks import as_expr, substitute
+from dynsolve.solver.outcome import Residual
 from dynsolve.system import Equation
 
 DIGITS = 30

@@ -1,0 +1,63 @@
+"""Compile a LaTeX solution sheet to PDF with pdflatex (``-o sheet.pdf``).
+
+The document is dynsolve's own output (every spec text in it escaped); pdflatex runs
+with shell escape off, in a fresh temporary folder, non-interactively, under a time
+limit.
+
+>>> import shutil
+>>> shutil.which("pdflatex") is None or compile_pdf(
+...     "\\\\documentclass{article}\\\\begin{document}x\\\\end{document}").startswith(b"%PDF")
+True
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+from dynsolve.errors import DynsolveError
+
+PDFLATEX_SECONDS = 60
+
+
+class PdfError(DynsolveError):
+    """pdflatex is missing or could not compile the sheet."""
+
+
+def compile_pdf(latex: str) -> bytes:
+    """The PDF of the LaTeX document ``latex`` (two passes, for references)."""
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        raise PdfError(
+            "cannot write a PDF: pdflatex is not installed",
+            hint="install TeX Live (Debian: apt-get install texlive-latex-base "
+            "texlive-latex-recommended), or write the .tex with -o sheet.tex",
+        )
+    with tempfile.TemporaryDirectory(prefix="dynsolve-pdf-") as folder:
+        source = Path(folder) / "sheet.tex"
+        source.write_text(latex, encoding="utf-8")
+        command = [pdflatex, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error"]
+        for _ in range(2):
+            try:
+                done = subprocess.run(
+                    [*command, source.name],
+                    cwd=folder,
+                    capture_output=True,
+                    timeout=PDFLATEX_SECONDS,
+                    check=False,
+                    stdin=subprocess.DEVNULL,
+                )
+            except subprocess.TimeoutExpired:
+                raise PdfError(
+                    f"pdflatex ran past {PDFLATEX_SECONDS} s", hint="write the .tex instead"
+                ) from None
+            if done.returncode != 0:
+                log = done.stdout.decode("utf-8", errors="replace")
+                first = next((line for line in log.splitlines() if line.startswith("!")), "")
+                raise PdfError(
+                    f"pdflatex could not compile the sheet: {first or 'see its log'}",
+                    hint="write the .tex with -o sheet.tex and compile it yourself",
+                )
+        return (Path(folder) / "sheet.pdf").read_bytes()
