@@ -338,3 +338,36 @@ def test_allow_changes_keeps_variants_whose_assumptions_differ() -> None:
     assert values & {"25 N*m", "30 N*m"}
     plan = vary_plan(spec)
     assert all(r.cells == draw(plan, 3, r.student) for r in rows)  # first draws, none redrawn
+
+
+def test_an_angle_varies_in_degrees_or_radians() -> None:
+    # 20..40 deg step 5: 20, 25, 30, 35, 40 deg; a range in rad for a given in deg is the
+    # same dimension (an angle), so it is accepted as written
+    spec = parse_spec(
+        "given:\n  theta = 30 deg\n  m = 2 kg\nvary:\n  theta = 20..40 deg step 5\n"
+        "equations:\n  N = m*g*cos(theta)\nfind: N\n",
+        "angle.dyn",
+    )
+    (variation,) = vary_plan(spec)
+    assert variation.values() == ("20", "25", "30", "35", "40")
+    # N = m g cos θ = 2·9.81·cos 40° = 15.0296 N for θ = 40 deg
+    solution = solve_spec(with_variant(spec, {"theta": "40 deg"}, "s1"))
+    assert solution.answers[0].value == pytest.approx(2 * 9.81 * 0.766044443, rel=1e-8)
+    in_radians = parse_spec(
+        "given:\n  theta = 30 deg\nvary:\n  theta = 0.3..0.7 rad step 0.1\n"
+        "equations:\n  x = sin(theta)\nfind: x\n",
+        "rad.dyn",
+    )
+    assert vary_plan(in_radians)[0].unit == "rad"
+
+
+def test_variants_in_us_units_keep_the_student_ids(tmp_path: Path) -> None:
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student\ns1\ns2\n")
+    out = tmp_path / "v.csv"
+    args = ["variants", str(DRUM), "--roster", str(roster), "--seed", "8", "-o", str(out)]
+    result = runner.invoke(app, [*args, "--units", "us"])
+    assert result.exit_code == ExitCode.OK, result.output
+    lines = out.read_text().splitlines()
+    assert [line.split(",")[:2] for line in lines[1:]] == [["s1", "US"], ["s2", "US"]]
+    assert all(cell.endswith((" slug", " ft", " ft/s^2")) for cell in lines[1].split(",")[2:])

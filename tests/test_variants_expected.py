@@ -127,7 +127,11 @@ def test_problems_without_a_closed_form_say_why() -> None:
 
 BUNDLED = sorted(
     p
-    for p in (ROOT / "problems").rglob("*.dyn")
+    for p in (
+        *(ROOT / "problems").rglob("*.dyn"),
+        *(ROOT / "examples").rglob("*.dyn"),
+        *WHEEL.parent.glob("*.dyn"),
+    )
     if "kinematics" not in p.parts and "stages" not in p.parts and "symbolic" not in p.name
 )
 
