@@ -10,6 +10,8 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from dynsolve.cli import ExitCode, app
@@ -371,3 +373,33 @@ def test_variants_in_us_units_keep_the_student_ids(tmp_path: Path) -> None:
     lines = out.read_text().splitlines()
     assert [line.split(",")[:2] for line in lines[1:]] == [["s1", "US"], ["s2", "US"]]
     assert all(cell.endswith((" slug", " ft", " ft/s^2")) for cell in lines[1].split(",")[2:])
+
+
+# ---- untrusted text never escapes as a traceback
+
+_VARY_PIECES = st.sampled_from(
+    ["m", "k", "x", " = ", "=", "..", ".", "-", "40", "1e99", "0", "kg", "N/m", "m^99", "step",
+     " step ", "±", "+-", "%", "sigfig", " 3", "(", ")", "*", "/", " ", "allow changes"]
+)  # fmt: skip
+
+
+@settings(max_examples=300, derandomize=True)
+@given(st.one_of(st.text(max_size=60), st.lists(_VARY_PIECES, max_size=12).map("".join)))
+def test_any_vary_line_parses_or_is_a_positioned_error(text: str) -> None:
+    source = f"given:\n  m = 50 kg\n  k = 200 N/m\nvary:\n  {text}\n"
+    source += "equations:\n  F = m*g\nfind: F\n"
+    try:
+        spec = parse_spec(source, "fuzz.dyn")
+        vary_plan(spec)
+    except (SpecError, UnitError) as error:
+        assert error.position is not None and error.position.file == "fuzz.dyn"
+
+
+@settings(max_examples=300, derandomize=True)
+@given(st.one_of(st.text(max_size=40), st.lists(_VARY_PIECES, max_size=8).map("".join)))
+def test_any_cell_is_read_or_refused_with_the_student_named(text: str) -> None:
+    spec = parse_file(DRUM)
+    try:
+        with_variant(spec, {"m_b": text}, "s9")
+    except (VariantError, UnitError) as error:
+        assert "student s9" in error.message
