@@ -191,3 +191,25 @@ def test_tipping_and_a_stated_slide_are_vectorized() -> None:
     assert result["a"].answers["x"].value == pytest.approx((180 + 49.05) / 490.5, rel=1e-12)
     assert result["a"].answers["a_G"].value == pytest.approx((600 - 98.1) / 50, rel=1e-12)
     assert result["b"].answers["x"].value == pytest.approx((195 + 49.05) / 490.5, rel=1e-12)
+
+
+def test_a_base_problem_that_slips_is_vectorized_through_its_re_solve() -> None:
+    # wheel_couple_slips.dyn (m = 10 kg, r = 0.3 m, I_G = 0.45 kg·m², μs = 0.1, μk = 0.08):
+    # the no-slip trial needs F_C = M/0.45 ≤ μs m g = 9.81 N, i.e. M ≤ 4.41 N·m.
+    #   M = 40 N·m (base) and 50 N·m slip: F_C = μk m g = 7.848 N right, a_G = 0.7848 m/s²
+    #     right, α = (M − 7.848·0.3)/0.45 cw: 83.655 and 105.88 rad/s².
+    #   M = 1 N·m rolls (the trial holds): α = 1/1.35 = 0.74074 rad/s² cw, a_G = 0.22222
+    #     m/s² right; that student is solved per variant.
+    spec = parse_file(ROOT / "problems" / "scenes" / "wheel_couple_slips.dyn")
+    variants = {"base": {"M": "40 N*m"}, "more": {"M": "50 N*m"}, "rolls": {"M": "1 N*m"}}
+    result = expected_answers(spec, variants, OPTIONS)
+    assert result.path == "mixed: 2 vectorized, 1 per-variant"
+    assert result["rolls"].why == "no slip at C holds"
+    for student, M in (("base", 40), ("more", 50)):
+        answers = result[student].answers
+        assert answers["alpha"].value == pytest.approx((M - 7.848 * 0.3) / 0.45, rel=1e-12)
+        assert answers["a"].value == pytest.approx(0.7848, rel=1e-12)
+        assert (answers["alpha"].direction, answers["a"].direction) == ("cw", "right")
+    rolls = result["rolls"].answers
+    assert rolls["alpha"].value == pytest.approx(1 / 1.35, rel=1e-12)
+    assert rolls["a"].value == pytest.approx(0.3 / 1.35, rel=1e-12)

@@ -116,6 +116,8 @@ def expected_answers(
             reason = str(error)
         except DynsolveError as error:  # the base problem itself is wrong: every row says so
             reason = error.message
+        except Exception as error:  # a bug in the fast path: the full solves still answer
+            reason = f"internal error in the vectorized path ({type(error).__name__}: {error})"
     elif vectorize:
         reason = "no given varies"
     out: dict[str, StudentExpected] = {}

@@ -103,48 +103,27 @@ def build_closed_form(
 ) -> ClosedForm:
     """Solve ``spec`` with the givens in ``varied`` as symbols and compile the answers;
     :class:`NotClosedForm` when a closed form does not exist or cannot be trusted."""
-    from dynsolve.solver import solve_system
-
     start = time.perf_counter()
     options = options or SolveOptions()
-    problem, conditions_of = _problem(spec, options)
-    infos = {g.name: g for g in problem.givens if g.given is not None and g.value is not None}
+    phases = _phases(spec, options)
+    final = phases[-1].problem
+    infos = {g.name: g for g in final.givens if g.given is not None and g.value is not None}
     missing = [n for n in varied if n not in infos]
     if missing:
         raise NotClosedForm(f"{missing[0]} is not a given with a value")
     symbols = tuple(infos[n].symbol for n in varied)
-    chosen = set(symbols)
-    fixed = {s: v for s, v in problem.system.knowns.items() if s not in chosen}
-    for info in problem.givens:
-        if info.formula is not None:  # a derived quantity: from the givens as they vary
-            fixed[info.symbol] = info.formula.xreplace(fixed)
-    system = replace(problem.system, knowns=fixed)
-    try:
-        outcome = solve_system(system, options)
-    except DynsolveError as error:
-        raise NotClosedForm(f"the symbolic solve stops: {error.message}") from None
-    if outcome.ambiguous:
-        names = ", ".join(u.name for u in outcome.ambiguous)
-        raise NotClosedForm(f"the root of {names} cannot be chosen for every value of the givens")
-    if outcome.status != "solved":
-        raise NotClosedForm(f"the symbolic solve ends '{outcome.status}'")
-    if any(b.method == "numeric" for b in outcome.blocks):
-        raise NotClosedForm("a block is solved numerically, not in closed form")
-    values = {**fixed, **outcome.values}
     exprs: list[sympy.Expr] = []
-
-    def output(expr: object) -> int:
-        expr = (sympy.Integer(0) + expr).xreplace(values)  # type: ignore[operator]
-        if expr.free_symbols - chosen:
-            others = ", ".join(sorted(str(s) for s in expr.free_symbols - chosen))
-            raise NotClosedForm(f"an answer depends on {others}, not only on the varied givens")
-        if expr.has(sympy.Piecewise, sympy.nan, sympy.zoo, sympy.oo):
-            raise NotClosedForm("an answer is piecewise or not finite in closed form")
-        exprs.append(expr)
-        return len(exprs) - 1
-
-    targets = tuple(_target_form(t, output, values, problem) for t in problem.targets)
-    conditions = tuple(conditions_of(problem, outcome.values, output))
+    outputs = [_solved_outputs(phase.problem, set(symbols), exprs, options) for phase in phases]
+    conditions = tuple(
+        c
+        for phase, output in zip(phases, outputs, strict=True)
+        for c in phase.conditions(phase.problem, output)
+    )
+    trial, last = phases[0].problem, outputs[-1]
+    targets = tuple(  # trial(X) is read from the no-slip trial, as the pipeline does
+        _target_form(old, outputs[0], trial) if old.trial else _target_form(new, last, final)
+        for old, new in zip(trial.targets, final.targets, strict=True)
+    )
     function = sympy.lambdify(symbols, exprs, "numpy", cse=True)
     base = [np.array([float(infos[n].value)]) for n in varied]  # type: ignore[arg-type]
     raw = [np.broadcast_to(_real(v), (1,)) for v in function(*base)]
@@ -163,14 +142,61 @@ def build_closed_form(
     )
 
 
-def _problem(spec: Spec, options: SolveOptions) -> tuple[Any, Callable[..., list[Condition]]]:
-    """The base problem as the pipeline builds it, and how to read its conditions."""
+@dataclass(frozen=True)
+class _Phase:
+    """One solve of the pipeline (a no-slip trial, then the re-solve), and its conditions."""
+
+    problem: Any
+    conditions: Callable[[Any, Callable[[object], int]], list[Condition]]
+
+
+def _solved_outputs(
+    problem: Any, chosen: set[sympy.Symbol], exprs: list[sympy.Expr], options: SolveOptions
+) -> Callable[[object], int]:
+    """Solve ``problem`` with the ``chosen`` givens as symbols; return a function that adds an
+    expression of its unknowns, in closed form, to ``exprs`` and gives its index."""
+    from dynsolve.solver import solve_system
+
+    fixed = {s: v for s, v in problem.system.knowns.items() if s not in chosen}
+    for info in problem.givens:
+        if info.formula is not None:  # a derived quantity: from the givens as they vary
+            fixed[info.symbol] = info.formula.xreplace(fixed)
+    try:
+        outcome = solve_system(replace(problem.system, knowns=fixed), options)
+    except DynsolveError as error:
+        raise NotClosedForm(f"the symbolic solve stops: {error.message}") from None
+    if outcome.ambiguous:
+        names = ", ".join(u.name for u in outcome.ambiguous)
+        raise NotClosedForm(f"the root of {names} cannot be chosen for every value of the givens")
+    if outcome.status != "solved":
+        raise NotClosedForm(f"the symbolic solve ends '{outcome.status}'")
+    if any(b.method == "numeric" for b in outcome.blocks):
+        raise NotClosedForm("a block is solved numerically, not in closed form")
+    values = {**fixed, **outcome.values}
+
+    def output(expr: object) -> int:
+        expr = (sympy.Integer(0) + expr).xreplace(values)  # type: ignore[operator]
+        if expr.free_symbols - chosen:
+            others = ", ".join(sorted(str(s) for s in expr.free_symbols - chosen))
+            raise NotClosedForm(f"an answer depends on {others}, not only on the varied givens")
+        if expr.has(sympy.Piecewise, sympy.nan, sympy.zoo, sympy.oo):
+            raise NotClosedForm("an answer is piecewise or not finite in closed form")
+        exprs.append(expr)
+        return len(exprs) - 1
+
+    output.values = values  # type: ignore[attr-defined]
+    return output
+
+
+def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
+    """The solves the pipeline makes of the base problem, and how to read their conditions:
+    one, or a no-slip trial and its re-solve with kinetic friction (``solve_scene``)."""
     if spec.kinematics:
         raise NotClosedForm("motion from a(t), a(v) or a(x) is solved per variant")
     if not spec.scene:
         from dynsolve.modes.equation_mode import build_problem
 
-        return build_problem(spec), _constraints
+        return [_Phase(build_problem(spec), _constraints)]
     from dynsolve.modes.scene_mode import assess, build_scene_problem
     from dynsolve.solver import solve_system
 
@@ -180,12 +206,22 @@ def _problem(spec: Spec, options: SolveOptions) -> tuple[Any, Callable[..., list
         raise NotClosedForm("a scene with stages, travel or impacts is solved per variant")
     outcome = solve_system(problem.system, options)
     assumptions, slips = assess(problem, outcome.values)
-    if slips:
-        raise NotClosedForm("the base problem re-solves a slipping contact")
-    return problem, lambda p, v, output: _assumptions(p, assumptions, output)
+    if not slips:
+        return [_Phase(problem, lambda p, output: _assumptions(p, assumptions, output))]
+    if 0 in slips.values():
+        raise NotClosedForm("a stated slide the answer contradicts is solved per variant")
+    resolved = build_scene_problem(spec, slips)
+    after, more = assess(resolved, solve_system(resolved.system, options).values)
+    if more and not more.items() <= slips.items():
+        raise NotClosedForm("the base problem is re-solved more than once")
+    trial = [a for a in assumptions if a.name.startswith(("no slip at ", "sliding at "))]
+    return [
+        _Phase(problem, lambda p, output: _assumptions(p, trial, output, slips)),
+        _Phase(resolved, lambda p, output: _assumptions(p, after, output)),
+    ]
 
 
-def _constraints(problem: Any, solved: object, output: Callable[[object], int]) -> list[Condition]:
+def _constraints(problem: Any, output: Callable[[object], int]) -> list[Condition]:
     """Declared constraints (they chose the root): held in the base problem."""
     out = []
     for constraint in problem.system.constraints:
@@ -199,9 +235,14 @@ def _constraints(problem: Any, solved: object, output: Callable[[object], int]) 
 
 
 def _assumptions(
-    problem: Any, assumptions: Sequence[Any], output: Callable[[object], int]
+    problem: Any,
+    assumptions: Sequence[Any],
+    output: Callable[[object], int],
+    slips: Mapping[str, int] | None = None,
 ) -> list[Condition]:
-    """A scene's assumptions as conditions: contact kept, no slip, cord taut."""
+    """A scene's assumptions as conditions: contact kept, no slip (and, for a failed no-slip
+    trial in ``slips``, the sense of the slip), cord taut, a stated slide, no tipping, the
+    slip of a re-solved contact."""
     reactions = problem.formulation.reactions
     supports = {s.name: s for s in problem.scene.supports}
     out = []
@@ -223,6 +264,13 @@ def _assumptions(
                 output(reactions[f"N_{support.name}"][0]),
             )
             out.append(Condition(name, "no slip", outputs, assumption.holds))
+            if slips and support.name in slips:  # the trial's friction sets the slip's sense
+                kind = ">0" if slips[support.name] > 0 else "<0"
+                out.append(
+                    Condition(f"sense of the slip at {support.name}", kind, outputs[:1], True)
+                )
+        elif name.startswith("slip at ") and name[8:] in problem.slipping:
+            out.append(_slip(problem, supports[name[8:]], assumption, output))
         elif name.startswith("sliding at ") and name[11:] in supports:
             out.extend(_slide(problem, supports[name[11:]], assumption, output))
         elif name.startswith("no tipping on base ") and name[19:] in supports:
@@ -237,30 +285,55 @@ def _slide(
 ) -> list[Condition]:
     """A stated ``slides DIR`` (as scene mode's ``_declared_slide``): the contact point moves
     that way, or, from rest and without a μs, starts to; anything else is per variant."""
-    from dynsolve.model.scene import ZERO
-    from dynsolve.principles.newton_euler import point_acceleration
-
     scene = problem.scene
     if support.kind == "contact" and scene.motions.get(support.body) == "translation":
         return []  # a driven wheel's slide: stated, not checked
     if not assumption.holds:
         raise NotClosedForm(f"assumption '{assumption.name}' fails in the base problem")
+    along = -support.friction_sense
+    v, a = _contact_motion(problem, support)
+    if v != 0:
+        return [Condition(assumption.name, ">0", (output(along * v),), True)]
+    if a is None or support.mu_s is not None:
+        raise NotClosedForm(f"assumption '{assumption.name}' is checked per variant")
+    return [Condition(assumption.name, ">=0", (output(along * a),), True)]
+
+
+def _slip(
+    problem: Any, support: Any, assumption: Any, output: Callable[[object], int]
+) -> Condition:
+    """A re-solved contact (as scene mode's ``_slip_sense``): its point slips against the
+    kinetic friction: by its velocity, or from rest by its acceleration."""
+    sense = problem.slipping[support.name]
+    if support.friction_sense is not None and sense != support.friction_sense:
+        raise NotClosedForm(f"assumption '{assumption.name}' is checked per variant")
+    v, a = _contact_motion(problem, support)
+    if v != 0:
+        return Condition(assumption.name, ">=0", (output(-sense * v),), assumption.holds)
+    if a is None:
+        raise NotClosedForm(f"assumption '{assumption.name}' is checked per variant")
+    return Condition(assumption.name, ">=0", (output(-sense * a),), assumption.holds)
+
+
+def _contact_motion(problem: Any, support: Any) -> tuple[sympy.Expr, sympy.Expr | None]:
+    """The velocity and acceleration of a body's contact point along the contact tangent,
+    as expressions (scene mode's ``_contact_motion`` before numbers)."""
+    from dynsolve.model.scene import ZERO
+    from dynsolve.principles.newton_euler import point_acceleration
+
+    scene = problem.scene
     kin = problem.formulation.kinematics.get(support.body)
     G = scene.bodies[support.body].G
     omega = kin.omega if kin else scene.omegas.get(support.body, sympy.Integer(0))
     v_G = scene.velocities.get(support.body, ZERO)
     r = (support.point[0] - G[0], support.point[1] - G[1])
     v_P = (v_G[0] - omega * r[1], v_G[1] + omega * r[0])
-    along = -support.friction_sense
-    tangent = support.tangent
-    v = sympy.expand(along * (v_P[0] * tangent[0] + v_P[1] * tangent[1]))
-    if v != 0:
-        return [Condition(assumption.name, ">0", (output(v),), True)]
-    if kin is None or support.mu_s is not None:
-        raise NotClosedForm(f"assumption '{assumption.name}' is checked per variant")
+    t = support.tangent
+    v = sympy.expand(v_P[0] * t[0] + v_P[1] * t[1])
+    if kin is None:
+        return v, None
     a_P = point_acceleration(kin, G, support.point)
-    a = along * (a_P[0] * tangent[0] + a_P[1] * tangent[1])
-    return [Condition(assumption.name, ">=0", (output(a),), True)]
+    return v, a_P[0] * t[0] + a_P[1] * t[1]
 
 
 def _tipping(
@@ -277,10 +350,10 @@ def _tipping(
     return Condition(assumption.name, "within", outputs, assumption.holds)
 
 
-def _target_form(
-    target: Any, output: Callable[[object], int], values: Mapping[sympy.Symbol, Any], problem: Any
-) -> TargetForm:
-    if target.trial or target.kind not in ("signed", "rotation", "along", "vector", "magnitude"):
+def _target_form(target: Any, output: Callable[[object], int], problem: Any) -> TargetForm:
+    """How a find is read: from the final solve, or (``trial(X)``) from the no-slip trial."""
+    values: Mapping[sympy.Symbol, Any] = output.values  # type: ignore[attr-defined]
+    if target.kind not in ("signed", "rotation", "along", "vector", "magnitude"):
         raise NotClosedForm(f"{target.name} ({target.kind}) is answered per variant")
     if target.vector is not None:
         outputs: tuple[int, ...] = (output(target.vector[0]), output(target.vector[1]))
