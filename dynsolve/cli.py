@@ -407,12 +407,15 @@ def solve_and_render(
     kind, value = source
     try:
         if variant is not None:
+            from dataclasses import replace
+
             from dynsolve.grade.substitute import with_variant
             from dynsolve.pipeline import solve_spec
             from dynsolve.spec.parser import parse_file, parse_spec
 
             spec = parse_file(value) if kind == "file" else parse_spec(value, STDIN_NAME)
             spec = with_variant(spec, variant[1], variant[0])
+            spec = replace(spec, title=f"{spec.title} (student {variant[0]})")
             solution = solve_spec(spec, _options(mode, budget))
         elif kind == "file":
             solution = solve_file(value, _options(mode, budget))
