@@ -171,11 +171,19 @@ def solve(
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
     variant: Annotated[
         str | None,
-        typer.Option(help="Solve this student's variant (with --variants).", show_default=False),
+        typer.Option(
+            help="Solve this student's variant (with --variants).",
+            show_default=False,
+            metavar="STUDENT",
+        ),
     ] = None,
     variants: Annotated[
         Path | None,
-        typer.Option(help="The variants file written by 'dynsolve variants'.", show_default=False),
+        typer.Option(
+            help="The variants file written by 'dynsolve variants'.",
+            show_default=False,
+            metavar="FILE",
+        ),
     ] = None,
 ) -> None:
     """Solve one spec and show its unit-checked derivation.
@@ -273,20 +281,29 @@ class UnitsChoice(enum.StrEnum):
 
 @app.command("variants")
 def variants_command(
-    file: Annotated[Path, typer.Argument(help="The .dyn spec with a vary: section.")],
-    roster: Annotated[Path, typer.Option(help="CSV of students (column student or id).")],
-    seed: Annotated[int, typer.Option(help="Seed: the same seed draws the same variants.")],
-    output: Annotated[Path, typer.Option("--output", "-o", help="The variants CSV to write.")],
+    file: Annotated[
+        Path, typer.Argument(help="The .dyn spec with a vary: section.", metavar="FILE")
+    ],
+    roster: Annotated[
+        Path, typer.Option(help="CSV of students (column student or id).", metavar="FILE")
+    ],
+    seed: Annotated[
+        int, typer.Option(help="Seed: the same seed draws the same variants.", metavar="N")
+    ],
+    output: Annotated[
+        Path, typer.Option("--output", "-o", help="The variants CSV to write.", metavar="FILE")
+    ],
     units: Annotated[
         UnitsChoice, typer.Option(help="si: as drawn; us: US customary; both: a twin row each.")
     ] = UnitsChoice.si,
     mode: Annotated[Mode, typer.Option(help="Solve mode for each variant.")] = Mode.exact,
 ) -> None:
-    """Draw each student's givens from the spec's vary: ranges, solve and check each one.
+    """Draw each student's givens from the spec's vary: ranges; solve and check each.
 
-    A variant whose assumptions (no slip, contact kept, ...) or checks come out otherwise
-    than the base problem's is redrawn. Reproducible: a student's variant depends only on
-    the seed and their id (docs/grading.md, "Variants").
+    A variant whose assumptions (no slip, contact kept, ...) or checks come out
+    otherwise than the base problem's is redrawn (unless vary: says 'allow
+    changes'). Reproducible: a student's variant depends only on the seed and
+    their id. Exit code 0 when written, 2 for bad input (docs/grading.md).
     """
     from dynsolve.errors import DynsolveError
     from dynsolve.grade.generate import make_variants
