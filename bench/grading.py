@@ -4,7 +4,8 @@ Draws each student's givens from the problem's ``vary:`` section (as ``dynsolve 
 does, without solving each), then times, in one process:
 
 - the one-time build: the symbolic solve with the varied givens as symbols, ``lambdify``
-  to numpy, and its check by full solves of 3 variants;
+  to numpy, and its check by full solves of a sample of variants (first, middle, last,
+  and the one nearest each condition's edge);
 - the vectorized evaluation of every student (cells read and converted, answers and
   conditions computed, per-student results built);
 - the baseline: a full solve per variant (``dynsolve solve``'s path, no rendering),
