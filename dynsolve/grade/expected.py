@@ -225,7 +225,13 @@ def _agree(a: float, b: float) -> bool:
 def per_variant(
     spec: Spec, student: str, cells: Mapping[str, str], options: SolveOptions
 ) -> StudentExpected:
-    """One student's expected answers by a full solve of their variant."""
+    """One student's expected answers by a full solve of their variant.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n")
+    >>> per_variant(spec, "s1", {"m": "3 kg"}, SolveOptions()).answers["W"].value  # 3·9.81
+    29.43
+    """
     solution = _solve(spec, student, cells, options)
     if isinstance(solution, str):
         return StudentExpected(student, {}, "per-variant", solution)

@@ -72,7 +72,12 @@ class Signature:
 
 
 def signature(solution: Solution) -> Signature:
-    """The outcome of a solve that a variant must share with its base problem."""
+    """The outcome of a solve that a variant must share with its base problem.
+
+    >>> from dynsolve.pipeline import solve_text
+    >>> signature(solve_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n"))
+    Signature(status='solved', assumptions=(), failed=())
+    """
     return Signature(
         solution.status,
         tuple((a.name, a.holds) for a in solution.assumptions),

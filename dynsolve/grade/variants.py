@@ -70,7 +70,14 @@ def read_variants(path: str | Path) -> dict[str, dict[str, str]]:
 
 def read_roster(path: str | Path) -> list[str]:
     """The student ids of a roster CSV: the column headed student/student_id/id, else the
-    first column; other columns (names, emails) are ignored."""
+    first column; other columns (names, emails) are ignored.
+
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "roster.csv"
+    >>> _ = path.write_text("name,id\\nAda,s1\\nBen,s2\\n")
+    >>> read_roster(path)
+    ['s1', 's2']
+    """
     header, rows = _read_table(path, "roster")
     lowered = [h.lower() for h in header]
     column = next((lowered.index(c) for c in ID_COLUMNS if c in lowered), 0)

@@ -152,7 +152,7 @@ class _Phase:
 
 def _solved_outputs(
     problem: Any, chosen: set[sympy.Symbol], exprs: list[sympy.Expr], options: SolveOptions
-) -> Callable[[object], int]:
+) -> _Outputs:
     """Solve ``problem`` with the ``chosen`` givens as symbols; return a function that adds an
     expression of its unknowns, in closed form, to ``exprs`` and gives its index."""
     from dynsolve.solver import solve_system
@@ -172,20 +172,27 @@ def _solved_outputs(
         raise NotClosedForm(f"the symbolic solve ends '{outcome.status}'")
     if any(b.method == "numeric" for b in outcome.blocks):
         raise NotClosedForm("a block is solved numerically, not in closed form")
-    values = {**fixed, **outcome.values}
+    return _Outputs({**fixed, **outcome.values}, chosen, exprs)
 
-    def output(expr: object) -> int:
-        expr = (sympy.Integer(0) + expr).xreplace(values)  # type: ignore[operator]
-        if expr.free_symbols - chosen:
-            others = ", ".join(sorted(str(s) for s in expr.free_symbols - chosen))
+
+@dataclass(frozen=True)
+class _Outputs:
+    """Adds expressions of one solve's unknowns, in closed form, to the compiled outputs."""
+
+    values: Mapping[sympy.Symbol, Any]  # the solve: knowns (varied ones symbolic), unknowns
+    chosen: set[sympy.Symbol]
+    exprs: list[sympy.Expr]
+
+    def __call__(self, expr: object) -> int:
+        """The index of ``expr`` (in the solve's values) among the compiled outputs."""
+        expr = (sympy.Integer(0) + expr).xreplace(self.values)  # type: ignore[operator]
+        if expr.free_symbols - self.chosen:
+            others = ", ".join(sorted(str(s) for s in expr.free_symbols - self.chosen))
             raise NotClosedForm(f"an answer depends on {others}, not only on the varied givens")
         if expr.has(sympy.Piecewise, sympy.nan, sympy.zoo, sympy.oo):
             raise NotClosedForm("an answer is piecewise or not finite in closed form")
-        exprs.append(expr)
-        return len(exprs) - 1
-
-    output.values = values  # type: ignore[attr-defined]
-    return output
+        self.exprs.append(expr)
+        return len(self.exprs) - 1
 
 
 def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
@@ -350,9 +357,9 @@ def _tipping(
     return Condition(assumption.name, "within", outputs, assumption.holds)
 
 
-def _target_form(target: Any, output: Callable[[object], int], problem: Any) -> TargetForm:
+def _target_form(target: Any, output: _Outputs, problem: Any) -> TargetForm:
     """How a find is read: from the final solve, or (``trial(X)``) from the no-slip trial."""
-    values: Mapping[sympy.Symbol, Any] = output.values  # type: ignore[attr-defined]
+    values = output.values
     if target.kind not in ("signed", "rotation", "along", "vector", "magnitude"):
         raise NotClosedForm(f"{target.name} ({target.kind}) is answered per variant")
     if target.vector is not None:
@@ -371,7 +378,7 @@ def _target_form(target: Any, output: Callable[[object], int], problem: Any) -> 
     return TargetForm(target.name, target.kind, target.unit, target.dim, outputs, axis)
 
 
-def given_arrays(
+def _given_arrays(
     form: ClosedForm, rows: Sequence[Mapping[str, str]]
 ) -> tuple[list[np.ndarray], dict[int, str]]:
     """Each varied given's values over the rows, in base units; rows whose cells cannot be
@@ -407,7 +414,7 @@ def given_arrays(
 
 def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
     """Every row at once (see the module docstring for the rows it leaves to a full solve)."""
-    arrays, errors = given_arrays(form, rows)
+    arrays, errors = _given_arrays(form, rows)
     n = len(rows)
     with np.errstate(all="ignore"):
         raw = [np.broadcast_to(_real(v), (n,)) for v in form.function(*arrays)]
