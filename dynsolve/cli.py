@@ -66,6 +66,7 @@ class _Target:
     width: int
     terminal: bool
     colours: str | None
+    layout: str = "full"  # LaTeX and Markdown: full, handout or key
 
 
 @dataclass(frozen=True)
@@ -127,7 +128,10 @@ def _version(value: bool) -> None:
 @app.callback()
 def main_callback(
     version: Annotated[
-        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")
+        bool,
+        typer.Option(
+            "--version", callback=_version, is_eager=True, help="Show the version.", metavar=""
+        ),
     ] = False,
 ) -> None:
     """Solve and check engineering-dynamics problems written as plain-text .dyn specs.
@@ -167,6 +171,21 @@ def solve(
     mode: Annotated[
         Mode, typer.Option(help="exact: rationals and formulas; numeric: floating point.")
     ] = Mode.exact,
+    handout: Annotated[
+        bool,
+        typer.Option(
+            "--handout",
+            metavar="",
+            help="LaTeX/Markdown/PDF: the sheet a teacher hands out (no answer key, checks "
+            "or file name).",
+        ),
+    ] = False,
+    key: Annotated[
+        bool,
+        typer.Option(
+            "--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks.", metavar=""
+        ),
+    ] = False,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
     variant: Annotated[
@@ -194,6 +213,9 @@ def solve(
     memory budget (the whole run: parsing, solving, checks and output).
     """
     chosen = format or _format_of(output)
+    if handout and key:
+        _fail("--handout and --key are two different sheets", "choose one of them")
+    layout = "handout" if handout else "key" if key else "full"
     if output is not None and file != "-":
         _refuse_overwriting_input(Path(file), output)
     elif output is not None:
@@ -204,7 +226,7 @@ def solve(
     width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
     rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
-    target = _Target(rendered, output is None, width, terminal, colours)
+    target = _Target(rendered, output is None, width, terminal, colours, layout)
     job = (source, mode.value, budget, target, cells)
     outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
@@ -468,7 +490,7 @@ def _render(solution: Solution, target: _Target) -> str:
     from dynsolve.render import renderer
 
     if target.format != OutputFormat.text or not target.to_terminal:
-        return renderer(target.format)(solution)
+        return renderer(target.format, target.layout)(solution)  # type: ignore[arg-type]
     import io
 
     from dynsolve.render.terminal import solution_renderable

@@ -40,6 +40,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 from dynsolve.solver import solve_system
 from dynsolve.solver.outcome import Outcome
@@ -51,6 +52,7 @@ from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
+NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
 
 
 class SolvableProblem(Protocol):
@@ -119,12 +121,15 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     trial: Mapping[sympy.Symbol, sympy.Expr] = {}
     trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
     failed: tuple[Assumption, ...] = ()
+    trials: list[tuple[SolvableProblem, Outcome, tuple[Assumption, ...]]] = []
     slipping: dict[str, int] = {}
     for _ in range(RESOLVES):  # a slide contradicted, then a stick that slips the other way
         if not slips or slips.items() <= slipping.items():
             break
         trial = trial or outcome.values
-        failed += tuple(a for a in assumptions if _resolved(a))
+        rejected = tuple(a for a in assumptions if _resolved(a))
+        trials.append((problem, outcome, rejected))
+        failed += rejected
         slipping |= slips
         problem = build_scene_problem(spec, slipping)
         problem = replace(
@@ -137,7 +142,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         outcome = solve_system(problem.system, options)
         assumptions, slips = assess(problem, outcome.values)
     assumptions = failed + assumptions
-    return solve_problem(
+    solution = solve_problem(
         problem,
         options,
         outcome,
@@ -145,6 +150,39 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         assumptions,
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values),
+    )
+    shown = tuple(_trial(*each, outcome, options) for each in trials)
+    return replace(solution, trials=shown) if shown else solution
+
+
+def _trial(
+    problem: SolvableProblem,
+    outcome: Outcome,
+    rejected: tuple[Assumption, ...],
+    final: Outcome,
+    options: SolveOptions,
+) -> Trial:
+    """A rejected trial as the derivation shows it, with a remark for each unknown whose
+    sign the re-solve reversed (α turning the other way once the wheel slips)."""
+    view = _View(problem, outcome, {}, options)
+    steps = tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1))
+    after = {symbol.name: value for symbol, value in final.values.items()}
+    remarks = []
+    for symbol, value in outcome.values.items():
+        before_value, after_value = real_value(value), real_value(after.get(symbol.name, 0))
+        if before_value and after_value and (before_value > 0) != (after_value > 0):
+            before_text = view.shown(symbol.name, value)[0]
+            after_text = view.shown(symbol.name, after[symbol.name])[0]
+            remarks.append(
+                f"{pretty(symbol.name)} changes sign: {before_text} in the trial, "
+                f"{after_text} after the re-solve"
+            )
+    return Trial(
+        " and ".join(a.name for a in rejected),
+        view.equation_rows(),
+        steps,
+        "; ".join(a.detail for a in rejected),
+        tuple(remarks),
     )
 
 
@@ -358,6 +396,7 @@ class _View:
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
+            numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
                     name=symbol.name,
@@ -365,6 +404,8 @@ class _View:
                     formula_latex=self.latex(formula) if show_formula else "",
                     value=value_text,
                     value_latex=value_latex,
+                    substituted=numbers[0] if numbers else "",
+                    substituted_latex=numbers[1] if numbers else "",
                 )
             )
         discarded = tuple(
@@ -381,6 +422,31 @@ class _View:
             discarded=discarded,
             note=block.note,
         )
+
+    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+        """(text, latex) of ``formula`` with every symbol replaced by its number in base
+        units, unevaluated, as a hand calculation writes it; None where a symbol has no
+        number (a symbolic problem) or the formula is a bare symbol."""
+        if isinstance(formula, sympy.Symbol):
+            return None
+        values = {**self.knowns, **self.outcome.values}
+        names: dict[sympy.Symbol, str] = {}
+        for symbol in formula.free_symbols:
+            number = real_value(values[symbol]) if symbol in values else None
+            if number is None:
+                return None
+            text = sig(number, 4)
+            if "." in text and "e" not in text:
+                text = text.rstrip("0").rstrip(".")
+            names[symbol] = f"({text})" if text.startswith("-") else text
+        # placeholders sort as the symbols do, so the terms keep the formula's order
+        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
+        shown = formula.xreplace(placeholders)
+        text = sympy.sstr(shown).replace("**", "^")
+        latex = sympy.latex(shown, symbol_names={placeholders[s]: n for s, n in names.items()})
+        for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
+            text = text.replace(placeholders[symbol].name, names[symbol])
+        return text, latex
 
     def computed(self, name: str) -> sympy.Expr | None:
         target = next((t for t in self.problem.targets if t.name == name), None)
@@ -604,8 +670,15 @@ class _View:
             return Check("structure", False, "no root satisfies the constraints")
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
-        unknowns = len(self.problem.system.unknowns)
-        detail = f"{_count(unknowns, 'unknown')} from {_count(len(lines), 'equation')}"
+        unknowns = [pretty(s.name) for s in self.problem.system.unknowns]
+        named = ", ".join(unknowns[:NAMED_UNKNOWNS]) + (
+            ", …" if len(unknowns) > NAMED_UNKNOWNS else ""
+        )
+        detail = (
+            f"{_count(len(unknowns), 'unknown')} ({named}) from {_count(len(lines), 'equation')}"
+            if unknowns
+            else f"no unknowns; {_count(len(lines), 'equation')}"
+        )
         if outcome.redundant:
             detail += "; redundant and consistent: " + ", ".join(
                 lines[i] for i in outcome.redundant

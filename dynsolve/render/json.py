@@ -49,6 +49,7 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         "assumptions": [asdict(a) for a in solution.assumptions],
         "messages": list(solution.messages),
         "warnings": list(solution.warnings),
+        "trials": [asdict(trial) for trial in solution.trials],
         "schema": SCHEMA_VERSION,
     }
 

@@ -21,7 +21,16 @@ from rich.text import Text
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import pretty
-from dynsolve.results import Assumption, Check, FreeBody, KeyComparison, Solution, Step
+from dynsolve.results import (
+    Assumption,
+    Check,
+    EquationRow,
+    FreeBody,
+    KeyComparison,
+    Solution,
+    Step,
+    Trial,
+)
 
 WIDTH = 100
 STEP_INDENT = 5  # columns before a step's results
@@ -55,6 +64,8 @@ def solution_renderable(solution: Solution) -> RenderableType:
         parts += [_heading("Given"), _givens(solution)]
     if solution.free_body:
         parts += [_heading("Free-body diagrams"), *(_free_body(b) for b in solution.free_body)]
+    for trial in solution.trials:
+        parts += [_heading(f"Trial: {trial.assumption} (assumed, then checked)"), _trial(trial)]
     parts += [_heading("Equations (units checked)"), _equations(solution)]
     if solution.steps:
         parts += [_heading("Solve order"), *(_step(s) for s in solution.steps)]
@@ -108,8 +119,12 @@ def _givens(solution: Solution) -> Table:
 
 
 def _equations(solution: Solution) -> Table:
+    return _equation_table(solution.equations)
+
+
+def _equation_table(equations: tuple[EquationRow, ...]) -> Table:
     table = _table("line", "equation", "units", "principle")
-    for e in solution.equations:
+    for e in equations:
         mark = Text("✓ ", style="green") if e.dimension_ok else Text("✗ ", style="red")
         kind = " (constraint)" if e.constraint else ""
         table.add_row(
@@ -118,12 +133,23 @@ def _equations(solution: Solution) -> Table:
     return table
 
 
+def _trial(trial: Trial) -> RenderableType:
+    """A rejected trial: its equations, its solve, the failed check and the remarks."""
+    rows: list[RenderableType] = [_equation_table(trial.equations)]
+    rows += [_step(s) for s in trial.steps]
+    rows.append(Text(f"✗ {trial.verdict}", style="bold red"))
+    rows += [Text(f"remark: {r}", style="yellow") for r in trial.remarks]
+    return Group(*rows)
+
+
 def _step(step: Step) -> RenderableType:
     unknowns = and_list([pretty(u) for u in step.unknowns])
     head = Text(f"{step.index}. {lines_phrase(step.lines)} {unknowns} ({step.method})")
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
+        if result.substituted:
+            formula += f" = {result.substituted}"
         rows.append(Text(f"{pretty(result.name)}{formula} = ") + Text(result.value, style="bold"))
     for discarded in step.discarded:
         rows.append(Text(f"discarded {discarded}", style="yellow"))
