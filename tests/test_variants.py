@@ -404,3 +404,14 @@ def test_any_cell_is_read_or_refused_with_the_student_named(text: str) -> None:
         with_variant(spec, {"m_b": text}, "s9")
     except (VariantError, UnitError) as error:
         assert "student s9" in error.message
+
+
+def test_the_example_class_variants_file_is_what_its_command_writes(tmp_path: Path) -> None:
+    # examples/grading/README.md gives the command; the same seed must write the same file
+    folder = DRUM.parent
+    out = tmp_path / "variants.csv"
+    args = ["variants", str(DRUM), "--roster", str(folder / "roster.csv"), "--seed", "2026"]
+    result = runner.invoke(app, [*args, "-o", str(out)])
+    assert result.exit_code == ExitCode.OK, result.output
+    assert out.read_text() == (folder / "variants.csv").read_text()
+    assert len(read_variants(out)) == 30
