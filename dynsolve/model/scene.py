@@ -178,6 +178,9 @@ class Travel:
     ``kind`` is "to" (G reaches ``position``), "by" (G moves ``distance`` along
     ``direction``), "turns" (it turns through ``angle``, ccw positive) or "for" (the
     scene moves for ``duration``); ``stops`` says it is at rest in state 2.
+    ``until`` names the event that ends it: "rolls" (an interval that ends when the
+    sliding contact stops slipping), "slack" (the cord or link ``until_name`` goes slack)
+    or "lost" (the particle leaves its circular surface); kind "until" has no extent given.
     """
 
     body: str
@@ -190,6 +193,8 @@ class Travel:
     stops: bool = False
     line: int = 0
     column: int = 0
+    until: str = ""
+    until_name: str = ""
 
 
 @dataclass(frozen=True)
@@ -1024,6 +1029,18 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
     """A travel line: to a position, by a distance along a direction, or through an angle."""
     stops = any(p.key == "stops" for p in stmt.props)
     line, column = stmt.line, stmt.column
+    until = next((p for p in stmt.props if p.key == "until"), None)
+    if until is not None and stmt.word not in ("for", "until"):
+        raise SpecError(
+            f"'until {until.word}' ends an interval: it goes on a 'for' line",
+            builder.where(until.line, until.column),
+            hint=f"write 'travel {stmt.body}: for t_1, until {until.word}' and find t_1",
+        )
+    if stmt.word == "until":
+        assert until is not None
+        builder.body(stmt.body, stmt.line, stmt.column)
+        return Travel(stmt.body, "until", line=line, column=column, until=until.word,
+                      until_name=until.about)  # fmt: skip
     if stmt.body not in links:
         body = builder.body(stmt.body, stmt.line, stmt.column)
     elif stmt.word not in ("cw", "ccw"):
@@ -1035,7 +1052,8 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
     if stmt.word == "for":
         assert stmt.value is not None
         duration = builder.value(stmt.value, Dim(0, 0, 1), "a duration")
-        return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column)
+        return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column,
+                      until=until.word if until else "")  # fmt: skip
     if stmt.vectors:
         position = builder.vector(stmt.vectors[0], "a position")
         return Travel(stmt.body, "to", position=position, stops=stops, line=line, column=column)

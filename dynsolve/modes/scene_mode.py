@@ -262,6 +262,8 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
         ):
             extent = stmt.kind == "travel" and stmt.word == ""  # a distance may be 0
             sign = {"nonnegative": True} if extent else {"positive": True}
+            if any(p.key == "until" for p in stmt.props):
+                sign = {"real": True}  # its sign is checked: the event comes after the start
             found[sympy.Symbol(value.text, **sign)] = dim
     return found
 
@@ -275,10 +277,15 @@ def _stopping_distances(spec: Spec) -> list[object]:
         stmt.value
         for stmt in spec.scene
         if stmt.kind == "travel"
-        and stmt.word == ""
-        and stmt.direction is not None
         and isinstance(stmt.value, Name)
-        and any(p.key == "stops" for p in stmt.props)
+        and (
+            (
+                stmt.word == ""
+                and stmt.direction is not None
+                and any(p.key == "stops" for p in stmt.props)
+            )
+            or (stmt.word == "for" and any(p.key == "until" for p in stmt.props))
+        )
     ]
 
 
@@ -527,6 +534,15 @@ def _quantity(
                 hint=f"add 'travel {body}: to (x, y)'",
             )
         return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
+    if function == "distance" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.displacements:
+            raise SpecError(
+                f"{body} does not move over an interval",
+                where,
+                hint=f"distance(B) is how far G moves over 'travel {body}: for t, …'",
+            )
+        return target("vector", Dim.of("length"), vector=formulation.displacements[body])
     if function in ("a_max", "a_min") and len(args) == 1:
         if args[0] not in scene.movers or args[0] in scene.bodies:
             raise SpecError(
@@ -784,6 +800,13 @@ def assess(
         return chain_assumptions(scene, formulation, substitution), slips
     if scene.travels and not formulation.reactions:
         return _between_states(problem, substitution), slips
+    checks += _event_checks(formulation, substitution)
+    sliding_until = {
+        s.name
+        for s in scene.supports
+        for t in scene.travels.values()
+        if t.until == "rolls" and s.body == t.body and s.kind == "contact" and not s.smooth
+    }
     for support in scene.supports:
         if support.kind == "pin":
             continue
@@ -807,6 +830,8 @@ def assess(
                 checks.append(slide)
                 if not slide.holds and "re-solved" in slide.detail:
                     slips[support.name] = 0
+        elif support.name in sliding_until:
+            pass  # kinetic friction until it rolls: checked by the event's time
         elif friction_name in formulation.reactions and N is not None:
             check = _no_slip(support, formulation.reactions[friction_name][0], N, substitution)
             if check is not None:
@@ -835,6 +860,23 @@ def assess(
                 )
             )
     return tuple(checks), slips
+
+
+def _event_checks(
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """Each until event comes after the start: its time (or turn) is positive."""
+    checks = []
+    for name, value, detail in formulation.events:
+        number = real_value(value, substitution)
+        if number is None:
+            continue
+        holds = number > 0
+        text = detail.format(value=number)
+        if not holds:
+            text += ": it would have to happen before the start, so it never happens"
+        checks.append(Assumption(name, holds, text))
+    return checks
 
 
 def _held_at_rest(scene: Scene, checks: list[Assumption]) -> tuple[Assumption, ...]:

@@ -90,6 +90,9 @@ class Formulation:
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     states: tuple[State, ...] = ()  # the motion at each numbered state of a chain of stages
     stages: tuple[StageRecord, ...] = ()  # what each stage found, in order
+    displacements: Mapping[str, Vec] = field(default_factory=dict)  # Δr_G over an interval
+    # until events: (what, detail, value to check > 0 or None, its meaning)
+    events: tuple[tuple[str, sympy.Expr, str], ...] = ()
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:
