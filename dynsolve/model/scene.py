@@ -260,6 +260,7 @@ class Scene:
     assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
     events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
+    paths: Mapping[str, Path] = field(default_factory=dict)  # fixed paths, by name
 
 
 class _Builder:
@@ -734,6 +735,7 @@ def build_scene(
         impacts=tuple(impacts),
         travels=travels,
         movers=movers,
+        paths=paths,
         pivots=tuple(pivots),
         assumptions=tuple(assumptions),
         values=builder.given_values,

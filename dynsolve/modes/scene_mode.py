@@ -82,6 +82,10 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             from dynsolve.principles.impact import pivot_formulation
 
             formulation = pivot_formulation(scene, given_values)
+        elif any(t.kind == "until" for t in scene.travels.values()):
+            from dynsolve.principles.until import until_formulation
+
+            formulation = until_formulation(scene, symbols)
         elif any(t.kind == "for" for t in scene.travels.values()):
             from dynsolve.principles.impulse_momentum import impulse_formulation
 
@@ -95,7 +99,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         if (
             scene.travels
             and not staged
-            and not any(t.kind == "for" for t in scene.travels.values())
+            and not any(t.kind in ("for", "until") for t in scene.travels.values())
         ):
             formulation = _with_energy(formulation, scene, symbols, given_values)
     except ValueError as exc:  # a stage's error names its line
@@ -130,6 +134,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         equations=equations,
         unknowns=tuple(formulation.unknowns) if wanted else (),
         knowns=knowns,
+        constraints=formulation.constraints if wanted else (),
         wanted=wanted,
     )
     symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
@@ -475,7 +480,7 @@ def _target(
     unit, dim = _unit(item, target.dim, spec, where)
     if item.unit is None and function in ("T", "work", "energy_lost"):
         unit = natural_unit(dim, spec.system, "E")  # an energy, not a moment
-    if target.kind == "steepest" and item.unit is None:
+    if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
 
@@ -534,6 +539,27 @@ def _quantity(
                 hint=f"add 'travel {body}: to (x, y)'",
             )
         return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
+    if function == "angle" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.turns:
+            raise SpecError(
+                f"{body} does not go round a centre until an event",
+                where,
+                hint=f"angle(B) is the angle turned by 'travel {body}: until CORD slack' "
+                "or 'until contact lost'",
+            )
+        return target("magnitude", Dim(), formulation.turns[body])
+    if function == "height" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.turns:
+            raise SpecError(
+                f"{body} does not go round a centre until an event",
+                where,
+                hint="height(B) is how far G rises (up positive) until the event",
+            )
+        assert scene.gravity is not None  # an until event needs gravity
+        up = (-scene.gravity[0], -scene.gravity[1])
+        return target("along", Dim.of("length"), formulation.heights[body], axis=up)
     if function == "distance" and len(args) == 1:
         body = _body(args[0], scene, where)
         if body not in formulation.displacements:
@@ -799,7 +825,8 @@ def assess(
 
         return chain_assumptions(scene, formulation, substitution), slips
     if scene.travels and not formulation.reactions:
-        return _between_states(problem, substitution), slips
+        events = tuple(_event_checks(formulation, substitution))
+        return _between_states(problem, substitution) + events, slips
     checks += _event_checks(formulation, substitution)
     sliding_until = {
         s.name

@@ -176,6 +176,12 @@ class _Chain:
             )
         if isinstance(event, Pivot):
             return self.pivot(stage, event)
+        if event.kind == "until":
+            raise StageError(
+                stage,
+                f"{stage.title}: 'until {event.until}' cannot be chained with other stages "
+                "yet; describe it as a scene of its own",
+            )
         if event.kind == "for":
             raise StageError(
                 stage,
