@@ -49,10 +49,18 @@ class SceneProblem:
     steps: tuple[Step, ...] = ()
     mode: str = "scene"
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
+    released: Mapping[str, str] = field(default_factory=dict)  # slack cords, lost contacts
+    released_elements: Mapping[str, object] = field(default_factory=dict)  # their models
 
 
-def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -> SceneProblem:
-    """Model the scene, write its equations and resolve the find list."""
+def build_scene_problem(
+    spec: Spec,
+    slipping: Mapping[str, int] | None = None,
+    released: Mapping[str, str] | None = None,
+) -> SceneProblem:
+    """Model the scene, write its equations and resolve the find list. ``released`` maps
+    cords found slack and contacts found lost in an earlier trial to what they were
+    ("cord", "contact"): they are left out (their force is zero)."""
     if not spec.finds:
         raise SpecError("nothing to find", Position(spec.file, 1, 1), hint="add a 'find:' line")
     givens = givens_of(spec)
@@ -67,6 +75,15 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         {g.symbol: g.value for g in givens if g.value is not None},
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
+    removed: dict[str, object] = {}
+    if released:
+        removed = {c.name: c for c in scene.cords if c.name in released}
+        removed |= {s.name: s for s in scene.supports if s.name in released}
+        scene = replace(
+            scene,
+            cords=tuple(c for c in scene.cords if c.name not in released),
+            supports=tuple(s for s in scene.supports if s.name not in released),
+        )
     rigid = any(not b.particle for b in scene.bodies.values()) or bool(scene.links)
     staged = _staged(scene, spec)
     try:
@@ -123,6 +140,13 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         )
         for s, (value, dim, meaning) in formulation.derived.items()
     ]
+    if released:  # a slack cord's tension, a lost contact's forces: zero
+        zero = sympy.Integer(0)
+        reactions = dict(formulation.reactions)
+        for name, kind in released.items():
+            names = [name] if kind == "cord" else [f"N_{name}", f"F_{name}", f"x_{name}"]
+            reactions.update({n: (zero, (zero, zero)) for n in names})
+        formulation = replace(formulation, reactions=reactions)
     targets = _targets(spec, scene, formulation, symbols, dims, givens)
     check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     wanted = _wanted(targets, formulation)
@@ -162,6 +186,8 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         rows,
         dict(slipping or {}),
         notes=notes,
+        released=dict(released or {}),
+        released_elements=removed,
     )
 
 
@@ -844,7 +870,7 @@ def assess(
                     f"contact at {support.name} kept",
                     N >= 0,
                     f"N_{support.name} = {N:.4g} {'≥' if N >= 0 else '<'} 0"
-                    + ("" if N >= 0 else ": the body leaves the surface"),
+                    + ("" if N >= 0 else f": the body leaves the surface; {RELEASED}"),
                 )
             )
         friction_name = f"F_{support.name}"
@@ -883,10 +909,68 @@ def assess(
                     f"cord {cord.name} taut",
                     T >= 0,
                     f"{cord.name} = {T:.4g} {'≥' if T >= 0 else '<'} 0"
-                    + ("" if T >= 0 else ": the cord goes slack"),
+                    + ("" if T >= 0 else f": the cord goes slack; {RELEASED}"),
                 )
             )
+    checks += _released_checks(problem, substitution)
     return tuple(checks), slips
+
+
+RELEASED = "re-solved without it (its force zero)"
+
+
+def _released_checks(
+    problem: SceneProblem, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """A cord re-solved slack must not be stretched by the motion found without it (its
+    end moves toward its anchor or the other end), and a contact re-solved lost must see
+    its point leave the surface (a_P·n ≥ 0, from rest at the instant)."""
+    from dynsolve.model.scene import Cord, Support
+
+    checks = []
+    for name, element in problem.released_elements.items():
+        if isinstance(element, Cord):
+            cord = element
+            a_1 = _accel(problem, cord.body, cord.point)
+            a_2: Vec = (sympy.Integer(0), sympy.Integer(0))
+            if cord.other and cord.other_point is not None:
+                a_2 = _accel(problem, cord.other, cord.other_point)
+            closing = real_value(
+                dot((a_1[0] - a_2[0], a_1[1] - a_2[1]), cord.direction), substitution
+            )
+            holds = closing is None or closing >= -SENSE_TOLERANCE * max(1.0, abs(closing))
+            detail = (
+                f"{name} = 0; without it, its ends do not draw apart (relative "
+                f"acceleration along it {0.0 if closing is None else closing:.4g} toward the "
+                "anchor)"
+            )
+            if not holds:
+                detail = f"{name} = 0, but without it the motion would stretch it: neither holds"
+            checks.append(Assumption(f"cord {name} slack", holds, detail))
+        else:
+            assert isinstance(element, Support)
+            support = element
+            a_P = _accel(problem, support.body, support.point)
+            away = real_value(dot(a_P, support.normal), substitution)
+            holds = away is None or away >= -SENSE_TOLERANCE * max(1.0, abs(away))
+            detail = (
+                f"N_{name} = 0; without the contact its point accelerates away from the "
+                f"surface at {0.0 if away is None else away:.4g}"
+            )
+            if not holds:
+                detail = f"N_{name} = 0, but without it the body would move into the surface"
+            checks.append(Assumption(f"contact at {name} lost", holds, detail))
+    return checks
+
+
+def _accel(problem: SceneProblem, body: str, point: Vec) -> Vec:
+    """The acceleration of a body's point at the instant (zero for no equations of motion)."""
+    from dynsolve.principles.newton_euler import point_acceleration
+
+    kin = problem.formulation.kinematics.get(body)
+    if kin is None:
+        return (sympy.Integer(0), sympy.Integer(0))
+    return point_acceleration(kin, problem.scene.bodies[body].G, point)
 
 
 def _event_checks(
