@@ -432,6 +432,14 @@ class _View:
                     self.options,
                 )
             return self.thresholds[contact]
+        if target.kind == "threshold":
+            from dynsolve.thresholds import threshold
+
+            assert target.expr is not None
+            key = sympy.srepr(target.expr)
+            if key not in self.thresholds:
+                self.thresholds[key] = threshold(self.problem, target.expr, self.options)
+            return self.thresholds[key]
         values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
         if target.vector is not None:
             x, y = (sympy.Integer(0) + c for c in target.vector)

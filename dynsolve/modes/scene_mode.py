@@ -415,6 +415,8 @@ def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[symp
         exprs = [target.expr] if target.expr is not None else []
         if target.kind == "steepest":  # needs the friction's sense in the solved scene
             exprs = [formulation.reactions[f"F_{target.expr}"][0]]
+        if target.kind == "threshold":  # solved apart, with its load as a letter
+            exprs = []
         if target.vector is not None:
             exprs += list(target.vector)
         for expr in exprs:
@@ -547,6 +549,12 @@ def _quantity(
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
         kind, dim, expr, vector = stage_quantity(function, args, scene, formulation, where)
         return target(kind, dim, expr, vector=vector)
+    from dynsolve.thresholds import THRESHOLDS, threshold_target
+
+    if function in THRESHOLDS:
+        expr = threshold_target(function, args, scene, formulation, symbols, where)
+        load = expr.args[1]
+        return target("threshold", dims.get(load.name, Dim.of("force")), expr)
     if function == "steepest":
         support = next((s for s in scene.supports if s.name == (args or ("",))[0]), None)
         if support is None or support.mu_s is None or scene.gravity is None:
