@@ -205,7 +205,8 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
-    return len(events) > 1 or ground or bool(events and (asked & set(STAGE_FUNCTIONS) or at_state))
+    stage_functions = {*STAGE_FUNCTIONS, "V", "F_avg"}
+    return len(events) > 1 or ground or bool(events and (asked & stage_functions or at_state))
 
 
 def _targets(
@@ -506,7 +507,7 @@ def _target(
         function, args, trial = args[0], (), True
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
-    if item.unit is None and function in ("T", "work", "energy_lost"):
+    if item.unit is None and function in ("T", "work", "energy_lost", "V"):
         unit = natural_unit(dim, spec.system, "E")  # an energy, not a moment
     if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
@@ -543,7 +544,21 @@ def _quantity(
     def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
         return Target(name, symbol, dim, "", False, False, kind, expr, **extra)  # type: ignore[arg-type]
 
-    from dynsolve.stage_finds import STAGE_FUNCTIONS, stage_quantity
+    from dynsolve.stage_finds import STAGE_FUNCTIONS, potential_energy, stage_quantity
+
+    if function == "V" and not formulation.states:  # the scene as described
+        bodies = (_body(args[0], scene, where),) if args else tuple(scene.bodies)
+        g = symbols.get("g", sympy.Symbol("g", positive=True))
+        return target("signed", Dim(2, 1, -2), potential_energy(scene, bodies, g))
+    if function == "V" and len(args) <= 2 and args:
+        return target(
+            "signed", Dim(2, 1, -2), stage_quantity("V", args, scene, formulation, where)[2]
+        )
+    if function == "power":
+        return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
+    if function == "F_avg":
+        kind, dim, vector = _average_force(args, scene, formulation, symbols, dims, where)
+        return target(kind, dim, vector=vector)
 
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
@@ -687,6 +702,66 @@ def _quantity(
         f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
     )
     raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def _power(
+    args: tuple[str, ...], scene: Scene, formulation: Formulation, where: Position
+) -> sympy.Expr:
+    """P = F·v_P of a force (or M ω of a couple) at the instant."""
+    if len(args) != 1 or not formulation.kinematics:
+        raise SpecError(
+            "power(F) is the power of one force or couple at the instant",
+            where,
+            hint="write power(P) in a scene without travels or impacts",
+        )
+    name = args[0]
+    for body, forces in formulation.forces.items():
+        kin = formulation.kinematics.get(body)
+        if kin is None:
+            continue
+        G = scene.bodies[body].G
+        v_G = scene.velocities.get(body, (sympy.Integer(0), sympy.Integer(0)))
+        for force in forces:
+            if force.name == name:
+                r = (force.point[0] - G[0], force.point[1] - G[1])
+                v_P = (v_G[0] - kin.omega * r[1], v_G[1] + kin.omega * r[0])
+                return tidy(force.magnitude * dot(force.direction, v_P))
+        for couple in formulation.couples.get(body, ()):
+            if couple.name == name:
+                return tidy(couple.moment * kin.omega)
+    names = sorted(
+        {f.name for fs in formulation.forces.values() for f in fs}
+        | {c.name for cs in formulation.couples.values() for c in cs}
+    )
+    close = difflib.get_close_matches(name, names, n=1)
+    hint = f"did you mean '{close[0]}'?" if close else "forces: " + ", ".join(names)
+    raise SpecError(f"'{name}' is not a force or couple of the scene", where, hint)
+
+
+def _average_force(
+    args: tuple[str, ...],
+    scene: Scene,
+    formulation: Formulation,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+    where: Position,
+) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr]]:
+    """F_avg(B, t_c [, k]) = impulse(B [, k]) / t_c over a given contact time."""
+    from dynsolve.stage_finds import stage_quantity
+
+    if len(args) not in (2, 3) or args[1] not in symbols:
+        raise SpecError(
+            "F_avg takes the body and the contact time: F_avg(B, t_c) or F_avg(B, t_c, k)",
+            where,
+            hint="t_c is a given time, e.g. t_c = 0.002 s",
+        )
+    if dims.get(args[1]) != Dim(0, 0, 1):
+        raise SpecError(f"'{args[1]}' is not a time", where, hint="give the contact time in s")
+    impulse_args = (args[0], *args[2:])
+    _, _, _, vector = stage_quantity("impulse", impulse_args, scene, formulation, where)
+    assert vector is not None
+    t_c = symbols[args[1]]
+    return "vector", Dim.of("force"), (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
 
 
 def steepest(
