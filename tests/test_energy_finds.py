@@ -85,7 +85,7 @@ def test_power_of_forces_and_couples_on_a_rolling_disk():
 def test_potential_energy_at_the_instant_and_a_power_typo():
     # V = m g y_G = 10·9.81·0.3 = 29.43 J (datum y = 0).
     assert answers(DISK.format(find="V = V(disk)"))["V"].value == pytest.approx(29.43)
-    with pytest.raises(SpecError, match="is not a force or couple of the scene .hint: forces: F_C, M, N_C, P, W"):
+    with pytest.raises(SpecError, match=r"not a force or couple .*forces: F_C, M, N_C, P, W"):
         answers(DISK.format(find="p = power(Q)"))
 
 
