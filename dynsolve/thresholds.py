@@ -47,6 +47,9 @@ def threshold_target(
         raise SpecError(f"{function} takes two names", where, hint="e.g. " + _WHAT[function])
     element, load = args
     supports = {s.name: s for s in scene.supports}
+    shared = [s.name for s in scene.supports if s.at == element]
+    if element not in supports and len(shared) == 1:  # G for the one renamed G_A
+        element = shared[0]
     ok = {
         "tips": element in supports and supports[element].kind == "base",
         "slips": element in supports

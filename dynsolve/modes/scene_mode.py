@@ -91,6 +91,8 @@ def build_scene_problem(
             from dynsolve.principles.stage_chain import chain_formulation
 
             formulation = chain_formulation(scene, symbols, given_values)
+            if _single_travel(scene, rigid):  # the state-1 reactions are asked too
+                formulation = _with_instant(formulation, formulate(scene, symbols, slipping))
         elif scene.impacts:
             from dynsolve.principles.impact import impact_formulation
 
@@ -191,11 +193,51 @@ def build_scene_problem(
     )
 
 
+def _single_travel(scene: Scene, rigid: bool) -> bool:
+    """A lone particle's single travel (to or by), whose scene as described is also an
+    instant: its Newton–Euler equations give the reactions at state 1."""
+    from dynsolve.model.scene import Travel
+
+    events = scene.events
+    return (
+        len(events) == 1
+        and isinstance(events[0], Travel)
+        and events[0].kind in ("to", "by")
+        and not rigid
+        and not scene.movers
+    )
+
+
+def _with_instant(chain: Formulation, instant: Formulation) -> Formulation:
+    """The Newton–Euler equations of state 1, then the stage's equations (renumbered)."""
+    from dynsolve.system import Equation
+
+    n = len(instant.equations)
+    shifted = tuple(
+        Equation(e.lhs, e.rhs, f"eq. {n + k}", n + k, e.note)
+        for k, e in enumerate(chain.equations, start=1)
+    )
+    stages = tuple(replace(r, equations=tuple(i + n for i in r.equations)) for r in chain.stages)
+    return replace(
+        chain,
+        equations=instant.equations + shifted,
+        unknowns={**instant.unknowns, **chain.unknowns},
+        forces=instant.forces,
+        couples=instant.couples,
+        kinematics=instant.kinematics,
+        moment_points=instant.moment_points,
+        reactions=instant.reactions,
+        kinetic=instant.kinetic,
+        derived={**instant.derived, **chain.derived},
+        stages=stages,
+    )
+
+
 def _staged(scene: Scene, spec: Spec) -> bool:
     """Whether the scene is followed through stages: several travel or impact lines, an
     impact with the ground, or a find that needs the states (T, work, …)."""
     from dynsolve.derived import called_functions
-    from dynsolve.model.scene import GROUND
+    from dynsolve.model.scene import GROUND, Impact
     from dynsolve.stage_finds import STAGE_FUNCTIONS
 
     events = scene.events
@@ -206,7 +248,13 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
     stage_functions = {*STAGE_FUNCTIONS, "V", "F_avg"}
-    return len(events) > 1 or ground or bool(events and (asked & stage_functions or at_state))
+    impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
+    return (
+        len(events) > 1
+        or ground
+        or impacts
+        or bool(events and (asked & stage_functions or at_state))
+    )
 
 
 def _targets(
@@ -571,7 +619,7 @@ def _quantity(
         load = expr.args[1]
         return target("threshold", dims.get(load.name, Dim.of("force")), expr)
     if function == "steepest":
-        support = next((s for s in scene.supports if s.name == (args or ("",))[0]), None)
+        support = _support_named((args or ("",))[0], scene, where, rough=True)
         if support is None or support.mu_s is None or scene.gravity is None:
             raise SpecError(
                 "steepest(C) needs a contact C with mu_s, and gravity",
@@ -897,6 +945,26 @@ def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:
     )
 
 
+def _support_named(name: str, scene: Scene, where: Position, rough: bool = False) -> object:
+    """The support named ``name``; a point name shared by several bodies' supports
+    (``contact A at G`` and ``contact B at G`` are ``G_A`` and ``G_B``) finds the one of
+    them that fits (rough, when ``rough``), else says which names to use."""
+    exact = next((s for s in scene.supports if s.name == name), None)
+    if exact is not None:
+        return exact
+    shared = [s for s in scene.supports if s.at == name]
+    fitting = [s for s in shared if not rough or s.mu_s is not None]
+    if len(fitting) == 1:
+        return fitting[0]
+    if len(fitting) > 1:
+        raise SpecError(
+            f"several supports are at {name}",
+            where,
+            hint="name one: " + ", ".join(s.name for s in fitting),
+        )
+    return None
+
+
 def _body(name: str, scene: Scene, where: Position) -> str:
     if name not in scene.bodies:
         close = difflib.get_close_matches(name, list(scene.bodies), n=1)
@@ -932,7 +1000,10 @@ def assess(
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions
 
-        return chain_assumptions(scene, formulation, substitution), slips
+        chained = chain_assumptions(scene, formulation, substitution)
+        if not formulation.kinematics:
+            return chained, slips
+        checks += chained  # a single travel: its state 1 is checked as an instant too
     if scene.travels and not formulation.reactions:
         events = tuple(_event_checks(formulation, substitution))
         return _between_states(problem, substitution) + events, slips
@@ -1359,10 +1430,13 @@ def free_bodies(
             )
             if magnitude is not None and magnitude < 0:
                 dx, dy = -dx, -dy
+            kind = force.kind
+            if force.kind == "friction" and force.known:  # as the equations write it
+                kind = f"friction = μk N_{force.name[2:]}"
             rows.append(
                 ForceRow(
                     force.name,
-                    force.kind,
+                    kind,
                     force.point_name or "P",
                     x,
                     y,
