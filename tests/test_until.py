@@ -106,6 +106,36 @@ def test_energy_bookkeeping_across_the_slide(v, w, mu):
     assert v2 == pytest.approx(w2 * r, rel=1e-9)  # it rolls at the end
 
 
+def test_a_bowling_ball_thrown_without_spin_rolls_at_five_sevenths_of_its_speed():
+    # Solid sphere, I_G = 2 m r²/5, no omega line (no spin at release): a = −μ g,
+    # α = −5 μ g/(2 r); the slip v + ω r falls at 3.5 μ g: t = v_1/(3.5 μ g) and
+    # v_2 = v_1 − μ g t = 5 v_1/7 (Hibbeler's bowling-ball result; hand derivation).
+    text = DISK.format(m=7, r=0.11, v=6, w=0, mu=0.1, find="t_1, v = speed(disk)",
+                       shape="sphere", sense="ccw")  # fmt: skip
+    text = text.replace("  omega disk: omega_1 ccw\n", "").replace("  omega_1 = 0 rad/s\n", "")
+    got = answers(solve_text(text, "ball.dyn"))
+    assert got["t_1"].value == pytest.approx(6 / (3.5 * 0.1 * G), rel=1e-9)
+    assert got["v"].value == pytest.approx(6 * 5 / 7, rel=1e-9)
+
+
+def test_a_ball_that_never_stops_slipping_fails_its_check():
+    # Gravity at −130° makes the floor a 40° slope falling to the left; the disk slides down
+    # it (left) without spin. Slip v + ω r: a = −g sin 40° + μ g cos 40°, α r = 2 μ g cos 40°,
+    # so d(slip)/dt = −g (sin 40° − 3 μ cos 40°) < 0 for μk = 0.05 < (1/3) tan 40°: the
+    # slip (negative) grows, the time at which it would roll comes out negative, the check
+    # fails and the exit is not 0 (hand derivation).
+    text = DISK.format(m=10, r=0.3, v=2, w=0, mu=0.05, find="t_1", shape="disk", sense="ccw")
+    text = text.replace("  gravity\n", "  gravity: angle phi\n").replace(
+        "  mu_k = 0.05\n", "  mu_k = 0.05\n  phi = -130 deg\n"
+    )
+    text = text.replace("velocity disk: v_1, right", "velocity disk: v_1, left")
+    text = text.replace("  omega disk: omega_1 ccw\n", "")
+    solution = solve_text(text, "slope.dyn")
+    event = next(a for a in solution.assumptions if a.name.startswith("slides until"))
+    assert not event.holds and "never happens" in event.detail
+    assert not solution.passed
+
+
 def test_a_disk_already_rolling_is_refused_with_its_line():
     with pytest.raises(SpecError, match="already rolls") as error:
         disk("t_1", v=3, w=10, sense="cw")

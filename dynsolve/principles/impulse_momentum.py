@@ -23,6 +23,7 @@ A direction (or point) with no external impulse is named: momentum is conserved 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace as replaced
 
 import sympy
 
@@ -90,6 +91,9 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
     rolls = None
     if travel.until == "rolls":
         from dynsolve.principles.until import friction_sense, sliding_contact
+
+        if travel.body not in scene.omegas:  # sliding without spin, not rolling at v_G
+            scene = replaced(scene, omegas={**scene.omegas, travel.body: sympy.Integer(0)})
 
         rolls = sliding_contact(scene, travel)
         slipping[rolls.name] = friction_sense(scene, travel, rolls)
