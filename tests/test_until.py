@@ -12,7 +12,7 @@ from dynsolve.errors import SpecError
 from dynsolve.pipeline import solve_file, solve_text
 
 G = 9.81
-PROBLEMS = Path(__file__).parent.parent / "problems" / "stages"
+PROBLEMS = Path(__file__).parent.parent / "problems" / "scenes"
 
 DISK = """\
 given:
@@ -205,7 +205,7 @@ find: theta = angle(bob), v = speed(bob)
 @pytest.mark.parametrize("L, v", [(1.0, 6.0), (0.8, 5.0), (2.0, 8.5)])
 def test_the_cord_goes_slack_where_cos_theta_is_two_thirds_less_v_squared(L, v):
     # From the bottom: T = m (v_1²/L − 2 g + 3 g cos θ) = 0 → cos θ = (2 g − v_1²/L)/(3 g),
-    # and there v² = −g L cos θ (hand derivation in problems/stages/bob_cord_slack.dyn).
+    # and there v² = −g L cos θ (hand derivation in problems/scenes/bob_cord_slack.dyn).
     got = answers(solve_text(BOB.format(L=L, v=v), "bob.dyn"))
     cos = (2 * G - v**2 / L) / (3 * G)
     assert got["theta"].value == pytest.approx(math.degrees(math.acos(cos)), rel=1e-7)
