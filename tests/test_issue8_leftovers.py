@@ -106,3 +106,46 @@ find: v = v_after(A)
     approach = next(a for a in solution.assumptions if a.name.startswith("approach"))
     assert not approach.holds
     assert not solution.passed
+
+
+# ---- a rigid body rebounding off a fixed point (e > 0)
+ROD = """\
+given:
+  m = 2 kg
+  L = 1 m
+  v_1 = 3 m/s
+  e = {e}
+scene:
+  point P: (L/2, 0)
+  body rod: mass m, rod L, at (0, 0)
+  velocity rod: v_1, down
+  impact rod at P: e e{line}
+find: v_2 = v_after(rod), omega_2 = omega_after(rod), J_P
+"""
+
+
+def test_the_bundled_rod_rebounds_off_its_ledge():
+    from pathlib import Path
+
+    from dynsolve.pipeline import solve_file
+
+    path = Path(__file__).parent.parent / "problems" / "scenes" / "rod_rebounds_off_ledge.dyn"
+    assert solve_file(path).passed
+
+
+@pytest.mark.parametrize("e", [0.0, 0.3, 0.5, 1.0])
+def test_a_smooth_rebound_loses_half_one_minus_e_squared_of_the_relative_energy(e):
+    # Effective mass at P: 1/m* = 1/m + r²/I_G = 1/2 + 0.25·6 = 2 → m* = 0.5 kg; closing speed
+    # 3 m/s: J = (1 + e) m* 3 and T1 − T2 = ½ (1 − e²) m* 3² (hand derivation).
+    got = answers(solve_text(ROD.format(e=e, line=", line down"), "rod.dyn"))
+    v2, w2, impulse = got["v_2"].value, got["omega_2"].value, got["J_P"].value
+    assert impulse == pytest.approx((1 + e) * 0.5 * 3, rel=1e-9)
+    before, after = 0.5 * 2 * 9, 0.5 * 2 * v2**2 + 0.5 * (1 / 6) * w2**2
+    assert before - after == pytest.approx(0.5 * (1 - e**2) * 0.5 * 9, abs=1e-9)
+
+
+def test_a_rebound_off_a_point_needs_its_line_and_e_at_most_one():
+    with pytest.raises(SpecError, match="needs its line of impact"):
+        solve_text(ROD.format(e=0.5, line=""), "rod.dyn")
+    with pytest.raises(SpecError, match="between 0 and 1"):
+        solve_text(ROD.format(e=1.5, line=", line down"), "rod.dyn")

@@ -169,6 +169,8 @@ class Pivot:
     point: Vec
     line: int = 0
     column: int = 0
+    e: sympy.Expr | None = None  # with ``normal``: a smooth rebound off the point
+    normal: Vec | None = None  # the line of impact at the point, from the body toward it
 
 
 @dataclass(frozen=True)
@@ -907,12 +909,29 @@ def _pivot(builder: _Builder, stmt: SceneStmt) -> Pivot:
         )
     assert stmt.value is not None
     e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
+    if stmt.direction is not None:  # a smooth rebound off the point along the line
+        value = real_value(e, builder.given_values)
+        if value is not None and not 0 <= value <= 1:
+            raise SpecError(
+                f"a coefficient of restitution is between 0 and 1, not {value:g}",
+                builder.where(stmt.line, stmt.column),
+                hint="e 0 is plastic, e 1 elastic",
+            )
+        return Pivot(
+            body.name,
+            stmt.name,
+            builder.fixed[stmt.name],
+            stmt.line,
+            stmt.column,
+            e=e,
+            normal=builder.direction(stmt.direction),
+        )
     if real_value(e, builder.given_values) != 0:
         raise SpecError(
-            "an impact about a fixed point is supported when it is plastic (e 0): the body "
-            "then turns about the point",
+            "an impact about a fixed point with e > 0 needs its line of impact: the body "
+            "rebounds off the point (smooth); with e 0 and no line it turns about the point",
             builder.where(stmt.line, stmt.column),
-            hint="write 'e 0'",
+            hint="write 'e e, line down' (from the body toward the point), or 'e 0'",
         )
     return Pivot(body.name, stmt.name, builder.fixed[stmt.name], stmt.line, stmt.column)
 

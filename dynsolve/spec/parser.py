@@ -815,8 +815,15 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
     def pivot_stmt(self, c: list[Any]) -> SceneStmt:
-        body, point, restitution = c
-        return self._stmt("pivot", body, body=str(body), name=str(point), value=restitution)
+        body, point, restitution, *line = c
+        return self._stmt(
+            "pivot",
+            body,
+            body=str(body),
+            name=str(point),
+            value=restitution,
+            direction=line[0] if line else None,
+        )
 
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
         body, other, restitution, line = c
