@@ -542,15 +542,16 @@ def _converged(
             ):
                 return True
             step = mpmath.lu_solve(jacobian(*root), mpmath.matrix(values))
-            return all(abs(step[i]) <= 1e-9 * max(1, abs(x)) for i, x in enumerate(root))
+            scale = max(abs(x) for x in root)  # relative: a root of 1e-200 is not "about 0"
+            return all(abs(step[i]) <= 1e-9 * (abs(x) or scale) for i, x in enumerate(root))
     except (ArithmeticError, ValueError, TypeError):
         return False
 
 
 def _seen(root: Sequence[object], found: list[list[mpmath.mpc | mpmath.mpf]]) -> bool:
-    """True when ``root`` equals an earlier root to about nine digits."""
+    """True when ``root`` equals an earlier root to about nine digits (relative, so scale-free)."""
     return any(
-        all(abs(a - b) <= 1e-9 * max(1, abs(a), abs(b)) for a, b in zip(root, old, strict=True))
+        all(abs(a - b) <= 1e-9 * max(abs(a), abs(b)) for a, b in zip(root, old, strict=True))
         for old in found
     )
 
@@ -558,6 +559,6 @@ def _seen(root: Sequence[object], found: list[list[mpmath.mpc | mpmath.mpf]]) ->
 def _to_sympy(x: mpmath.mpc | mpmath.mpf) -> sympy.Expr:
     """An mpmath number as a sympy Float (complex when its imaginary part is not negligible)."""
     real, imag = mpmath.re(x), mpmath.im(x)
-    if abs(imag) <= 1e-12 * max(1, abs(real)):
+    if abs(imag) <= 1e-12 * abs(real) or imag == 0:
         return sympy.Float(real, NUMERIC_DIGITS)
     return sympy.Float(real, NUMERIC_DIGITS) + sympy.I * sympy.Float(imag, NUMERIC_DIGITS)
