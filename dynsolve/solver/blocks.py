@@ -475,7 +475,7 @@ def numeric_roots(
     jacobian = mpmath_function(unknowns, sympy.Matrix(residuals).jacobian(unknowns))
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
     for start in _starting_points(residuals, len(unknowns)):
-        root = _find_root(function, jacobian, start)
+        root = _find_root(function, jacobian, start, size)
         if root is None or _seen(root, found):
             continue
         if _converged(function, size, jacobian, root):
@@ -506,20 +506,77 @@ def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float
 
 
 def _find_root(
-    function: Callable[..., list[object]], jacobian: Callable[..., object], start: list[float]
+    function: Callable[..., list[object]],
+    jacobian: Callable[..., object],
+    start: list[float],
+    size: Callable[..., list[object]] | None = None,
 ) -> list[mpmath.mpc | mpmath.mpf] | None:
-    """One mpmath ``findroot`` run (secant in 1-D, Newton with Jacobian otherwise)."""
+    """Damped Newton from ``start`` with scale-free stopping rules.
+
+    mpmath's ``findroot`` stops on an absolute residual (``MDNewton``) or an absolute step
+    (``Secant``, which also starts 0.25 from ``x0``): a problem whose residuals are 1e-27
+    stopped where it started. Here a step is accepted when it shrinks the residuals
+    relative to the size of their terms (``size``), and the search stops when a step no
+    longer moves any unknown relative to itself.
+
+    >>> import sympy
+    >>> x = sympy.Symbol("x")
+    >>> f = mpmath_function([x], [x**2 - sympy.Float("1e-400")])
+    >>> J = mpmath_function([x], sympy.Matrix([[2 * x]]))
+    >>> root = _find_root(f, J, [3e-200])
+    >>> float(root[0] / sympy.Float("1e-200"))
+    1.0
+    """
     try:
         with mpmath.workdps(NUMERIC_DIGITS + 5):
-            if len(start) == 1:
-                root = mpmath.findroot(lambda x: function(x)[0], start[0], verify=False)
-                return [root]
-            root = mpmath.findroot(
-                lambda *x: function(*x), start, J=lambda *x: jacobian(*x), verify=False
-            )
-            return [root[i] for i in range(len(start))]
+            x = mpmath.matrix([mpmath.mpf(v) for v in start])
+            values = mpmath.matrix(function(*x))
+            measure = _measure(values, size, x)
+            for _ in range(NEWTON_STEPS):
+                if measure == 0:
+                    break
+                step = mpmath.lu_solve(_as_matrix(jacobian(*x), len(start)), values)
+                damping = mpmath.mpf(1)
+                while True:
+                    trial = x - damping * step
+                    trial_values = mpmath.matrix(function(*trial))
+                    trial_measure = _measure(trial_values, size, trial)
+                    if trial_measure < measure or damping < 1e-6:
+                        break
+                    damping /= 2
+                moved = any(abs(trial[i] - x[i]) > _TINY_STEP * abs(x[i]) for i in range(len(x)))
+                if trial_measure >= measure and damping < 1e-6:
+                    break  # no descent: a minimum of the residuals or a stationary point
+                x, values, measure = trial, trial_values, trial_measure
+                if not moved:
+                    break
+            return [x[i] for i in range(len(start))]
     except (ArithmeticError, ValueError, TypeError):
         return None
+
+
+NEWTON_STEPS = 100
+_TINY_STEP = mpmath.mpf(10) ** -(NUMERIC_DIGITS + 3)
+
+
+def _as_matrix(value: object, n: int) -> mpmath.matrix:
+    """A Jacobian as an mpmath matrix (lambdify may give a matrix, list or a number)."""
+    if isinstance(value, mpmath.matrix):
+        return value
+    return mpmath.matrix(value) if n > 1 else mpmath.matrix([[value]])
+
+
+def _measure(
+    values: mpmath.matrix, size: Callable[..., list[object]] | None, x: mpmath.matrix
+) -> mpmath.mpf:
+    """The largest residual relative to the size of its terms (absolute without sizes)."""
+    sizes = size(*x) if size is not None else [1] * len(values)
+    worst = mpmath.mpf(0)
+    for i in range(len(values)):
+        v, s = abs(values[i]), abs(sizes[i])
+        if v:
+            worst = max(worst, v / s if s else mpmath.inf)
+    return worst
 
 
 def _converged(
