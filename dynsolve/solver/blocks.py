@@ -29,6 +29,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import TypeVar
@@ -57,6 +58,7 @@ _SYMPY_GAVE_UP = (
     BasePolynomialError,
 )
 _TIMEOUT = "symbolic solve exceeded the time budget"
+_DIGITS: ContextVar[int] = ContextVar("numeric_digits", default=NUMERIC_DIGITS)
 
 _Result = TypeVar("_Result")
 
@@ -81,6 +83,32 @@ class BlockSolution:
     missing_equations: int = 0  # independent equations the block lacks
     inconsistent: bool = False  # the block's equations contradict each other
     exhaustive: bool = True  # False when the roots come from a numeric search
+
+
+def numeric_digits() -> int:
+    """The significant digits numeric values are computed to (15, float64-like, by default).
+
+    >>> numeric_digits()
+    15
+    """
+    return _DIGITS.get()
+
+
+@contextmanager
+def working_digits(digits: int) -> Iterator[None]:
+    """Compute numeric values to ``digits`` significant digits inside the ``with`` body.
+
+    ``--mode auto`` re-solves at 30 digits to measure how many float64 loses.
+
+    >>> with working_digits(30):
+    ...     numeric_digits()
+    30
+    """
+    token = _DIGITS.set(digits)
+    try:
+        yield
+    finally:
+        _DIGITS.reset(token)
 
 
 class BudgetExceeded(BaseException):
@@ -300,7 +328,7 @@ def _in_mode(
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Exact values as they are; in numeric mode, floating point ones."""
     if options.mode == "numeric":
-        return {u: v.evalf(NUMERIC_DIGITS) for u, v in values.items()}
+        return {u: v.evalf(numeric_digits()) for u, v in values.items()}
     return dict(values)
 
 
@@ -515,9 +543,10 @@ def _find_root(
 
     mpmath's ``findroot`` stops on an absolute residual (``MDNewton``) or an absolute step
     (``Secant``, which also starts 0.25 from ``x0``): a problem whose residuals are 1e-27
-    stopped where it started. Here a step is accepted when it shrinks the residuals
-    relative to the size of their terms (``size``), and the search stops when a step no
-    longer moves any unknown relative to itself.
+    stopped where it started. Here the search stops when a step no
+    longer moves any unknown relative to itself. Steps are damped on a norm of the residuals
+    weighted by the size of their terms at the start (fixed for the search, so the Newton
+    step is always a descent direction).
 
     >>> import sympy
     >>> x = sympy.Symbol("x")
@@ -528,23 +557,25 @@ def _find_root(
     1.0
     """
     try:
-        with mpmath.workdps(NUMERIC_DIGITS + 5):
+        with mpmath.workdps(numeric_digits() + 5):
             x = mpmath.matrix([mpmath.mpf(v) for v in start])
+            tiny = mpmath.mpf(10) ** -(numeric_digits() + 3)
             values = mpmath.matrix(function(*x))
-            measure = _measure(values, size, x)
+            weights = _weights(size, x, len(values))
+            measure = _measure(values, weights)
             for _ in range(NEWTON_STEPS):
                 if measure == 0:
                     break
-                step = mpmath.lu_solve(_as_matrix(jacobian(*x), len(start)), values)
+                step = _newton_step(_as_matrix(jacobian(*x), len(start)), values)
                 damping = mpmath.mpf(1)
                 while True:
                     trial = x - damping * step
                     trial_values = mpmath.matrix(function(*trial))
-                    trial_measure = _measure(trial_values, size, trial)
+                    trial_measure = _measure(trial_values, weights)
                     if trial_measure < measure or damping < 1e-6:
                         break
                     damping /= 2
-                moved = any(abs(trial[i] - x[i]) > _TINY_STEP * abs(x[i]) for i in range(len(x)))
+                moved = any(abs(trial[i] - x[i]) > tiny * abs(x[i]) for i in range(len(x)))
                 if trial_measure >= measure and damping < 1e-6:
                     break  # no descent: a minimum of the residuals or a stationary point
                 x, values, measure = trial, trial_values, trial_measure
@@ -556,7 +587,6 @@ def _find_root(
 
 
 NEWTON_STEPS = 100
-_TINY_STEP = mpmath.mpf(10) ** -(NUMERIC_DIGITS + 3)
 
 
 def _as_matrix(value: object, n: int) -> mpmath.matrix:
@@ -566,17 +596,40 @@ def _as_matrix(value: object, n: int) -> mpmath.matrix:
     return mpmath.matrix(value) if n > 1 else mpmath.matrix([[value]])
 
 
-def _measure(
-    values: mpmath.matrix, size: Callable[..., list[object]] | None, x: mpmath.matrix
-) -> mpmath.mpf:
-    """The largest residual relative to the size of its terms (absolute without sizes)."""
-    sizes = size(*x) if size is not None else [1] * len(values)
-    worst = mpmath.mpf(0)
-    for i in range(len(values)):
-        v, s = abs(values[i]), abs(sizes[i])
-        if v:
-            worst = max(worst, v / s if s else mpmath.inf)
-    return worst
+def _newton_step(J: mpmath.matrix, F: mpmath.matrix) -> mpmath.matrix:
+    """Solve ``J step = F`` with rows, then columns, scaled to a largest entry of 1.
+
+    mpmath's LU calls a matrix singular relative to its largest entry, so unknowns of
+    very different sizes (v_G = 2e9 ft/s beside omega = 2.65 rad/s) looked singular.
+
+    >>> J = mpmath.matrix([[1, -8e8], [1.2e9, 5e26]])
+    >>> step = _newton_step(J, J * mpmath.matrix([2e9, 2.5]))
+    >>> [mpmath.nstr(s, 6) for s in step]
+    ['2.0e+9', '2.5']
+    """
+    n = J.rows
+    rows = [max(abs(J[i, j]) for j in range(n)) or 1 for i in range(n)]
+    scaled = mpmath.matrix(n, n)
+    for i in range(n):
+        for j in range(n):
+            scaled[i, j] = J[i, j] / rows[i]
+    columns = [max(abs(scaled[i, j]) for i in range(n)) or 1 for j in range(n)]
+    for i in range(n):
+        for j in range(n):
+            scaled[i, j] /= columns[j]
+    y = mpmath.lu_solve(scaled, mpmath.matrix([F[i] / rows[i] for i in range(n)]))
+    return mpmath.matrix([y[j] / columns[j] for j in range(n)])
+
+
+def _weights(size: Callable[..., list[object]] | None, x: mpmath.matrix, n: int) -> list[object]:
+    """Fixed weights for one search: 1 / the size of each residual's terms at the start."""
+    sizes = size(*x) if size is not None else [1] * n
+    return [1 / abs(s) if s and mpmath.isfinite(abs(s)) else mpmath.mpf(1) for s in sizes]
+
+
+def _measure(values: mpmath.matrix, weights: list[object]) -> mpmath.mpf:
+    """The weighted 2-norm of the residuals (a fixed norm, so Newton's step is a descent)."""
+    return mpmath.sqrt(mpmath.fsum((w * abs(values[i])) ** 2 for i, w in enumerate(weights)))
 
 
 def _converged(
@@ -592,13 +645,13 @@ def _converged(
     products like ``sin(x)``, while ``exp(x) = 0`` far out on the left fails both).
     """
     try:
-        with mpmath.workdps(NUMERIC_DIGITS + 5):
+        with mpmath.workdps(numeric_digits() + 5):
             values, sizes = function(*root), size(*root)
             if all(
                 abs(v) == 0 or abs(v) <= 1e-10 * abs(s) for v, s in zip(values, sizes, strict=True)
             ):
                 return True
-            step = mpmath.lu_solve(jacobian(*root), mpmath.matrix(values))
+            step = _newton_step(_as_matrix(jacobian(*root), len(root)), mpmath.matrix(values))
             scale = max(abs(x) for x in root)  # relative: a root of 1e-200 is not "about 0"
             return all(abs(step[i]) <= 1e-9 * (abs(x) or scale) for i, x in enumerate(root))
     except (ArithmeticError, ValueError, TypeError):
@@ -615,7 +668,7 @@ def _seen(root: Sequence[object], found: list[list[mpmath.mpc | mpmath.mpf]]) ->
 
 def _to_sympy(x: mpmath.mpc | mpmath.mpf) -> sympy.Expr:
     """An mpmath number as a sympy Float (complex when its imaginary part is not negligible)."""
-    real, imag = mpmath.re(x), mpmath.im(x)
+    real, imag, digits = mpmath.re(x), mpmath.im(x), numeric_digits()
     if abs(imag) <= 1e-12 * abs(real) or imag == 0:
-        return sympy.Float(real, NUMERIC_DIGITS)
-    return sympy.Float(real, NUMERIC_DIGITS) + sympy.I * sympy.Float(imag, NUMERIC_DIGITS)
+        return sympy.Float(real, digits)
+    return sympy.Float(real, digits) + sympy.I * sympy.Float(imag, digits)

@@ -35,7 +35,14 @@ import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
 from dynsolve.numbers import real_value
-from dynsolve.solver.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
+from dynsolve.solver.blocks import (
+    FORMULA_MAX_OPS,
+    NUMERIC_DIGITS,
+    Candidate,
+    as_expr,
+    is_finite,
+    numeric_digits,
+)
 from dynsolve.solver.outcome import DiscardedRoot
 from dynsolve.solver.residuals import equation_residual, is_satisfied
 from dynsolve.system import Constraint, Equation
@@ -343,14 +350,14 @@ def _realised(candidate: Candidate) -> Candidate:
     values = {u: as_expr(v) for u, v in candidate.values.items()}
     for unknown, value in values.items():
         if is_finite(value) and not value.free_symbols and value.has(sympy.I) and is_real(value):
-            values[unknown] = sympy.re(sympy.N(value, NUMERIC_DIGITS))
+            values[unknown] = sympy.re(sympy.N(value, numeric_digits()))
     return Candidate(values, candidate.formulas)
 
 
 def _tidy(values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
     """Numbers too long to read (nested radicals) become Floats; the rest stay exact."""
     return {
-        u: sympy.N(v, NUMERIC_DIGITS)
+        u: sympy.N(v, numeric_digits())
         if not v.free_symbols and sympy.count_ops(v) > FORMULA_MAX_OPS
         else v
         for u, v in values.items()
