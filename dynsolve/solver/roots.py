@@ -52,6 +52,7 @@ SAMPLE_POINTS = 12
 SAMPLES_NEEDED = 3
 SAMPLE_SEED = 1729
 _IMAGINARY_TOLERANCE = 1e-12
+ROUNDING = 1e-12  # relative gap of floating point sides of <=, >=, == taken as equality
 
 
 @dataclass(frozen=True)
@@ -243,10 +244,31 @@ def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) ->
     (False, None)
     """
     try:
-        result = relation.xreplace({k: as_expr(v) for k, v in substitution.items()})
+        values = {k: as_expr(v) for k, v in substitution.items()}
+        if isinstance(relation, sympy.core.relational.Relational):
+            # each side on its own: sympy would decide Float <= Float itself, with no
+            # allowance for rounding (an impending-slip F = mu_s N failed at some scales)
+            lhs, rhs = relation.lhs.xreplace(values), relation.rhs.xreplace(values)
+            if lhs.is_number and rhs.is_number:
+                return _compare(relation.rel_op, lhs, rhs)
+        if isinstance(relation, (sympy.And, sympy.Or, sympy.Not)):
+            parts = [truth(arg, substitution) for arg in relation.args]
+            return _combine(relation, parts)
+        result = relation.xreplace(values)
     except (TypeError, ValueError):
         return None
     return _decide(result)
+
+
+def _combine(result: sympy.Basic, parts: list[bool | None]) -> bool | None:
+    """The truth of And/Or/Not from the truths of its parts."""
+    if isinstance(result, sympy.And):
+        return False if False in parts else (None if None in parts else True)
+    if isinstance(result, sympy.Or):
+        return True if True in parts else (None if None in parts else False)
+    if isinstance(result, sympy.Not) and parts[0] is not None:
+        return not parts[0]
+    return None
 
 
 def _decide(result: sympy.Basic) -> bool | None:
@@ -255,14 +277,7 @@ def _decide(result: sympy.Basic) -> bool | None:
         return bool(result)
     if isinstance(result, sympy.core.relational.Relational):
         return _decide_numerically(result)
-    parts = [_decide(arg) for arg in result.args]
-    if isinstance(result, sympy.And):
-        return False if False in parts else (None if None in parts else True)
-    if isinstance(result, sympy.Or):
-        return True if True in parts else (None if None in parts else False)
-    if isinstance(result, sympy.Not) and parts[0] is not None:
-        return not parts[0]
-    return None
+    return _combine(result, [_decide(arg) for arg in result.args])
 
 
 def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | None:
@@ -273,23 +288,33 @@ def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | No
     sampled at seeded random positive values, and the relation is decided only when
     every real sample agrees.
     """
+    return _compare(relation.rel_op, relation.lhs, relation.rhs)
+
+
+def _compare(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> bool | None:
+    """``lhs op rhs`` decided numerically (see :func:`_decide_numerically`)."""
     compare = {
         ">": lambda d: d > 0, ">=": lambda d: d >= 0, "<": lambda d: d < 0,
         "<=": lambda d: d <= 0, "==": lambda d: d == 0, "!=": lambda d: d != 0,
     }  # fmt: skip
-    test = compare.get(relation.rel_op)
+    test = compare.get(op)
     if test is None:
         return None
-    difference = relation.lhs - relation.rhs
+    difference = lhs - rhs
     if not difference.is_number:
         verdicts = {test(d) for d in sampled(difference)}
         return verdicts.pop() if len(verdicts) == 1 else None
     try:
         number = complex(sympy.N(difference, NUMERIC_DIGITS + 5))
+        scale = max(abs(complex(sympy.N(side, 17))) for side in (lhs, rhs))
     except (TypeError, ValueError):
         return None
-    if abs(number.imag) > _IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
+    if abs(number.imag) > _IMAGINARY_TOLERANCE * max(scale, abs(number.real)):
         return None
+    if op in ("<=", ">=", "==") and difference.has(sympy.Float):
+        # rounded (floating point) sides that agree to 12 digits are equal, at any scale
+        if abs(number.real) <= ROUNDING * scale:
+            return True
     return bool(test(number.real))
 
 
