@@ -311,10 +311,9 @@ def _compare(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> bool | None:
         return None
     if abs(number.imag) > _IMAGINARY_TOLERANCE * max(scale, abs(number.real)):
         return None
-    if op in ("<=", ">=", "==") and difference.has(sympy.Float):
-        # rounded (floating point) sides that agree to 12 digits are equal, at any scale
-        if abs(number.real) <= ROUNDING * scale:
-            return True
+    rounded = op in ("<=", ">=", "==") and difference.has(sympy.Float)
+    if rounded and abs(number.real) <= ROUNDING * scale:
+        return True  # floating point sides that agree to 12 digits are equal, at any scale
     return bool(test(number.real))
 
 
