@@ -1,7 +1,7 @@
 """``--mode auto``: solve in float64, measure the digits it loses, escalate when too many.
 
 The spec is solved numerically (15 significant digits, float64-like), then again with
-every numeric value computed to 30 digits (mpmath ``dps`` 35 inside the root finder).
+every numeric value computed to 30 digits (mpmath works 20 guard digits beyond, inside the root finder).
 The largest relative gap between the two sets of answers estimates what float64 lost
 through the problem's conditioning. When it exceeds 1e-12 (more than 3 of float64's 15
 digits lost), or the two runs disagree on a check, the exact solve runs and its answers
@@ -21,7 +21,7 @@ import math
 from collections.abc import Callable
 from dataclasses import replace
 
-from dynsolve.results import Solution
+from dynsolve.results import Check, Solution
 from dynsolve.solver.blocks import working_digits
 from dynsolve.spec.ast import Spec
 from dynsolve.system import SolveOptions
@@ -80,7 +80,7 @@ def solve_auto(
             f"auto mode: numeric (float64) kept; a {HIGH_DIGITS}-digit re-solve agrees "
             f"to {gap:.1e} relative (limit {LOST_LIMIT:.0e})"
         )
-        return replace(fast, messages=(*fast.messages, note))
+        return _noted(fast, note)
     why = (
         f"the checks differ from a {HIGH_DIGITS}-digit re-solve"
         if gap <= LOST_LIMIT
@@ -88,5 +88,13 @@ def solve_auto(
         f"relative, more than 3 digits lost"
     )
     exact = solve(spec, replace(options, mode="exact"))
-    note = f"auto mode: escalated to exact; {why}"
-    return replace(exact, messages=(*exact.messages, note))
+    return _noted(exact, f"auto mode: escalated to exact; {why}")
+
+
+def _noted(solution: Solution, note: str) -> Solution:
+    """``solution`` with the auto-mode verdict as a message and as a ``precision`` check."""
+    return replace(
+        solution,
+        messages=(*solution.messages, note),
+        checks=(*solution.checks, Check("precision", True, note)),
+    )

@@ -48,6 +48,7 @@ FORMULA_MAX_OPS = 60  # formulas longer than this (sympy.count_ops) are not show
 FORMULA_MAX_UNKNOWNS = 8  # bigger linear blocks are solved with the numbers substituted
 START_FACTORS = (1, 0.5, 2, 10, -1, 0.1, -0.5, -2, 100, -10, 0.01, 1000, -100)
 NUMERIC_DIGITS = 15
+GUARD_DIGITS = 20  # the root finder works this many digits beyond the ones kept (cancellation)
 DEFAULT_OPTIONS = SolveOptions()
 _SYMPY_GAVE_UP = (
     NotImplementedError,
@@ -557,7 +558,7 @@ def _find_root(
     1.0
     """
     try:
-        with mpmath.workdps(numeric_digits() + 5):
+        with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
             x = mpmath.matrix([mpmath.mpf(v) for v in start])
             tiny = mpmath.mpf(10) ** -(numeric_digits() + 3)
             values = mpmath.matrix(function(*x))
@@ -645,7 +646,7 @@ def _converged(
     products like ``sin(x)``, while ``exp(x) = 0`` far out on the left fails both).
     """
     try:
-        with mpmath.workdps(numeric_digits() + 5):
+        with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
             values, sizes = function(*root), size(*root)
             if all(
                 abs(v) == 0 or abs(v) <= 1e-10 * abs(s) for v, s in zip(values, sizes, strict=True)
