@@ -1,7 +1,7 @@
 """``--mode auto``: solve in float64, measure the digits it loses, escalate when too many.
 
 The spec is solved numerically (15 significant digits, float64-like), then again with
-every numeric value computed to 30 digits (mpmath works 20 guard digits beyond, inside the root finder).
+every numeric value computed to 30 digits (the root finder works 20 guard digits beyond).
 The largest relative gap between the two sets of answers estimates what float64 lost
 through the problem's conditioning. When it exceeds 1e-12 (more than 3 of float64's 15
 digits lost), or the two runs disagree on a check, the exact solve runs and its answers
