@@ -16,10 +16,11 @@ from __future__ import annotations
 from dataclasses import replace
 from fractions import Fraction
 
+from dynsolve.results import Solution
 from dynsolve.spec.ast import Given, Quantity, Spec, Tolerance, UnitExpr
 from dynsolve.units import GRAVITY, Dim, registry, unit_named
 
-__all__ = ["dim_scale", "scale_spec", "unit_scale"]
+__all__ = ["dim_scale", "mismatches", "scale_spec", "unit_scale"]
 
 
 def dim_scale(dim: Dim, k: int) -> Fraction:
@@ -90,3 +91,35 @@ def scale_spec(spec: Spec, k: int) -> Spec:
         for a in spec.answers
     )
     return replace(spec, givens=givens, answers=answers)
+
+
+def mismatches(base: Solution, scaled: Solution, k: int, tolerance: float = 1e-9) -> list[str]:
+    """How ``scaled`` (the spec solved after :func:`scale_spec` by ``k``) fails to be
+    ``base`` rescaled: answers off by more than ``tolerance`` relative, or checks that
+    pass or fail differently. Empty when the solve is scale invariant.
+
+    >>> from dynsolve.pipeline import solve_spec
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n")
+    >>> mismatches(solve_spec(spec), solve_spec(scale_spec(spec, 9)), 9)
+    []
+    """
+    found = []
+    before = {row.name: row for row in base.answers}
+    for row in scaled.answers:
+        old = before.get(row.name)
+        if old is None or (old.value is None) != (row.value is None):
+            found.append(f"{row.name}: {old and old.value} became {row.value}")
+            continue
+        if old.value is None or row.value is None:
+            continue
+        want = old.value * float(unit_scale(old.unit, k))
+        if abs(row.value - want) > tolerance * abs(want):
+            found.append(f"{row.name}: expected {want!r} ({old.value!r} scaled), got {row.value!r}")
+    verdicts = {c.name: c.passed for c in base.checks}
+    for check in scaled.checks:
+        if check.name == "unused givens" and check.name not in verdicts:
+            continue  # the default g added as a given by scale_spec, when nothing uses it
+        if verdicts.get(check.name, check.passed) != check.passed:
+            found.append(f"check {check.name}: {verdicts.get(check.name)} became {check.passed}")
+    return found

@@ -40,7 +40,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
-from dynsolve.numbers import mpmath_function
+from dynsolve.numbers import MAX_DIGITS, mpmath_function
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -329,7 +329,7 @@ def _in_mode(
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Exact values as they are; in numeric mode, floating point ones."""
     if options.mode == "numeric":
-        return {u: v.evalf(numeric_digits()) for u, v in values.items()}
+        return {u: v.evalf(numeric_digits(), maxn=MAX_DIGITS) for u, v in values.items()}
     return dict(values)
 
 

@@ -36,6 +36,7 @@ from collections.abc import Collection, Mapping, Sequence
 
 import sympy
 
+from dynsolve.numbers import MAX_DIGITS
 from dynsolve.solver.blocks import as_expr, substitute
 from dynsolve.solver.outcome import Residual
 from dynsolve.system import Equation
@@ -118,9 +119,9 @@ def spot_values(letters: Collection[sympy.Symbol]) -> dict[sympy.Symbol, sympy.E
 def _measure(sides: Sequence[sympy.Expr], terms: Sequence[sympy.Expr]) -> tuple[float, float]:
     """Absolute and relative residual from the two sides and the additive terms."""
     try:
-        lhs, rhs = (sympy.N(side, DIGITS) for side in sides)
+        lhs, rhs = (sympy.N(side, DIGITS, maxn=MAX_DIGITS) for side in sides)
         absolute = _magnitude(lhs - rhs)
-        sizes = [_magnitude(sympy.N(t, DIGITS)) for t in terms]
+        sizes = [_magnitude(sympy.N(t, DIGITS, maxn=MAX_DIGITS)) for t in terms]
         scale = max(_magnitude(lhs), _magnitude(rhs), *sizes)
     except (TypeError, ValueError, ArithmeticError):
         return math.nan, math.nan

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
-from dynsolve.numbers import real_value
+from dynsolve.numbers import MAX_DIGITS, real_value
 from dynsolve.solver.blocks import (
     FORMULA_MAX_OPS,
     NUMERIC_DIGITS,
@@ -305,7 +305,7 @@ def _compare(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> bool | None:
         verdicts = {test(d) for d in sampled(difference)}
         return verdicts.pop() if len(verdicts) == 1 else None
     try:
-        number = complex(sympy.N(difference, NUMERIC_DIGITS + 5))
+        number = complex(sympy.N(difference, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS))
         scale = max(abs(complex(sympy.N(side, 17))) for side in (lhs, rhs))
     except (TypeError, ValueError):
         return None
@@ -354,7 +354,7 @@ def _is_negative(value: sympy.Expr) -> bool:
         samples = sampled(value)
         return bool(samples) and all(v < 0 for v in samples)
     try:
-        return complex(sympy.N(value, NUMERIC_DIGITS + 5)).real < 0
+        return complex(sympy.N(value, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS)).real < 0
     except (TypeError, ValueError):
         return bool(value.is_negative)
 
@@ -374,14 +374,14 @@ def _realised(candidate: Candidate) -> Candidate:
     values = {u: as_expr(v) for u, v in candidate.values.items()}
     for unknown, value in values.items():
         if is_finite(value) and not value.free_symbols and value.has(sympy.I) and is_real(value):
-            values[unknown] = sympy.re(sympy.N(value, numeric_digits()))
+            values[unknown] = sympy.re(sympy.N(value, numeric_digits(), maxn=MAX_DIGITS))
     return Candidate(values, candidate.formulas)
 
 
 def _tidy(values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
     """Numbers too long to read (nested radicals) become Floats; the rest stay exact."""
     return {
-        u: sympy.N(v, numeric_digits())
+        u: sympy.N(v, numeric_digits(), maxn=MAX_DIGITS)
         if not v.free_symbols and sympy.count_ops(v) > FORMULA_MAX_OPS
         else v
         for u, v in values.items()
