@@ -83,8 +83,8 @@ def test_impending_slip_holds_at_1e_minus_9_in_numeric_mode() -> None:
     # tan(b) = 0.6: sin(b) = 0.6/sqrt(1.36)); rounding made F <= mu_s N false at k = -9.
     solution = _solve("equations/gpm_seed_incline_threshold.dyn", "numeric", -9)
     assert solution.passed
-    (F_C,) = [row.value for row in solution.answers if row.name == "F"]
-    assert F_C == pytest.approx(5 * 9.81 * 0.6 / 1.36**0.5 / 3 * 1e-18, rel=1e-9)
+    (friction,) = [row.value for row in solution.answers if row.name == "F"]
+    assert friction == pytest.approx(5 * 9.81 * 0.6 / 1.36**0.5 / 3 * 1e-18, rel=1e-9)
 
 
 def test_numeric_substitution_check_passes_on_incline_scene() -> None:
