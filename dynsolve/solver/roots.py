@@ -227,10 +227,10 @@ def is_real(value: sympy.Expr) -> bool | None:
     if value.free_symbols:
         return value.is_real
     try:
-        number = complex(sympy.N(value, NUMERIC_DIGITS + 5))
+        number = complex(sympy.N(value, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS))
     except (TypeError, ValueError):
         return value.is_real
-    return abs(number.imag) <= _IMAGINARY_TOLERANCE * max(1.0, abs(number.real))
+    return abs(number.imag) <= _IMAGINARY_TOLERANCE * abs(number.real)  # relative: scale-free
 
 
 def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) -> bool | None:
