@@ -568,6 +568,8 @@ def _find_root(
                 if measure == 0:
                     break
                 step = _newton_step(_as_matrix(jacobian(*x), len(start)), values)
+                if all(abs(step[i]) <= tiny * abs(x[i]) for i in range(len(x))):
+                    break  # converged: the step is below the working precision
                 damping = mpmath.mpf(1)
                 while True:
                     trial = x - damping * step
