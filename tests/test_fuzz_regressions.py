@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from typer.testing import CliRunner
 
@@ -104,3 +106,18 @@ def test_tiny_exponents_solve_fast(equation, name, expected, mode):
     assert time.process_time() - started < 5.0
     (row,) = solution.answers
     assert row.value == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_a_huge_power_in_an_exponential_stays_within_memory(mode):
+    # Fuzz memory hit: with t = 1e30 deg = 1.745e28 (a number in rad), the root finder tried
+    # θ where t^θ is about 1e30 and mpmath built exp(1e30) digit by digit (over 2 GB).
+    # By hand: at the root t^θ = 10^(28.24 θ) is about 1e-20, so θ = -0.5 - exp(-1.5)
+    # = -0.5 - 0.22313 = -0.72313.
+    from dynsolve.pipeline import solve_text
+    from dynsolve.system import SolveOptions
+
+    text = "given:\n  t = 1e30 deg\nequations:\n  theta = -.5-exp(t^theta-2+0.5)\nfind: theta\n"
+    solution = solve_text(text, options=SolveOptions(mode=mode))
+    (row,) = solution.answers
+    assert row.value == pytest.approx(-0.5 - math.exp(-1.5), rel=1e-9)

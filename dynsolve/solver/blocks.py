@@ -501,15 +501,47 @@ def numeric_roots(
     unknowns = list(unknowns)
     function = mpmath_function(unknowns, list(residuals))
     size = mpmath_function(unknowns, [_term_size(r) for r in residuals])
-    jacobian = mpmath_function(unknowns, sympy.Matrix(residuals).jacobian(unknowns))
+    matrix = sympy.Matrix(residuals).jacobian(unknowns)
+    jacobian = mpmath_function(unknowns, matrix)
+    guard = finite_guard(unknowns, [*residuals, *matrix])
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
     for start in _starting_points(residuals, len(unknowns)):
-        root = _find_root(function, jacobian, start, size)
+        root = _find_root(function, jacobian, start, size, guard)
         if root is None or _seen(root, found):
             continue
         if _converged(function, size, jacobian, root):
             found.append(root)
     return [tuple(_to_sympy(x) for x in root) for root in found]
+
+
+def finite_guard(
+    unknowns: Sequence[sympy.Symbol], exprs: Sequence[sympy.Expr]
+) -> Callable[[Sequence[object]], bool]:
+    """A cheap test, in complex float64, that ``exprs`` stay finite at a point: mpmath would
+    otherwise build numbers such as exp(1e30) digit by digit, for gigabytes.
+
+    >>> x = sympy.Symbol("x")
+    >>> ok = finite_guard([x], [sympy.exp(x) - 1])
+    >>> ok([1.0]), ok([1e30])
+    (True, False)
+    """
+    import numpy
+
+    renamed = {v: sympy.Dummy(f"u{i}") for i, v in enumerate(unknowns)}
+    compiled = sympy.lambdify(
+        list(renamed.values()), [e.xreplace(renamed) for e in exprs], modules="numpy"
+    )
+
+    def finite(point: Sequence[object]) -> bool:
+        try:
+            values = [complex(v) for v in point]  # type: ignore[arg-type]
+            with numpy.errstate(all="ignore"):
+                results = numpy.asarray(compiled(*values), dtype=complex)
+        except (ArithmeticError, ValueError, TypeError):
+            return False
+        return bool(numpy.isfinite(results).all())
+
+    return finite
 
 
 def _term_size(residual: sympy.Expr) -> sympy.Expr:
@@ -539,6 +571,7 @@ def _find_root(
     jacobian: Callable[..., object],
     start: list[float],
     size: Callable[..., list[object]] | None = None,
+    finite: Callable[[Sequence[object]], bool] | None = None,
 ) -> list[mpmath.mpc | mpmath.mpf] | None:
     """Damped Newton from ``start`` with scale-free stopping rules.
 
@@ -561,6 +594,8 @@ def _find_root(
         with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
             x = mpmath.matrix([mpmath.mpf(v) for v in start])
             tiny = mpmath.mpf(10) ** -(numeric_digits() + 3)
+            if finite is not None and not finite(list(x)):
+                return None  # beyond float range at the start: no place to search from
             values = mpmath.matrix(function(*x))
             weights = _weights(size, x, len(values))
             measure = _measure(values, weights)
@@ -573,6 +608,11 @@ def _find_root(
                 damping = mpmath.mpf(1)
                 while True:
                     trial = x - damping * step
+                    if finite is not None and not finite(list(trial)):
+                        damping /= 2  # the step leaves float range: shorten it
+                        if damping < 1e-6:
+                            return None
+                        continue
                     trial_values = mpmath.matrix(function(*trial))
                     trial_measure = _measure(trial_values, weights)
                     if trial_measure < measure or damping < 1e-6:
