@@ -50,6 +50,14 @@ SUFFIX_FORMATS = {
 }
 
 
+class CheckFormat(enum.StrEnum):
+    """Formats of ``dynsolve check``'s report."""
+
+    text = "text"
+    json = "json"
+    junit = "junit"
+
+
 class Mode(enum.StrEnum):
     """Solve modes: exact (rationals, radicals, formulas) or numeric (floating point)."""
 
@@ -231,6 +239,13 @@ def check(
     mode: Annotated[Mode, typer.Option(help="Solve mode for every spec.")] = Mode.exact,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
+    report_format: Annotated[
+        CheckFormat,
+        typer.Option("--format", help="text (a table), json or junit (XML for CI) on stdout."),
+    ] = CheckFormat.text,
+    verbose: Annotated[
+        bool, typer.Option("--verbose", "-v", help="List the passing files too.")
+    ] = False,
 ) -> None:
     """Solve every .dyn spec under PATHS and compare it with its answer key.
 
@@ -241,11 +256,13 @@ def check(
     or check fails; 2 when a spec is malformed.
     """
     from dynsolve.budget import run_each
+    from dynsolve.render.check_report import FileOutcome, check_json, check_junit
     from dynsolve.render.terminal import failures_table
 
     files = _collect(paths)
     budget = Budget(time_budget, memory_budget)
     failures: list[tuple[str, object]] = []
+    reports: list[FileOutcome] = []
     passed = failed = malformed = 0
     jobs = [(file, mode.value, budget) for file in files]
     outcomes = run_each(solve_and_check, jobs, budget)
@@ -253,19 +270,36 @@ def check(
         outcome = _refused_if_stopped(result)
         if isinstance(outcome, _Refused):
             failures.extend((str(file), error.text) for error in outcome.errors)
+            reports.append(
+                FileOutcome(
+                    str(file), "malformed", tuple(("input", e.text) for e in outcome.errors)
+                )
+            )
             malformed += 1
         elif outcome:
             failures.extend((str(file), check) for check in outcome)
+            reports.append(
+                FileOutcome(str(file), "failed", tuple((c.name, c.detail) for c in outcome))
+            )
             failed += 1
         else:
+            reports.append(FileOutcome(str(file), "passed", ()))
             passed += 1
+    worst = ExitCode.BAD_INPUT if malformed else ExitCode.FAILED if failed else ExitCode.OK
+    if report_format != CheckFormat.text:
+        render = check_json if report_format == CheckFormat.json else check_junit
+        stdout.out(render(reports), highlight=False)
+        raise typer.Exit(worst)
+    if verbose:
+        for report in reports:
+            if report.status == "passed":
+                stdout.out(f"passed  {report.file}", highlight=False)
     if failures:
         stdout.print(failures_table(failures))  # type: ignore[arg-type]
     summary = f"{passed} passed, {failed} failed" + (
         f", {malformed} malformed" if malformed else ""
     )
     stdout.print(summary)
-    worst = ExitCode.BAD_INPUT if malformed else ExitCode.FAILED if failed else ExitCode.OK
     raise typer.Exit(worst)
 
 

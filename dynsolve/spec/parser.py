@@ -41,6 +41,7 @@ from dynsolve.spec.ast import (
     Expr,
     FindItem,
     Given,
+    GradingRule,
     Location,
     Name,
     Num,
@@ -70,9 +71,11 @@ MAX_STATEMENTS = 1000
 
 SECTIONS = (
     "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "define",
-    "answers",
+    "answers", "grading",
 )  # fmt: skip
-BLOCK_SECTIONS = ("given", "scene", "kinematics", "equations", "find", "define", "answers")
+BLOCK_SECTIONS = (
+    "given", "scene", "kinematics", "equations", "find", "define", "answers", "grading",
+)  # fmt: skip
 _FIELDS = {
     "given": "givens",
     "scene": "scene",
@@ -81,6 +84,7 @@ _FIELDS = {
     "find": "finds",
     "define": "defines",
     "answers": "answers",
+    "grading": "grading",
 }
 SYSTEMS = {"si": "SI", "fps": "FPS"}
 SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
@@ -191,6 +195,7 @@ class _Sections:
     kinematics: list[EquationStmt] | None = None
     defines: list[EquationStmt] | None = None
     define_line: int = 0
+    grading: list[GradingRule] | None = None
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -348,6 +353,11 @@ def _body_line(
     elif section == "define":
         assert parts.defines is not None
         parts.defines.append(_define(text, comment, file, line, offset))
+    elif section == "grading":
+        from dynsolve.spec.grading_line import parse_grading_line
+
+        assert parts.grading is not None
+        parts.grading.append(parse_grading_line(text, file, line, offset))
     elif section == "scene":
         assert parts.scene is not None
         parts.scene.append(_parse(text, "scene_line", file, line, offset))
@@ -400,6 +410,22 @@ def _parse(
 
 
 _OPERATIONS = frozenset(("add", "sub", "mul", "div", "pow", "neg", "pos", "call"))
+
+
+def parse_unit_at(text: str, file: str, line: int, offset: int) -> UnitExpr:
+    """Parse a unit written at ``file:line`` after ``offset`` columns (errors point there)."""
+    return _parse(text, "unit_line", file, line, offset)
+
+
+def parse_answer_cell(text: str, file: str = "<cell>", line: int = 1) -> Answer:
+    """Parse a student's answer, a number with an optional unit and direction word
+    (``4.52 m/s^2 down``), with the grammar of an ``answers`` line; nothing is evaluated.
+
+    >>> cell = parse_answer_cell("-4.52 m/s^2")
+    >>> cell.quantity.text, cell.quantity.unit.text, cell.direction
+    ('-4.52', 'm/s^2', None)
+    """
+    return _parse("x = " + text, "answer_line", file, line, -4)
 
 
 def parse_unit(text: str, file: str = "<unit>") -> UnitExpr:
@@ -1057,6 +1083,7 @@ def _finish(parts: _Sections, file: str) -> Spec:
         scene=tuple(parts.scene or ()),
         kinematics=tuple(parts.kinematics or ()),
         defines=tuple(parts.defines or ()),
+        grading=tuple(parts.grading or ()),
     )
 
 

@@ -1,0 +1,1 @@
+"""Batch grading of a class's answers: cells, semantics, diagnosis, reports, resume."""
