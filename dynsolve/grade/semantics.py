@@ -18,7 +18,8 @@ figures, earns the ``partial`` credit (0 unless set).
 >>> key = Key("a", -4.5168, Dim.of("acceleration"), "m/s^2")
 >>> judge("4.52 m/s^2 down", key, Rule()).verdict
 'correct'
->>> judge("4.52 m/s^2", key, Rule(partial=0.5)).verdict, judge("4.52 m/s^2", key, Rule(partial=0.5)).credit
+>>> flipped = judge("4.52 m/s^2", key, Rule(partial=0.5))
+>>> flipped.verdict, flipped.credit
 ('sign', 0.5)
 >>> judge("4.5 m/s^2 down", key, Rule(sigfig=3)).verdict
 'sigfig'
