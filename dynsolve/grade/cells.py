@@ -45,6 +45,7 @@ class Cell:
     direction: str  # the direction word as written, lowercase, or ""
 
 
+@functools.lru_cache(maxsize=65536)
 def read_cell(text: str, header_unit: str = "") -> Cell:
     """The cell ``text``; a bare number takes ``header_unit`` (a column header's unit).
 
@@ -75,7 +76,6 @@ def read_cell(text: str, header_unit: str = "") -> Cell:
     return Cell(value, info.dim, number, written, info.factor, direction)
 
 
-@functools.lru_cache(maxsize=65536)
 def _parsed(text: str) -> tuple[str, str, str]:
     """Number text, unit text and direction word, through the answers grammar."""
     try:

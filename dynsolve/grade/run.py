@@ -31,6 +31,7 @@ from dynsolve.grade.key import Keys
 from dynsolve.grade.semantics import Key, Rule, judge
 
 JOURNAL_SUFFIX = ".journal"
+SYNC_EVERY = 200  # rows between fsyncs; each row is flushed to the OS as it is finished
 
 
 @dataclass(frozen=True)
@@ -122,11 +123,12 @@ def grade_sheet(
                     row = grade_row(student, cells, mine, rules, sheet.units, helper)
                 results.append(row)
                 if handle is not None:
-                    _append(handle, row.as_dict())
+                    _append(handle, row.as_dict(), sync=index % SYNC_EVERY == 0)
             if progress is not None:
                 progress(index, len(sheet.rows))
     finally:
         if handle is not None:
+            _sync(handle)
             handle.close()
     return results
 
@@ -147,8 +149,16 @@ def _open_journal(path: Path, stamp: str, keep: bool) -> Any:
     return handle
 
 
-def _append(handle: Any, record: Mapping[str, Any]) -> None:
+def _append(handle: Any, record: Mapping[str, Any], sync: bool = True) -> None:
+    """One record as one line, flushed (a killed process loses nothing flushed); fsync'd
+    when ``sync`` (a crash of the machine loses at most the rows since)."""
     handle.write(json.dumps(record, sort_keys=True) + "\n")
+    handle.flush()
+    if sync:
+        _sync(handle)
+
+
+def _sync(handle: Any) -> None:
     handle.flush()
     os.fsync(handle.fileno())
 

@@ -163,7 +163,8 @@ def rules_for(
     parts: Sequence[str], spec_rules: Sequence[GradingRule], overrides: Rule | None = None
 ) -> dict[str, Rule]:
     """Each part's rule: defaults, then the spec's ``grading:`` lines (general ones first,
-    then the part's own), then ``overrides`` from the command line (its non-default fields).
+    then the part's own: a part's ``rtol`` makes it graded by tolerance even under a
+    general ``sigfig``), then ``overrides`` from the command line (its non-default fields).
 
     >>> from dynsolve.spec.grading_line import parse_grading_line
     >>> lines = [parse_grading_line(t, "p", 1, 0) for t in ("sigfig 3", "T weight 2")]
@@ -200,4 +201,6 @@ def _apply(rule: Rule, key: str, value: Fraction, source: GradingRule) -> Rule:
     if key in ("sigfig", "decdig"):
         other = "decdig" if key == "sigfig" else "sigfig"
         return replace(rule, **{key: int(value), other: 0})
+    if key == "rtol" and source.part:  # a part's own tolerance replaces a general sigfig
+        return replace(rule, rtol=float(value), sigfig=0, decdig=0)
     return replace(rule, **{key: float(value)})

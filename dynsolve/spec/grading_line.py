@@ -61,7 +61,10 @@ def parse_grading_line(text: str, file: str, line: int, offset: int) -> GradingR
                 Position(file, line, offset + 1 + match.start("rest")),
                 "only atol takes a unit; rtol and partial take a percentage",
             )
+        from dynsolve.quantities import resolve_unit
+
         unit = parse_unit_at(rest, file, line, offset + match.start("rest"))
+        resolve_unit(unit, file)  # an unknown unit stops here, pointed at
     elif key in PERCENT_KEYS:
         raise SpecError(
             f"write {key} as a percentage",
