@@ -152,7 +152,7 @@ def _open_journal(path: Path, stamp: str, keep: bool) -> Any:
 def _append(handle: Any, record: Mapping[str, Any], sync: bool = True) -> None:
     """One record as one line, flushed (a killed process loses nothing flushed); fsync'd
     when ``sync`` (a crash of the machine loses at most the rows since)."""
-    handle.write(json.dumps(record, sort_keys=True) + "\n")
+    handle.write(json.dumps(record) + "\n")  # key order kept: parts in find order
     handle.flush()
     if sync:
         _sync(handle)
@@ -183,7 +183,7 @@ def _read_journal(path: Path, stamp: str) -> dict[str, StudentResult]:
     rows = (StudentResult.from_dict(r) for r in records[1:])
     good = _whole(lines, len(records))
     if not good:  # rewrite without the torn tail, so that appends start on a fresh line
-        path.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in records))
+        path.write_text("".join(json.dumps(r) + "\n" for r in records))
     return {row.student: row for row in rows}
 
 
