@@ -9,7 +9,7 @@ warning. The file is only read.
 >>> sheet = read_answers(io.StringIO("student,a [m/s^2],x\\ns1,4.52,1\\n"), ["a", "T"], "a.csv")
 >>> sheet.columns, sheet.units["a"], sheet.rows[0]
 ({'a': 'a [m/s^2]'}, 'm/s^2', ('s1', {'a': '4.52'}))
->>> print("\n".join(sheet.warnings))
+>>> print("\\n".join(sheet.warnings))
 a.csv: column 'x' is not a find of the problem (finds: a, T); ignored
 a.csv: no column for T: graded 'missing' for everyone
 """

@@ -68,7 +68,7 @@ def read_cell(text: str, header_unit: str = "") -> Cell:
     elif header_unit:
         info, written = _unit(header_unit), ""
     else:
-        info, written = UnitInfo(1.0, Dim()), None
+        info, written = UnitInfo(1.0, same_dim(Dim())), None
     magnitude = float(number)
     if not math.isfinite(magnitude) or abs(magnitude) * info.factor > LARGEST:
         raise CellError(f"{number} is out of range")
@@ -90,10 +90,23 @@ def _parsed(text: str) -> tuple[str, str, str]:
     return quantity.text, unit, answer.direction or ""
 
 
+_DIMS: dict[Dim, Dim] = {}
+
+
+def same_dim(dim: Dim) -> Dim:
+    """One shared object per dimension, so that grading compares dimensions by identity.
+
+    >>> same_dim(Dim.of("force")) is same_dim(Dim(1, 1, -2))
+    True
+    """
+    return _DIMS.setdefault(dim, dim)
+
+
 @functools.lru_cache(maxsize=4096)
 def _unit(text: str) -> UnitInfo:
     try:
-        return resolve_unit(parse_unit(text), "<cell>")
+        info = resolve_unit(parse_unit(text), "<cell>")
+        return UnitInfo(info.factor, same_dim(info.dim))
     except DynsolveError as error:
         hint = f" ({error.hint})" if error.hint else ""
         raise CellError(f"unit '{text}': {error.message}{hint}") from None

@@ -11,7 +11,6 @@
 
 from __future__ import annotations
 
-import csv
 import io
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -99,12 +98,11 @@ def _text(path: Path) -> str:
 def _keys(request: GradeRequest, spec: object, sheet: AnswerSheet) -> Keys:
     if request.variants is None:
         return base_keys(spec, request.options)  # type: ignore[arg-type]
-    rows = list(csv.DictReader(io.StringIO(_text(request.variants))))
-    variants: dict[str, dict[str, str]] = {}
-    for row in rows:
-        student = (row.pop("student", None) or row.pop("id", None) or "").strip()
-        if student:
-            variants[student] = {k: v for k, v in row.items() if k and v is not None}
+    try:
+        from dynsolve.grade.variants import read_variants  # type: ignore[import-not-found]
+    except ImportError:
+        return variant_keys(spec, {}, request.options)  # type: ignore[arg-type]  # says why
+    variants = read_variants(request.variants)
     return variant_keys(spec, variants, request.options)  # type: ignore[arg-type]
 
 

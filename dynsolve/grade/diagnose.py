@@ -58,12 +58,16 @@ class Diagnoser:
         self.spec = spec
         self.options = options or SolveOptions()
         self._mistakes: list[Mistake] | None = None
+        self._slips: dict[tuple[str, tuple[float, ...]], list[tuple[str, float]]] = {}
 
     def diagnose(self, part: str, value: float, keys: Mapping[str, Key], rule: Rule) -> str:
         """The sentence naming the mistake that gives ``value`` for ``part``, or ""."""
         key = keys[part]
         tolerance = max(MATCH_RTOL, rule.rtol)
-        for sentence, candidate in self._answer_side(part, keys):
+        signature = (part, tuple(k.value for k in keys.values()))
+        if signature not in self._slips:  # the same keys (no variants): built once
+            self._slips[signature] = self._answer_side(part, keys)
+        for sentence, candidate in self._slips[signature]:
             if _close(value, candidate, tolerance) and not _close(candidate, key.value, 1e-9):
                 return sentence
         for mistake in self.mistakes():

@@ -32,7 +32,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
-from dynsolve.grade.cells import Cell, CellError, decimal_digits, read_cell, significant_figures
+from dynsolve.grade.cells import (
+    Cell,
+    CellError,
+    decimal_digits,
+    read_cell,
+    same_dim,
+    significant_figures,
+)
 from dynsolve.quantities import resolve_unit
 from dynsolve.spec.ast import GradingRule
 from dynsolve.units import Dim, natural_unit
@@ -51,6 +58,9 @@ class Key:
     dim: Dim
     unit: str  # the display unit for feedback ("m/s^2")
     factor: float = 1.0  # the display unit's size in SI base units
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "dim", same_dim(self.dim))
 
 
 @dataclass(frozen=True)
@@ -87,7 +97,7 @@ def judge(text: str, key: Key, rule: Rule, header_unit: str = "") -> PartResult:
         return PartResult(
             "unreadable", 0.0, f"no unit: write it ({key.unit}) or put it in the column header"
         )
-    if cell.dim != key.dim:
+    if cell.dim is not key.dim and cell.dim != key.dim:
         return PartResult(
             "dimension",
             0.0,

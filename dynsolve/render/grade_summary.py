@@ -4,8 +4,9 @@ then the score distribution, as rich renderables.
 >>> from dynsolve.grade.run import StudentResult
 >>> row = StudentResult("s1", 100.0, {"a": {"answer": "1 m", "verdict": "correct",
 ...       "credit": 1.0, "feedback": ""}})
+>>> import io
 >>> from rich.console import Console
->>> console = Console(width=80, record=True)
+>>> console = Console(file=io.StringIO(), width=80, record=True)
 >>> for part in summary_renderables([row], "Drum"):
 ...     console.print(part)
 >>> "100%" in console.export_text()
