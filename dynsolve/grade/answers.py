@@ -20,7 +20,7 @@ import csv
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TextIO
+from typing import Any, TextIO
 
 from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.spec.parser import parse_unit_at
@@ -43,6 +43,17 @@ class AnswerSheet:
 def read_answers(stream: TextIO, finds: Sequence[str], name: str) -> AnswerSheet:
     """Read ``stream`` (CSV text named ``name`` in errors) against the problem's ``finds``."""
     reader = csv.reader(stream)
+    try:
+        return _read(reader, finds, name)
+    except csv.Error as error:  # a NUL byte, a field over the size limit, a broken quote
+        raise SpecError(
+            f"the answers file is not readable CSV: {error}",
+            Position(name, reader.line_num or 1, 1),
+            "save it as plain CSV (UTF-8, comma-separated)",
+        ) from None
+
+
+def _read(reader: Any, finds: Sequence[str], name: str) -> AnswerSheet:
     header = next(reader, None)
     if not header:
         raise SpecError("the answers file is empty", Position(name, 1, 1), "add a header row")
