@@ -56,7 +56,7 @@ class _Result:
     path: str
 
 
-def test_variant_keys_through_the_expected_module(monkeypatch: pytest.MonkeyPatch) -> None:
+def _fake_expected(monkeypatch: pytest.MonkeyPatch) -> None:
     def expected_answers(spec: object, variants: dict, options: object) -> _Result:
         alpha = _Expected("alpha", 7.334, "rad/s^2", "rad/s^2", Dim(0, 0, -2), "cw")
         return _Result(
@@ -70,6 +70,10 @@ def test_variant_keys_through_the_expected_module(monkeypatch: pytest.MonkeyPatc
     module = types.ModuleType("dynsolve.grade.expected")
     module.expected_answers = expected_answers  # type: ignore[attr-defined]
     monkeypatch.setitem(sys.modules, "dynsolve.grade.expected", module)
+
+
+def test_variant_keys_through_the_expected_module(monkeypatch: pytest.MonkeyPatch) -> None:
+    _fake_expected(monkeypatch)
     keys = variant_keys(parse_file(SCENE_DRUM), {"s1": {"m_b": "10 kg"}}, SolveOptions())
     assert keys.for_student("s1")["alpha"].value == pytest.approx(-7.334)
     assert keys.errors == {"s2": "cannot read m_b"}
@@ -90,3 +94,21 @@ def test_the_example_class() -> None:
     assert rows["s016"].parts["alpha"]["verdict"] == "unreadable"
     assert rows["s028"].parts["T"]["verdict"] == "correct"  # 105 N: 0.8 % off, rtol 1 %
     assert rows["s029"].parts["T"]["verdict"] == "wrong"  # 104 N: 1.8 % off
+
+
+def test_grading_against_variants(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    _fake_expected(monkeypatch)
+    spec = tmp_path / "one.dyn"
+    spec.write_text("given:\n  w = 2 rad/s^2\nequations:\n  alpha = w\nfind: alpha [rad/s^2]\n")
+    answers = tmp_path / "answers.csv"
+    # s1's own alpha is 7.334 rad/s^2 cw, so 73.3 is x10; s2 has no key; s3 has the base's 2
+    answers.write_text("student,alpha\ns1,73.3 rad/s^2 cw\ns3,2 rad/s^2\ns2,1 rad/s^2\n")
+    variants = tmp_path / "variants.csv"
+    variants.write_text("student,m\ns1,3 kg\n")
+    run = grade(GradeRequest(spec, answers, variants=variants))
+    rows = {r.student: r for r in run.results}
+    assert rows["s1"].parts["alpha"]["verdict"] == "wrong"
+    assert "power-of-ten slip (x10)" in rows["s1"].parts["alpha"]["feedback"]
+    assert rows["s2"].parts["alpha"]["verdict"] == "no key"
+    assert rows["s3"].parts["alpha"]["verdict"] == "correct"
+    assert run.path == "vectorized"

@@ -157,3 +157,11 @@ def test_grading_errors_point_at_the_line(line: str, message: str) -> None:
         )
     assert message in str(caught.value)
     assert caught.value.position is not None and caught.value.position.line == 7
+
+
+def test_solve_and_check_ignore_the_grading_section() -> None:
+    from dynsolve.pipeline import solve_spec
+
+    # W = m g = 2(9.81) = 19.62 N
+    solution = solve_spec(parse_spec(SPEC + "answers:\n  W = 19.62 N\n", "g.dyn"))
+    assert solution.passed and solution.answers[0].value == pytest.approx(19.62)

@@ -54,9 +54,10 @@ class Mistake:
 class Diagnoser:
     """The classic mistakes of one problem (one variant), re-solved lazily and once."""
 
-    def __init__(self, spec: Spec, options: SolveOptions | None = None) -> None:
+    def __init__(self, spec: Spec, options: SolveOptions | None = None, model: bool = True) -> None:
         self.spec = spec
         self.options = options or SolveOptions()
+        self.model = model  # False: answer-side slips only (each student has own variant)
         self._mistakes: list[Mistake] | None = None
         self._slips: dict[tuple[str, tuple[float, ...]], list[tuple[str, float]]] = {}
 
@@ -82,6 +83,8 @@ class Diagnoser:
         """Every model-side mistake that solves, each re-solved once."""
         if self._mistakes is None:
             self._mistakes = []
+            if not self.model:
+                return self._mistakes
             for sentence, spec in _variants(self.spec):
                 values = _solve(spec, self.options)
                 if values is not None:

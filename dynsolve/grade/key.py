@@ -39,6 +39,8 @@ class Keys:
         """The keys ``student`` is graded against (their variant's, else the base's)."""
         return self.per_student.get(student, self.shared)
 
+    expected_for = for_student  # the name the variants interface agreed on
+
 
 def keys_of(solution: Solution) -> dict[str, Key]:
     """Keys from a solved spec: signed SI values (a cw/down/left magnitude made negative)."""

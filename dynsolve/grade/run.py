@@ -108,6 +108,8 @@ def grade_sheet(
     """Grade every row in order; with a ``journal``, record each row as it is finished
     and, with ``resume``, reuse the rows a previous run recorded under the same ``stamp``."""
     done = _read_journal(journal, stamp) if (journal and resume) else {}
+    if doctor is not None and keys.per_student:  # variants: the base model is not theirs
+        doctor = Diagnoser(doctor.spec, doctor.options, model=False)
     results: list[StudentResult] = []
     handle = _open_journal(journal, stamp, bool(done)) if journal else None
     try:
@@ -119,8 +121,7 @@ def grade_sheet(
                     row = _no_key(student, keys, keys.errors[student])
                 else:
                     mine = keys.for_student(student)
-                    helper = doctor if not keys.per_student else None
-                    row = grade_row(student, cells, mine, rules, sheet.units, helper)
+                    row = grade_row(student, cells, mine, rules, sheet.units, doctor)
                 results.append(row)
                 if handle is not None:
                     _append(handle, row.as_dict(), sync=index % SYNC_EVERY == 0)
