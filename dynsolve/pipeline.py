@@ -52,6 +52,7 @@ from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
+NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
 
 
 class SolvableProblem(Protocol):
@@ -395,6 +396,7 @@ class _View:
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
+            numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
                     name=symbol.name,
@@ -402,6 +404,8 @@ class _View:
                     formula_latex=self.latex(formula) if show_formula else "",
                     value=value_text,
                     value_latex=value_latex,
+                    substituted=numbers[0] if numbers else "",
+                    substituted_latex=numbers[1] if numbers else "",
                 )
             )
         discarded = tuple(
@@ -418,6 +422,31 @@ class _View:
             discarded=discarded,
             note=block.note,
         )
+
+    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+        """(text, latex) of ``formula`` with every symbol replaced by its number in base
+        units, unevaluated, as a hand calculation writes it; None where a symbol has no
+        number (a symbolic problem) or the formula is a bare symbol."""
+        if isinstance(formula, sympy.Symbol):
+            return None
+        values = {**self.knowns, **self.outcome.values}
+        names: dict[sympy.Symbol, str] = {}
+        for symbol in formula.free_symbols:
+            number = real_value(values[symbol]) if symbol in values else None
+            if number is None:
+                return None
+            text = sig(number, 4)
+            if "." in text and "e" not in text:
+                text = text.rstrip("0").rstrip(".")
+            names[symbol] = f"({text})" if text.startswith("-") else text
+        # placeholders sort as the symbols do, so the terms keep the formula's order
+        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
+        shown = formula.xreplace(placeholders)
+        text = sympy.sstr(shown).replace("**", "^")
+        latex = sympy.latex(shown, symbol_names={placeholders[s]: n for s, n in names.items()})
+        for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
+            text = text.replace(placeholders[symbol].name, names[symbol])
+        return text, latex
 
     def computed(self, name: str) -> sympy.Expr | None:
         target = next((t for t in self.problem.targets if t.name == name), None)
@@ -641,8 +670,15 @@ class _View:
             return Check("structure", False, "no root satisfies the constraints")
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
-        unknowns = len(self.problem.system.unknowns)
-        detail = f"{_count(unknowns, 'unknown')} from {_count(len(lines), 'equation')}"
+        unknowns = [pretty(s.name) for s in self.problem.system.unknowns]
+        named = ", ".join(unknowns[:NAMED_UNKNOWNS]) + (
+            ", …" if len(unknowns) > NAMED_UNKNOWNS else ""
+        )
+        detail = (
+            f"{_count(len(unknowns), 'unknown')} ({named}) from {_count(len(lines), 'equation')}"
+            if unknowns
+            else f"no unknowns; {_count(len(lines), 'equation')}"
+        )
         if outcome.redundant:
             detail += "; redundant and consistent: " + ", ".join(
                 lines[i] for i in outcome.redundant

@@ -43,6 +43,8 @@ class Formula:
     formula_latex: str
     value: str  # 3 s.f. with unit, or the formula for symbolic problems
     value_latex: str
+    substituted: str = ""  # the formula with the numbers put in (base units), "" when none
+    substituted_latex: str = ""
 
 
 @dataclass(frozen=True)

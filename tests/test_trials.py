@@ -61,3 +61,23 @@ def test_json_holds_the_trial(pole) -> None:
 def test_no_trial_when_the_assumption_holds() -> None:
     # Hibbeler 17.11 drum: a pin and a cord, nothing assumed that could fail
     assert solve_file(ROOT / "problems" / "seed" / "fa_hib_drum.dyn").trials == ()
+
+
+def test_each_step_puts_the_numbers_in(pole) -> None:
+    # after the slip: α = (P (L/2 − h_P)·2 ... written as sympy orders it, with the givens put
+    # in: L = 3 m, N_A = 981 N, μk = 0.25, P = 400 N, h_P = 0.5 m, I_G = 75 kg·m²;
+    # (−735.75 + 1200 − 400)/150 = 0.428 rad/s² (Hibbeler 17.15)
+    results = {r.name: r for step in pole.steps for r in step.results}
+    alpha = results["alpha"]
+    assert alpha.substituted == "(-3*981*0.25 + 3*400 - 2*400*0.5)/(2*75)"
+    assert alpha.value == "0.428 rad/s²"
+    assert "\\cdot" in alpha.substituted_latex
+
+
+def test_the_structure_check_names_the_unknowns(pole) -> None:
+    # Hibbeler 17.15 writes "five unknowns" before solving; the scene has four here:
+    # F_A (μk N_A once slipping), N_A, a_Gx, a_Gy, α minus the friction now known
+    structure = next(c for c in pole.checks if c.name == "structure")
+    assert structure.detail.startswith("4 unknowns (")
+    for name in ("N_A", "a_Gx", "a_Gy", "α"):
+        assert name in structure.detail

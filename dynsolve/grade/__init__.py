@@ -1,1 +1,1 @@
-"""Batch grading of a class's answers: cells, semantics, diagnosis, reports, resume."""
+"""Batch grading: per-student variants, expected answers, grading, diagnosis and reports."""

@@ -25,12 +25,12 @@ magnitude within tolerance gives the sentence.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from dynsolve.grade.semantics import Key, Rule
-from dynsolve.spec.ast import Binary, EquationStmt, Given, Name, Spec
+from dynsolve.spec.ast import Binary, EquationStmt, Given, Name, Quantity, Spec
 from dynsolve.spec.parser import parse_unit
 from dynsolve.system import SolveOptions
 from dynsolve.units import Dim
@@ -54,14 +54,24 @@ class Mistake:
 class Diagnoser:
     """The classic mistakes of one problem (one variant), re-solved lazily and once."""
 
-    def __init__(self, spec: Spec, options: SolveOptions | None = None, model: bool = True) -> None:
+    def __init__(
+        self,
+        spec: Spec,
+        options: SolveOptions | None = None,
+        model: bool = True,
+        variants: Mapping[str, Mapping[str, str]] | None = None,
+    ) -> None:
         self.spec = spec
         self.options = options or SolveOptions()
-        self.model = model  # False: answer-side slips only (each student has own variant)
+        self.model = model  # False: answer-side slips only
+        self.variants = variants  # each student's givens: their own models' mistakes
+        self._by_student: dict[str, list[Mistake]] | None = None
         self._mistakes: list[Mistake] | None = None
         self._slips: dict[tuple[str, tuple[float, ...]], list[tuple[str, float]]] = {}
 
-    def diagnose(self, part: str, value: float, keys: Mapping[str, Key], rule: Rule) -> str:
+    def diagnose(
+        self, part: str, value: float, keys: Mapping[str, Key], rule: Rule, student: str = ""
+    ) -> str:
         """The sentence naming the mistake that gives ``value`` for ``part``, or ""."""
         key = keys[part]
         tolerance = max(MATCH_RTOL, rule.rtol)
@@ -71,7 +81,7 @@ class Diagnoser:
         for sentence, candidate in self._slips[signature]:
             if _close(value, candidate, tolerance) and not _close(candidate, key.value, 1e-9):
                 return sentence
-        for mistake in self.mistakes():
+        for mistake in self.mistakes(student):
             candidate = mistake.values.get(part)
             if candidate is None or _close(candidate, key.value, 1e-6):
                 continue  # this mistake does not change this part
@@ -79,8 +89,13 @@ class Diagnoser:
                 return mistake.sentence
         return ""
 
-    def mistakes(self) -> list[Mistake]:
-        """Every model-side mistake that solves, each re-solved once."""
+    def mistakes(self, student: str = "") -> list[Mistake]:
+        """Every model-side mistake that solves, each re-solved once (with variants: the
+        student's own, all students' evaluated together on the first call)."""
+        if self.variants is not None and self.model:
+            if self._by_student is None:
+                self._by_student = variant_mistakes(self.spec, self.variants, self.options)
+            return self._by_student.get(student, [])
         if self._mistakes is None:
             self._mistakes = []
             if not self.model:
@@ -129,67 +144,129 @@ def _solve(spec: Spec, options: SolveOptions) -> dict[str, float] | None:
         return None
 
 
+Change = Callable[[Quantity], Quantity]
+
+
+def variant_mistakes(
+    spec: Spec, variants: Mapping[str, Mapping[str, str]], options: SolveOptions
+) -> dict[str, list[Mistake]]:
+    """The given-level mistakes on every student's own variant: each mistake is one more
+    set of variants (the student's cells changed), solved for the whole class at once by
+    :func:`dynsolve.grade.expected.expected_answers` (vectorized where it can)."""
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.cells import NEGATIVE
+    from dynsolve.grade.expected import expected_answers
+    from dynsolve.spec.parser import parse_quantity
+
+    givens = {g.name: g.quantity for g in spec.givens if g.quantity is not None}
+    out: dict[str, list[Mistake]] = {student: [] for student in variants}
+    for sentence, changes in modifications(spec):
+        modified: dict[str, dict[str, str]] = {}
+        for student, cells in variants.items():
+            row = dict(cells)
+            for name, change in changes.items():
+                try:
+                    text = cells.get(name, "")
+                    quantity = parse_quantity(text) if text.strip() else givens[name]
+                except DynsolveError:
+                    break
+                changed = change(quantity)
+                row[name] = f"{changed.text} {changed.unit.text if changed.unit else ''}".strip()
+            else:
+                modified[student] = row
+        try:
+            result = expected_answers(spec, modified, options)
+        except Exception:
+            continue
+        for student, expected in getattr(result, "students", result).items():
+            if expected.error:
+                continue
+            values = {
+                name: (-1.0 if answer.direction in NEGATIVE else 1.0) * answer.value
+                for name, answer in expected.answers.items()
+            }
+            out[student].append(Mistake(sentence, values))
+    return out
+
+
 def _variants(spec: Spec) -> list[tuple[str, Spec]]:
     """Each mistaken model, with the sentence that names it."""
-    out: list[tuple[str, Spec]] = []
+    out = [(sentence, _changed(spec, changes)) for sentence, changes in modifications(spec)]
+    return out + _parallel_axis(spec)
+
+
+def modifications(spec: Spec) -> list[tuple[str, dict[str, Change]]]:
+    """Each given-level mistake: its sentence and how it changes which givens' quantities.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  r = 0.4 m\\nequations:\\n  x = 2*r\\nfind: x\\n", "p")
+    >>> [(sentence, list(changes)) for sentence, changes in modifications(spec)]
+    [('the diameter used for the radius r', ['r'])]
+    """
+    out: list[tuple[str, dict[str, Change]]] = []
     givens = {g.name: g for g in spec.givens if g.quantity is not None}
-    for given in givens.values():
+    for name, given in givens.items():
         unit = _unit_text(given)
-        if unit == "deg":
-            out.append(
-                (f"{given.name} in degrees taken as radians", _with_unit(spec, given, "rad"))
-            )
-        elif unit == "rad":
-            out.append(
-                (f"{given.name} in radians taken as degrees", _with_unit(spec, given, "deg"))
-            )
+        if unit in ("deg", "rad"):
+            other = "rad" if unit == "deg" else "deg"
+            words = ("degrees", "radians") if unit == "deg" else ("radians", "degrees")
+            out.append((f"{name} in {words[0]} taken as {words[1]}", {name: _unit_to(other)}))
         elif unit == "lb" and spec.system == "FPS":
-            out.append(
-                (
-                    f"the weight {given.name} in lb used as a mass (x32.2)",
-                    _scaled(spec, given, G_FACTOR),
-                )
-            )
+            sentence = f"the weight {name} in lb used as a mass (x32.2)"
+            out.append((sentence, {name: _times(G_FACTOR)}))
         elif unit in ("slug", "lbm"):
             other = "lbm" if unit == "slug" else "slug"
-            out.append((f"{given.name} in {unit} taken as {other}", _with_unit(spec, given, other)))
-        if given.name == "g":
-            out.append(("g left out (g = 1)", _valued(spec, given, Fraction(1))))
+            out.append((f"{name} in {unit} taken as {other}", {name: _unit_to(other)}))
+        if name == "g":
+            out.append(("g left out (g = 1)", {name: _set(Fraction(1))}))
             if unit == "m/s^2":
-                out.append(
-                    ("g from the US system (32.2) in an SI problem", _valued(spec, given, G_FACTOR))
-                )
+                sentence = "g from the US system (32.2) in an SI problem"
+                out.append((sentence, {name: _set(G_FACTOR)}))
             elif unit == "ft/s^2":
-                out.append(
-                    (
-                        "g from SI (9.81) in a US-system problem",
-                        _valued(spec, given, Fraction(981, 100)),
-                    )
-                )
-        if _is_radius(given.name):
-            out.append(
-                (
-                    f"the diameter used for the radius {given.name}",
-                    _scaled(spec, given, Fraction(2)),
-                )
-            )
-        elif _is_diameter(given.name):
-            out.append(
-                (
-                    f"the radius used for the diameter {given.name}",
-                    _scaled(spec, given, Fraction(1, 2)),
-                )
-            )
+                sentence = "g from SI (9.81) in a US-system problem"
+                out.append((sentence, {name: _set(Fraction(981, 100))}))
+        if _is_radius(name):
+            sentence = f"the diameter used for the radius {name}"
+            out.append((sentence, {name: _times(Fraction(2))}))
+        elif _is_diameter(name):
+            sentence = f"the radius used for the diameter {name}"
+            out.append((sentence, {name: _times(Fraction(1, 2))}))
     if "mu_s" in givens and "mu_k" in givens:
-        swapped = [
-            replace(g, quantity=givens["mu_k" if g.name == "mu_s" else "mu_s"].quantity)
-            if g.name in ("mu_s", "mu_k")
-            else g
-            for g in spec.givens
-        ]
-        out.append(("mu_s and mu_k swapped", replace(spec, givens=tuple(swapped))))
-    out.extend(_parallel_axis(spec))
+        mu_s, mu_k = givens["mu_s"].quantity, givens["mu_k"].quantity
+        assert mu_s is not None and mu_k is not None
+        swap = {"mu_s": _swap_with(mu_k.value), "mu_k": _swap_with(mu_s.value)}
+        out.append(("mu_s and mu_k swapped", swap))
     return out
+
+
+def _unit_to(unit: str) -> Change:
+    return lambda q: replace(q, unit=parse_unit(unit))
+
+
+def _times(factor: Fraction) -> Change:
+    return lambda q: _valued_quantity(q, q.value * factor)
+
+
+def _set(value: Fraction) -> Change:
+    return lambda q: _valued_quantity(q, value)
+
+
+def _swap_with(value: Fraction) -> Change:
+    return lambda q: _valued_quantity(q, value)
+
+
+def _valued_quantity(quantity: Quantity, value: Fraction) -> Quantity:
+    return replace(quantity, value=value, text=format(float(value), ".12g"))
+
+
+def _changed(spec: Spec, changes: Mapping[str, Change]) -> Spec:
+    givens = tuple(
+        replace(g, quantity=changes[g.name](g.quantity))
+        if g.name in changes and g.quantity is not None
+        else g
+        for g in spec.givens
+    )
+    return replace(spec, givens=givens)
 
 
 def _parallel_axis(spec: Spec) -> list[tuple[str, Spec]]:
@@ -230,24 +307,3 @@ def _is_diameter(name: str) -> bool:
 def _unit_text(given: Given) -> str:
     assert given.quantity is not None
     return given.quantity.unit.text.replace(" ", "") if given.quantity.unit else ""
-
-
-def _swap(spec: Spec, given: Given, new: Given) -> Spec:
-    return replace(spec, givens=tuple(new if g is given else g for g in spec.givens))
-
-
-def _with_unit(spec: Spec, given: Given, unit: str) -> Spec:
-    assert given.quantity is not None
-    quantity = replace(given.quantity, unit=parse_unit(unit))
-    return _swap(spec, given, replace(given, quantity=quantity))
-
-
-def _valued(spec: Spec, given: Given, value: Fraction) -> Spec:
-    assert given.quantity is not None
-    quantity = replace(given.quantity, value=value, text=str(value))
-    return _swap(spec, given, replace(given, quantity=quantity))
-
-
-def _scaled(spec: Spec, given: Given, factor: Fraction) -> Spec:
-    assert given.quantity is not None
-    return _valued(spec, given, given.quantity.value * factor)

@@ -34,6 +34,7 @@ class Keys:
     per_student: Mapping[str, Mapping[str, Key]] = field(default_factory=dict)
     errors: Mapping[str, str] = field(default_factory=dict)  # student -> why no key
     path: str = "one solve"
+    variants: Mapping[str, Mapping[str, str]] = field(default_factory=dict)  # their givens
 
     def for_student(self, student: str) -> Mapping[str, Key]:
         """The keys ``student`` is graded against (their variant's, else the base's)."""
@@ -93,4 +94,5 @@ def variant_keys(
                 name, sign * answer.value, answer.dim, answer.unit, info.factor
             )
     base = keys_of(solve_spec(spec, options))
-    return Keys(base, per_student, errors, getattr(result, "path", "per-variant"))
+    path = getattr(result, "path", "per-variant")
+    return Keys(base, per_student, errors, path, variants)

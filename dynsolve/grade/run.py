@@ -69,7 +69,7 @@ def grade_row(
         result = judge(text, key, rule, units.get(name, ""))
         feedback = result.detail
         if result.verdict == "wrong" and doctor is not None and result.value is not None:
-            named = doctor.diagnose(name, result.value, keys, rule)
+            named = doctor.diagnose(name, result.value, keys, rule, student)
             feedback = f"{named} ({result.detail})" if named else result.detail
         parts[name] = {
             "answer": text.strip(),
@@ -108,8 +108,8 @@ def grade_sheet(
     """Grade every row in order; with a ``journal``, record each row as it is finished
     and, with ``resume``, reuse the rows a previous run recorded under the same ``stamp``."""
     done = _read_journal(journal, stamp) if (journal and resume) else {}
-    if doctor is not None and keys.per_student:  # variants: the base model is not theirs
-        doctor = Diagnoser(doctor.spec, doctor.options, model=False)
+    if doctor is not None and keys.per_student:  # variants: each student's own model
+        doctor = Diagnoser(doctor.spec, doctor.options, doctor.model, keys.variants)
     results: list[StudentResult] = []
     handle = _open_journal(journal, stamp, bool(done)) if journal else None
     try:

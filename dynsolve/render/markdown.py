@@ -228,8 +228,9 @@ def _step(step: Step) -> str:
 def _result(result: Formula) -> str:
     """``T = \\frac{...}{...} = 106\\,\\mathrm{N}``; the value alone when no formula."""
     formula, value = result.formula_latex.strip(), result.value_latex.strip()
-    parts = [p for p in (formula, value) if p]
-    if len(parts) == 2 and formula == value:
+    numbers = result.substituted_latex.strip()
+    parts = [p for p in (formula, numbers, value) if p]
+    if len(parts) >= 2 and formula == value:
         parts = [formula]
     return f"{latex_name(result.name)} = " + " = ".join(parts or ["?"])
 

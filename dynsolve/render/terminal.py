@@ -148,6 +148,8 @@ def _step(step: Step) -> RenderableType:
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
+        if result.substituted:
+            formula += f" = {result.substituted}"
         rows.append(Text(f"{pretty(result.name)}{formula} = ") + Text(result.value, style="bold"))
     for discarded in step.discarded:
         rows.append(Text(f"discarded {discarded}", style="yellow"))
