@@ -59,10 +59,12 @@ class CheckFormat(enum.StrEnum):
 
 
 class Mode(enum.StrEnum):
-    """Solve modes: exact (rationals, radicals, formulas) or numeric (floating point)."""
+    """Solve modes: exact (rationals, radicals, formulas), numeric (floating point) or auto
+    (numeric, escalated to exact when float64 would lose more than 3 digits)."""
 
     exact = "exact"
     numeric = "numeric"
+    auto = "auto"
 
 
 @dataclass(frozen=True)
@@ -177,7 +179,11 @@ def solve(
         ),
     ] = None,
     mode: Annotated[
-        Mode, typer.Option(help="exact: rationals and formulas; numeric: floating point.")
+        Mode,
+        typer.Option(
+            help="exact: rationals and formulas; numeric: floating point; auto: numeric, "
+            "escalated to exact when float64 would lose more than 3 digits."
+        ),
     ] = Mode.exact,
     handout: Annotated[
         bool,

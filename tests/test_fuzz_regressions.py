@@ -75,3 +75,32 @@ def test_a_constraint_with_a_side_that_is_not_real_is_a_clean_error(tmp_path):
     assert "c.dyn:2:3: this constraint compares a value that is not a real number" in (
         result.output
     )
+
+
+@pytest.mark.parametrize(
+    ("equation", "name", "expected"),
+    [
+        # 1e-9^1e-30 = exp(1e-30 * ln 1e-9) = 1 - 2.1e-29; sin(0.5) = 0.4794255386 (tables)
+        ("theta = 1e-9^1e-30 + sin(.5)", "theta", 1.4794255386),
+        # 0.5^1e-9/1e30 is about 1e-30, atan2(1e-30, 0.5) = 2e-30 rad, cos of it = 1
+        ("t = cos(atan2(0.5^1e-9/1e30*1, .5))", "t", 1.0),
+        # --3 = 3, 1e3^1e-30 = 1 (to 1e-29), exp(log(-9.81)) = -9.81: 3 - 1 - 9.81 = -7.81
+        ("x = --3+-1e3^1e-30+exp(log(-9.81))", "x", -7.81),
+    ],
+)
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_tiny_exponents_solve_fast(equation, name, expected, mode):
+    # Open fuzz hangs: a Float^Float power such as 1e-9^1e-30 became a 10^30-th root of a
+    # rational, and sympy's linsolve worked on it until the whole run's time budget (30 s).
+    import time
+
+    from dynsolve.pipeline import solve_text
+    from dynsolve.system import SolveOptions
+
+    started = time.process_time()
+    solution = solve_text(
+        f"equations:\n  {equation}\nfind: {name}\n", options=SolveOptions(mode=mode)
+    )
+    assert time.process_time() - started < 5.0
+    (row,) = solution.answers
+    assert row.value == pytest.approx(expected, rel=1e-9)

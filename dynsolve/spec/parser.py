@@ -873,8 +873,15 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
     def pivot_stmt(self, c: list[Any]) -> SceneStmt:
-        body, point, restitution = c
-        return self._stmt("pivot", body, body=str(body), name=str(point), value=restitution)
+        body, point, restitution, *line = c
+        return self._stmt(
+            "pivot",
+            body,
+            body=str(body),
+            name=str(point),
+            value=restitution,
+            direction=line[0] if line else None,
+        )
 
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
         body, other, restitution, line = c
@@ -905,9 +912,13 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def _stops(self, c: list[Any]) -> tuple[list[Any], tuple[Prop, ...]]:
-        """Split a trailing ', stops' (at rest in state 2) off a travel line."""
+        """Split a trailing ', stops' (at rest in state 2; also ', until stops') or
+        ', until rolls' (slides until it rolls) off a travel line."""
         if isinstance(c[-1], Token) and c[-1].type == "STOPS":
-            return c[:-1], (Prop("stops", line=self.line, column=self._col(c[-1])),)
+            where = {"line": self.line, "column": self._col(c[-1])}
+            if str(c[-1]).rstrip().endswith("rolls"):
+                return c[:-1], (Prop("until", word="rolls", **where),)
+            return c[:-1], (Prop("stops", **where),)
         return c, ()
 
     def travel_stmt(self, c: list[Any]) -> SceneStmt:
@@ -923,6 +934,29 @@ class _Builder(Transformer_NonRecursive):
     def travel_for_stmt(self, c: list[Any]) -> SceneStmt:
         (body, duration), stops = self._stops(c)
         return self._stmt("travel", body, body=str(body), value=duration, word="for", props=stops)
+
+    def travel_until_stmt(self, c: list[Any]) -> SceneStmt:
+        """``travel B: until NAME slack`` or ``until contact lost``: a particle on a circle
+        (a cord or link to a fixed point, or a circular path) goes on until the cord's
+        tension or the surface's push falls to zero."""
+        body, until, first, *rest = c
+        words = (str(first), *(str(w) for w in rest))
+        event = " ".join(words[1:])
+        if words in (("rolls",), ("stops",)):
+            raise SpecError(
+                f"'until {words[0]}' ends an interval whose time is named",
+                self._at(first),
+                hint=f"write e.g. 'travel {body}: for t_1, until {words[0]}' and find t_1",
+            )
+        if len(words) != 2 or event not in ("slack", "lost"):
+            raise SpecError(
+                f"unknown end of a travel: 'until {' '.join(words)}'",
+                self._at(first),
+                hint="write 'until CORD slack', 'until contact lost' (or, on a 'for' line, "
+                "', until rolls' / ', until stops')",
+            )
+        prop = Prop("until", word=event, about=words[0], line=self.line, column=self._col(until))
+        return self._stmt("travel", body, body=str(body), word="until", props=(prop,))
 
     def travel_turns_stmt(self, c: list[Any]) -> SceneStmt:
         (body, angle, sense), stops = self._stops(c)
