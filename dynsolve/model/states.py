@@ -410,6 +410,35 @@ def state_change(
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)
 
 
+def placements_of(scene: Scene) -> tuple[dict[str, Placement], dict[str, sympy.Expr]]:
+    """Each body's placement and each link's turn in the state the ``travel`` line gives,
+    without the velocities: the travel may be a free parameter (a simulation's coordinate).
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Body, Support, Travel
+    >>> r, q = sympy.symbols("r q", positive=True)
+    >>> disk = Body("disk", 1, 1, (0, r), (0, r), "disk", (r,), {}, False, "", 0, 0)
+    >>> rolls = Support("rolls", "C", "disk", (0, 0), (0, 1))
+    >>> scene = Scene({"disk": disk}, {}, (rolls,), (), (), None, {},
+    ...               travels={"disk": Travel("disk", "turns", angle=q)})
+    >>> placements, _ = placements_of(scene)
+    >>> placements["disk"].shift
+    (-q*r, 0)
+    """
+    x = _Unknowns(scene)
+    equations, _ = _position_constraints(scene, x)
+    known = _solve_positions(equations, x)
+    missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
+    missing += [n for n in x.links if x.phi[n] not in known]
+    if missing:
+        raise ValueError(f"the position of {', '.join(missing)} is not fixed by the scene")
+    placements = {
+        n: Placement((known[x.u[n]], known[x.w[n]]), known[x.phi[n]], known[x.c[n]], known[x.s[n]])
+        for n in x.bodies
+    }
+    return placements, {n: known[x.phi[n]] for n in x.links}
+
+
 def initial_rates(
     scene: Scene, given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None
 ) -> Rates:

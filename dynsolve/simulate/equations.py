@@ -1,0 +1,346 @@
+"""The equation of motion of a one-degree-of-freedom scene in one coordinate q (Lagrange).
+
+Every body's placement is a function of q (:func:`dynsolve.model.states.placements_of`
+with the travel left as the parameter, or a particle's straight line), so
+T = ½ M(q) q'² with M = Σ m |dr_G/dq|² + I_G (dθ/dq)², and Lagrange's equation reads
+M q'' + ½ M' q'² = Q(q, q'). Q is the derivative of the work of the scene's loads,
+written as a potential V(q) (weights −m g·r_G, springs ½ k (L − L₀)², constant forces
+−F·r_P, couples −M θ) plus kinetic friction −μk N |dr_C/dq| sign q', with N from the
+balance across a straight surface of a translating body. The functions are built with
+sympy once and lambdified to plain floats.
+
+>>> import sympy
+>>> from dynsolve.model.scene import Body, Scene
+>>> ball = Body("ball", 2, 0, (0, 5), (0, 5), "particle", (), {}, True, "", 0, 0)
+>>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {})
+>>> motion = straight_line(scene, "ball", (0, -1), {"g": sympy.Float(9.81)}, {})
+>>> motion.acceleration(0.0, 0.0)  # q is the drop: q'' = g
+9.81
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.model.scene import Scene, Support, Travel, Vec
+from dynsolve.model.states import Placement, placements_of
+
+Q = sympy.Symbol("q", real=True)
+
+
+class NotSimulable(ValueError):
+    """The scene's motion cannot be written as one coordinate's equation here (the reason)."""
+
+
+@dataclass(frozen=True)
+class OneDof:
+    """M(q) q'' + ½ M'(q) q'² = Q(q, q'), with the placements to report and check."""
+
+    coordinate: str  # what q measures
+    unit: str  # "rad" or "m"
+    _terms: Callable[[float], tuple[float, ...]]  # q -> (M, M', Qc, friction size, V)
+    _places: Callable[[float], tuple[float, ...]]  # q -> per body x_G, y_G, θ, dx, dy, dθ
+    bodies: tuple[str, ...]
+    masses: tuple[float, ...]
+    inertias: tuple[float, ...]
+
+    def acceleration(self, q: float, qd: float) -> float:
+        """q'' from Lagrange's equation at (q, q')."""
+        M, dM, Qc, friction, _ = self._terms(q)
+        return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
+
+    def friction_power(self, q: float, qd: float) -> float:
+        """The (negative) power of kinetic friction at (q, q')."""
+        return -self._terms(q)[3] * abs(qd)
+
+    def energy(self, q: float, qd: float) -> float:
+        """T + V (V of the weights, springs and constant loads; friction is not in it)."""
+        M, _, _, _, V = self._terms(q)
+        return 0.5 * M * qd * qd + V
+
+    def kinetic(self, q: float, qd: float) -> float:
+        """T = ½ M(q) q'²."""
+        return 0.5 * self._terms(q)[0] * qd * qd
+
+    def generalized_force(self, q: float, qd: float) -> float:
+        """Q(q, q'): the loads' generalized force, friction included."""
+        _, _, Qc, friction, _ = self._terms(q)
+        return Qc - friction * _sign(qd)
+
+    def places(self, q: float) -> dict[str, tuple[float, ...]]:
+        """Per body: x_G, y_G, Δθ, and dx_G/dq, dy_G/dq, dθ/dq."""
+        flat = self._places(q)
+        return {name: tuple(flat[6 * i : 6 * i + 6]) for i, name in enumerate(self.bodies)}
+
+    def velocities(self, q: float, qd: float) -> dict[str, tuple[float, float, float]]:
+        """Per body: v_Gx, v_Gy, ω (ccw positive) at (q, q')."""
+        return {n: (p[3] * qd, p[4] * qd, p[5] * qd) for n, p in self.places(q).items()}
+
+
+def _sign(x: float) -> float:
+    return 0.0 if x == 0 else math.copysign(1.0, x)
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _point(scene: Scene, placements: Mapping[str, Placement], body: str, P: Vec) -> Vec:
+    """Where the material point of ``body`` at P in the scene is after the placement."""
+    placement = placements.get(body)
+    if placement is None:
+        return P
+    G = scene.bodies[body].G
+    rho = (P[0] - G[0], P[1] - G[1])
+    c, s = placement.cos, placement.sin
+    return (
+        G[0] + placement.shift[0] + c * rho[0] - s * rho[1],
+        G[1] + placement.shift[1] + s * rho[0] + c * rho[1],
+    )
+
+
+def mechanism(
+    scene: Scene,
+    travel: Travel,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    coordinate: str,
+    unit: str,
+) -> OneDof:
+    """The equation of motion of a rigid body or linkage, q the parameter of ``travel``
+    (``angle``/``distance`` written in terms of :data:`Q`)."""
+    from dataclasses import replace
+
+    try:
+        placements, link_turns = placements_of(replace(scene, travels={travel.body: travel}))
+    except ValueError as exc:
+        raise NotSimulable(str(exc)) from None
+    return _build(scene, placements, link_turns, symbols, values, coordinate, unit)
+
+
+def straight_line(
+    scene: Scene,
+    body: str,
+    direction: Vec,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> OneDof:
+    """A lone particle moving along the straight line ``direction`` (unit) from its place,
+    q the distance along it; the line must be a guide's, or the forces must have no part
+    across it (else its path is not straight)."""
+    unit = (sympy.Integer(0) + direction[0], sympy.Integer(0) + direction[1])
+    placements = {body: Placement((Q * unit[0], Q * unit[1]), sympy.Integer(0), 1, 0)}
+    if not any(s.body == body for s in scene.supports):
+        across = (-unit[1], unit[0])
+        net = _applied(scene, placements, body, symbols)
+        push = _number(_dot(net, across), values, free=(Q,))
+        scale = _number(sympy.sqrt(_dot(net, net)), values, free=(Q,))
+        for q in (0.0, 0.5, 1.0):
+            if abs(push(q)) > 1e-12 * max(scale(q), 1e-300):
+                raise NotSimulable(
+                    f"the forces on {body} have a part across its travel and nothing guides "
+                    "it: its path is not straight"
+                )
+    return _build(scene, placements, {}, symbols, values, f"distance of {body} along its travel", "m")
+
+
+def _applied(
+    scene: Scene, placements: Mapping[str, Placement], body: str, symbols: Mapping[str, sympy.Expr]
+) -> Vec:
+    """The sum of the weight, constant forces and springs on ``body`` (no supports)."""
+    fx, fy = sympy.Integer(0), sympy.Integer(0)
+    mass = scene.bodies[body].mass
+    if scene.gravity is not None:
+        fx += mass * symbols["g"] * scene.gravity[0]
+        fy += mass * symbols["g"] * scene.gravity[1]
+    for load in scene.loads:
+        if load.body == body and load.kind == "force":
+            fx += _size(load.name, symbols) * load.direction[0]
+            fy += _size(load.name, symbols) * load.direction[1]
+    for spring in scene.springs:
+        if body not in (spring.body, spring.other):
+            continue
+        a = _point(scene, placements, spring.body, spring.point)
+        b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
+        b = b or spring.other_point
+        d = (b[0] - a[0], b[1] - a[1])  # from the spring's start toward its other end
+        length = sympy.sqrt(_dot(d, d))
+        pull = spring.k * (length - spring.unstretched) / length
+        sense = 1 if spring.body == body else -1
+        fx += sense * pull * d[0]
+        fy += sense * pull * d[1]
+    return fx, fy
+
+
+def _size(name: str, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
+    if name not in symbols:
+        raise NotSimulable(f"the size of the load {name} is not known")
+    return symbols[name]
+
+
+def _number(
+    expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], free: tuple[sympy.Symbol, ...]
+) -> Callable[..., float]:
+    """``expr`` with the values substituted, as a float function of ``free``."""
+    numeric = (sympy.Integer(0) + expr).xreplace(dict(values))
+    left = numeric.free_symbols - set(free)
+    if left:
+        names = ", ".join(sorted(str(s) for s in left))
+        raise NotSimulable(f"symbolic givens ({names}) have no values")
+    return sympy.lambdify(free, numeric, "math")
+
+
+def _potential(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    link_turns: Mapping[str, sympy.Expr],
+    symbols: Mapping[str, sympy.Expr],
+) -> sympy.Expr:
+    """V(q) of the weights, springs, constant forces and couples (V = 0 in the scene)."""
+    terms: list[sympy.Expr] = []
+    if scene.gravity is not None:
+        for name, placement in placements.items():
+            weight = scene.bodies[name].mass * symbols["g"]
+            terms.append(-weight * _dot(scene.gravity, placement.shift))
+    for spring in scene.springs:
+        if spring.body not in placements and spring.other not in placements:
+            continue
+        if spring.wound:
+            placement = placements[spring.body]
+            G = scene.bodies[spring.body].G
+            rho = (spring.point[0] - G[0], spring.point[1] - G[1])
+            a = (
+                spring.point[0] + placement.shift[0] - placement.turn * rho[1],
+                spring.point[1] + placement.shift[1] + placement.turn * rho[0],
+            )
+        else:
+            a = _point(scene, placements, spring.body, spring.point)
+        b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
+        b = b or spring.other_point
+        d = (b[0] - a[0], b[1] - a[1])
+        terms.append(spring.k * (sympy.sqrt(_dot(d, d)) - spring.unstretched) ** 2 / 2)
+    for load in scene.loads:
+        if load.kind == "couple":
+            turn = link_turns.get(load.body)
+            if turn is None:
+                placement = placements.get(load.body)
+                turn = placement.turn if placement is not None else sympy.Integer(0)
+            terms.append(-_size(load.name, symbols) * load.sense * turn)
+        elif load.body in placements:
+            P = _point(scene, placements, load.body, load.point)
+            step = (P[0] - load.point[0], P[1] - load.point[1])
+            terms.append(-_size(load.name, symbols) * _dot(load.direction, step))
+    return sympy.Add(*terms)
+
+
+def _friction(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> sympy.Expr:
+    """Σ μk N |dr_C/dq| over the rough contacts that slide (its sign is set by q')."""
+    total = sympy.Integer(0)
+    for support in scene.supports:
+        if support.body not in placements or support.kind in ("pin", "rolls"):
+            continue
+        P = _point(scene, placements, support.body, support.point)
+        slip = (sympy.diff(P[0], Q), sympy.diff(P[1], Q))
+        if _is_still(slip, values):
+            continue
+        if support.smooth:
+            continue
+        if support.mu_k is None:
+            raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
+        total += support.mu_k * _normal(scene, placements, support, symbols, values) * sympy.sqrt(
+            _dot(slip, slip)
+        )
+    return total
+
+
+def _is_still(slip: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+    speed = _number(_dot(slip, slip), values, free=(Q,))
+    return all(abs(speed(q)) < 1e-24 for q in (0.0, 0.37, 1.0))
+
+
+def _normal(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    support: Support,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> sympy.Expr:
+    """N at a contact of a body translating along a straight surface: −ΣF·n of the rest."""
+    name = support.body
+    turn = _number(placements[name].turn, values, free=(Q,))
+    alone = not any(s.body == name and s is not support for s in scene.supports) and not any(
+        name in (link.body, link.other) for link in scene.links
+    )
+    if not alone or any(abs(turn(q)) > 1e-12 for q in (0.0, 0.37, 1.0)):
+        raise NotSimulable(
+            f"the normal force at {support.name} changes with the motion (the body turns, or "
+            "another support or link shares the load)"
+        )
+    N = -_dot(_applied(scene, placements, name, symbols), support.normal)
+    return sympy.Abs(N) if support.two_sided else N
+
+
+def _build(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    link_turns: Mapping[str, sympy.Expr],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    coordinate: str,
+    unit: str,
+) -> OneDof:
+    """Lambdify M, M', Q_c = −V', the friction's size and V, and each body's placement."""
+    mass_matrix = sympy.Integer(0)
+    places: list[sympy.Expr] = []
+    names = tuple(placements)
+    for name in names:
+        body, placement = scene.bodies[name], placements[name]
+        dx, dy = sympy.diff(placement.shift[0], Q), sympy.diff(placement.shift[1], Q)
+        dtheta = sympy.diff(placement.turn, Q)
+        mass_matrix += body.mass * (dx**2 + dy**2) + body.I_G * dtheta**2
+        places += [
+            body.G[0] + placement.shift[0],
+            body.G[1] + placement.shift[1],
+            placement.turn,
+            dx,
+            dy,
+            dtheta,
+        ]
+    V = _potential(scene, placements, link_turns, symbols)
+    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
+    terms += [_friction(scene, placements, symbols, values), V]
+    numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places]]
+    left = set().union(*(t.free_symbols for t in numeric)) - {Q}
+    if left:
+        raise NotSimulable(
+            f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values"
+        )
+    M0 = float(sympy.N(numeric[0].subs(Q, 0)))
+    if not M0 > 0:
+        raise NotSimulable("the scene has no inertia along its motion (M = 0)")
+    masses = tuple(
+        float(sympy.N((sympy.Integer(0) + scene.bodies[n].mass).xreplace(dict(values))))
+        for n in names
+    )
+    inertias = tuple(
+        float(sympy.N((sympy.Integer(0) + scene.bodies[n].I_G).xreplace(dict(values))))
+        for n in names
+    )
+    return OneDof(
+        coordinate,
+        unit,
+        sympy.lambdify([Q], tuple(numeric[:5]), "math", cse=True),
+        sympy.lambdify([Q], tuple(numeric[5:]), "math", cse=True),
+        names,
+        masses,
+        inertias,
+    )
