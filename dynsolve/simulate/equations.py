@@ -145,7 +145,9 @@ def straight_line(
                     f"the forces on {body} have a part across its travel and nothing guides "
                     "it: its path is not straight"
                 )
-    return _build(scene, placements, {}, symbols, values, f"distance of {body} along its travel", "m")
+    return _build(
+        scene, placements, {}, symbols, values, f"distance of {body} along its travel", "m"
+    )
 
 
 def _applied(
@@ -256,8 +258,10 @@ def _friction(
             continue
         if support.mu_k is None:
             raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
-        total += support.mu_k * _normal(scene, placements, support, symbols, values) * sympy.sqrt(
-            _dot(slip, slip)
+        total += (
+            support.mu_k
+            * _normal(scene, placements, support, symbols, values)
+            * sympy.sqrt(_dot(slip, slip))
         )
     return total
 
@@ -321,9 +325,7 @@ def _build(
     numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places]]
     left = set().union(*(t.free_symbols for t in numeric)) - {Q}
     if left:
-        raise NotSimulable(
-            f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values"
-        )
+        raise NotSimulable(f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values")
     M0 = float(sympy.N(numeric[0].subs(Q, 0)))
     if not M0 > 0:
         raise NotSimulable("the scene has no inertia along its motion (M = 0)")

@@ -8,8 +8,8 @@ accuracy. Events are functions of (q, q'); the run stops at a terminal one.
 >>> fall = OneDof("drop", "m", lambda q: (1.0, 0.0, 9.81, 0.0, -9.81 * q),
 ...               lambda q: (0.0, -q, 0.0, 0.0, -1.0, 0.0), ("ball",), (1.0,), (0.0,))
 >>> run = integrate(fall, 0.0, 0.0, 10.0, [Event("q = 2 m", lambda q, qd: q - 2.0, 1)])
->>> round(run.qd[-1], 9)  # v = √(2 g h) = √39.24
-6.264184
+>>> run.stopped_by, round(float(run.qd[-1]), 9)  # v = √(2 g h) = √39.24 = 6.264183905
+('q = 2 m', 6.264183905)
 """
 
 from __future__ import annotations
@@ -112,6 +112,4 @@ def integrate(
     invariant = T + V - uf
     scale = max(float(T.max()), float(np.ptp(V)), float(np.abs(uf).max()), 1e-300)
     drift = float(np.max(np.abs(invariant - invariant[0]))) / scale
-    return Run(
-        t, q, qd, uf, tuple(met), stopped, method, rtol, atol, int(solution.nfev), drift
-    )
+    return Run(t, q, qd, uf, tuple(met), stopped, method, rtol, atol, int(solution.nfev), drift)
