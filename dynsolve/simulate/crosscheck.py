@@ -7,8 +7,8 @@ state of the travel until its end is reached, or until it stops (q' = 0) for a t
 ``stops``. The speed of each G and each ω at the end are compared with the principle's
 answer (relative difference ≤ :data:`AGREEMENT`). For a travel that stops, the check is on
 energy: the kinetic energy left at the end, or the work still needed to get there from
-where the simulation stops, over the largest kinetic energy on the way (where the end is an equilibrium, a stop
-distance is ill-conditioned but this is not). A travel that cannot be simulated says why.
+where the simulation stops, over the largest kinetic energy on the way (where the end is
+an equilibrium a stop distance is ill-conditioned, but this is not). A travel that cannot be simulated says why.
 
 >>> import sympy
 >>> from dynsolve.model.scene import Body, Scene, Travel
@@ -36,7 +36,7 @@ from dynsolve.model.scene import Scene, Travel
 from dynsolve.model.states import particle_shift, placements_of
 from dynsolve.numbers import real_value
 from dynsolve.results import Check
-from dynsolve.simulate.equations import Q, NotSimulable, OneDof, mechanism, straight_line
+from dynsolve.simulate.equations import NotSimulable, OneDof, Q, mechanism, straight_line
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
 
 AGREEMENT = 1e-6  # relative
@@ -57,7 +57,9 @@ class Leg:
     spins: Mapping[str, sympy.Expr]  # ω at the end (ccw positive), per body
 
 
-def simulation_checks(problem: object, values: Mapping[sympy.Symbol, sympy.Expr]) -> tuple[Check, ...]:
+def simulation_checks(
+    problem: object, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
     """A check per travel of a solved scene problem (a note where it cannot be simulated)."""
     formulation = problem.formulation  # type: ignore[attr-defined]
     scene: Scene = problem.scene  # type: ignore[attr-defined]
@@ -292,5 +294,5 @@ def _stops(motion: OneDof, run: Run, q_end: float) -> tuple[bool, str]:
     return passed, (
         f"it comes to rest at q = {q:.7g} (t = {t:.4g} s; principle: q = {q_end:.7g}, "
         f"relative {abs(q - q_end) / q_end:.1e}); the work between the two, over the largest T "
-        f"start, is {short:.1e} {'≤' if passed else '>'} {AGREEMENT:.0e}"
+        f"on the way, is {short:.1e} {'≤' if passed else '>'} {AGREEMENT:.0e}"
     )
