@@ -8,7 +8,8 @@ state of the travel until its end is reached, or until it stops (q' = 0) for a t
 answer (relative difference ≤ :data:`AGREEMENT`). For a travel that stops, the check is on
 energy: the kinetic energy left at the end, or the work still needed to get there from
 where the simulation stops, over the largest kinetic energy on the way (where the end is
-an equilibrium a stop distance is ill-conditioned, but this is not). A travel that cannot be simulated says why.
+an equilibrium a stop distance is ill-conditioned, but this is not). A travel that
+cannot be simulated says why.
 
 >>> import sympy
 >>> from dynsolve.model.scene import Body, Scene, Travel

@@ -14,6 +14,7 @@ accuracy. Events are functions of (q, q'); the run stops at a terminal one.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
@@ -73,11 +74,22 @@ def integrate(
         q, qd = float(y[0]), float(y[1])
         return [qd, motion.acceleration(q, qd), motion.friction_power(q, qd)]
 
+    # the start is never an event: a condition that is 0 there takes the sign it has
+    # just after (a pendulum released from rest is not at a maximum of its swing)
+    h = 1e-7 * t_end
+    a0 = motion.acceleration(q0, qd0)
+    ahead = (q0 + h * qd0 + 0.5 * h * h * a0, qd0 + h * a0)
     wrapped = []
     for event in events:
+        start = event.function(q0, qd0)
+        if start == 0:
+            after = event.function(*ahead)
+            start = math.copysign(1e-300, after) if after != 0 else 1e-300
 
-        def condition(_t: float, y: np.ndarray, f: Callable = event.function) -> float:
-            return f(float(y[0]), float(y[1]))
+        def condition(
+            t: float, y: np.ndarray, f: Callable = event.function, at_start: float = start
+        ) -> float:
+            return at_start if t == 0 else f(float(y[0]), float(y[1]))
 
         condition.terminal = event.terminal  # type: ignore[attr-defined]
         condition.direction = event.direction  # type: ignore[attr-defined]
