@@ -130,7 +130,7 @@ def simulate_leg(
             passed, detail = _reaches(motion, run, q_end, leg, values, length)
     except NotSimulable as exc:
         return Check(name, True, f"not simulated: {exc}")
-    return Check(name, passed, how + detail)
+    return Check(name, bool(passed), how + detail)
 
 
 def travel_motion(

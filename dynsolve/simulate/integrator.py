@@ -52,6 +52,7 @@ class Run:
     atol: float
     evaluations: int
     drift: float = field(default=0.0)  # max |E(t) − E(0)| / scale, E = T + V − U_f
+    last: tuple[float, float, float, float] | None = None  # (t, q, q', U_f) at a terminal event
 
 
 def integrate(
@@ -110,6 +111,7 @@ def integrate(
         raise ValueError(f"the integration failed: {solution.message}")
     met: list[tuple[str, float, float, float]] = []
     stopped = ""
+    last = None
     for event, times, states in zip(
         events, solution.t_events or [], solution.y_events or [], strict=False
     ):
@@ -117,6 +119,7 @@ def integrate(
             met.append((event.name, float(t), float(y[0]), float(y[1])))
             if event.terminal and solution.status == 1:
                 stopped = event.name
+                last = (float(t), float(y[0]), float(y[1]), float(y[2]))
     met.sort(key=lambda item: item[1])
     t, q, qd, uf = solution.t, solution.y[0], solution.y[1], solution.y[2]
     T = np.array([motion.kinetic(a, b) for a, b in zip(q, qd, strict=True)])
@@ -124,4 +127,6 @@ def integrate(
     invariant = T + V - uf
     scale = max(float(T.max()), float(np.ptp(V)), float(np.abs(uf).max()), 1e-300)
     drift = float(np.max(np.abs(invariant - invariant[0]))) / scale
-    return Run(t, q, qd, uf, tuple(met), stopped, method, rtol, atol, int(solution.nfev), drift)
+    return Run(
+        t, q, qd, uf, tuple(met), stopped, method, rtol, atol, int(solution.nfev), drift, last
+    )

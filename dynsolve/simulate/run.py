@@ -227,7 +227,7 @@ def simulate_spec(
         run = integrate(motion, 0.0, qd0, t_end, events, method, rtol, atol, t_eval=grid)
     except ValueError as exc:
         raise SpecError(str(exc), Position("--method", 1, 1), hint="see docs/simulate.md") from None
-    run = _with_last(run, motion)
+    run = _with_last(run)
     period = _period(run.events)
     small, equilibrium = _small_oscillations(motion, run)
     return History(
@@ -244,16 +244,11 @@ def simulate_spec(
     )
 
 
-def _with_last(run: Run, motion: OneDof) -> Run:
+def _with_last(run: Run) -> Run:
     """Add the state at a terminal event as the last sample."""
-    if not run.stopped_by:
+    if run.last is None or (run.t.size and run.t[-1] >= run.last[0]):
         return run
-    _, t, q, qd = next(e for e in reversed(run.events) if e[0] == run.stopped_by)
-    if run.t.size and run.t[-1] >= t:
-        return run
-    uf = float(run.friction_work[-1]) if run.t.size else 0.0
-    if run.t.size:  # U_f at the event, from the friction power over the last gap
-        uf += motion.friction_power(q, qd) * (t - float(run.t[-1]))
+    t, q, qd, uf = run.last
     return replace(
         run,
         t=np.append(run.t, t),
