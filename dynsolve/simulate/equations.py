@@ -48,10 +48,18 @@ class OneDof:
     masses: tuple[float, ...]
     inertias: tuple[float, ...]
 
+    frictionless: bool = False  # no kinetic friction acts (T + V is conserved)
+    _dynamics: Callable[[float], tuple[float, ...]] | None = None  # q -> (M, M', Qc, friction)
+
     def acceleration(self, q: float, qd: float) -> float:
         """q'' from Lagrange's equation at (q, q')."""
-        M, dM, Qc, friction, _ = self._terms(q)
+        M, dM, Qc, friction = (self._dynamics or self._terms)(q)[:4]
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
+
+    def rates(self, q: float, qd: float) -> tuple[float, float]:
+        """q'' and the friction's power at (q, q'), from one evaluation."""
+        M, dM, Qc, friction = (self._dynamics or self._terms)(q)[:4]
+        return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M, -friction * abs(qd)
 
     def friction_power(self, q: float, qd: float) -> float:
         """The (negative) power of kinetic friction at (q, q')."""
@@ -345,4 +353,6 @@ def _build(
         names,
         masses,
         inertias,
+        numeric[3] == 0,
+        sympy.lambdify([Q], tuple(numeric[:4]), "math", cse=True),
     )

@@ -71,9 +71,18 @@ def integrate(
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
 
-    def rhs(_t: float, y: np.ndarray) -> list[float]:
-        q, qd = float(y[0]), float(y[1])
-        return [qd, motion.acceleration(q, qd), motion.friction_power(q, qd)]
+    if motion.frictionless:  # (q, q') only: U_f stays 0
+
+        def rhs(_t: float, y: np.ndarray) -> list[float]:
+            qd = float(y[1])
+            return [qd, motion.acceleration(float(y[0]), qd)]
+
+    else:
+
+        def rhs(_t: float, y: np.ndarray) -> list[float]:
+            qd = float(y[1])
+            qdd, power = motion.rates(float(y[0]), qd)
+            return [qd, qdd, power]
 
     # the start is never an event: a condition that is 0 there takes the sign it has
     # just after (a pendulum released from rest is not at a maximum of its swing)
@@ -98,7 +107,7 @@ def integrate(
     solution = solve_ivp(
         rhs,
         (0.0, t_end),
-        [q0, qd0, 0.0],
+        [q0, qd0] if motion.frictionless else [q0, qd0, 0.0],
         method=method,
         rtol=rtol,
         atol=atol,
@@ -119,9 +128,10 @@ def integrate(
             met.append((event.name, float(t), float(y[0]), float(y[1])))
             if event.terminal and solution.status == 1:
                 stopped = event.name
-                last = (float(t), float(y[0]), float(y[1]), float(y[2]))
+                last = (float(t), float(y[0]), float(y[1]), float(y[2]) if len(y) > 2 else 0.0)
     met.sort(key=lambda item: item[1])
-    t, q, qd, uf = solution.t, solution.y[0], solution.y[1], solution.y[2]
+    t, q, qd = solution.t, solution.y[0], solution.y[1]
+    uf = solution.y[2] if len(solution.y) > 2 else np.zeros_like(t)
     T = np.array([motion.kinetic(a, b) for a, b in zip(q, qd, strict=True)])
     V = np.array([motion.energy(a, b) for a, b in zip(q, qd, strict=True)]) - T
     invariant = T + V - uf
