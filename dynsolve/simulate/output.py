@@ -7,7 +7,7 @@ Pure functions of a :class:`~dynsolve.simulate.run.History`: the CLI writes the 
 >>> text = ("given:\\n  m = 1 kg\\n  L = 1 m\\nscene:\\n  point O: (0, 0)\\n"
 ...         "  body bar: mass m, rod L, at (L/2, 0)\\n  pin bar at O\\n  gravity\\n")
 >>> history = simulate_spec(parse_spec(text, "bar.dyn"), t_end=1.0, samples=3)
->>> history_csv(history).splitlines()[0][:32]
+>>> history_csv(history).splitlines()[0][:33]
 't [s],q [rad],q_dot [rad/s],x_bar'
 """
 
