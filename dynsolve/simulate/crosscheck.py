@@ -138,9 +138,10 @@ def travel_motion(
     travel: Travel,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    simplify: bool = False,
 ) -> tuple[OneDof, float]:
     """The travel's equation of motion, q measured from its start toward its end, and q
-    at the end (> 0)."""
+    at the end (> 0); ``simplify`` for a long run (see :func:`~.equations.mechanism`)."""
     lone = all(b.particle for b in scene.bodies.values()) and not scene.links
     if lone:
         if travel.kind not in ("to", "by"):
@@ -159,16 +160,16 @@ def travel_motion(
         sense = 1 if angle >= 0 else -1
         param = Travel(travel.body, "turns", angle=sense * Q)
         what = f"turn of {travel.body}" + (" (cw)" if sense < 0 else "")
-        return mechanism(scene, param, symbols, values, what, "rad"), abs(angle)
+        return mechanism(scene, param, symbols, values, what, "rad", simplify), abs(angle)
     if travel.kind == "by":
         assert travel.distance is not None and travel.direction is not None
         distance = _value(travel.distance, values)
         sense = 1 if distance >= 0 else -1
         param = Travel(travel.body, "by", distance=sense * Q, direction=travel.direction)
         what = f"distance of G of {travel.body} along its travel"
-        return mechanism(scene, param, symbols, values, what, "m"), abs(distance)
+        return mechanism(scene, param, symbols, values, what, "m", simplify), abs(distance)
     if travel.kind == "to":
-        return _to_motion(scene, travel, symbols, values)
+        return _to_motion(scene, travel, symbols, values, simplify)
     raise NotSimulable(f"a travel '{travel.kind}' is not simulated")
 
 
@@ -177,6 +178,7 @@ def _to_motion(
     travel: Travel,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    simplify: bool = False,
 ) -> tuple[OneDof, float]:
     """A rigid body or linkage travelling to a position: q is the turn of the body or link
     that turns most on the way."""
@@ -194,7 +196,7 @@ def _to_motion(
     sense = 1 if turn > 0 else -1
     param = Travel(name, "turns", angle=sense * Q)
     what = f"turn of {name}" + (" (cw)" if sense < 0 else "")
-    return mechanism(scene, param, symbols, values, what, "rad"), abs(turn)
+    return mechanism(scene, param, symbols, values, what, "rad", simplify), abs(turn)
 
 
 def _value(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:

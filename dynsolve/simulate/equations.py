@@ -24,12 +24,14 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+import numpy as np
 import sympy
 
 from dynsolve.model.scene import Scene, Support, Travel, Vec
 from dynsolve.model.states import Placement, placements_of
 
-Q = sympy.Symbol("q", real=True)
+Q = sympy.Symbol("q")  # no assumptions: a length sqrt(u²) stays smooth, not |u|
+QD = sympy.Symbol("qd", real=True)
 
 
 class NotSimulable(ValueError):
@@ -50,11 +52,27 @@ class OneDof:
 
     frictionless: bool = False  # no kinetic friction acts (T + V is conserved)
     _dynamics: Callable[[float], tuple[float, ...]] | None = None  # q -> (M, M', Qc, friction)
+    _accel: Callable[[float, float], float] | None = None  # (q, q') -> q'' without friction
+    _energies: Callable[..., tuple[object, object]] | None = None  # arrays q, q' -> T, V
+
+    def energies(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """T and V at each sample (arrays)."""
+        if self._energies is None:
+            T = np.array([self.kinetic(a, b) for a, b in zip(q, qd, strict=True)])
+            return T, np.array([self.energy(a, b) for a, b in zip(q, qd, strict=True)]) - T
+        T, V = self._energies(q, qd)
+        return np.broadcast_to(T, q.shape).astype(float), np.broadcast_to(V, q.shape).astype(float)
 
     def acceleration(self, q: float, qd: float) -> float:
         """q'' from Lagrange's equation at (q, q')."""
+        if self._accel is not None:
+            return self._accel(q, qd)
         M, dM, Qc, friction = (self._dynamics or self._terms)(q)[:4]
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
+
+    def accelerator(self) -> Callable[[float, float], float]:
+        """q''(q, q') as one plain function (the fastest right-hand side)."""
+        return self._accel or self.acceleration
 
     def rates(self, q: float, qd: float) -> tuple[float, float]:
         """q'' and the friction's power at (q, q'), from one evaluation."""
@@ -118,6 +136,7 @@ def mechanism(
     values: Mapping[sympy.Symbol, sympy.Expr],
     coordinate: str,
     unit: str,
+    simplify: bool = False,
 ) -> OneDof:
     """The equation of motion of a rigid body or linkage, q the parameter of ``travel``
     (``angle``/``distance`` written in terms of :data:`Q`)."""
@@ -127,7 +146,7 @@ def mechanism(
         placements, link_turns = placements_of(replace(scene, travels={travel.body: travel}))
     except ValueError as exc:
         raise NotSimulable(str(exc)) from None
-    return _build(scene, placements, link_turns, symbols, values, coordinate, unit)
+    return _build(scene, placements, link_turns, symbols, values, coordinate, unit, simplify)
 
 
 def straight_line(
@@ -309,6 +328,7 @@ def _build(
     values: Mapping[sympy.Symbol, sympy.Expr],
     coordinate: str,
     unit: str,
+    simplify: bool = False,
 ) -> OneDof:
     """Lambdify M, M', Q_c = −V', the friction's size and V, and each body's placement."""
     mass_matrix = sympy.Integer(0)
@@ -331,9 +351,13 @@ def _build(
     terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
     terms += [_friction(scene, placements, symbols, values), V]
     numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places]]
+    if simplify:  # a long run: a leaner right-hand side is worth sympy's simplify once
+        numeric[:3] = [min(t, sympy.simplify(t), key=sympy.count_ops) for t in numeric[:3]]
     left = set().union(*(t.free_symbols for t in numeric)) - {Q}
     if left:
         raise NotSimulable(f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values")
+    frictionless = numeric[3] == 0
+    accel = (numeric[2] - numeric[1] * QD**2 / 2) / numeric[0]
     M0 = float(sympy.N(numeric[0].subs(Q, 0)))
     if not M0 > 0:
         raise NotSimulable("the scene has no inertia along its motion (M = 0)")
@@ -353,6 +377,8 @@ def _build(
         names,
         masses,
         inertias,
-        numeric[3] == 0,
+        frictionless,
         sympy.lambdify([Q], tuple(numeric[:4]), "math", cse=True),
+        sympy.lambdify([Q, QD], accel, "math", cse=True) if frictionless else None,
+        sympy.lambdify([Q, QD], (numeric[0] * QD**2 / 2, numeric[4]), "numpy", cse=True),
     )

@@ -72,10 +72,10 @@ def integrate(
         raise ValueError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
 
     if motion.frictionless:  # (q, q') only: U_f stays 0
+        accel = motion.accelerator()
 
         def rhs(_t: float, y: np.ndarray) -> list[float]:
-            qd = float(y[1])
-            return [qd, motion.acceleration(float(y[0]), qd)]
+            return [y[1], accel(y[0], y[1])]
 
     else:
 
@@ -132,8 +132,7 @@ def integrate(
     met.sort(key=lambda item: item[1])
     t, q, qd = solution.t, solution.y[0], solution.y[1]
     uf = solution.y[2] if len(solution.y) > 2 else np.zeros_like(t)
-    T = np.array([motion.kinetic(a, b) for a, b in zip(q, qd, strict=True)])
-    V = np.array([motion.energy(a, b) for a, b in zip(q, qd, strict=True)]) - T
+    T, V = motion.energies(q, qd)
     invariant = T + V - uf
     scale = max(float(T.max()), float(np.ptp(V)), float(np.abs(uf).max()), 1e-300)
     drift = float(np.max(np.abs(invariant - invariant[0]))) / scale

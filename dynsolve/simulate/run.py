@@ -168,16 +168,15 @@ def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
     """The scene's equation of motion in its one coordinate (see the module's docstring)."""
     travels = [t for t in scene.travels.values() if t.kind != "for"]
     if travels:
-        motion, _ = travel_motion(scene, travels[0], symbols, values)
+        motion, _ = travel_motion(scene, travels[0], symbols, values, simplify=True)
         return motion
     reasons = []
     names = [n for n, b in scene.bodies.items() if not b.particle]
     names += [link.name for link in scene.links]
     for name in names:
         try:
-            return mechanism(
-                scene, Travel(name, "turns", angle=Q), symbols, values, f"turn of {name}", "rad"
-            )
+            turn = Travel(name, "turns", angle=Q)
+            return mechanism(scene, turn, symbols, values, f"turn of {name}", "rad", True)
         except NotSimulable as exc:
             reasons.append(str(exc))
     particles = [n for n, b in scene.bodies.items() if b.particle]
