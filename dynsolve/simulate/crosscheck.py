@@ -117,6 +117,8 @@ def simulate_leg(
         run = _run(motion, q_end, qd0)
     except NotSimulable as exc:
         return Check(name, True, f"not simulated: {exc}")
+    except (ArithmeticError, ValueError, TypeError) as exc:  # a singular or complex motion
+        return Check(name, True, f"not simulated: the integration failed ({exc})")
     length = UNITS.get(system, ("m", "rad"))[0]
     unit = length if motion.unit == "m" else motion.unit
     how = (
