@@ -4,6 +4,8 @@ wrong principle answer, and says where a travel cannot be simulated."""
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import dynsolve.principles.work_energy as work_energy
 from dynsolve.pipeline import solve_file
@@ -101,3 +103,33 @@ def test_a_sliding_block_that_stops_is_checked(tmp_path):
     assert check.passed, check.detail
     assert "q = 3.261978" in check.detail  # where it stops or reaches the end at rest
     assert solution.passed
+
+
+PENDULUM = """\
+given:
+  m = 4 kg
+  L = 1.2 m
+  w_1 = {w_1} rad/s
+  turn = {turn} deg
+scene:
+  point O: (0, 0)
+  body rod: mass m, rod L, at (L/2, 0)
+  pin rod at O
+  omega rod: w_1 cw
+  gravity
+  travel rod: turns turn cw
+find: omega = omega2(rod)
+"""
+
+
+@settings(max_examples=5)
+@given(w_1=st.integers(min_value=0, max_value=6), turn=st.integers(min_value=10, max_value=170))
+def test_simulated_and_principle_answers_agree_for_any_swing(tmp_path_factory, w_1, turn):
+    # a rod pinned at its end, horizontal, turning cw at w_1 and swinging down by `turn`:
+    # work and energy and the integrated motion must give the same omega_2
+    spec = tmp_path_factory.mktemp("swing") / "swing.dyn"
+    spec.write_text(PENDULUM.format(w_1=w_1, turn=turn))
+    solution = solve_file(spec)
+    (check,) = simulation(solution)
+    assert check.passed, check.detail
+    assert "not simulated" not in check.detail
