@@ -85,14 +85,14 @@ def hand_disk() -> Hand:
     return Hand(lambda t, y: [y[1], accel(y[0])], energy, [0.0, 0.0])
 
 
-def run_hand(hand: Hand, method: str, rtol: float) -> tuple[float, float]:
-    """q at T_END and the energy drift, as the hand script would compute them."""
+def run_hand(hand: Hand, method: str, rtol: float) -> tuple[float, float, int]:
+    """q at T_END, the energy drift and the number of right-hand side evaluations."""
     sol = solve_ivp(hand.rhs, (0.0, T_END), hand.y0, method=method, rtol=rtol, atol=rtol / 100)
     T, V = hand.energy(sol.y[0], sol.y[1])
     E = T + V
     scale = max(float(np.max(T)), float(np.ptp(V)), 1e-300)  # as dynsolve's drift
     drift = float(np.max(np.abs(E - E[0]))) / scale
-    return float(sol.y[0][-1]), drift
+    return float(sol.y[0][-1]), drift, int(sol.nfev)
 
 
 def paired(ours, hand, repeat: int) -> tuple[float, object, float, object]:
@@ -123,9 +123,9 @@ def main() -> None:
             hand_disk(),
         ),
     }
-    print("| system | method | rtol | error dynsolve | error hand | time dynsolve | time hand "
-          "| ratio | drift dynsolve | drift hand |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| system | method | rtol | error dynsolve | error hand | evaluations dynsolve / hand "
+          "| time dynsolve | time hand | ratio | drift dynsolve | drift hand |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (spec, hand) in systems.items():
         from dynsolve.model.scene import build_scene
         from dynsolve.modes.equation_mode import givens_of
@@ -137,11 +137,11 @@ def main() -> None:
         scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
         motion = motion_of(scene, symbols, values)
         build = time.perf_counter() - start
-        reference, _ = run_hand(hand, "DOP853", 1e-13)
+        reference, _, _ = run_hand(hand, "DOP853", 1e-13)
         size = max(abs(reference), 1e-300)
         for method in args.methods.split(","):
             for rtol in (float(r) for r in args.rtols.split(",")):
-                ours_time, run, hand_time, (q_hand, drift_hand) = paired(
+                ours_time, run, hand_time, (q_hand, drift_hand, nfev) = paired(
                     lambda m=method, r=rtol, f=motion: integrate(
                         f, 0.0, 0.0, T_END, (), m, r, r / 100
                     ),
@@ -152,6 +152,7 @@ def main() -> None:
                 error_hand = abs(q_hand - reference) / size
                 print(
                     f"| {name} | {method} | {rtol:.0e} | {error_ours:.1e} | {error_hand:.1e} "
+                    f"| {run.evaluations} / {nfev} "
                     f"| {ours_time * 1e3:.1f} ms | {hand_time * 1e3:.1f} ms "
                     f"| {ours_time / hand_time:.2f} | {run.drift:.1e} | {drift_hand:.1e} |"
                 )
