@@ -54,6 +54,8 @@ class OneDof:
     _dynamics: Callable[[float], tuple[float, ...]] | None = None  # q -> (M, M', Qc, friction)
     _accel: Callable[[float, float], float] | None = None  # (q, q') -> q'' without friction
     _energies: Callable[..., tuple[object, object]] | None = None  # arrays q, q' -> T, V
+    _accel_of_q: Callable[[float], float] | None = None  # q'' when it does not depend on q'
+    _jacobian: Callable[[float, float], tuple[float, float]] | None = None  # ∂q''/∂q, ∂q''/∂q'
 
     def energies(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """T and V at each sample (arrays)."""
@@ -73,6 +75,28 @@ class OneDof:
     def accelerator(self) -> Callable[[float, float], float]:
         """q''(q, q') as one plain function (the fastest right-hand side)."""
         return self._accel or self.acceleration
+
+    def right_hand_side(self) -> Callable[[float, object], list[float]] | None:
+        """(q', q'') of the state (q, q') as one plain function, without friction."""
+        if self._accel_of_q is not None:
+            accel_q = self._accel_of_q
+            return lambda _t, y: [y[1], accel_q(y[0])]
+        if self._accel is not None:
+            accel = self._accel
+            return lambda _t, y: [y[1], accel(y[0], y[1])]
+        return None
+
+    def jacobian(self) -> Callable[[float, object], list[list[float]]] | None:
+        """d(q', q'')/d(q, q') for the implicit methods (Radau, BDF, LSODA), without friction."""
+        if self._jacobian is None:
+            return None
+        partials = self._jacobian
+
+        def jac(_t: float, y: object) -> list[list[float]]:
+            d_q, d_qd = partials(y[0], y[1])  # type: ignore[index]
+            return [[0.0, 1.0], [d_q, d_qd]]
+
+        return jac
 
     def rates(self, q: float, qd: float) -> tuple[float, float]:
         """q'' and the friction's power at (q, q'), from one evaluation."""
@@ -381,4 +405,10 @@ def _build(
         sympy.lambdify([Q], tuple(numeric[:4]), "math", cse=True),
         sympy.lambdify([Q, QD], accel, "math", cse=True) if frictionless else None,
         sympy.lambdify([Q, QD], (numeric[0] * QD**2 / 2, numeric[4]), "numpy", cse=True),
+        sympy.lambdify([Q], accel, "math", cse=True)
+        if frictionless and QD not in accel.free_symbols
+        else None,
+        sympy.lambdify([Q, QD], (sympy.diff(accel, Q), sympy.diff(accel, QD)), "math", cse=True)
+        if frictionless
+        else None,
     )

@@ -24,6 +24,7 @@ from scipy.integrate import solve_ivp
 from dynsolve.simulate.equations import OneDof
 
 METHODS = ("RK45", "DOP853", "Radau", "LSODA", "RK23", "BDF")
+IMPLICIT = ("Radau", "BDF", "LSODA")  # given the analytic Jacobian
 TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
 
 
@@ -71,12 +72,10 @@ def integrate(
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
 
-    if motion.frictionless:  # (q, q') only: U_f stays 0
-        accel = motion.accelerator()
-
-        def rhs(_t: float, y: np.ndarray) -> list[float]:
-            return [y[1], accel(y[0], y[1])]
-
+    fast = motion.right_hand_side() if motion.frictionless else None
+    jac = motion.jacobian() if method in IMPLICIT and fast is not None else None
+    if fast is not None:  # (q, q') only: U_f stays 0
+        rhs = fast
     else:
 
         def rhs(_t: float, y: np.ndarray) -> list[float]:
@@ -107,7 +106,7 @@ def integrate(
     solution = solve_ivp(
         rhs,
         (0.0, t_end),
-        [q0, qd0] if motion.frictionless else [q0, qd0, 0.0],
+        [q0, qd0] if fast is not None else [q0, qd0, 0.0],
         method=method,
         rtol=rtol,
         atol=atol,
@@ -115,6 +114,7 @@ def integrate(
         max_step=max_step,
         t_eval=t_eval,
         dense_output=False,
+        **({"jac": jac} if jac is not None else {}),
     )
     if solution.status == -1:
         raise ValueError(f"the integration failed: {solution.message}")
