@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import sympy
 from scipy.integrate import quad
@@ -40,10 +41,13 @@ from dynsolve.results import Check
 from dynsolve.simulate.equations import NotSimulable, OneDof, Q, mechanism, straight_line
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
 
+if TYPE_CHECKING:
+    from dynsolve.modes.scene_mode import SceneProblem
+
 AGREEMENT = 1e-6  # relative
 METHOD = "DOP853"
 HORIZON = 200.0  # the run gives up after this many times the travel's time scale
-UNITS = {"SI": ("m", "rad"), "FPS": ("ft", "rad")}
+LENGTH_UNITS = {"SI": "m", "FPS": "ft"}
 
 
 @dataclass(frozen=True)
@@ -59,14 +63,12 @@ class Leg:
 
 
 def simulation_checks(
-    problem: object, values: Mapping[sympy.Symbol, sympy.Expr]
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Check, ...]:
     """A check per travel of a solved scene problem (a note where it cannot be simulated)."""
-    formulation = problem.formulation  # type: ignore[attr-defined]
-    scene: Scene = problem.scene  # type: ignore[attr-defined]
-    substitution = {**problem.system.knowns, **values}  # type: ignore[attr-defined]
-    symbols = problem.symbols  # type: ignore[attr-defined]
-    system = problem.spec.system  # type: ignore[attr-defined]
+    formulation, scene = problem.formulation, problem.scene
+    substitution = {**problem.system.knowns, **values}
+    symbols, system = problem.symbols, problem.spec.system
     legs: list[Leg] = []
     notes: list[Check] = []
     if formulation.stages:
@@ -119,7 +121,7 @@ def simulate_leg(
         return Check(name, True, f"not simulated: {exc}")
     except (ArithmeticError, ValueError, TypeError) as exc:  # a singular or complex motion
         return Check(name, True, f"not simulated: the integration failed ({exc})")
-    length = UNITS.get(system, ("m", "rad"))[0]
+    length = LENGTH_UNITS.get(system, "m")
     unit = length if motion.unit == "m" else motion.unit
     how = (
         f"M(q) q'' + ½ M'(q) q'² = Q(q, q') in q = {motion.coordinate} [{unit}], "
