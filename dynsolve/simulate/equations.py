@@ -179,6 +179,7 @@ def straight_line(
     direction: Vec,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    what: str = "",
 ) -> OneDof:
     """A lone particle moving along the straight line ``direction`` (unit) from its place,
     q the distance along it; the line must be a guide's, or the forces must have no part
@@ -197,7 +198,7 @@ def straight_line(
                     "it: its path is not straight"
                 )
     return _build(
-        scene, placements, {}, symbols, values, f"distance of {body} along its travel", "m"
+        scene, placements, {}, symbols, values, what or f"distance of {body} along its travel", "m"
     )
 
 

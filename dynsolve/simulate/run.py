@@ -183,7 +183,8 @@ def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
     for name in particles:
         guides = [s for s in scene.supports if s.body == name and s.kind == "contact"]
         if len(particles) == 1 and len(guides) == 1:
-            return straight_line(scene, name, guides[0].tangent, symbols, values)
+            what = f"distance of {name} along its surface at {guides[0].name}"
+            return straight_line(scene, name, guides[0].tangent, symbols, values, what)
     why = f" ({reasons[0]})" if reasons else ""
     raise NotSimulable(
         "the scene has no one coordinate to simulate in" + why + ": simulate supports "
