@@ -28,7 +28,7 @@ velocity as a multiple of the rate of travel.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -250,6 +250,7 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
 def _solve_positions(
     equations: list[sympy.Expr],
     x: _Unknowns,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = tidy,
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
     and cosine and back; a rotation left free by them is refused (see ``state_change``)."""
@@ -410,9 +411,12 @@ def state_change(
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)
 
 
-def placements_of(scene: Scene) -> tuple[dict[str, Placement], dict[str, sympy.Expr]]:
+def placements_of(
+    scene: Scene, simplify: bool = True
+) -> tuple[dict[str, Placement], dict[str, sympy.Expr]]:
     """Each body's placement and each link's turn in the state the ``travel`` line gives,
-    without the velocities: the travel may be a free parameter (a simulation's coordinate).
+    without the velocities: the travel may be a free parameter (a simulation's coordinate);
+    ``simplify=False`` skips sympy's simplify (for a numeric scene, to be lambdified).
 
     >>> import sympy
     >>> from dynsolve.model.scene import Body, Support, Travel
@@ -427,7 +431,7 @@ def placements_of(scene: Scene) -> tuple[dict[str, Placement], dict[str, sympy.E
     """
     x = _Unknowns(scene)
     equations, _ = _position_constraints(scene, x)
-    known = _solve_positions(equations, x)
+    known = _solve_positions(equations, x, tidy if simplify else sympy.Integer(0).__add__)
     missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
     missing += [n for n in x.links if x.phi[n] not in known]
     if missing:

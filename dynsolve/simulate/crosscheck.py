@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import sympy
@@ -38,7 +38,14 @@ from dynsolve.model.scene import Scene, Travel
 from dynsolve.model.states import particle_shift, placements_of
 from dynsolve.numbers import real_value
 from dynsolve.results import Check
-from dynsolve.simulate.equations import NotSimulable, OneDof, Q, mechanism, straight_line
+from dynsolve.simulate.equations import (
+    NotSimulable,
+    OneDof,
+    Q,
+    mechanism,
+    numeric_scene,
+    straight_line,
+)
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
 
 if TYPE_CHECKING:
@@ -146,6 +153,8 @@ def travel_motion(
 ) -> tuple[OneDof, float]:
     """The travel's equation of motion, q measured from its start toward its end, and q
     at the end (> 0); ``simplify`` for a long run (see :func:`~.equations.mechanism`)."""
+    scene = numeric_scene(replace(scene, travels={travel.body: travel}), values)
+    travel = scene.travels[travel.body]
     lone = all(b.particle for b in scene.bodies.values()) and not scene.links
     if lone:
         if travel.kind not in ("to", "by"):
@@ -186,10 +195,9 @@ def _to_motion(
 ) -> tuple[OneDof, float]:
     """A rigid body or linkage travelling to a position: q is the turn of the body or link
     that turns most on the way."""
-    from dataclasses import replace
-
     try:
-        placements, link_turns = placements_of(replace(scene, travels={travel.body: travel}))
+        placed = replace(scene, travels={travel.body: travel})
+        placements, link_turns = placements_of(placed, simplify=False)
     except ValueError as exc:
         raise NotSimulable(str(exc)) from None
     turns = {n: _value(p.turn, values) for n, p in placements.items()}

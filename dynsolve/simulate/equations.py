@@ -20,6 +20,8 @@ sympy once and lambdified to plain floats.
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -40,28 +42,67 @@ class NotSimulable(ValueError):
 
 @dataclass(frozen=True)
 class OneDof:
-    """M(q) q'' + ½ M'(q) q'² = Q(q, q'), with the placements to report and check."""
+    """M(q) q'' + ½ M'(q) q'² = Q(q, q'), with the placements to report and check.
+
+    ``terms`` are M, M', Q_c = −V', the size of the friction force (generalized) and V;
+    ``place_terms`` each body's x_G, y_G, Δθ and their q-derivatives: all functions of
+    :data:`Q` alone, numbers put in. Each numeric function is lambdified when first used.
+    """
 
     coordinate: str  # what q measures
     unit: str  # "rad" or "m"
-    _terms: Callable[[float], tuple[float, ...]]  # q -> (M, M', Qc, friction size, V)
-    _places: Callable[[float], tuple[float, ...]]  # q -> per body x_G, y_G, θ, dx, dy, dθ
     bodies: tuple[str, ...]
-    masses: tuple[float, ...]
-    inertias: tuple[float, ...]
+    terms: tuple[sympy.Expr, ...]
+    place_terms: tuple[sympy.Expr, ...]
 
-    frictionless: bool = False  # no kinetic friction acts (T + V is conserved)
-    _dynamics: Callable[[float], tuple[float, ...]] | None = None  # q -> (M, M', Qc, friction)
-    _accel: Callable[[float, float], float] | None = None  # (q, q') -> q'' without friction
-    _energies: Callable[..., tuple[object, object]] | None = None  # arrays q, q' -> T, V
-    _accel_of_q: Callable[[float], float] | None = None  # q'' when it does not depend on q'
-    _jacobian: Callable[[float, float], tuple[float, float]] | None = None  # ∂q''/∂q, ∂q''/∂q'
+    @property
+    def frictionless(self) -> bool:
+        """No kinetic friction acts (T + V is conserved)."""
+        return self.terms[3] == 0
+
+    @functools.cached_property
+    def _terms(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.terms, "math", cse=True)
+
+    @functools.cached_property
+    def _places(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.place_terms, "math", cse=True)
+
+    @functools.cached_property
+    def _dynamics(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.terms[:4], "math", cse=True)
+
+    @functools.cached_property
+    def _accel_expr(self) -> sympy.Expr:
+        M, dM, Qc = self.terms[:3]
+        return (Qc - dM * QD**2 / 2) / M
+
+    @functools.cached_property
+    def _accel(self) -> Callable[[float, float], float] | None:
+        if not self.frictionless:
+            return None
+        return sympy.lambdify([Q, QD], self._accel_expr, "math", cse=True)
+
+    @functools.cached_property
+    def _accel_of_q(self) -> Callable[[float], float] | None:
+        if not self.frictionless or QD in self._accel_expr.free_symbols:
+            return None
+        return sympy.lambdify([Q], self._accel_expr, "math", cse=True)
+
+    @functools.cached_property
+    def _jacobian(self) -> Callable[[float, float], tuple[float, float]] | None:
+        if not self.frictionless:
+            return None
+        a = self._accel_expr
+        return sympy.lambdify([Q, QD], (sympy.diff(a, Q), sympy.diff(a, QD)), "math", cse=True)
+
+    @functools.cached_property
+    def _energies(self) -> Callable[..., tuple[object, object]]:
+        T = self.terms[0] * QD**2 / 2
+        return sympy.lambdify([Q, QD], (T, self.terms[4]), "numpy", cse=True)
 
     def energies(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """T and V at each sample (arrays)."""
-        if self._energies is None:
-            T = np.array([self.kinetic(a, b) for a, b in zip(q, qd, strict=True)])
-            return T, np.array([self.energy(a, b) for a, b in zip(q, qd, strict=True)]) - T
         T, V = self._energies(q, qd)
         return np.broadcast_to(T, q.shape).astype(float), np.broadcast_to(V, q.shape).astype(float)
 
@@ -69,7 +110,7 @@ class OneDof:
         """q'' from Lagrange's equation at (q, q')."""
         if self._accel is not None:
             return self._accel(q, qd)
-        M, dM, Qc, friction = (self._dynamics or self._terms)(q)[:4]
+        M, dM, Qc, friction = self._dynamics(q)
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
 
     def accelerator(self) -> Callable[[float, float], float]:
@@ -100,7 +141,7 @@ class OneDof:
 
     def rates(self, q: float, qd: float) -> tuple[float, float]:
         """q'' and the friction's power at (q, q'), from one evaluation."""
-        M, dM, Qc, friction = (self._dynamics or self._terms)(q)[:4]
+        M, dM, Qc, friction = self._dynamics(q)
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M, -friction * abs(qd)
 
     def friction_power(self, q: float, qd: float) -> float:
@@ -153,6 +194,36 @@ def _point(scene: Scene, placements: Mapping[str, Placement], body: str, P: Vec)
     )
 
 
+def numeric_scene(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> Scene:
+    """The scene with the givens' values put in every expression (its geometry, masses,
+    loads, travels), so that placing it in terms of q needs no symbolic simplification.
+
+    >>> from dynsolve.model.scene import Body
+    >>> L = sympy.Symbol("L")
+    >>> rod = Body("rod", 1, 1, (L / 2, 0), (0, 0), "rod", (L,), {}, False, "", 0, 0)
+    >>> numeric_scene(Scene({"rod": rod}, {}, (), (), (), None, {}), {L: 2}).bodies["rod"].G
+    (1, 0)
+    """
+    return _substituted(scene, dict(values))  # type: ignore[no-any-return]
+
+
+def _substituted(item: object, values: dict[sympy.Symbol, sympy.Expr]) -> object:
+    if isinstance(item, sympy.Basic):
+        return item.xreplace(values)
+    if dataclasses.is_dataclass(item) and not isinstance(item, type):
+        changes = {
+            f.name: _substituted(getattr(item, f.name), values)
+            for f in dataclasses.fields(item)
+            if f.init
+        }
+        return dataclasses.replace(item, **changes)  # type: ignore[type-var]
+    if isinstance(item, tuple):
+        return tuple(_substituted(part, values) for part in item)
+    if isinstance(item, Mapping):
+        return {key: _substituted(value, values) for key, value in item.items()}
+    return item
+
+
 def mechanism(
     scene: Scene,
     travel: Travel,
@@ -167,7 +238,8 @@ def mechanism(
     from dataclasses import replace
 
     try:
-        placements, link_turns = placements_of(replace(scene, travels={travel.body: travel}))
+        placed = replace(scene, travels={travel.body: travel})
+        placements, link_turns = placements_of(placed, simplify=False)
     except ValueError as exc:
         raise NotSimulable(str(exc)) from None
     return _build(scene, placements, link_turns, symbols, values, coordinate, unit, simplify)
@@ -381,35 +453,7 @@ def _build(
     left = set().union(*(t.free_symbols for t in numeric)) - {Q}
     if left:
         raise NotSimulable(f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values")
-    frictionless = numeric[3] == 0
-    accel = (numeric[2] - numeric[1] * QD**2 / 2) / numeric[0]
     M0 = float(sympy.N(numeric[0].subs(Q, 0)))
     if not M0 > 0:
         raise NotSimulable("the scene has no inertia along its motion (M = 0)")
-    masses = tuple(
-        float(sympy.N((sympy.Integer(0) + scene.bodies[n].mass).xreplace(dict(values))))
-        for n in names
-    )
-    inertias = tuple(
-        float(sympy.N((sympy.Integer(0) + scene.bodies[n].I_G).xreplace(dict(values))))
-        for n in names
-    )
-    return OneDof(
-        coordinate,
-        unit,
-        sympy.lambdify([Q], tuple(numeric[:5]), "math", cse=True),
-        sympy.lambdify([Q], tuple(numeric[5:]), "math", cse=True),
-        names,
-        masses,
-        inertias,
-        frictionless,
-        sympy.lambdify([Q], tuple(numeric[:4]), "math", cse=True),
-        sympy.lambdify([Q, QD], accel, "math", cse=True) if frictionless else None,
-        sympy.lambdify([Q, QD], (numeric[0] * QD**2 / 2, numeric[4]), "numpy", cse=True),
-        sympy.lambdify([Q], accel, "math", cse=True)
-        if frictionless and QD not in accel.free_symbols
-        else None,
-        sympy.lambdify([Q, QD], (sympy.diff(accel, Q), sympy.diff(accel, QD)), "math", cse=True)
-        if frictionless
-        else None,
-    )
+    return OneDof(coordinate, unit, names, tuple(numeric[:5]), tuple(numeric[5:]))

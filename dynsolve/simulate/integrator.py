@@ -4,9 +4,8 @@ The state is (q, q', U_f): the coordinate, its rate and the work done so far by 
 friction, so that T + V − U_f is an invariant whose drift measures the integration's
 accuracy. Events are functions of (q, q'); the run stops at a terminal one.
 
->>> from dynsolve.simulate.equations import OneDof
->>> fall = OneDof("drop", "m", lambda q: (1.0, 0.0, 9.81, 0.0, -9.81 * q),
-...               lambda q: (0.0, -q, 0.0, 0.0, -1.0, 0.0), ("ball",), (1.0,), (0.0,))
+>>> from dynsolve.simulate.equations import Q, OneDof
+>>> fall = OneDof("drop", "m", ("ball",), (1, 0, 9.81, 0, -9.81 * Q), (0, -Q, 0, 0, -1, 0))
 >>> run = integrate(fall, 0.0, 0.0, 10.0, [Event("q = 2 m", lambda q, qd: q - 2.0, 1)])
 >>> run.stopped_by, round(float(run.qd[-1]), 9)  # v = √(2 g h) = √39.24 = 6.264183905
 ('q = 2 m', 6.264183905)

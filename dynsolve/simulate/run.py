@@ -30,7 +30,14 @@ from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import Scene, Travel, build_scene
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.simulate.crosscheck import start_rate, travel_motion
-from dynsolve.simulate.equations import NotSimulable, OneDof, Q, mechanism, straight_line
+from dynsolve.simulate.equations import (
+    NotSimulable,
+    OneDof,
+    Q,
+    mechanism,
+    numeric_scene,
+    straight_line,
+)
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
@@ -167,6 +174,7 @@ def until_event(text: str, motion: OneDof, system: str) -> Event:
 def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
     """The scene's equation of motion in its one coordinate (see the module's docstring)."""
     travels = [t for t in scene.travels.values() if t.kind != "for"]
+    scene = numeric_scene(scene, values)
     if travels:
         motion, _ = travel_motion(scene, travels[0], symbols, values, simplify=True)
         return motion
