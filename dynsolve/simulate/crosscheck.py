@@ -103,6 +103,13 @@ def simulation_checks(
             notes.append(Check("simulation", True, "not simulated: " + _why(travel)))
         else:
             legs.append(Leg("", scene, travel, formulation.speeds, formulation.spins))
+    symbolic = sorted(g.name for g in problem.givens if g.value is None and g.given is not None)
+    if symbolic:  # nothing to integrate: said once per travel, without building anything
+        why = f"not simulated: symbolic givens ({', '.join(symbolic)}) have no values"
+        return tuple(notes) + tuple(
+            Check(f"simulation: {leg.label}" if leg.label else "simulation", True, why)
+            for leg in legs
+        )
     return tuple(notes) + tuple(simulate_leg(leg, symbols, substitution, system) for leg in legs)
 
 
