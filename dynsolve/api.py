@@ -67,11 +67,16 @@ class Result:
             raise KeyError(f"{name!r} is not an answer; the answers are {', '.join(answers)}")
         return answers[name]
 
-    def render(self, format: Literal["text", "json", "markdown", "latex"] = "text") -> str:
-        """The derivation as plain text, JSON, Markdown or a LaTeX document."""
+    def render(
+        self,
+        format: Literal["text", "json", "markdown", "latex"] = "text",
+        layout: Literal["full", "handout", "key"] = "full",
+    ) -> str:
+        """The derivation as plain text, JSON, Markdown or a LaTeX document (``layout``:
+        the full sheet, the ``handout`` or the ``key``, for Markdown and LaTeX)."""
         from dynsolve.render import renderer
 
-        return renderer(format)(self.solution)
+        return renderer(format, layout)(self.solution)
 
     def _repr_markdown_(self) -> str:
         return self.render("markdown")

@@ -40,16 +40,19 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 from dynsolve.solver import solve_system
 from dynsolve.solver.outcome import Outcome
 from dynsolve.solver.roots import truth
 from dynsolve.spec.ast import Spec
 from dynsolve.spec.parser import parse_file, parse_spec
+from dynsolve.suspicious import suspicious_notes
 from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 RESIDUAL_LIMIT = 1e-9
+NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
 
 
 class SolvableProblem(Protocol):
@@ -119,12 +122,15 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     trial: Mapping[sympy.Symbol, sympy.Expr] = {}
     trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
     failed: tuple[Assumption, ...] = ()
+    trials: list[tuple[SolvableProblem, Outcome, tuple[Assumption, ...]]] = []
     slipping: dict[str, int] = {}
     for _ in range(RESOLVES):  # a slide contradicted, then a stick that slips the other way
         if not slips or slips.items() <= slipping.items():
             break
         trial = trial or outcome.values
-        failed += tuple(a for a in assumptions if _resolved(a))
+        rejected = tuple(a for a in assumptions if _resolved(a))
+        trials.append((problem, outcome, rejected))
+        failed += rejected
         slipping |= slips
         problem = build_scene_problem(spec, slipping)
         problem = replace(
@@ -137,7 +143,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         outcome = solve_system(problem.system, options)
         assumptions, slips = assess(problem, outcome.values)
     assumptions = failed + assumptions
-    return solve_problem(
+    solution = solve_problem(
         problem,
         options,
         outcome,
@@ -145,6 +151,39 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         assumptions,
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values) + simulation_checks(problem, outcome.values),
+    )
+    shown = tuple(_trial(*each, outcome, options) for each in trials)
+    return replace(solution, trials=shown) if shown else solution
+
+
+def _trial(
+    problem: SolvableProblem,
+    outcome: Outcome,
+    rejected: tuple[Assumption, ...],
+    final: Outcome,
+    options: SolveOptions,
+) -> Trial:
+    """A rejected trial as the derivation shows it, with a remark for each unknown whose
+    sign the re-solve reversed (α turning the other way once the wheel slips)."""
+    view = _View(problem, outcome, {}, options)
+    steps = tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1))
+    after = {symbol.name: value for symbol, value in final.values.items()}
+    remarks = []
+    for symbol, value in outcome.values.items():
+        before_value, after_value = real_value(value), real_value(after.get(symbol.name, 0))
+        if before_value and after_value and (before_value > 0) != (after_value > 0):
+            before_text = view.shown(symbol.name, value)[0]
+            after_text = view.shown(symbol.name, after[symbol.name])[0]
+            remarks.append(
+                f"{pretty(symbol.name)} changes sign: {before_text} in the trial, "
+                f"{after_text} after the re-solve"
+            )
+    return Trial(
+        " and ".join(a.name for a in rejected),
+        view.equation_rows(),
+        steps,
+        "; ".join(a.detail for a in rejected),
+        tuple(remarks),
     )
 
 
@@ -199,6 +238,7 @@ def solve_problem(
         key=key,
         status=outcome.status,
         messages=outcome.messages,
+        warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
     )
 
 
@@ -307,14 +347,14 @@ class _View:
             number_text = given.quantity.text
             written = f"{number_text} {pretty_unit(unit_text)}".strip()
             description = given.description
-        si_unit = natural_unit(info.dim, "SI", info.name)
+        base_unit = natural_unit(info.dim, self.system, info.name)
         if info.dim.dimensionless and unit_text:
-            si_unit = "rad"
-        si_value = convert(float(info.value), si_unit, self.system)
-        si = format_quantity(si_value, si_unit, 4, trim=True)
+            base_unit = "rad"
+        base_value = convert(float(info.value), base_unit, self.system)
+        base = format_quantity(base_value, base_unit, 4, trim=True)
         latex_value = number_text + (f"\\,{latex_unit(unit_text)}" if unit_text else "")
         return GivenRow(
-            info.name, written, si, description, False, latex_name(info.name), latex_value
+            info.name, written, base, description, False, latex_name(info.name), latex_value
         )
 
     def derived_row(self, info: GivenInfo) -> GivenRow:
@@ -322,8 +362,8 @@ class _View:
         assert info.formula is not None and info.value is not None
         formula = self.text(info.formula)
         value = self.number(info.value)
-        unit = natural_unit(info.dim, "SI", info.name)
-        si = (
+        unit = natural_unit(info.dim, self.system, info.name)
+        base = (
             "—"
             if value is None
             else format_quantity(convert(value, unit, self.system), unit, 4, trim=True)
@@ -331,7 +371,7 @@ class _View:
         written = f"= {formula}"
         latex = self.latex(info.formula)
         return GivenRow(
-            info.name, written, si, info.note, value is None, latex_name(info.name), latex
+            info.name, written, base, info.note, value is None, latex_name(info.name), latex
         )
 
     def _g_unit(self) -> str:
@@ -357,6 +397,7 @@ class _View:
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
+            numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
                     name=symbol.name,
@@ -364,6 +405,8 @@ class _View:
                     formula_latex=self.latex(formula) if show_formula else "",
                     value=value_text,
                     value_latex=value_latex,
+                    substituted=numbers[0] if numbers else "",
+                    substituted_latex=numbers[1] if numbers else "",
                 )
             )
         discarded = tuple(
@@ -380,6 +423,31 @@ class _View:
             discarded=discarded,
             note=block.note,
         )
+
+    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+        """(text, latex) of ``formula`` with every symbol replaced by its number in base
+        units, unevaluated, as a hand calculation writes it; None where a symbol has no
+        number (a symbolic problem) or the formula is a bare symbol."""
+        if isinstance(formula, sympy.Symbol):
+            return None
+        values = {**self.knowns, **self.outcome.values}
+        names: dict[sympy.Symbol, str] = {}
+        for symbol in formula.free_symbols:
+            number = real_value(values[symbol]) if symbol in values else None
+            if number is None:
+                return None
+            text = sig(number, 4)
+            if "." in text and "e" not in text:
+                text = text.rstrip("0").rstrip(".")
+            names[symbol] = f"({text})" if text.startswith("-") else text
+        # placeholders sort as the symbols do, so the terms keep the formula's order
+        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
+        shown = formula.xreplace(placeholders)
+        text = sympy.sstr(shown).replace("**", "^")
+        latex = sympy.latex(shown, symbol_names={placeholders[s]: n for s, n in names.items()})
+        for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
+            text = text.replace(placeholders[symbol].name, names[symbol])
+        return text, latex
 
     def computed(self, name: str) -> sympy.Expr | None:
         target = next((t for t in self.problem.targets if t.name == name), None)
@@ -603,8 +671,15 @@ class _View:
             return Check("structure", False, "no root satisfies the constraints")
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
-        unknowns = len(self.problem.system.unknowns)
-        detail = f"{_count(unknowns, 'unknown')} from {_count(len(lines), 'equation')}"
+        unknowns = [pretty(s.name) for s in self.problem.system.unknowns]
+        named = ", ".join(unknowns[:NAMED_UNKNOWNS]) + (
+            ", …" if len(unknowns) > NAMED_UNKNOWNS else ""
+        )
+        detail = (
+            f"{_count(len(unknowns), 'unknown')} ({named}) from {_count(len(lines), 'equation')}"
+            if unknowns
+            else f"no unknowns; {_count(len(lines), 'equation')}"
+        )
         if outcome.redundant:
             detail += "; redundant and consistent: " + ", ".join(
                 lines[i] for i in outcome.redundant

@@ -10,11 +10,11 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class GivenRow:
-    """A given as written and in SI."""
+    """A given as written and in the base units of the problem's system (SI or FPS)."""
 
     name: str
     written: str  # "40 lb", or "mass" for a symbolic given
-    si: str  # "177.9 N"
+    base: str  # in the system's base units: "177.9 N" (SI), "40 lb" (FPS)
     description: str
     symbolic: bool
     latex_name: str
@@ -43,6 +43,8 @@ class Formula:
     formula_latex: str
     value: str  # 3 s.f. with unit, or the formula for symbolic problems
     value_latex: str
+    substituted: str = ""  # the formula with the numbers put in (base units), "" when none
+    substituted_latex: str = ""
 
 
 @dataclass(frozen=True)
@@ -130,6 +132,18 @@ class Assumption:
 
 
 @dataclass(frozen=True)
+class Trial:
+    """A case assumed first and rejected by its check (no slip, then slipping): the trial's
+    equations and solve, the check with its numbers, and what changed in the re-solve."""
+
+    assumption: str  # "no slip at A"
+    equations: tuple[EquationRow, ...]
+    steps: tuple[Step, ...]
+    verdict: str  # "|F| = 300 > μs N = 294.3; re-solved with F = μk N opposing the slip"
+    remarks: tuple[str, ...] = ()  # "α changes sense: 0.667 rad/s² in the trial, -0.428 after"
+
+
+@dataclass(frozen=True)
 class Solution:
     """Everything about one solved spec."""
 
@@ -148,6 +162,8 @@ class Solution:
     messages: tuple[str, ...] = ()
     free_body: tuple[FreeBody, ...] = ()
     assumptions: tuple[Assumption, ...] = ()
+    warnings: tuple[str, ...] = ()  # likely slips in the spec: a bare-number angle, lb as a mass
+    trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
 
     @property
     def passed(self) -> bool:

@@ -139,3 +139,61 @@ def test_help_shows_clean_metavars() -> None:
     assert "FILE" in result.stdout and "<path>" not in result.stdout
     result = CliRunner().invoke(app, ["check", "--help"], terminal_width=120)
     assert "{PATH...}" in result.stdout
+
+
+BARE_ANGLE = "given:\n  m = 2 kg\n  theta = 30\nequations:\n  W = m*g*sin(theta)\nfind: W\n"
+
+
+def test_a_bare_number_in_sin_is_a_warning(workdir: Path) -> None:
+    # sin(30 rad) = -0.988: the writer almost surely meant 30 deg (W sin 30° = 9.81 N)
+    (workdir / "w.dyn").write_text(BARE_ANGLE)
+    data = json.loads(run("solve", "w.dyn", "-f", "json").stdout)
+    assert len(data["warnings"]) == 1
+    assert "theta = 30 (line 3) has no unit" in data["warnings"][0]
+    assert "1719°" in data["warnings"][0]  # 30 rad = 30·180/π = 1718.9°
+    terminal = run("solve", "w.dyn").stdout
+    assert "warning: bare angle" in terminal
+
+
+def test_an_angle_in_degrees_is_not_a_warning(workdir: Path) -> None:
+    (workdir / "w.dyn").write_text(BARE_ANGLE.replace("theta = 30", "theta = 30 deg"))
+    assert json.loads(run("solve", "w.dyn", "-f", "json").stdout)["warnings"] == []
+
+
+def test_a_mass_in_pounds_is_a_warning_at_its_line(workdir: Path) -> None:
+    text = "units: FPS\ngiven:\n  m = 40 lb\n  a = 3 ft/s^2\nequations:\n  F = m*a\nfind: F\n"
+    (workdir / "f.dyn").write_text(text)
+    data = json.loads(run("solve", "f.dyn", "-f", "json").stdout)
+    assert any("m = 40 lb (line 3) is a force" in w for w in data["warnings"])
+
+
+def test_fps_givens_are_shown_in_fps_base_units(workdir: Path) -> None:
+    # 6 in = 0.5 ft; 2 lb stays 2 lb (FPS base units: ft, slug, s; lb for force)
+    text = "units: FPS\ngiven:\n  r = 6 in\n  W = 2 lb\nequations:\n  M = W*r\nfind: M\n"
+    (workdir / "m.dyn").write_text(text)
+    data = json.loads(run("solve", "m.dyn", "-f", "json").stdout)
+    bases = {g["name"]: g["base"] for g in data["givens"]}
+    assert bases["r"] == "0.5 ft" and bases["W"] == "2 lb"
+    assert "in FPS" in CliRunner().invoke(app, ["solve", "m.dyn"], terminal_width=120).stdout
+
+
+def test_a_misspelt_unknown_is_named_in_the_error(workdir: Path) -> None:
+    text = (
+        "given:\n  I = 2 kg*m^2\n  r = 0.5 m\n  M = 3 N*m\n"
+        "equations:\n  M = I*alpha\n  a = alpah*r\nfind: alpha, a\n"
+    )
+    (workdir / "t.dyn").write_text(text)
+    result = run("solve", "t.dyn")
+    assert result.exit_code == 2
+    assert "'alpah' (line 7) and 'alpha' (line 6) differ by one slip" in result.stderr
+
+
+def test_a_misspelt_given_is_a_warning(workdir: Path) -> None:
+    # omga is a new unknown solved from the second equation; omega (the given) is unused
+    text = (
+        "given:\n  omega = 2 rad/s\n  r = 0.5 m\n  v = 3 m/s\n"
+        "equations:\n  v = omga*r\nfind: omga\n"
+    )
+    (workdir / "t.dyn").write_text(text)
+    data = json.loads(run("solve", "t.dyn", "-f", "json").stdout)
+    assert "'omga' (line 6) looks like a misspelling of 'omega'" in " ".join(data["warnings"])

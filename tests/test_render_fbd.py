@@ -325,7 +325,7 @@ def test_equation_mode_output_is_unchanged() -> None:
     solution = equation_solution()
     sections = [
         latex._title(solution),
-        latex._givens_section(solution.givens),
+        latex._givens_section(solution.givens, solution.system),
         latex._equations_section(solution.equations),
         latex._solution_section(solution.steps),
         latex._answers_section(solution.answers, solution.key),

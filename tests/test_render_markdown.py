@@ -152,7 +152,11 @@ def test_tables_and_math(tmp_path: Path) -> None:
     assert "ΣM\\_O = I\\_O α (drum) \\| 100% \\*of\\* the torque" in document
     assert "| moment of inertia, kg·m² ✓ |" in document
     assert "**Step 2.** Equations (lines 13–15) give $T$, $\\alpha$ and $a$ (linear):" in document
-    assert "$$T = \\frac{I_{O} g m_{b}}{I_{O} + m_{b} r^{2}} = 106\\,\\mathrm{N}$$" in document
+    # formula, then the givens put in (I_O = 3.75 kg·m², g = 9.81, m_b = 20 kg, r = 0.4 m), then T
+    assert (
+        "$$T = \\frac{I_{O} g m_{b}}{I_{O} + m_{b} r^{2}} = "
+        "\\frac{3.75 \\cdot 9.81 \\cdot 20}{3.75 + 20 \\cdot 0.4^{2}} = 106\\,\\mathrm{N}$$"
+    ) in document
     assert "| $\\alpha$ | $11.3\\,\\mathrm{rad/s^{2}}$ | 11.3 rad/s² ± 0.5% | ✓ |" in document
     assert "All 6 checks passed." in document
     assert document.endswith("|\n")

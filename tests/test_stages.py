@@ -115,7 +115,7 @@ find: v2 = v_after(ball)
 """
     got = answers(solve(tmp_path, text))["v2"]
     assert got.value == pytest.approx(math.hypot(2.4, 1.92), rel=1e-12)
-    assert got.direction == "angle 38.7°"
+    assert got.direction == "38.7° above the horizontal, to the right"
 
 
 @pytest.mark.parametrize(("e", "speed", "direction"), [("0", 0.0, ""), ("1", 5.0, "up")])

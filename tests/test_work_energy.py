@@ -125,7 +125,7 @@ find: a = a_G(ball)
 """
     answer = solve_file(write(tmp_path, text)).answers[0]
     assert answer.value == pytest.approx(5.0, rel=1e-12)
-    assert answer.direction == "angle 30.0°"
+    assert answer.direction == "30.0° above the horizontal, to the right"
 
 
 def test_a_state_of_an_unknown_body_is_an_error(tmp_path):

@@ -29,6 +29,7 @@ from dynsolve.results import EquationRow, Step
 from dynsolve.spec.ast import EquationStmt, FindItem, Given, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.spec.printing import statement_latex, statement_text
+from dynsolve.suspicious import likely_typos
 from dynsolve.system import Constraint, Equation, EquationSystem
 from dynsolve.units import GRAVITY, Dim, natural_unit
 from dynsolve.usage import unused_note
@@ -108,10 +109,16 @@ def build_problem(spec: Spec) -> Problem:
     _check_finds(spec, unknown_names, given_names)
     requested = _requested_dimensions(spec)
     known_dims = {g.name: g.dim for g in givens} | {"pi": Dim()}
-    report = check_dimensions(
-        spec.equations, known_dims, file, spec.system, requested,
-        wanted=tuple(f.name for f in spec.finds),
-    )  # fmt: skip
+    try:
+        report = check_dimensions(
+            spec.equations, known_dims, file, spec.system, requested,
+            wanted=tuple(f.name for f in spec.finds),
+        )  # fmt: skip
+    except DynsolveError as error:  # a misspelt name is a new unknown of unknown dimension
+        typos = likely_typos(spec)
+        if typos:
+            error.hint = "; ".join([*typos, error.hint] if error.hint else typos)
+        raise
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     symbols.update({n: sympy.Symbol(n, real=True) for n in unknown_names})
     targets = tuple(_target(f, report, symbols, given_names, spec) for f in spec.finds)

@@ -1171,10 +1171,13 @@ def free_bodies(
 
 
 def direction_word(dx: float, dy: float) -> str:
-    """The direction of a vector in words, else as an angle from +x.
+    """The direction of a vector in words: up, down, left, right, or its angle above or below
+    the horizontal and its side, as a textbook states it.
 
     >>> direction_word(0.0, -1.0), direction_word(0.6, 0.8), direction_word(1e-36, 1e-20)
-    ('down', 'angle 53.1°', 'up')
+    ('down', '53.1° above the horizontal, to the right', 'up')
+    >>> direction_word(-0.857, -0.515)
+    '31.0° below the horizontal, to the left'
     """
     import math
 
@@ -1185,7 +1188,10 @@ def direction_word(dx: float, dy: float) -> str:
         return "up" if dy > 0 else "down"
     if abs(dy) < 1e-12 * size:
         return "right" if dx > 0 else "left"
-    return f"angle {math.degrees(math.atan2(dy, dx)):.1f}°"
+    elevation = math.degrees(math.atan2(abs(dy), abs(dx)))
+    above = "above" if dy > 0 else "below"
+    side = "right" if dx > 0 else "left"
+    return f"{elevation:.1f}° {above} the horizontal, to the {side}"
 
 
 def direction_of(kind: str, value: float, axis: tuple[float, float] | None = None) -> str:

@@ -5,16 +5,35 @@ They never compute and never print; the CLI chooses one and writes its output.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from typing import Literal
 
 from dynsolve.results import Solution
 
 Format = Literal["text", "json", "markdown", "latex"]
+Layout = Literal["full", "handout", "key"]
 
 
-def renderer(fmt: Format) -> Callable[[Solution], str]:
-    """The function rendering ``fmt`` as a string (``text`` renders without colour).
+def sheet_plan(layout: Layout) -> tuple[str, ...]:
+    """The sections of a LaTeX or Markdown document, in order, for ``layout``.
+
+    >>> sheet_plan("key")
+    ('title', 'answers', 'key', 'checks')
+    >>> "key" in sheet_plan("handout") or "checks" in sheet_plan("handout")
+    False
+    """
+    derivation = ("givens", "free_body", "assumptions", "trials", "equations", "steps", "answers")
+    if layout == "key":
+        return ("title", "answers", "key", "checks")
+    if layout == "handout":
+        return ("handout_title", "warnings", *derivation)
+    return ("title", "warnings", *derivation, "key", "checks")
+
+
+def renderer(fmt: Format, layout: Layout = "full") -> Callable[[Solution], str]:
+    """The function rendering ``fmt`` as a string (``text`` renders without colour);
+    ``layout`` (``full``, ``handout``, ``key``) shapes the LaTeX and Markdown documents.
 
     >>> renderer("json").__name__
     'render_json'
@@ -26,11 +45,11 @@ def renderer(fmt: Format) -> Callable[[Solution], str]:
     if fmt == "markdown":
         from dynsolve.render.markdown import render_markdown
 
-        return render_markdown
+        return functools.partial(render_markdown, layout=layout)
     if fmt == "latex":
         from dynsolve.render.latex import render_latex
 
-        return render_latex
+        return functools.partial(render_latex, layout=layout)
     from dynsolve.render.terminal import render_text
 
     return render_text

@@ -15,7 +15,7 @@ from typing import Any
 
 from dynsolve.results import Solution
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2  # 2: givens' "si" became "base" (the system's base units)
 
 
 def solution_dict(solution: Solution) -> dict[str, Any]:
@@ -48,6 +48,8 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         "free_body": [asdict(b) for b in solution.free_body],
         "assumptions": [asdict(a) for a in solution.assumptions],
         "messages": list(solution.messages),
+        "warnings": list(solution.warnings),
+        "trials": [asdict(trial) for trial in solution.trials],
         "schema": SCHEMA_VERSION,
     }
 

@@ -23,6 +23,7 @@ from pathlib import PurePath
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
+from dynsolve.render import Layout, sheet_plan
 from dynsolve.results import (
     AnswerRow,
     Assumption,
@@ -35,6 +36,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 
 PREAMBLE = r"""\documentclass[11pt]{article}
@@ -242,8 +244,12 @@ def _concat(pieces: list[Piece]) -> str:
 # ---- document -------------------------------------------------------------------------
 
 
-def render_latex(solution: Solution) -> str:
+def render_latex(solution: Solution, layout: Layout = "full") -> str:
     """The solution as a standalone LaTeX document (article class) for pdflatex.
+
+    ``layout``: ``full`` (everything), ``handout`` (the derivation a teacher hands out: no
+    file name or status, no answer-key column, no checks) or ``key`` (the answers with the
+    key and the checks, for whoever marks).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -267,17 +273,26 @@ def render_latex(solution: Solution) -> str:
     >>> "\\\\item[$\\\\checkmark$] \\\\textbf{cord T taut} (holds)" in tex
     True
     """
-    body = [
-        _title(solution),
-        _givens_section(solution.givens),
-        *_free_body_section(solution.free_body),
-        *_assumptions_section(solution.assumptions),
-        _equations_section(solution.equations),
-        _solution_section(solution.steps),
-        _answers_section(solution.answers, solution.key),
-        _checks_section(solution.checks),
-    ]
-    preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if solution.free_body else "")
+    plan = sheet_plan(layout)
+    key = solution.key if "key" in plan else ()
+    parts: dict[str, Callable[[], list[str]]] = {
+        "title": lambda: [_title(solution)],
+        "handout_title": lambda: [_title(solution, handout=True)],
+        "warnings": lambda: [
+            f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings
+        ],
+        "givens": lambda: [_givens_section(solution.givens, solution.system)],
+        "free_body": lambda: _free_body_section(solution.free_body),
+        "assumptions": lambda: _assumptions_section(solution.assumptions),
+        "trials": lambda: [_trial_section(t) for t in solution.trials],
+        "equations": lambda: [_equations_section(solution.equations)],
+        "steps": lambda: [_solution_section(solution.steps)],
+        "answers": lambda: [_answers_section(solution.answers, key)],
+        "checks": lambda: [_checks_section(solution.checks)],
+    }
+    body = [section for name in plan if name in parts for section in parts[name]()]
+    drawn = solution.free_body and "free_body" in plan
+    preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
@@ -291,11 +306,13 @@ def _name(name: str) -> str:
     return _math(latex_name(name))
 
 
-def _title(solution: Solution) -> str:
+def _title(solution: Solution, handout: bool = False) -> str:
     title = escape_latex(solution.title.strip() or PurePath(solution.file).name or "Problem")
     lines = [f"\\section*{{{title}}}"]
     if solution.source.strip():
         lines.append(f"{{\\large\\itshape {escape_latex(solution.source)}\\par}}")
+    if handout:  # the handout names no file, status or solver remarks
+        return "\n".join(lines)
     lines.append(r"\smallskip")
     lines.append(f"{{\\small {_summary(solution)}\\par}}")
     lines.extend(_messages(solution.messages))
@@ -328,17 +345,22 @@ def _table(spec: str, header: Sequence[str], rows: Iterable[Sequence[str]]) -> s
 # ---- given
 
 
-def _givens_section(givens: Sequence[GivenRow]) -> str:
+def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
     if not givens:
         return "\\subsection*{Given}\nNo givens."
-    header = ["Symbol", "Value", "SI value", "Description"]
+    header = ["Symbol", "Value", f"{escape_latex(system)} value", "Description"]
     rows = [_given_cells(g) for g in givens]
     return "\\subsection*{Given}\n" + _table(r"@{}lllp{0.4\linewidth}@{}", header, rows)
 
 
 def _given_cells(given: GivenRow) -> list[str]:
     value = escape_latex(given.written) if given.symbolic else _math(given.latex_value)
-    return [_math(given.latex_name), value, escape_latex(given.si), escape_latex(given.description)]
+    return [
+        _math(given.latex_name),
+        value,
+        escape_latex(given.base),
+        escape_latex(given.description),
+    ]
 
 
 # ---- equations
@@ -350,8 +372,40 @@ def _equations_section(equations: Sequence[EquationRow]) -> str:
     return "\n\n".join(["\\subsection*{Equations}", *(_equation(e) for e in equations)])
 
 
+_SUBSCRIPTED = re.compile(
+    r"\(([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+)\)_([A-Za-z0-9]+)"  # (a_G)_x
+    r"|([ΣΔ]?)([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+(?:/[A-Za-z0-9]+)?)([²³]?)"  # ΣF_x, r_G/A, r_G²
+)
+_POWERS = {"²": "^{2}", "³": "^{3}", "": ""}
+
+
+def caption_latex(text: str) -> str:
+    """A principle's caption with its symbols typeset as mathematics (subscripts, Σ),
+    the words around them as text.
+
+    >>> caption_latex("ΣF_x = m (a_G)_x (drum)")
+    '$\\\\Sigma F_{x}$ = m $(a_{G})_{x}$ (drum)'
+    >>> caption_latex("ΣM_O = I_O α, I_O = I_G + m r_G²")
+    '$\\\\Sigma M_{O}$ = $I_{O}$ $\\\\alpha$, $I_{O}$ = $I_{G}$ + m $r_{G}^{2}$'
+    """
+    out, last = [], 0
+    for match in _SUBSCRIPTED.finditer(text):
+        out.append(escape_latex(text[last : match.start()]))
+        if match.group(1):
+            base, inner, outer = match.group(1), match.group(2), match.group(3)
+            math = f"({safe_math(base).strip()}_{{{inner}}})_{{{outer}}}"
+        else:
+            sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match.group(4)]
+            base = safe_math(match.group(5)).strip()
+            math = f"{sigma}{base}_{{{match.group(6)}}}{_POWERS[match.group(7)]}"
+        out.append(f"${math}$")
+        last = match.end()
+    out.append(escape_latex(text[last:]))
+    return "".join(out)
+
+
 def _equation(row: EquationRow) -> str:
-    note = escape_latex(row.note)
+    note = caption_latex(row.note)
     if row.constraint:
         note = "Constraint" + (f": {note}" if note else "")
     head = f"\\noindent\\textit{{{note}}}\\hfill{{\\small {_dimension(row)}}}"
@@ -369,7 +423,7 @@ _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 def _dimension(row: EquationRow) -> str:
     """``[force, N] ✓`` from ``force [N]``, or a marked mismatch."""
     match = _DIMENSION.match(row.dimension.strip())
-    text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
+    text = f"{match.group(1)}, {pretty_unit(match.group(2))}" if match else row.dimension.strip()
     shown = f"{{[}}{escape_latex(text)}{{]}}" if text else ""
     if row.dimension_ok:
         return f"{shown}~$\\checkmark$"
@@ -377,6 +431,20 @@ def _dimension(row: EquationRow) -> str:
 
 
 # ---- solution steps
+
+
+def _trial_section(trial: Trial) -> str:
+    """A case assumed first: its equations and solve, then the check that rejected it."""
+    equations = _equations_section(trial.equations).replace(
+        "\\subsection*{Equations}", "\\subsubsection*{Equations}"
+    )
+    steps = _solution_section(trial.steps).replace(
+        "\\subsection*{Solution}", "\\subsubsection*{Solution}"
+    )
+    title = f"\\subsection*{{Trial: {escape_latex(trial.assumption)} (assumed, then checked)}}"
+    verdict = f"\\textbf{{Check:}} $\\times$ {escape_latex(trial.verdict)}"
+    remarks = [f"\\textit{{Remark:}} {escape_latex(r)}" for r in trial.remarks]
+    return "\n\n".join([title, equations, steps, verdict, *remarks])
 
 
 def _solution_section(steps: Sequence[Step]) -> str:
@@ -402,8 +470,9 @@ def _result(result: Formula) -> str:
     """``T &= \\frac{...}{...} = 106\\,\\mathrm{N}``; the value alone when no formula."""
     formula = safe_math(result.formula_latex).strip()
     value = safe_math(result.value_latex).strip()
-    parts = [p for p in (formula, value) if p]
-    if len(parts) == 2 and formula == value:
+    numbers = safe_math(result.substituted_latex).strip()
+    parts = [p for p in (formula, numbers, value) if p]
+    if len(parts) >= 2 and formula == value:
         parts = [formula]
     return f"{safe_math(latex_name(result.name))} &= " + " = ".join(parts or ["?"])
 
@@ -444,6 +513,8 @@ def answers_math(solution: Solution) -> str:
 
 def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:
     value = _math(answer.latex) or f"\\textit{{{escape_latex(answer.shown)}}}"
+    if answer.direction:
+        value += f" {escape_latex(answer.direction)}"
     cells = [_name(answer.name), value]
     if keyed:
         cells += [escape_latex(pretty_unit(key.expected)), _mark(key.passed)] if key else ["", ""]

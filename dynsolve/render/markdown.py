@@ -10,11 +10,12 @@ is a table of the body's forces here. Math goes in ``$...$`` (inline) and ``$$..
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import PurePath
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
+from dynsolve.render import Layout, sheet_plan
 from dynsolve.results import (
     AnswerRow,
     Assumption,
@@ -27,6 +28,7 @@ from dynsolve.results import (
     KeyComparison,
     Solution,
     Step,
+    Trial,
 )
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
@@ -57,8 +59,9 @@ def _escape_marker(match: re.Match[str]) -> str:
     return f"{match.group(1)}\\{match.group(2)}"
 
 
-def render_markdown(solution: Solution) -> str:
-    """The solution as a GitHub-flavoured Markdown document.
+def render_markdown(solution: Solution, layout: Layout = "full") -> str:
+    """The solution as a GitHub-flavoured Markdown document; ``layout`` as for LaTeX
+    (``full``, ``handout`` or ``key``).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -81,16 +84,21 @@ def render_markdown(solution: Solution) -> str:
     >>> "- Kinetic diagram: $I_{G} \\\\, α$" in doc
     True
     """
-    sections = [
-        _title(solution),
-        _givens_section(solution.givens),
-        *_free_body_section(solution.free_body),
-        *_assumptions_section(solution.assumptions),
-        _equations_section(solution.equations),
-        _solution_section(solution.steps),
-        _answers_section(solution.answers, solution.key),
-        _checks_section(solution.checks),
-    ]
+    plan = sheet_plan(layout)
+    key = solution.key if "key" in plan else ()
+    parts: dict[str, Callable[[], list[str]]] = {
+        "title": lambda: [_title(solution)],  # its warnings included
+        "handout_title": lambda: [_title(solution, handout=True)],
+        "givens": lambda: [_givens_section(solution.givens, solution.system)],
+        "free_body": lambda: _free_body_section(solution.free_body),
+        "assumptions": lambda: _assumptions_section(solution.assumptions),
+        "trials": lambda: [_trial_section(t) for t in solution.trials],
+        "equations": lambda: [_equations_section(solution.equations)],
+        "steps": lambda: [_solution_section(solution.steps)],
+        "answers": lambda: [_answers_section(solution.answers, key)],
+        "checks": lambda: [_checks_section(solution.checks)],
+    }
+    sections = [section for name in plan if name in parts for section in parts[name]()]
     return "\n\n".join(sections) + "\n"
 
 
@@ -129,32 +137,37 @@ def _mark(passed: bool) -> str:
 # ---- sections
 
 
-def _title(solution: Solution) -> str:
+def _title(solution: Solution, handout: bool = False) -> str:
     title = solution.title.strip() or PurePath(solution.file).name or "Problem"
     lines = [f"# {escape_markdown(title)}", ""]
     if solution.source.strip():
         lines += [f"*{escape_markdown(solution.source)}*", ""]
+    if handout:  # the handout names no file, status or solver remarks
+        warnings = [f"- **Warning:** {escape_markdown(w)}" for w in solution.warnings]
+        return "\n".join(lines + warnings).rstrip()
     spec = PurePath(solution.file).name
     facts = [f"Spec `{spec.replace('`', '')}`", f"units {escape_markdown(solution.system)}"]
     facts.append(f"status **{escape_markdown(solution.status)}**")
     lines.append(" · ".join(facts))
     if solution.messages:
         lines += ["", *(f"- {escape_markdown(m)}" for m in solution.messages)]
+    if solution.warnings:
+        lines += ["", *(f"- **Warning:** {escape_markdown(w)}" for w in solution.warnings)]
     return "\n".join(lines)
 
 
-def _givens_section(givens: Sequence[GivenRow]) -> str:
+def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
     if not givens:
         return "## Given\n\nNo givens."
     rows = [_given_cells(g) for g in givens]
-    header = ["Symbol", "Value", "SI value", "Description"]
+    header = ["Symbol", "Value", f"{escape_markdown(system)} value", "Description"]
     return "## Given\n\n" + _table(header, [":--"] * 4, rows)
 
 
 def _given_cells(given: GivenRow) -> list[str]:
     value = escape_markdown(given.written) if given.symbolic else _cell_math(given.latex_value)
-    si = escape_markdown(given.si)
-    return [_cell_math(given.latex_name), value, si, escape_markdown(given.description)]
+    base = escape_markdown(given.base)
+    return [_cell_math(given.latex_name), value, base, escape_markdown(given.description)]
 
 
 def _equations_section(equations: Sequence[EquationRow]) -> str:
@@ -183,6 +196,16 @@ def _dimension(row: EquationRow) -> str:
     return f"{shown} ✓" if row.dimension_ok else f"**dimensions differ**: {shown} ✗"
 
 
+def _trial_section(trial: Trial) -> str:
+    """A case assumed first: its equations and solve, then the check that rejected it."""
+    equations = _equations_section(trial.equations).replace("## Equations", "### Equations")
+    steps = _solution_section(trial.steps).replace("## Solution", "### Solution")
+    verdict = f"**Check:** ✗ {escape_markdown(trial.verdict)}"
+    remarks = [f"*Remark:* {escape_markdown(r)}" for r in trial.remarks]
+    title = f"## Trial: {escape_markdown(trial.assumption)} (assumed, then checked)"
+    return "\n\n".join([title, equations, steps, verdict, *remarks])
+
+
 def _solution_section(steps: Sequence[Step]) -> str:
     if not steps:
         return "## Solution\n\nNo solve steps."
@@ -205,8 +228,9 @@ def _step(step: Step) -> str:
 def _result(result: Formula) -> str:
     """``T = \\frac{...}{...} = 106\\,\\mathrm{N}``; the value alone when no formula."""
     formula, value = result.formula_latex.strip(), result.value_latex.strip()
-    parts = [p for p in (formula, value) if p]
-    if len(parts) == 2 and formula == value:
+    numbers = result.substituted_latex.strip()
+    parts = [p for p in (formula, numbers, value) if p]
+    if len(parts) >= 2 and formula == value:
         parts = [formula]
     return f"{latex_name(result.name)} = " + " = ".join(parts or ["?"])
 
@@ -222,6 +246,8 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
 
 def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> list[str]:
     value = _cell_math(answer.latex) or f"*{escape_markdown(answer.shown)}*"
+    if answer.direction:
+        value += f" {escape_markdown(answer.direction)}"
     cells = [_cell_math(latex_name(answer.name)), value]
     if keyed:
         cells += (

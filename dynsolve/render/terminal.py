@@ -14,15 +14,26 @@ from __future__ import annotations
 import io
 
 from rich.console import Console, Group, RenderableType
+from rich.padding import Padding
 from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import pretty
-from dynsolve.results import Assumption, Check, FreeBody, KeyComparison, Solution, Step
+from dynsolve.results import (
+    Assumption,
+    Check,
+    EquationRow,
+    FreeBody,
+    KeyComparison,
+    Solution,
+    Step,
+    Trial,
+)
 
 WIDTH = 100
+STEP_INDENT = 5  # columns before a step's results
 
 
 def solution_renderable(solution: Solution) -> RenderableType:
@@ -48,10 +59,13 @@ def solution_renderable(solution: Solution) -> RenderableType:
     kinetic diagram: I_G α
     """
     parts: list[RenderableType] = [_title(solution)]
+    parts += [Text(f"⚠ warning: {w}", style="yellow") for w in solution.warnings]
     if solution.givens:
         parts += [_heading("Given"), _givens(solution)]
     if solution.free_body:
         parts += [_heading("Free-body diagrams"), *(_free_body(b) for b in solution.free_body)]
+    for trial in solution.trials:
+        parts += [_heading(f"Trial: {trial.assumption} (assumed, then checked)"), _trial(trial)]
     parts += [_heading("Equations (units checked)"), _equations(solution)]
     if solution.steps:
         parts += [_heading("Solve order"), *(_step(s) for s in solution.steps)]
@@ -75,34 +89,42 @@ def _heading(text: str) -> Text:
 
 
 def _title(solution: Solution) -> Panel:
-    subtitle = Text(f"{solution.file} · units {solution.system} · {solution.mode} mode")
+    """The title, source and facts inside the panel, where they fold (a panel's own title
+    line would be cut at the terminal's width)."""
+    text = Text(solution.title, style="bold") + Text("\n") if solution.title else Text()
     if solution.source:
-        subtitle = Text(f"{solution.source}\n") + subtitle
-    return Panel(subtitle, title=Text(solution.title, style="bold"), title_align="left")
+        text += Text(f"{solution.source}\n")
+    text += Text(f"{solution.file} · units {solution.system} · {solution.mode} mode")
+    text.overflow = "fold"
+    return Panel(text)
 
 
-def _table(*columns: str) -> Table:
+def _table(*columns: str | Text) -> Table:
     table = Table(box=None, padding=(0, 2, 0, 0), show_header=True, header_style="dim")
     for column in columns:
-        table.add_column(column)
+        table.add_column(column, overflow="fold")  # never cut with "…": long names fold
     return table
 
 
 def _givens(solution: Solution) -> Table:
-    table = _table("", "as written", "in SI", "")
+    table = _table("", "as written", Text(f"in {solution.system}"), "")
     for g in solution.givens:
         table.add_row(
             Text(pretty(g.name), style="bold"),
             Text(g.written),
-            Text(g.si),
+            Text(g.base),
             Text(g.description, style="dim"),
         )
     return table
 
 
 def _equations(solution: Solution) -> Table:
+    return _equation_table(solution.equations)
+
+
+def _equation_table(equations: tuple[EquationRow, ...]) -> Table:
     table = _table("line", "equation", "units", "principle")
-    for e in solution.equations:
+    for e in equations:
         mark = Text("✓ ", style="green") if e.dimension_ok else Text("✗ ", style="red")
         kind = " (constraint)" if e.constraint else ""
         table.add_row(
@@ -111,20 +133,30 @@ def _equations(solution: Solution) -> Table:
     return table
 
 
+def _trial(trial: Trial) -> RenderableType:
+    """A rejected trial: its equations, its solve, the failed check and the remarks."""
+    rows: list[RenderableType] = [_equation_table(trial.equations)]
+    rows += [_step(s) for s in trial.steps]
+    rows.append(Text(f"✗ {trial.verdict}", style="bold red"))
+    rows += [Text(f"remark: {r}", style="yellow") for r in trial.remarks]
+    return Group(*rows)
+
+
 def _step(step: Step) -> RenderableType:
     unknowns = and_list([pretty(u) for u in step.unknowns])
     head = Text(f"{step.index}. {lines_phrase(step.lines)} {unknowns} ({step.method})")
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
-        rows.append(
-            Text(f"     {pretty(result.name)}{formula} = ") + Text(result.value, style="bold")
-        )
+        if result.substituted:
+            formula += f" = {result.substituted}"
+        rows.append(Text(f"{pretty(result.name)}{formula} = ") + Text(result.value, style="bold"))
     for discarded in step.discarded:
-        rows.append(Text(f"     discarded {discarded}", style="yellow"))
+        rows.append(Text(f"discarded {discarded}", style="yellow"))
     if step.note:
-        rows.append(Text(f"     note: {step.note}", style="dim"))
-    return Group(*rows)
+        rows.append(Text(f"note: {step.note}", style="dim"))
+    # wrapped lines keep the indent of their result, instead of falling back to column 0
+    return Group(head, *(Padding(row, (0, 0, 0, STEP_INDENT)) for row in rows[1:]))
 
 
 def _answers(solution: Solution) -> Table:
