@@ -461,6 +461,97 @@ def _with_progress(work: Callable[[Callable[[int, int], None]], _Outcome]) -> _O
         return work(advance)
 
 
+class Method(enum.StrEnum):
+    """solve_ivp methods offered by ``dynsolve simulate``."""
+
+    RK45 = "RK45"
+    DOP853 = "DOP853"
+    Radau = "Radau"
+    LSODA = "LSODA"
+
+
+@app.command()
+def simulate(
+    file: Annotated[Path, typer.Argument(help="The .dyn spec with a scene.", show_default=False)],
+    until: Annotated[
+        str | None,
+        typer.Option(help="Stop at an event: max, min, 'theta(B) = 0 deg', 'x(B) = 0 m', …"),
+    ] = None,
+    t_end: Annotated[str, typer.Option("--t-end", help="The end time, e.g. '10 s'.")] = "10 s",
+    method: Annotated[Method, typer.Option(help="solve_ivp's method.")] = Method.DOP853,
+    rtol: Annotated[float, typer.Option(min=1e-14, max=0.1, help="Relative tolerance.")] = 1e-10,
+    atol: Annotated[float, typer.Option(min=1e-16, max=1.0, help="Absolute tolerance.")] = 1e-12,
+    samples: Annotated[int, typer.Option(min=2, max=1_000_000, help="Output samples.")] = 501,
+    output: Annotated[
+        Path | None,
+        typer.Option("--output", "-o", help="Write the history: .csv or .json.", metavar="FILE"),
+    ] = None,
+    plot: Annotated[
+        Path | None, typer.Option(help="Plot q(t) and the energy: .png, .pdf or .svg.")
+    ] = None,
+) -> None:
+    """Integrate a scene's motion in time from its state (one degree of freedom).
+
+    Prints the events met (turning points, the --until event), the period of an
+    oscillation beside the small-oscillation period, and the drift of T + V − U_f.
+    Exit code 0 when simulated, 2 for bad input or a scene it cannot simulate.
+    """
+    from dynsolve.errors import DynsolveError
+    from dynsolve.simulate.output import history_csv, history_json, history_plot
+    from dynsolve.simulate.run import parse_quantity, simulate_spec
+    from dynsolve.spec.parser import parse_file
+    from dynsolve.units import Dim
+
+    for path, suffixes in ((output, (".csv", ".json")), (plot, (".png", ".pdf", ".svg"))):
+        if path is not None and path.suffix.lower() not in suffixes:
+            _fail(f"cannot write {path}: use {' or '.join(suffixes)}", "choose another name")
+        if path is not None:
+            _refuse_overwriting_input(file, path)
+    try:
+        spec = parse_file(file)
+        end = parse_quantity(t_end, Dim(0, 0, 1), spec.system, "--t-end")
+        history = simulate_spec(spec, until, end, method.value, rtol, atol, samples)
+    except DynsolveError as error:
+        _fail_with(error)
+    stdout.print(_simulation_text(history), markup=False, soft_wrap=True)
+    if output is not None:
+        text = history_json(history) if output.suffix.lower() == ".json" else history_csv(history)
+        _write_output(output, text)
+    if plot is not None:
+        _write_output(plot, history_plot(history, plot.suffix.lower()))
+    raise typer.Exit(ExitCode.OK)
+
+
+def _simulation_text(history: object) -> str:
+    """The simulation's summary as lines of text."""
+    from dynsolve.simulate.output import summary
+
+    data = summary(history)  # type: ignore[arg-type]
+    unit = "rad" if history.motion.unit == "rad" else history.columns()[1][3:-1]  # type: ignore[attr-defined]
+    lines = [
+        f"{data['problem']}: simulated in q = {data['coordinate']} [{unit}]",
+        f"  solve_ivp {data['method']}, rtol {data['rtol']:.0e}, atol {data['atol']:.0e}: "
+        f"t = 0 … {data['t_end']:.6g} s, {data['evaluations']} evaluations"
+        + (f", stopped by '{data['stopped_by']}'" if data["stopped_by"] else ""),
+    ]
+    for event in data["events"][:20]:  # type: ignore[index]
+        lines.append(
+            f"  {event['event']:<12} t = {event['t']:.9g} s  q = {event['q']:.9g}  "
+            f"q' = {event['q_dot']:.6g}"
+        )
+    if len(data["events"]) > 20:  # type: ignore[arg-type]
+        lines.append(f"  … {len(data['events']) - 20} more events")  # type: ignore[arg-type]
+    if data["period"] is not None:
+        lines.append(f"  period (turning points): {data['period']:.9g} s")
+    if data["small_oscillation_period"] is not None:
+        lines.append(
+            f"  small-oscillation period 2π√(M/V'') about q* = {data['equilibrium']:.6g}: "
+            f"{data['small_oscillation_period']:.9g} s"
+        )
+    lines.append(f"  energy drift |Δ(T + V − U_f)|/scale: {data['energy_drift']:.2e}")
+    return "\n".join(lines)
+
+
 class UnitsChoice(enum.StrEnum):
     """Units of the variants: as drawn (si), US customary twins (us), or both."""
 

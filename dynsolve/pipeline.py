@@ -118,6 +118,7 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
     from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
+    from dynsolve.simulate.crosscheck import simulation_checks
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -156,7 +157,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         trial,
         assumptions,
         free_bodies(problem, outcome.values),
-        cross_checks(problem, outcome.values),
+        cross_checks(problem, outcome.values) + simulation_checks(problem, outcome.values),
     )
     shown = tuple(_trial(*each, outcome, options) for each in trials)
     return replace(solution, trials=shown) if shown else solution

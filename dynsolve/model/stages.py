@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.model.scene import Impact, Pivot, Travel, Vec
+from dynsolve.model.scene import Impact, Pivot, Scene, Travel, Vec
 
 
 @dataclass(frozen=True)
@@ -82,6 +82,7 @@ class StageRecord:
     stops: bool = False  # a travel that ends at rest
     start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
     approach: sympy.Expr | None = None  # an impact's (v_A − v_B)·n just before it
+    scene: Scene | None = None  # a travel's moving part, from its start state (simulation)
 
 
 def stages_of(events: tuple[Travel | Impact | Pivot, ...]) -> tuple[Stage, ...]:

@@ -28,7 +28,7 @@ velocity as a multiple of the rate of travel.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -250,6 +250,7 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
 def _solve_positions(
     equations: list[sympy.Expr],
     x: _Unknowns,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = tidy,
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
     and cosine and back; a rotation left free by them is refused (see ``state_change``)."""
@@ -408,6 +409,38 @@ def state_change(
     link_turns = {n: known[x.phi[n]] for n in x.links}
     rates, rate_name = _rates(scene, x, placements, values)
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)
+
+
+def placements_of(
+    scene: Scene, simplify: bool = True
+) -> tuple[dict[str, Placement], dict[str, sympy.Expr]]:
+    """Each body's placement and each link's turn in the state the ``travel`` line gives,
+    without the velocities: the travel may be a free parameter (a simulation's coordinate);
+    ``simplify=False`` skips sympy's simplify (for a numeric scene, to be lambdified).
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Body, Support, Travel
+    >>> r, q = sympy.symbols("r q", positive=True)
+    >>> disk = Body("disk", 1, 1, (0, r), (0, r), "disk", (r,), {}, False, "", 0, 0)
+    >>> rolls = Support("rolls", "C", "disk", (0, 0), (0, 1))
+    >>> scene = Scene({"disk": disk}, {}, (rolls,), (), (), None, {},
+    ...               travels={"disk": Travel("disk", "turns", angle=q)})
+    >>> placements, _ = placements_of(scene)
+    >>> placements["disk"].shift
+    (-q*r, 0)
+    """
+    x = _Unknowns(scene)
+    equations, _ = _position_constraints(scene, x)
+    known = _solve_positions(equations, x, tidy if simplify else sympy.Integer(0).__add__)
+    missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
+    missing += [n for n in x.links if x.phi[n] not in known]
+    if missing:
+        raise ValueError(f"the position of {', '.join(missing)} is not fixed by the scene")
+    placements = {
+        n: Placement((known[x.u[n]], known[x.w[n]]), known[x.phi[n]], known[x.c[n]], known[x.s[n]])
+        for n in x.bodies
+    }
+    return placements, {n: known[x.phi[n]] for n in x.links}
 
 
 def initial_rates(

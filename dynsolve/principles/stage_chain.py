@@ -379,7 +379,7 @@ class _Chain:
             second = ((names[energy.rate], *energy.second),)
         record = StageRecord(
             stage, tuple(sorted(part)), dict(energy.works), stops=travel.stops,
-            start_along=start_along,
+            start_along=start_along, scene=replace(sub, travels={body: travel}),
         )  # fmt: skip
         return _Step(
             (equation,),

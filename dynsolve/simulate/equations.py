@@ -1,0 +1,459 @@
+"""The equation of motion of a one-degree-of-freedom scene in one coordinate q (Lagrange).
+
+Every body's placement is a function of q (:func:`dynsolve.model.states.placements_of`
+with the travel left as the parameter, or a particle's straight line), so
+T = ½ M(q) q'² with M = Σ m |dr_G/dq|² + I_G (dθ/dq)², and Lagrange's equation reads
+M q'' + ½ M' q'² = Q(q, q'). Q is the derivative of the work of the scene's loads,
+written as a potential V(q) (weights −m g·r_G, springs ½ k (L − L₀)², constant forces
+−F·r_P, couples −M θ) plus kinetic friction −μk N |dr_C/dq| sign q', with N from the
+balance across a straight surface of a translating body. The functions are built with
+sympy once and lambdified to plain floats.
+
+>>> import sympy
+>>> from dynsolve.model.scene import Body, Scene
+>>> ball = Body("ball", 2, 0, (0, 5), (0, 5), "particle", (), {}, True, "", 0, 0)
+>>> scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {})
+>>> motion = straight_line(scene, "ball", (0, -1), {"g": sympy.Float(9.81)}, {})
+>>> motion.acceleration(0.0, 0.0)  # q is the drop: q'' = g
+9.81
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+import sympy
+
+from dynsolve.model.scene import Scene, Support, Travel, Vec
+from dynsolve.model.states import Placement, placements_of
+
+Q = sympy.Symbol("q")  # no assumptions: a length sqrt(u²) stays smooth, not |u|
+QD = sympy.Symbol("qd", real=True)
+
+
+class NotSimulable(ValueError):
+    """The scene's motion cannot be written as one coordinate's equation here (the reason)."""
+
+
+@dataclass(frozen=True)
+class OneDof:
+    """M(q) q'' + ½ M'(q) q'² = Q(q, q'), with the placements to report and check.
+
+    ``terms`` are M, M', Q_c = −V', the size of the friction force (generalized) and V;
+    ``place_terms`` each body's x_G, y_G, Δθ and their q-derivatives: all functions of
+    :data:`Q` alone, numbers put in. Each numeric function is lambdified when first used.
+    """
+
+    coordinate: str  # what q measures
+    unit: str  # "rad" or "m"
+    bodies: tuple[str, ...]
+    terms: tuple[sympy.Expr, ...]
+    place_terms: tuple[sympy.Expr, ...]
+
+    @property
+    def frictionless(self) -> bool:
+        """No kinetic friction acts (T + V is conserved)."""
+        return self.terms[3] == 0
+
+    @functools.cached_property
+    def _terms(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.terms, "math", cse=True)
+
+    @functools.cached_property
+    def _places(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.place_terms, "math", cse=True)
+
+    @functools.cached_property
+    def _dynamics(self) -> Callable[[float], tuple[float, ...]]:
+        return sympy.lambdify([Q], self.terms[:4], "math", cse=True)
+
+    @functools.cached_property
+    def _accel_expr(self) -> sympy.Expr:
+        M, dM, Qc = self.terms[:3]
+        return (Qc - dM * QD**2 / 2) / M
+
+    @functools.cached_property
+    def _accel(self) -> Callable[[float, float], float] | None:
+        if not self.frictionless:
+            return None
+        return sympy.lambdify([Q, QD], self._accel_expr, "math", cse=True)
+
+    @functools.cached_property
+    def _accel_of_q(self) -> Callable[[float], float] | None:
+        if not self.frictionless or QD in self._accel_expr.free_symbols:
+            return None
+        return sympy.lambdify([Q], self._accel_expr, "math", cse=True)
+
+    @functools.cached_property
+    def _jacobian(self) -> Callable[[float, float], tuple[float, float]] | None:
+        if not self.frictionless:
+            return None
+        a = self._accel_expr
+        return sympy.lambdify([Q, QD], (sympy.diff(a, Q), sympy.diff(a, QD)), "math", cse=True)
+
+    @functools.cached_property
+    def _energies(self) -> Callable[..., tuple[object, object]]:
+        T = self.terms[0] * QD**2 / 2
+        return sympy.lambdify([Q, QD], (T, self.terms[4]), "numpy", cse=True)
+
+    def energies(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """T and V at each sample (arrays)."""
+        T, V = self._energies(q, qd)
+        return np.broadcast_to(T, q.shape).astype(float), np.broadcast_to(V, q.shape).astype(float)
+
+    def acceleration(self, q: float, qd: float) -> float:
+        """q'' from Lagrange's equation at (q, q')."""
+        if self._accel is not None:
+            return self._accel(q, qd)
+        M, dM, Qc, friction = self._dynamics(q)
+        return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
+
+    def accelerator(self) -> Callable[[float, float], float]:
+        """q''(q, q') as one plain function (the fastest right-hand side)."""
+        return self._accel or self.acceleration
+
+    def right_hand_side(self) -> Callable[[float, object], list[float]] | None:
+        """(q', q'') of the state (q, q') as one plain function, without friction."""
+        if self._accel_of_q is not None:
+            accel_q = self._accel_of_q
+            return lambda _t, y: [y[1], accel_q(y[0])]
+        if self._accel is not None:
+            accel = self._accel
+            return lambda _t, y: [y[1], accel(y[0], y[1])]
+        return None
+
+    def jacobian(self) -> Callable[[float, object], list[list[float]]] | None:
+        """d(q', q'')/d(q, q') for the implicit methods (Radau, BDF, LSODA), without friction."""
+        if self._jacobian is None:
+            return None
+        partials = self._jacobian
+
+        def jac(_t: float, y: object) -> list[list[float]]:
+            d_q, d_qd = partials(y[0], y[1])  # type: ignore[index]
+            return [[0.0, 1.0], [d_q, d_qd]]
+
+        return jac
+
+    def rates(self, q: float, qd: float) -> tuple[float, float]:
+        """q'' and the friction's power at (q, q'), from one evaluation."""
+        M, dM, Qc, friction = self._dynamics(q)
+        return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M, -friction * abs(qd)
+
+    def friction_power(self, q: float, qd: float) -> float:
+        """The (negative) power of kinetic friction at (q, q')."""
+        return -self._terms(q)[3] * abs(qd)
+
+    def energy(self, q: float, qd: float) -> float:
+        """T + V (V of the weights, springs and constant loads; friction is not in it)."""
+        M, _, _, _, V = self._terms(q)
+        return 0.5 * M * qd * qd + V
+
+    def kinetic(self, q: float, qd: float) -> float:
+        """T = ½ M(q) q'²."""
+        return 0.5 * self._terms(q)[0] * qd * qd
+
+    def generalized_force(self, q: float, qd: float) -> float:
+        """Q(q, q'): the loads' generalized force, friction included."""
+        _, _, Qc, friction, _ = self._terms(q)
+        return Qc - friction * _sign(qd)
+
+    def places(self, q: float) -> dict[str, tuple[float, ...]]:
+        """Per body: x_G, y_G, Δθ, and dx_G/dq, dy_G/dq, dθ/dq."""
+        flat = self._places(q)
+        return {name: tuple(flat[6 * i : 6 * i + 6]) for i, name in enumerate(self.bodies)}
+
+    def velocities(self, q: float, qd: float) -> dict[str, tuple[float, float, float]]:
+        """Per body: v_Gx, v_Gy, ω (ccw positive) at (q, q')."""
+        return {n: (p[3] * qd, p[4] * qd, p[5] * qd) for n, p in self.places(q).items()}
+
+
+def _sign(x: float) -> float:
+    return 0.0 if x == 0 else math.copysign(1.0, x)
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _point(scene: Scene, placements: Mapping[str, Placement], body: str, P: Vec) -> Vec:
+    """Where the material point of ``body`` at P in the scene is after the placement."""
+    placement = placements.get(body)
+    if placement is None:
+        return P
+    G = scene.bodies[body].G
+    rho = (P[0] - G[0], P[1] - G[1])
+    c, s = placement.cos, placement.sin
+    return (
+        G[0] + placement.shift[0] + c * rho[0] - s * rho[1],
+        G[1] + placement.shift[1] + s * rho[0] + c * rho[1],
+    )
+
+
+def numeric_scene(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> Scene:
+    """The scene with the givens' values put in every expression (its geometry, masses,
+    loads, travels), so that placing it in terms of q needs no symbolic simplification.
+
+    >>> from dynsolve.model.scene import Body
+    >>> L = sympy.Symbol("L")
+    >>> rod = Body("rod", 1, 1, (L / 2, 0), (0, 0), "rod", (L,), {}, False, "", 0, 0)
+    >>> numeric_scene(Scene({"rod": rod}, {}, (), (), (), None, {}), {L: 2}).bodies["rod"].G
+    (1, 0)
+    """
+    return _substituted(scene, dict(values))  # type: ignore[no-any-return]
+
+
+def _substituted(item: object, values: dict[sympy.Symbol, sympy.Expr]) -> object:
+    if isinstance(item, sympy.Basic):
+        return item.xreplace(values)
+    if dataclasses.is_dataclass(item) and not isinstance(item, type):
+        changes = {
+            f.name: _substituted(getattr(item, f.name), values)
+            for f in dataclasses.fields(item)
+            if f.init
+        }
+        return dataclasses.replace(item, **changes)  # type: ignore[type-var]
+    if isinstance(item, tuple):
+        return tuple(_substituted(part, values) for part in item)
+    if isinstance(item, Mapping):
+        return {key: _substituted(value, values) for key, value in item.items()}
+    return item
+
+
+def mechanism(
+    scene: Scene,
+    travel: Travel,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    coordinate: str,
+    unit: str,
+    simplify: bool = False,
+) -> OneDof:
+    """The equation of motion of a rigid body or linkage, q the parameter of ``travel``
+    (``angle``/``distance`` written in terms of :data:`Q`)."""
+    from dataclasses import replace
+
+    try:
+        placed = replace(scene, travels={travel.body: travel})
+        placements, link_turns = placements_of(placed, simplify=False)
+    except ValueError as exc:
+        raise NotSimulable(str(exc)) from None
+    return _build(scene, placements, link_turns, symbols, values, coordinate, unit, simplify)
+
+
+def straight_line(
+    scene: Scene,
+    body: str,
+    direction: Vec,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    what: str = "",
+) -> OneDof:
+    """A lone particle moving along the straight line ``direction`` (unit) from its place,
+    q the distance along it; the line must be a guide's, or the forces must have no part
+    across it (else its path is not straight)."""
+    unit = (sympy.Integer(0) + direction[0], sympy.Integer(0) + direction[1])
+    placements = {body: Placement((Q * unit[0], Q * unit[1]), sympy.Integer(0), 1, 0)}
+    if not any(s.body == body for s in scene.supports):
+        across = (-unit[1], unit[0])
+        net = _applied(scene, placements, body, symbols)
+        push = _number(_dot(net, across), values, free=(Q,))
+        scale = _number(sympy.sqrt(_dot(net, net)), values, free=(Q,))
+        for q in (0.0, 0.5, 1.0):
+            if abs(push(q)) > 1e-12 * max(scale(q), 1e-300):
+                raise NotSimulable(
+                    f"the forces on {body} have a part across its travel and nothing guides "
+                    "it: its path is not straight"
+                )
+    return _build(
+        scene, placements, {}, symbols, values, what or f"distance of {body} along its travel", "m"
+    )
+
+
+def _applied(
+    scene: Scene, placements: Mapping[str, Placement], body: str, symbols: Mapping[str, sympy.Expr]
+) -> Vec:
+    """The sum of the weight, constant forces and springs on ``body`` (no supports)."""
+    fx, fy = sympy.Integer(0), sympy.Integer(0)
+    mass = scene.bodies[body].mass
+    if scene.gravity is not None:
+        fx += mass * symbols["g"] * scene.gravity[0]
+        fy += mass * symbols["g"] * scene.gravity[1]
+    for load in scene.loads:
+        if load.body == body and load.kind == "force":
+            fx += _size(load.name, symbols) * load.direction[0]
+            fy += _size(load.name, symbols) * load.direction[1]
+    for spring in scene.springs:
+        if body not in (spring.body, spring.other):
+            continue
+        a = _point(scene, placements, spring.body, spring.point)
+        b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
+        b = b or spring.other_point
+        d = (b[0] - a[0], b[1] - a[1])  # from the spring's start toward its other end
+        length = sympy.sqrt(_dot(d, d))
+        pull = spring.k * (length - spring.unstretched) / length
+        sense = 1 if spring.body == body else -1
+        fx += sense * pull * d[0]
+        fy += sense * pull * d[1]
+    return fx, fy
+
+
+def _size(name: str, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
+    if name not in symbols:
+        raise NotSimulable(f"the size of the load {name} is not known")
+    return symbols[name]
+
+
+def _number(
+    expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], free: tuple[sympy.Symbol, ...]
+) -> Callable[..., float]:
+    """``expr`` with the values substituted, as a float function of ``free``."""
+    numeric = (sympy.Integer(0) + expr).xreplace(dict(values))
+    left = numeric.free_symbols - set(free)
+    if left:
+        names = ", ".join(sorted(str(s) for s in left))
+        raise NotSimulable(f"symbolic givens ({names}) have no values")
+    return sympy.lambdify(free, numeric, "math")
+
+
+def _potential(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    link_turns: Mapping[str, sympy.Expr],
+    symbols: Mapping[str, sympy.Expr],
+) -> sympy.Expr:
+    """V(q) of the weights, springs, constant forces and couples (V = 0 in the scene)."""
+    terms: list[sympy.Expr] = []
+    if scene.gravity is not None:
+        for name, placement in placements.items():
+            weight = scene.bodies[name].mass * symbols["g"]
+            terms.append(-weight * _dot(scene.gravity, placement.shift))
+    for spring in scene.springs:
+        if spring.body not in placements and spring.other not in placements:
+            continue
+        if spring.wound:
+            placement = placements[spring.body]
+            G = scene.bodies[spring.body].G
+            rho = (spring.point[0] - G[0], spring.point[1] - G[1])
+            a = (
+                spring.point[0] + placement.shift[0] - placement.turn * rho[1],
+                spring.point[1] + placement.shift[1] + placement.turn * rho[0],
+            )
+        else:
+            a = _point(scene, placements, spring.body, spring.point)
+        b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
+        b = b or spring.other_point
+        d = (b[0] - a[0], b[1] - a[1])
+        terms.append(spring.k * (sympy.sqrt(_dot(d, d)) - spring.unstretched) ** 2 / 2)
+    for load in scene.loads:
+        if load.kind == "couple":
+            turn = link_turns.get(load.body)
+            if turn is None:
+                placement = placements.get(load.body)
+                turn = placement.turn if placement is not None else sympy.Integer(0)
+            terms.append(-_size(load.name, symbols) * load.sense * turn)
+        elif load.body in placements:
+            P = _point(scene, placements, load.body, load.point)
+            step = (P[0] - load.point[0], P[1] - load.point[1])
+            terms.append(-_size(load.name, symbols) * _dot(load.direction, step))
+    return sympy.Add(*terms)
+
+
+def _friction(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> sympy.Expr:
+    """Σ μk N |dr_C/dq| over the rough contacts that slide (its sign is set by q')."""
+    total = sympy.Integer(0)
+    for support in scene.supports:
+        if support.body not in placements or support.kind in ("pin", "rolls"):
+            continue
+        P = _point(scene, placements, support.body, support.point)
+        slip = (sympy.diff(P[0], Q), sympy.diff(P[1], Q))
+        if _is_still(slip, values):
+            continue
+        if support.smooth:
+            continue
+        if support.mu_k is None:
+            raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
+        total += (
+            support.mu_k
+            * _normal(scene, placements, support, symbols, values)
+            * sympy.sqrt(_dot(slip, slip))
+        )
+    return total
+
+
+def _is_still(slip: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+    speed = _number(_dot(slip, slip), values, free=(Q,))
+    return all(abs(speed(q)) < 1e-24 for q in (0.0, 0.37, 1.0))
+
+
+def _normal(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    support: Support,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> sympy.Expr:
+    """N at a contact of a body translating along a straight surface: −ΣF·n of the rest."""
+    name = support.body
+    turn = _number(placements[name].turn, values, free=(Q,))
+    alone = not any(s.body == name and s is not support for s in scene.supports) and not any(
+        name in (link.body, link.other) for link in scene.links
+    )
+    if not alone or any(abs(turn(q)) > 1e-12 for q in (0.0, 0.37, 1.0)):
+        raise NotSimulable(
+            f"the normal force at {support.name} changes with the motion (the body turns, or "
+            "another support or link shares the load)"
+        )
+    N = -_dot(_applied(scene, placements, name, symbols), support.normal)
+    return sympy.Abs(N) if support.two_sided else N
+
+
+def _build(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    link_turns: Mapping[str, sympy.Expr],
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    coordinate: str,
+    unit: str,
+    simplify: bool = False,
+) -> OneDof:
+    """Lambdify M, M', Q_c = −V', the friction's size and V, and each body's placement."""
+    mass_matrix = sympy.Integer(0)
+    places: list[sympy.Expr] = []
+    names = tuple(placements)
+    for name in names:
+        body, placement = scene.bodies[name], placements[name]
+        dx, dy = sympy.diff(placement.shift[0], Q), sympy.diff(placement.shift[1], Q)
+        dtheta = sympy.diff(placement.turn, Q)
+        mass_matrix += body.mass * (dx**2 + dy**2) + body.I_G * dtheta**2
+        places += [
+            body.G[0] + placement.shift[0],
+            body.G[1] + placement.shift[1],
+            placement.turn,
+            dx,
+            dy,
+            dtheta,
+        ]
+    V = _potential(scene, placements, link_turns, symbols)
+    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
+    terms += [_friction(scene, placements, symbols, values), V]
+    numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places]]
+    if simplify:  # a long run: a leaner right-hand side is worth sympy's simplify once
+        numeric[:3] = [min(t, sympy.simplify(t), key=sympy.count_ops) for t in numeric[:3]]
+    left = set().union(*(t.free_symbols for t in numeric)) - {Q}
+    if left:
+        raise NotSimulable(f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values")
+    M0 = float(sympy.N(numeric[0].subs(Q, 0)))
+    if not M0 > 0:
+        raise NotSimulable("the scene has no inertia along its motion (M = 0)")
+    return OneDof(coordinate, unit, names, tuple(numeric[:5]), tuple(numeric[5:]))

@@ -1,0 +1,91 @@
+"""A simulated history as CSV or JSON text, or a plot (PNG/PDF/SVG bytes, via matplotlib).
+
+Pure functions of a :class:`~dynsolve.simulate.run.History`: the CLI writes the files.
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> from dynsolve.simulate.run import simulate_spec
+>>> text = ("given:\\n  m = 1 kg\\n  L = 1 m\\nscene:\\n  point O: (0, 0)\\n"
+...         "  body bar: mass m, rod L, at (L/2, 0)\\n  pin bar at O\\n  gravity\\n")
+>>> history = simulate_spec(parse_spec(text, "bar.dyn"), t_end=1.0, samples=3)
+>>> history_csv(history).splitlines()[0][:33]
+'t [s],q [rad],q_dot [rad/s],x_bar'
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+
+from dynsolve.simulate.run import History
+
+
+def summary(history: History) -> dict[str, object]:
+    """What was measured: the run's settings, events, period and energy drift."""
+    run = history.run
+    return {
+        "problem": history.title,
+        "file": history.file,
+        "coordinate": history.motion.coordinate,
+        "method": run.method,
+        "rtol": run.rtol,
+        "atol": run.atol,
+        "t_end": float(run.t[-1]) if run.t.size else 0.0,
+        "stopped_by": history.stopped_by,
+        "events": [
+            {"event": name, "t": t, "q": q, "q_dot": qd} for name, t, q, qd in history.events
+        ],
+        "period": history.period,
+        "small_oscillation_period": history.small_period,
+        "equilibrium": history.equilibrium,
+        "energy_drift": run.drift,
+        "evaluations": run.evaluations,
+    }
+
+
+def history_csv(history: History) -> str:
+    """The time history, one row per sample, with a header of names and units."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(history.columns())
+    for row in history.rows():
+        writer.writerow([repr(v) for v in row])
+    return buffer.getvalue()
+
+
+def history_json(history: History) -> str:
+    """The summary and the time history (columns and rows), full precision."""
+    data = summary(history) | {
+        "columns": list(history.columns()),
+        "rows": [[v if math.isfinite(v) else None for v in row] for row in history.rows()],
+    }
+    return json.dumps(data, indent=1, allow_nan=False)
+
+
+def history_plot(history: History, suffix: str = ".png") -> bytes:
+    """q(t) and the energy terms over time, as an image in the format of ``suffix``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    run = history.run
+    columns = history.columns()
+    rows = history.rows()
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    top.plot(run.t, run.q)
+    top.set_ylabel(columns[1])
+    for name, t, q, _ in history.events:
+        top.plot([t], [q], "o", color="C3" if name not in ("max", "min") else "C1")
+    top.set_title(f"{history.title}: {history.motion.coordinate}")
+    for index, label in ((-3, "T"), (-2, "V"), (-1, "U_friction")):
+        bottom.plot(run.t, [row[index] for row in rows], label=label)
+    bottom.set_xlabel("t [s]")
+    bottom.set_ylabel(columns[-3].replace("T ", "energy "))
+    bottom.legend()
+    buffer = io.BytesIO()
+    figure.tight_layout()
+    figure.savefig(buffer, format=suffix.lstrip(".") or "png")
+    plt.close(figure)
+    return buffer.getvalue()

@@ -1,0 +1,297 @@
+"""``dynsolve simulate``: a scene's motion in time from its state, with events and the period.
+
+The scene's one coordinate q is its ``travel`` line's (a turn or a distance), else the
+turn of its first body or link that fixes every placement, else a guided particle's
+distance along its guide. The run starts from the scene as written (``velocity`` and
+``omega`` lines give the start rate), records every turning point of q (its maxima and
+minima: the period of an oscillation), stops at an ``until`` event, and reports the
+drift of T + V − U_f. Where the motion oscillates about a stable equilibrium q*, the
+period of small oscillations 2π √(M(q*)/V''(q*)) (for a pendulum 2π √(I_O/(m g d)))
+is shown beside the simulated one.
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> text = ("given:\\n  m = 1 kg\\n  L = 1 m\\nscene:\\n  point O: (0, 0)\\n"
+...         "  body bar: mass m, rod L, at (L/2, 0)\\n  pin bar at O\\n  gravity\\n")
+>>> history = simulate_spec(parse_spec(text, "bar.dyn"), until="min", t_end=10.0)
+>>> history.stopped_by, round(history.events[-1][2], 6)  # swings cw to the far side: −π
+('min', -3.141593)
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, replace
+from fractions import Fraction
+
+import numpy as np
+
+from dynsolve.errors import Position, SpecError
+from dynsolve.model.scene import Scene, Travel, build_scene
+from dynsolve.modes.equation_mode import givens_of
+from dynsolve.simulate.crosscheck import start_rate, travel_motion
+from dynsolve.simulate.equations import (
+    NotSimulable,
+    OneDof,
+    Q,
+    mechanism,
+    numeric_scene,
+    straight_line,
+)
+from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
+from dynsolve.spec.ast import Spec
+from dynsolve.units import Dim
+
+QUANTITIES = {  # until-quantity: (dimension, meaning)
+    "q": (None, "the coordinate"),
+    "theta": (Dim(), "the turn of B from the scene as drawn (ccw positive)"),
+    "x": (Dim(1, 0, 0), "x of B's mass centre"),
+    "y": (Dim(1, 0, 0), "y of B's mass centre"),
+    "omega": (Dim(0, 0, -1), "B's angular velocity (ccw positive)"),
+    "speed": (Dim(1, 0, -1), "the speed of B's mass centre"),
+}
+UNTIL = re.compile(
+    r"^\s*(?:(?P<extreme>max|min)|(?P<name>[A-Za-z_]+)\s*(?:\(\s*(?P<body>[A-Za-z_][A-Za-z_0-9]*)"
+    r"\s*\))?\s*=\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>[^\s].*)?)\s*$"
+)
+QUANTITY = re.compile(
+    r"^\s*(?P<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?P<unit>[^\s].*?)?\s*$"
+)
+MAX_SAMPLES = 1_000_000
+
+
+@dataclass(frozen=True)
+class History:
+    """A simulated time history, its events and what was measured from it."""
+
+    file: str
+    title: str
+    system: str
+    motion: OneDof
+    run: Run
+    stopped_by: str
+    events: tuple[tuple[str, float, float, float], ...]  # (name, t, q, q')
+    period: float | None  # from the turning points of q
+    small_period: float | None  # 2π √(M/V'') about the equilibrium it oscillates about
+    equilibrium: float | None
+
+    def columns(self) -> tuple[str, ...]:
+        """The history's column names, with units."""
+        length = "ft" if self.system == "FPS" else "m"
+        unit = length if self.motion.unit == "m" else "rad"
+        names = ["t [s]", f"q [{unit}]", f"q_dot [{unit}/s]"]
+        for b in self.motion.bodies:
+            names += [f"x_{b} [{length}]", f"y_{b} [{length}]", f"theta_{b} [rad]"]
+            names += [f"vx_{b} [{length}/s]", f"vy_{b} [{length}/s]", f"omega_{b} [rad/s]"]
+        energy = "ft*lb" if self.system == "FPS" else "J"
+        return (*names, f"T [{energy}]", f"V [{energy}]", f"U_friction [{energy}]")
+
+    def rows(self) -> list[tuple[float, ...]]:
+        """One row per time sample, in the order of :meth:`columns`."""
+        out = []
+        run, motion = self.run, self.motion
+        for t, q, qd, uf in zip(run.t, run.q, run.qd, run.friction_work, strict=True):
+            row = [float(t), float(q), float(qd)]
+            for p in motion.places(float(q)).values():
+                row += [p[0], p[1], p[2], p[3] * qd, p[4] * qd, p[5] * qd]
+            T = motion.kinetic(q, qd)
+            row += [T, motion.energy(q, qd) - T, float(uf)]
+            out.append(tuple(float(v) for v in row))
+        return out
+
+
+def parse_quantity(text: str, dim: Dim | None, system: str, what: str) -> float:
+    """``"10 s"``, ``"30 deg"``, ``"0.5"``: a number and a unit of dimension ``dim``, in the
+    system's base units (never evaluated: a number and a parsed unit only).
+
+    >>> parse_quantity("90 deg", Dim(), "SI", "theta")
+    1.5707963267948966
+    >>> parse_quantity("2 min", Dim(0, 0, 1), "SI", "t")
+    120.0
+    """
+    from dynsolve.quantities import resolve_unit
+    from dynsolve.spec.parser import parse_unit
+    from dynsolve.units import to_base
+
+    found = QUANTITY.match(text)
+    where = Position(what, 1, 1)
+    if not found:
+        raise SpecError(f"'{text}' is not a number with a unit", where, hint="e.g. '10 s'")
+    unit_text = found["unit"]
+    number = Fraction(found["number"])
+    if unit_text:
+        unit = resolve_unit(parse_unit(unit_text, what), what)
+        if dim is not None and unit.dim != dim:
+            raise SpecError(
+                f"'{unit_text}' is not a unit of {dim.name}", where, hint="check the unit"
+            )
+        return float(to_base(number, unit, system))  # type: ignore[arg-type]
+    if dim is not None and dim not in (Dim(),) and number != 0:
+        raise SpecError(f"'{text}' needs a unit of {dim.name}", where, hint="e.g. '10 s'")
+    return float(number)
+
+
+def until_event(text: str, motion: OneDof, system: str) -> Event:
+    """The terminal event an ``until`` text names: ``max``/``min`` (of q), ``q = VALUE``,
+    ``theta(B) = VALUE``, ``x(B)``, ``y(B)``, ``omega(B)``, ``speed(B)``."""
+    where = Position("--until", 1, 1)
+    found = UNTIL.match(text)
+    hint = "e.g. 'max', 'theta(bar) = 0 deg', 'x(bob) = 0 m' or 'q = 1 rad'"
+    if not found:
+        raise SpecError(f"cannot read the event '{text}'", where, hint=hint)
+    if found["extreme"]:
+        direction = -1 if found["extreme"] == "max" else 1
+        return Event(found["extreme"], lambda q, qd: qd, direction)
+    name, body = found["name"], found["body"]
+    if name not in QUANTITIES or (name == "q") != (body is None):
+        raise SpecError(f"'{name}' is not a quantity of the motion", where, hint=hint)
+    if body is not None and body not in motion.bodies:
+        known = ", ".join(motion.bodies)
+        raise SpecError(f"no moving body '{body}'", where, hint=f"the bodies are {known}")
+    dim = QUANTITIES[name][0]
+    if name == "q":
+        dim = Dim() if motion.unit == "rad" else Dim(1, 0, 0)
+    quantity = f"{found['number']} {found['unit'] or ''}"
+    value = parse_quantity(quantity, dim, system, "--until")
+    index = list(motion.bodies).index(body) if body is not None else 0
+
+    def measure(q: float, qd: float) -> float:
+        if name == "q":
+            return q - value
+        place = motion.places(q)[motion.bodies[index]]
+        reading = {
+            "theta": place[2],
+            "x": place[0],
+            "y": place[1],
+            "omega": place[5] * qd,
+            "speed": math.hypot(place[3], place[4]) * abs(qd),
+        }[name]
+        return reading - value
+
+    return Event(text.strip(), measure, 0)
+
+
+def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
+    """The scene's equation of motion in its one coordinate (see the module's docstring)."""
+    travels = [t for t in scene.travels.values() if t.kind != "for"]
+    scene = numeric_scene(scene, values)
+    if travels:
+        motion, _ = travel_motion(scene, travels[0], symbols, values, simplify=True)
+        return motion
+    reasons = []
+    names = [n for n, b in scene.bodies.items() if not b.particle]
+    names += [link.name for link in scene.links]
+    for name in names:
+        try:
+            turn = Travel(name, "turns", angle=Q)
+            return mechanism(scene, turn, symbols, values, f"turn of {name}", "rad", True)
+        except NotSimulable as exc:
+            reasons.append(str(exc))
+    particles = [n for n, b in scene.bodies.items() if b.particle]
+    for name in particles:
+        guides = [s for s in scene.supports if s.body == name and s.kind == "contact"]
+        if len(particles) == 1 and len(guides) == 1:
+            what = f"distance of {name} along its surface at {guides[0].name}"
+            return straight_line(scene, name, guides[0].tangent, symbols, values, what)
+    why = f" ({reasons[0]})" if reasons else ""
+    raise NotSimulable(
+        "the scene has no one coordinate to simulate in" + why + ": simulate supports "
+        "one degree of freedom (a pinned or rolling body, a linkage, a guided particle)"
+    )
+
+
+def simulate_spec(
+    spec: Spec,
+    until: str | None = None,
+    t_end: float = 10.0,
+    method: str = "DOP853",
+    rtol: float = TIGHT_RTOL,
+    atol: float = TIGHT_ATOL,
+    samples: int = 501,
+) -> History:
+    """Integrate the spec's scene from its state; SpecError (with a hint) on bad input."""
+    where = Position(spec.file, spec.scene[0].line if spec.scene else 1, 1)
+    if not spec.scene:
+        raise SpecError("nothing to simulate: the spec has no scene", where, hint="add 'scene:'")
+    if not (t_end > 0 and math.isfinite(t_end)):
+        raise SpecError("the end time must be positive", Position("--t-end", 1, 1), "e.g. 10s")
+    if not 2 <= samples <= MAX_SAMPLES:
+        raise SpecError(f"samples must be 2 … {MAX_SAMPLES}", Position("--samples", 1, 1), "")
+    givens = givens_of(spec)
+    symbols = {g.name: g.symbol for g in givens}
+    values = {g.symbol: g.value for g in givens if g.value is not None}
+    scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
+    try:
+        motion = motion_of(scene, symbols, values)
+        qd0 = start_rate(motion, replace(scene, travels={}), values)
+    except NotSimulable as exc:
+        raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
+    events = [Event("max", lambda q, qd: qd, -1, False), Event("min", lambda q, qd: qd, 1, False)]
+    if until:
+        stop = until_event(until, motion, spec.system)
+        events = [e for e in events if e.name != stop.name] + [stop]
+    grid = np.linspace(0.0, t_end, samples)
+    try:
+        run = integrate(motion, 0.0, qd0, t_end, events, method, rtol, atol, t_eval=grid)
+    except ValueError as exc:
+        raise SpecError(str(exc), Position("--method", 1, 1), hint="see docs/simulate.md") from None
+    run = _with_last(run)
+    period = _period(run.events)
+    small, equilibrium = _small_oscillations(motion, run)
+    return History(
+        spec.file,
+        spec.title or spec.file,
+        spec.system,
+        motion,
+        run,
+        run.stopped_by,
+        run.events,
+        period,
+        small,
+        equilibrium,
+    )
+
+
+def _with_last(run: Run) -> Run:
+    """Add the state at a terminal event as the last sample."""
+    if run.last is None or (run.t.size and run.t[-1] >= run.last[0]):
+        return run
+    t, q, qd, uf = run.last
+    return replace(
+        run,
+        t=np.append(run.t, t),
+        q=np.append(run.q, q),
+        qd=np.append(run.qd, qd),
+        friction_work=np.append(run.friction_work, uf),
+    )
+
+
+def _period(events: tuple[tuple[str, float, float, float], ...]) -> float | None:
+    """The period from the turning points of q: two maxima (or minima) apart, or twice the
+    time from a maximum to the next minimum."""
+    for kind in ("max", "min"):
+        times = [t for name, t, _, _ in events if name == kind]
+        if len(times) >= 2:
+            return times[1] - times[0]
+    turns = sorted(t for name, t, _, _ in events if name in ("max", "min"))
+    return 2 * (turns[1] - turns[0]) if len(turns) >= 2 else None
+
+
+def _small_oscillations(motion: OneDof, run: Run) -> tuple[float | None, float | None]:
+    """2π √(M(q*)/k), k = −dQ/dq at the equilibrium q* between the extremes of the run
+    (None when there is none, or it is not stable, or friction acts)."""
+    from scipy.optimize import brentq
+
+    if float(np.max(np.abs(run.friction_work))) > 0:
+        return None, None
+    low, high = float(np.min(run.q)), float(np.max(run.q))
+    force = lambda q: motion.generalized_force(q, 0.0)  # noqa: E731
+    if high <= low or force(low) * force(high) > 0:
+        return None, None
+    q_star = brentq(force, low, high, xtol=1e-14, rtol=1e-14)
+    h = 1e-5 * max(1.0, abs(q_star))
+    k = -(force(q_star + h) - force(q_star - h)) / (2 * h)
+    M = 2 * motion.kinetic(q_star, 1.0)
+    if k <= 0 or M <= 0:
+        return None, q_star
+    return 2 * math.pi * math.sqrt(M / k), q_star
