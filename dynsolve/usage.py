@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
@@ -11,8 +12,11 @@ if TYPE_CHECKING:
     from dynsolve.modes.equation_mode import GivenInfo
 
 
-def unused_note(givens: Iterable[GivenInfo], used: set[str]) -> tuple[tuple[str, str], ...]:
-    """A note naming every given that nothing reads (with its line), or no note.
+def unused_note(
+    givens: Iterable[GivenInfo], used: set[str], expected: Iterable[str] = ()
+) -> tuple[tuple[str, str], ...]:
+    """A note naming every given that nothing reads (with its line), or no note; a given
+    whose name is close to a used or ``expected`` name gets a did-you-mean.
 
     A given the problem states but does not need (a distractor, a value for a later part)
     is named rather than passed over in silence:
@@ -22,12 +26,18 @@ def unused_note(givens: Iterable[GivenInfo], used: set[str]) -> tuple[tuple[str,
     >>> spec = parse_spec("given:\\n  h = 2 m\\nequations:\\n  y = 1\\nfind: y", "k.dyn")
     >>> unused_note(givens_of(spec), {"y"})
     (('unused givens', 'h (line 2) is given but not used'),)
+    >>> spec = parse_spec("given:\\n  h_l = 2 m\\nequations:\\n  y = h_1\\nfind: y", "k.dyn")
+    >>> unused_note(givens_of(spec), {"y", "h_1"})[0][1]
+    "h_l (line 2; did you mean 'h_1'?) is given but not used"
     """
-    unused = [
-        f"{g.name} (line {g.given.line})"
-        for g in givens
-        if g.given is not None and g.name not in used
-    ]
+    choices = sorted(set(used) | set(expected))
+    unused = []
+    for g in givens:
+        if g.given is None or g.name in used:
+            continue
+        close = difflib.get_close_matches(g.name, [c for c in choices if c != g.name], 1, 0.6)
+        mean = f"; did you mean '{close[0]}'?" if close else ""
+        unused.append(f"{g.name} (line {g.given.line}{mean})")
     if not unused:
         return ()
     verb = "is" if len(unused) == 1 else "are"

@@ -53,6 +53,9 @@ class SceneProblem:
 
 def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -> SceneProblem:
     """Model the scene, write its equations and resolve the find list."""
+    from dynsolve.sections import combine_sections
+
+    spec = combine_sections(spec)
     if not spec.finds:
         raise SpecError("nothing to find", Position(spec.file, 1, 1), hint="add a 'find:' line")
     givens = givens_of(spec)
