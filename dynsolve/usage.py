@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from dynsolve.errors import Position, SpecError
+from dynsolve.spec.ast import FindItem, Name, SceneStmt, Spec
 
 if TYPE_CHECKING:
     from dynsolve.modes.equation_mode import GivenInfo
@@ -82,3 +84,35 @@ def _spelling(name: str) -> str:
     'x0'
     """
     return name.replace("_", "").lower()
+
+
+def scene_reads(spec: Spec) -> set[str]:
+    """Every name a scene spec may read: the names in its scene lines (expressions,
+    loads and bodies named), its finds and their arguments, its define lines, and g
+    when the scene has gravity or a weight.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> text = "given:\\n  m = 2 kg\\n  P = 5 N\\nscene:\\n  body B: particle, mass m\\n"
+    >>> text += "  force P on B at B: right\\nfind: a = a(B)"
+    >>> sorted(scene_reads(parse_spec(text, "s.dyn")) & {"m", "P", "g"})
+    ['P', 'm']
+    """
+    found: set[str] = set()
+    stack: list[object] = [*spec.scene, *spec.defines, *spec.finds]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, Name):
+            found.add(node.text)
+        elif isinstance(node, SceneStmt):
+            found |= {node.name, node.body, node.other}
+            if node.kind == "gravity" or any(p.key == "weight" for p in node.props):
+                found.add("g")
+        elif isinstance(node, FindItem):
+            found.add(node.name)
+            if node.ref is not None:
+                found |= set(node.ref.args)
+        if isinstance(node, tuple | list):
+            stack.extend(node)
+        elif dataclasses.is_dataclass(node) and not isinstance(node, type):
+            stack.extend(getattr(node, f.name) for f in dataclasses.fields(node))
+    return found

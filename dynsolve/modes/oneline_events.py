@@ -184,15 +184,19 @@ def _after(time: sympy.Expr, t0: sympy.Expr, values: Values, quantity: str) -> s
     return time
 
 
-def _turning_x(level: sympy.Expr, motion: Motion, x0: sympy.Expr, values: Values) -> Event:
+def _turning_x(
+    level: sympy.Expr, motion: Motion, x0: sympy.Expr, values: Values, back: bool = False
+) -> Event:
     """The position where v(x) = level for an a(x) law, in the motion's sense from x₀:
-    the nearest root ahead of x₀."""
+    the nearest root ahead of x₀ (``back``: behind it, where the motion turns again)."""
     law = motion.formulas["v(x)"]
     squared = tidy(law**2)
     roots = sympy.solve(sympy.Eq(squared, level**2), X)
     sense = _sign(law.subs(X, x0), values) or _sign(motion.formulas["a(x)"].subs(X, x0), values)
     if not sense:
         raise ValueError("the particle starts at rest where a = 0: it never moves")
+    if back:
+        sense, law = -sense, -law
     ahead: list[sympy.Expr] = []
     discarded: list[tuple[sympy.Expr, str]] = []
     for root in (tidy(r) for r in roots):
@@ -246,10 +250,7 @@ def _extreme(
     law = _law(motion, quantity)
     if law is None:
         if motion.given == "a(x)" and quantity == "x" and end is None:
-            event = _turning_x(sympy.Integer(0), motion, x0, values)
-            if _sign(event.expr - x0, values) == (1 if largest else -1):
-                return Event(event.expr, f"the turning point (v = 0) is x's {word} value; "
-                             + event.rule, event.discarded)  # fmt: skip
+            return _swing(largest, motion, x0, values)
         raise ValueError(f"{quantity}(t) could not be found from {motion.given}")
     if end is None:
         found = extreme_time(law, t0, values, largest)
@@ -280,6 +281,28 @@ def _extreme(
         "the candidates compared"
     )
     return Event(tidy(law.subs(T, best)), rule, tuple(discarded), best)
+
+
+def _swing(largest: bool, motion: Motion, x0: sympy.Expr, values: Values) -> Event:
+    """x's largest or smallest value under an a(x) law, from v² = f(x) alone: the motion
+    stays where f ≥ 0, between the nearest roots of f on either side of x₀. The turning
+    point ahead of x₀ is one extreme; the particle comes back (when a there points back)
+    to the nearest root behind x₀, the other."""
+    word = "largest" if largest else "smallest"
+    ahead = _turning_x(sympy.Integer(0), motion, x0, values)
+    forward = _sign(ahead.expr - x0, values)
+    rule = f"v² = f(x) ≥ 0 between turning points; x's {word} value is a turning point (v = 0)"
+    if forward == (1 if largest else -1):
+        return Event(ahead.expr, f"{rule} ahead of x₀; " + ahead.rule, ahead.discarded)
+    pull = _sign(motion.formulas["a(x)"].subs(X, ahead.expr), values)
+    if pull != -forward:
+        raise ValueError(
+            f"x has no {word} value found: at the turning point a does not point back, "
+            "so the particle need not return"
+        )
+    behind = _turning_x(sympy.Integer(0), motion, x0, values, back=True)
+    rule += " behind x₀, reached after turning back (a points back at the first turn)"
+    return Event(behind.expr, rule, (*ahead.discarded, *behind.discarded))
 
 
 def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values) -> Event:

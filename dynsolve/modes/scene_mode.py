@@ -143,6 +143,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         for t, item in zip(targets[: len(spec.finds)], spec.finds, strict=True)
         if item.ref is not None and item.ref.function == "I"
     )
+    notes += _unused(spec)
     notes += tuple(
         _path_note(scene, name, _path_extremes(scene, name, Position(spec.file, 1, 1)))
         for name in scene.movers
@@ -161,6 +162,13 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         dict(slipping or {}),
         notes=notes,
     )
+
+
+def _unused(spec: Spec) -> tuple[tuple[str, str], ...]:
+    """A note naming each given the scene never reads (with a did-you-mean)."""
+    from dynsolve.usage import scene_reads, unused_note
+
+    return unused_note(givens_of(spec), scene_reads(spec))
 
 
 def _staged(scene: Scene, spec: Spec) -> bool:
