@@ -216,7 +216,7 @@ def _with_defines(spec: Spec, context: _Context) -> tuple[Target, ...]:
     names = (*context.given_dims, "t_0", "x_0", "v_0")
     defined = {
         t.name: replace(t, unit=natural_unit(t.dim, spec.system))
-        for t in define_targets(spec, (), {n: lookup[n] for n in names}, context.dims(), resolve)
+        for t in define_targets(spec, found, {n: lookup[n] for n in names}, context.dims(), resolve)
     }
     for target in found:
         if target.name in defined:

@@ -208,6 +208,20 @@ def _targets(
     )
     if not spec.defines:
         return found
+    for item in spec.finds:  # a defined name must not hide a quantity of the scene
+        if item.name in names and item.ref is None:
+            try:
+                _target(item, spec, scene, formulation, symbols, dims)
+            except SpecError:
+                continue
+            line = next(d for d in spec.defines if d.lhs.text == item.name)  # type: ignore[union-attr]
+            raise SpecError(
+                f"'{item.name}' is already a quantity of the scene: its definition on line "
+                f"{line.line} would replace it",
+                Position(spec.file, line.line, line.column),
+                hint="choose another name for the derived quantity; an equation to solve "
+                "for a scene quantity cannot be combined with the scene: section",
+            )
 
     def resolve(function: str, args: tuple[str, ...], where: Position) -> Target:
         item = FindItem(f"{function}({', '.join(args)})", None, where.line, where.column)
