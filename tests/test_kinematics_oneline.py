@@ -200,3 +200,22 @@ def test_a_start_the_law_does_not_read_is_unused() -> None:
     solution = solve_text(text)
     note = next(c for c in solution.checks if c.name == "unused givens")
     assert "x_0 (line 3" in note.detail
+
+
+def test_numeric_root_when_sympy_cannot_solve_states_the_branch() -> None:
+    # v = cos t - t (m/s, t in s) is zero where cos t = t: the Dottie number 0.7390851332 s.
+    # x = sin t - t²/2 there; sin t* = sqrt(1 - t*²) = 0.6736120 (cos t* = t*), so
+    # x_s = 0.6736120 - 0.7390851²/2 = 0.6736120 - 0.2731234 = 0.4004886 m.
+    text = """given:
+  v_1 = 1 m/s
+  w = 1 1/s
+  c = 1 m/s^2
+kinematics:
+  v = v_1*cos(w*t) - c*t
+find: t_s = t_at(v, 0), x_s = x_at(v, 0)
+"""
+    solution = solve_text(text)
+    assert answer(solution, "t_s") == pytest.approx(0.7390851332, rel=1e-8)
+    assert answer(solution, "x_s") == pytest.approx(0.4004886, rel=1e-6)
+    step = next(s for s in solution.steps if s.unknowns == ("t_s",))
+    assert "first sign change" in step.note and "later roots not sought" in step.note

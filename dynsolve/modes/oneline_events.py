@@ -142,7 +142,19 @@ def _time_at(
     t0 = start[0]
     law = _law(motion, quantity)
     if law is not None:
-        found = _crossings(law, level, t0, values)
+        try:
+            found = _crossings(law, level, t0, values)
+        except ValueError as error:
+            numeric = _scan_roots(law - level, t0, n, values)
+            if numeric is None:
+                raise
+            time, horizon = numeric
+            rule = (
+                f"sympy could not solve {quantity}(t) = value ({error}); the {_ordinal(n)} sign "
+                f"change of {quantity}(t) − value after t₀, found by scanning t₀ … t₀ + "
+                f"{horizon:g} s and bisection, is taken (later roots not sought)"
+            )
+            return Event(time, rule, (), time)
         if len(found.times) < n:
             times = len(found.times)
             raise ValueError(
@@ -170,6 +182,47 @@ def _time_at(
         rule = "t = t(x) at the position" + ("" if quantity == "x" else " where v(x) = value")
         return Event(_after(time, t0, values, quantity), rule, (), time)
     raise ValueError(f"{quantity}(t) could not be found from {motion.given}")
+
+
+def _scan_roots(
+    q: sympy.Expr, t0: sympy.Expr, n: int, values: Values
+) -> tuple[sympy.Expr, float] | None:
+    """The n-th sign change of ``q`` (in T) after t₀, by scanning windows of doubling
+    length (up to 2²⁰ time units) and bisecting: (the root, the scanned length), or None
+    when q has symbols left or no n-th sign change is found.
+
+    >>> import sympy
+    >>> time, _ = _scan_roots(sympy.cos(T) - T, sympy.Integer(0), 1, {})  # cos t = t
+    >>> round(float(time), 9)
+    0.739085133
+    """
+    numeric = q.xreplace(dict(values))
+    start = real_value(t0, values)
+    if numeric.free_symbols - {T} or start is None:
+        return None
+    f = sympy.lambdify(T, numeric, "math")
+    horizon, samples = 1.0, 4000
+    while horizon <= 2.0**20:
+        step = horizon / samples
+        changes: list[tuple[float, float]] = []
+        previous_t, previous = start + step / 2, f(start + step / 2)
+        for i in range(1, samples + 1):
+            here = start + step / 2 + i * step
+            value = f(here)
+            if previous * value <= 0 and previous != 0:
+                changes.append((previous_t, here))
+            previous_t, previous = here, value
+        if len(changes) >= n:
+            low, high = changes[n - 1]
+            for _ in range(80):
+                middle = (low + high) / 2
+                if f(low) * f(middle) <= 0:
+                    high = middle
+                else:
+                    low = middle
+            return sympy.Float((low + high) / 2, 15), horizon
+        horizon *= 2
+    return None
 
 
 def _after(time: sympy.Expr, t0: sympy.Expr, values: Values, quantity: str) -> sympy.Expr:
