@@ -219,3 +219,11 @@ find: t_s = t_at(v, 0), x_s = x_at(v, 0)
     assert answer(solution, "x_s") == pytest.approx(0.4004886, rel=1e-6)
     step = next(s for s in solution.steps if s.unknowns == ("t_s",))
     assert "first sign change" in step.note and "later roots not sought" in step.note
+
+
+def test_a_position_past_the_turning_point_is_an_error_not_a_complex_answer() -> None:
+    # the car stops at x = v_0²/(2b) = 62.5 m; v(100 m) = sqrt(625 - 1000) is not real.
+    text = CAR.replace("x_1 = 40 m", "x_1 = 100 m") + "find: v_x = v(x_1)\n"
+    with pytest.raises(SpecError, match="v_x is not real") as caught:
+        solve_text(text)
+    assert (caught.value.position.line, caught.value.position.column) == (8, 7)

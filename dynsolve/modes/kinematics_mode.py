@@ -139,6 +139,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
                 hint="remove one",
             )
         target = context.target(item)
+        _check_real(item, target, values, file)
         _check_after_start(item, target, initial["t"], values, file)
         _check_no_blow_up(item, motion, context.lookup(), initial["t"], values, file)
         context.earlier[item.name] = target
@@ -501,6 +502,38 @@ def _event_value(name: str, quantity: str, context: _Context, where: Position) -
             hint=f"give a value of {dim.name}",
         )
     return lookup[name]
+
+
+def _check_real(
+    item: FindItem, target: Target, values: Mapping[sympy.Symbol, sympy.Expr], file: str
+) -> None:
+    """Fail loudly when a value found is not real: v(x₁) or t(x₁) past the turning point,
+    where v² < 0 — the motion never gets there on this branch.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("kinematics:\\n  x = 2*t\\nfind: v_1 = v(x_1)", "k.dyn")
+    >>> target = Target("v_1", sympy.Symbol("v_1"), _DIMS["v"], "m/s", False, False, "signed",
+    ...                 sympy.sqrt(-15))
+    >>> _check_real(spec.finds[0], target, {}, "k.dyn")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dynsolve.errors.SpecError: k.dyn:3:7: v_1 is not real ...
+    """
+    from dynsolve.numbers import real_value
+
+    if target.expr is None:
+        return
+    value = target.expr.xreplace(dict(values))
+    if value.has(sympy.zoo, sympy.oo, -sympy.oo, sympy.nan):
+        return  # infinite: the blow-up and root checks speak to it
+    if value.free_symbols or real_value(value) is not None:
+        return
+    raise SpecError(
+        f"{target.name} is not real ({sympy.sstr(sympy.N(value, 4))}): the motion never "
+        "reaches that value on this branch (past a turning point v² < 0)",
+        Position(file, item.line, item.column),
+        hint="check the value against the turning point: x_at(v, 0)",
+    )
 
 
 def _check_after_start(
