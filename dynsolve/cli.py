@@ -128,7 +128,10 @@ def _version(value: bool) -> None:
 @app.callback()
 def main_callback(
     version: Annotated[
-        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")
+        bool,
+        typer.Option(
+            "--version", callback=_version, is_eager=True, help="Show the version.", metavar=""
+        ),
     ] = False,
 ) -> None:
     """Solve and check engineering-dynamics problems written as plain-text .dyn specs.
@@ -172,16 +175,35 @@ def solve(
         bool,
         typer.Option(
             "--handout",
+            metavar="",
             help="LaTeX/Markdown/PDF: the sheet a teacher hands out (no answer key, checks "
             "or file name).",
         ),
     ] = False,
     key: Annotated[
         bool,
-        typer.Option("--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks."),
+        typer.Option(
+            "--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks.", metavar=""
+        ),
     ] = False,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
+    variant: Annotated[
+        str | None,
+        typer.Option(
+            help="Solve this student's variant (with --variants).",
+            show_default=False,
+            metavar="STUDENT",
+        ),
+    ] = None,
+    variants: Annotated[
+        Path | None,
+        typer.Option(
+            help="The variants file written by 'dynsolve variants'.",
+            show_default=False,
+            metavar="FILE",
+        ),
+    ] = None,
 ) -> None:
     """Solve one spec and show its unit-checked derivation.
 
@@ -199,12 +221,14 @@ def solve(
     elif output is not None:
         _refuse_unwritable(output)
     source = _read_stdin(chosen) if file == "-" else ("file", file)
+    cells = _variant_cells(variant, variants)
     budget = Budget(time_budget, memory_budget)
     width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
     rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
     target = _Target(rendered, output is None, width, terminal, colours, layout)
-    outcome = _in_worker(solve_and_render, (source, mode.value, budget, target), budget)
+    job = (source, mode.value, budget, target, cells)
+    outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
         _report(outcome.errors, chosen)
         raise typer.Exit(ExitCode.BAD_INPUT)
@@ -269,6 +293,119 @@ def check(
     raise typer.Exit(worst)
 
 
+class UnitsChoice(enum.StrEnum):
+    """Units of the variants: as drawn (si), US customary twins (us), or both."""
+
+    si = "si"
+    us = "us"
+    both = "both"
+
+
+@app.command("variants")
+def variants_command(
+    file: Annotated[
+        Path, typer.Argument(help="The .dyn spec with a vary: section.", metavar="FILE")
+    ],
+    roster: Annotated[
+        Path, typer.Option(help="CSV of students (column student or id).", metavar="FILE")
+    ],
+    seed: Annotated[
+        int, typer.Option(help="Seed: the same seed draws the same variants.", metavar="N")
+    ],
+    output: Annotated[
+        Path, typer.Option("--output", "-o", help="The variants CSV to write.", metavar="FILE")
+    ],
+    units: Annotated[
+        UnitsChoice, typer.Option(help="si: as drawn; us: US customary; both: a twin row each.")
+    ] = UnitsChoice.si,
+    mode: Annotated[Mode, typer.Option(help="Solve mode for each variant.")] = Mode.exact,
+) -> None:
+    """Draw each student's givens from the spec's vary: ranges; solve and check each.
+
+    A variant whose assumptions (no slip, contact kept, ...) or checks come out
+    otherwise than the base problem's is redrawn (unless vary: says 'allow
+    changes'). Reproducible: a student's variant depends only on the seed and
+    their id. Exit code 0 when written, 2 for bad input (docs/grading.md).
+    """
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.generate import make_variants
+    from dynsolve.grade.variants import read_roster, write_variants
+    from dynsolve.spec.parser import parse_file
+    from dynsolve.system import SolveOptions
+
+    _refuse_overwriting_input(file, output)
+    if output.exists() and roster.exists() and output.resolve() == roster.resolve():
+        _fail(f"refusing to write the variants over the roster {roster}", "choose another -o")
+    try:
+        spec = parse_file(file)
+        students = read_roster(roster)
+        with _counter(len(students)) as advance:
+            rows = make_variants(
+                spec, students, seed, units.value, SolveOptions(mode=mode.value), advance
+            )
+        names = list(dict.fromkeys(n for row in rows for n in row.cells))
+        write_variants(output, rows, names)
+    except DynsolveError as error:
+        _report(_reports(error, _where(error)))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    stderr.print(f"wrote {output}: {len(rows)} variants of {len(students)} students")
+
+
+def _where(error: Exception) -> tuple[str, str] | None:
+    """The file an error points into (a spec, a roster, a variants file), for its line."""
+    position = getattr(error, "position", None)
+    return ("file", position.file) if position is not None and position.file else None
+
+
+def _variant_cells(student: str | None, variants: Path | None) -> tuple[str, dict[str, str]] | None:
+    """One student's row of a variants file, for ``solve --variant``."""
+    if student is None and variants is None:
+        return None
+    if student is None or variants is None:
+        _fail("--variant and --variants go together", "give both, or neither")
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.variants import read_variants
+
+    assert student is not None and variants is not None
+    try:
+        table = read_variants(variants)
+    except DynsolveError as error:
+        _report(_reports(error, _where(error)))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    if student not in table:
+        import difflib
+
+        close = difflib.get_close_matches(student, list(table), n=1)
+        _fail(
+            f"no student '{student}' in {variants}",
+            f"did you mean '{close[0]}'?" if close else "check the id",
+        )
+    return student, table[student]
+
+
+class _counter:
+    """A progress bar on stderr (when it is a terminal) advanced by the callable it yields."""
+
+    def __init__(self, total: int) -> None:
+        self.total = total
+        self.progress: object = None
+
+    def __enter__(self) -> Callable[[int], None]:
+        if self.total < CHECK_PROGRESS_THRESHOLD or not stderr.is_terminal:
+            return lambda done: None
+        from rich.progress import Progress
+
+        progress = Progress(console=stderr, transient=True)
+        progress.start()
+        task = progress.add_task("variants", total=self.total)
+        self.progress = progress
+        return lambda done: progress.update(task, completed=done)
+
+    def __exit__(self, *exc: object) -> None:
+        if self.progress is not None:
+            self.progress.stop()  # type: ignore[attr-defined]
+
+
 def _collect(paths: list[Path]) -> list[Path]:
     files: list[Path] = []
     for path in paths:
@@ -293,17 +430,33 @@ def _progress(items: Iterator[_Outcome], total: int) -> Iterator[_Outcome]:
 
 
 def solve_and_render(
-    source: tuple[str, str], mode: str, budget: Budget, target: _Target
+    source: tuple[str, str],
+    mode: str,
+    budget: Budget,
+    target: _Target,
+    variant: tuple[str, dict[str, str]] | None = None,
 ) -> _Done | _Refused:
     """The worker's job for ``solve``: solve, check and render one spec (a file's path, or
-    stdin's text) to text."""
+    stdin's text; or one student's variant of it: their givens replaced, the answer key
+    dropped) to text."""
     from dynsolve.budget import step
     from dynsolve.errors import DynsolveError
     from dynsolve.pipeline import solve_file, solve_text
 
     kind, value = source
     try:
-        if kind == "file":
+        if variant is not None:
+            from dataclasses import replace
+
+            from dynsolve.grade.substitute import with_variant
+            from dynsolve.pipeline import solve_spec
+            from dynsolve.spec.parser import parse_file, parse_spec
+
+            spec = parse_file(value) if kind == "file" else parse_spec(value, STDIN_NAME)
+            spec = with_variant(spec, variant[1], variant[0])
+            spec = replace(spec, title=f"{spec.title} (student {variant[0]})")
+            solution = solve_spec(spec, _options(mode, budget))
+        elif kind == "file":
             solution = solve_file(value, _options(mode, budget))
         else:
             solution = solve_text(value, STDIN_NAME, _options(mode, budget))

@@ -123,15 +123,18 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     failed: tuple[Assumption, ...] = ()
     trials: list[tuple[SolvableProblem, Outcome, tuple[Assumption, ...]]] = []
     slipping: dict[str, int] = {}
+    released: dict[str, str] = {}  # cords found slack, contacts found lost
     for _ in range(RESOLVES):  # a slide contradicted, then a stick that slips the other way
-        if not slips or slips.items() <= slipping.items():
+        releases = _releases(assumptions)
+        if (not slips or slips.items() <= slipping.items()) and not releases:
             break
         trial = trial or outcome.values
         rejected = tuple(a for a in assumptions if _resolved(a))
         trials.append((problem, outcome, rejected))
         failed += rejected
         slipping |= slips
-        problem = build_scene_problem(spec, slipping)
+        released |= releases
+        problem = build_scene_problem(spec, slipping, released)
         problem = replace(
             problem,
             targets=tuple(
@@ -245,12 +248,31 @@ RESOLVES = 3  # re-solves of a scene whose friction assumption failed
 
 
 def _resolved(assumption: Assumption) -> bool:
-    """A failed friction trial (no slip, or a stated slide) that was re-solved the other way."""
+    """A failed friction trial (no slip, or a stated slide) that was re-solved the other way,
+    or a cord found slack or a contact found lost, re-solved without it."""
     return (
         not assumption.holds
-        and assumption.name.startswith(("no slip", "sliding"))
+        and assumption.name.startswith(("no slip", "sliding", "cord ", "contact at "))
         and "re-solved" in assumption.detail
     )
+
+
+def _releases(assumptions: tuple[Assumption, ...]) -> dict[str, str]:
+    """The one-sided elements a trial found pulling or pushing the wrong way: a cord with
+    a negative tension (slack) and a contact with a negative normal force (lost).
+
+    >>> _releases((Assumption("cord T taut", False, "T = -3 < 0: …; re-solved without it"),))
+    {'T': 'cord'}
+    """
+    found: dict[str, str] = {}
+    for a in assumptions:
+        if a.holds or "re-solved" not in a.detail:
+            continue
+        if a.name.startswith("cord ") and a.name.endswith(" taut"):
+            found[a.name[len("cord ") : -len(" taut")]] = "cord"
+        elif a.name.startswith("contact at ") and a.name.endswith(" kept"):
+            found[a.name[len("contact at ") : -len(" kept")]] = "contact"
+    return found
 
 
 def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]:
@@ -476,6 +498,14 @@ class _View:
                     self.options,
                 )
             return self.thresholds[contact]
+        if target.kind == "threshold":
+            from dynsolve.thresholds import threshold
+
+            assert target.expr is not None
+            key = sympy.srepr(target.expr)
+            if key not in self.thresholds:
+                self.thresholds[key] = threshold(self.problem, target.expr, self.options)
+            return self.thresholds[key]
         values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
         if target.vector is not None:
             x, y = (sympy.Integer(0) + c for c in target.vector)

@@ -10,7 +10,9 @@ States are numbered from 1 (the scene as described); stage k runs from state k t
 - ``energy_lost(k)``: T_k − T_{k+1} of the bodies in impact stage k (``energy_lost``
   alone when there is one impact);
 - ``impulse(B, k)``: m (v_{k+1} − v_k) of body B over impact stage k, a vector;
-- ``speed(B, k)``: |v_G| of B at state k.
+- ``speed(B, k)``: |v_G| of B at state k;
+- ``V(B, k)``: the potential energy of B's weight (datum y = 0) and of the springs on B
+  at state k (``V(k)``: the whole scene), V₁ less the work they did in the stages before.
 
 >>> STAGE_FUNCTIONS
 ('T', 'work', 'energy_lost', 'impulse')
@@ -197,10 +199,56 @@ def _impulse(args: tuple[str, ...], scene: Scene, f: Formulation, where: Positio
     return "vector", MOMENTUM, None, (tidy(m * (v2[0] - v1[0])), tidy(m * (v2[1] - v1[1])))
 
 
+def potential_energy(scene: Scene, bodies: tuple[str, ...], g: sympy.Expr) -> sympy.Expr:
+    """V = Σ W y_G (gravity, datum y = 0, the scene's origin) + Σ ½ k s² (the springs on
+    ``bodies``) in the scene as described (state 1).
+
+    >>> from dynsolve.model.scene import Body, Spring
+    >>> m, zero = sympy.Integer(2), sympy.Integer(0)
+    >>> ball = Body("ball", m, zero, (0, 3), (0, 3), "particle", (), {}, True, "", 0, 0)
+    >>> spring = Spring("k1", "ball", (0, 3), "", (0, 0), sympy.Integer(100), sympy.Integer(2))
+    >>> potential_energy(Scene({"ball": ball}, {}, (), (), (), (0, -1), {}, springs=(spring,)),
+    ...                  ("ball",), sympy.Integer(10))  # 2·10·3 + ½·100·1²
+    110
+    """
+    total = sympy.Integer(0)
+    if scene.gravity is not None:
+        for name in bodies:
+            body = scene.bodies[name]
+            total -= body.mass * g * dot(scene.gravity, body.G)
+    for spring in scene.springs:
+        if spring.body in bodies or spring.other in bodies:
+            dx = spring.point[0] - spring.other_point[0]
+            dy = spring.point[1] - spring.other_point[1]
+            s = sympy.sqrt(dx**2 + dy**2) - spring.unstretched
+            total += spring.k * s**2 / 2
+    return tidy(total)
+
+
+def _V(args: tuple[str, ...], scene: Scene, f: Formulation, where: Position) -> Found:
+    """V(B, k) = V(B, 1) − Σ (work of B's weight and springs in the stages before k)."""
+    if len(args) == 1 and args[0].isdigit():
+        k, bodies = int(_state(args[0], f, where).number), tuple(scene.bodies)
+    elif args:
+        bodies = (_body(args[0], scene, where),)
+        k = _state(args[1], f, where).number if len(args) == 2 else len(f.states)
+    else:
+        k, bodies = len(f.states), tuple(scene.bodies)
+    g = next((s for s in scene.values if s.name == "g"), sympy.Symbol("g", positive=True))
+    V = potential_energy(scene, bodies, g)
+    conservative = {f"W_{b}" for b in bodies} | {
+        s.name for s in scene.springs if s.body in bodies or s.other in bodies
+    }
+    for record in f.stages[: k - 1]:
+        V -= sum((u for n, u in record.works.items() if n in conservative), sympy.Integer(0))
+    return "signed", ENERGY, tidy(V), None
+
+
 _FINDERS: Mapping[str, Callable[..., Found]] = {
     "T": _T,
     "work": _work,
     "energy_lost": _energy_lost,
     "impulse": _impulse,
     "speed": _speed,
+    "V": _V,
 }

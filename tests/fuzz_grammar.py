@@ -18,7 +18,10 @@ PROBLEMS = Path(__file__).resolve().parent.parent / "problems"
 
 NAMES = ("m", "g", "r", "k_O", "alpha", "omega", "T", "a", "v_0", "x", "theta", "I_O", "t", "y")
 UNITS = ("kg", "m", "s", "N", "N*m", "m/s", "m/s^2", "rad/s", "deg", "lb", "ft", "kg*m^2", "1/s")
-UNITS_ODD = ("N^-2", "m^(1/2)", "kgs", "(m/s)^3", "rev/min", "N·m", "2*m", "m^99", "s^(-1/3)")
+UNITS_ODD = (
+    "N^-2", "m^(1/2)", "kgs", "(m/s)^3", "rev/min", "N·m", "2*m", "m^99", "s^(-1/3)",
+    "N^1e99999999", "m^1e400", "s^-1e-30", "kg^(10^10)", "m^(2^2^2^2)",
+)  # fmt: skip
 FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "atan2", "abs", "asin", "acos")
 NUMBERS = ("0", "1", "2", "0.5", "-3", "9.81", "1e3", "1e-9", "1e30", "1e-30", "123456789", ".5")
 RELATIONS = ("=", "=", "=", ">=", "<=", ">", "<")

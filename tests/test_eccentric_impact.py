@@ -45,10 +45,11 @@ def test_the_same_in_fps(tmp_path):
     assert solution.answers[0].value == pytest.approx(4.5, rel=1e-9)
 
 
-def test_only_a_plastic_impact_about_a_point_is_supported(tmp_path):
+def test_an_impact_about_a_point_with_e_above_zero_needs_its_line(tmp_path):
+    # e > 0 is a rebound off the point (issue 8): it needs the line of impact
     with pytest.raises(SpecError) as caught:
         solve(tmp_path, e="0.5")
-    assert "plastic (e 0)" in caught.value.message
+    assert "needs its line of impact" in caught.value.message
     assert caught.value.position.line == 10
 
 

@@ -279,7 +279,8 @@ def test_drum_reads_like_a_solution(tmp_path: Path) -> None:
     assert "Hibbeler 12e Example 17.11" in tex
     assert r"$m_{d}$ & $60\,\mathrm{kg}$ & 60" in tex
     assert r"I_{O} = m_{d} k_{O}^{2} \tag*{(line 12)}" in tex
-    assert r"$\Sigma$M\_O = I\_O $\alpha$ (drum) \& 100\% of the torque" in tex
+    # the caption's symbols typeset as mathematics, the words around them escaped
+    assert r"$\Sigma M_{O}$ = $I_{O}$ $\alpha$ (drum) \& 100\% of the torque" in tex
     assert r"{[}force, N{]}~$\checkmark$" in tex
     assert r"Equations (lines 13--15) give $T$, $\alpha$ and $a$ (linear):" in tex
     # formula, then the givens put in (I_O = 3.75 kg·m², g = 9.81, m_b = 20 kg, r = 0.4 m), then T

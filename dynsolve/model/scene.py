@@ -169,6 +169,8 @@ class Pivot:
     point: Vec
     line: int = 0
     column: int = 0
+    e: sympy.Expr | None = None  # with ``normal``: a smooth rebound off the point
+    normal: Vec | None = None  # the line of impact at the point, from the body toward it
 
 
 @dataclass(frozen=True)
@@ -178,6 +180,9 @@ class Travel:
     ``kind`` is "to" (G reaches ``position``), "by" (G moves ``distance`` along
     ``direction``), "turns" (it turns through ``angle``, ccw positive) or "for" (the
     scene moves for ``duration``); ``stops`` says it is at rest in state 2.
+    ``until`` names the event that ends it: "rolls" (an interval that ends when the
+    sliding contact stops slipping), "slack" (the cord or link ``until_name`` goes slack)
+    or "lost" (the particle leaves its circular surface); kind "until" has no extent given.
     """
 
     body: str
@@ -190,6 +195,8 @@ class Travel:
     stops: bool = False
     line: int = 0
     column: int = 0
+    until: str = ""
+    until_name: str = ""
 
 
 @dataclass(frozen=True)
@@ -255,6 +262,7 @@ class Scene:
     assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
     events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
+    paths: Mapping[str, Path] = field(default_factory=dict)  # fixed paths, by name
 
 
 class _Builder:
@@ -729,6 +737,7 @@ def build_scene(
         impacts=tuple(impacts),
         travels=travels,
         movers=movers,
+        paths=paths,
         pivots=tuple(pivots),
         assumptions=tuple(assumptions),
         values=builder.given_values,
@@ -900,12 +909,29 @@ def _pivot(builder: _Builder, stmt: SceneStmt) -> Pivot:
         )
     assert stmt.value is not None
     e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
+    if stmt.direction is not None:  # a smooth rebound off the point along the line
+        value = real_value(e, builder.given_values)
+        if value is not None and not 0 <= value <= 1:
+            raise SpecError(
+                f"a coefficient of restitution is between 0 and 1, not {value:g}",
+                builder.where(stmt.line, stmt.column),
+                hint="e 0 is plastic, e 1 elastic",
+            )
+        return Pivot(
+            body.name,
+            stmt.name,
+            builder.fixed[stmt.name],
+            stmt.line,
+            stmt.column,
+            e=e,
+            normal=builder.direction(stmt.direction),
+        )
     if real_value(e, builder.given_values) != 0:
         raise SpecError(
-            "an impact about a fixed point is supported when it is plastic (e 0): the body "
-            "then turns about the point",
+            "an impact about a fixed point with e > 0 needs its line of impact: the body "
+            "rebounds off the point (smooth); with e 0 and no line it turns about the point",
             builder.where(stmt.line, stmt.column),
-            hint="write 'e 0'",
+            hint="write 'e e, line down' (from the body toward the point), or 'e 0'",
         )
     return Pivot(body.name, stmt.name, builder.fixed[stmt.name], stmt.line, stmt.column)
 
@@ -1024,6 +1050,18 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
     """A travel line: to a position, by a distance along a direction, or through an angle."""
     stops = any(p.key == "stops" for p in stmt.props)
     line, column = stmt.line, stmt.column
+    until = next((p for p in stmt.props if p.key == "until"), None)
+    if until is not None and stmt.word not in ("for", "until"):
+        raise SpecError(
+            f"'until {until.word}' ends an interval: it goes on a 'for' line",
+            builder.where(until.line, until.column),
+            hint=f"write 'travel {stmt.body}: for t_1, until {until.word}' and find t_1",
+        )
+    if stmt.word == "until":
+        assert until is not None
+        builder.body(stmt.body, stmt.line, stmt.column)
+        return Travel(stmt.body, "until", line=line, column=column, until=until.word,
+                      until_name=until.about)  # fmt: skip
     if stmt.body not in links:
         body = builder.body(stmt.body, stmt.line, stmt.column)
     elif stmt.word not in ("cw", "ccw"):
@@ -1035,7 +1073,8 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
     if stmt.word == "for":
         assert stmt.value is not None
         duration = builder.value(stmt.value, Dim(0, 0, 1), "a duration")
-        return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column)
+        return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column,
+                      until=until.word if until else "")  # fmt: skip
     if stmt.vectors:
         position = builder.vector(stmt.vectors[0], "a position")
         return Travel(stmt.body, "to", position=position, stops=stops, line=line, column=column)

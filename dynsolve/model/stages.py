@@ -46,7 +46,12 @@ class Stage:
             return f"{event.body} strikes {'the ' if event.other == 'ground' else ''}{event.other}"
         if isinstance(event, Pivot):
             return f"{event.body} strikes {event.name} and turns about it"
-        how = {"to": "to its position", "turns": "turns", "for": "moves for an interval"}
+        how = {
+            "to": "to its position",
+            "turns": "turns",
+            "for": "moves for an interval",
+            "until": f"moves until {event.until_name or 'contact'} {event.until}",
+        }
         if event.kind == "by":
             return f"{event.body} travels by {sympy.sstr(event.distance)}"
         return f"{event.body} {'travels ' if event.kind == 'to' else ''}{how[event.kind]}"

@@ -49,10 +49,18 @@ class SceneProblem:
     steps: tuple[Step, ...] = ()
     mode: str = "scene"
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
+    released: Mapping[str, str] = field(default_factory=dict)  # slack cords, lost contacts
+    released_elements: Mapping[str, object] = field(default_factory=dict)  # their models
 
 
-def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -> SceneProblem:
-    """Model the scene, write its equations and resolve the find list."""
+def build_scene_problem(
+    spec: Spec,
+    slipping: Mapping[str, int] | None = None,
+    released: Mapping[str, str] | None = None,
+) -> SceneProblem:
+    """Model the scene, write its equations and resolve the find list. ``released`` maps
+    cords found slack and contacts found lost in an earlier trial to what they were
+    ("cord", "contact"): they are left out (their force is zero)."""
     from dynsolve.sections import combine_sections
 
     spec = combine_sections(spec)
@@ -70,6 +78,15 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         {g.symbol: g.value for g in givens if g.value is not None},
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
+    removed: dict[str, object] = {}
+    if released:
+        removed = {c.name: c for c in scene.cords if c.name in released}
+        removed |= {s.name: s for s in scene.supports if s.name in released}
+        scene = replace(
+            scene,
+            cords=tuple(c for c in scene.cords if c.name not in released),
+            supports=tuple(s for s in scene.supports if s.name not in released),
+        )
     rigid = any(not b.particle for b in scene.bodies.values()) or bool(scene.links)
     staged = _staged(scene, spec)
     try:
@@ -77,6 +94,8 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             from dynsolve.principles.stage_chain import chain_formulation
 
             formulation = chain_formulation(scene, symbols, given_values)
+            if _single_travel(scene, rigid):  # the state-1 reactions are asked too
+                formulation = _with_instant(formulation, formulate(scene, symbols, slipping))
         elif scene.impacts:
             from dynsolve.principles.impact import impact_formulation
 
@@ -85,6 +104,10 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
             from dynsolve.principles.impact import pivot_formulation
 
             formulation = pivot_formulation(scene, given_values)
+        elif any(t.kind == "until" for t in scene.travels.values()):
+            from dynsolve.principles.until import until_formulation
+
+            formulation = until_formulation(scene, symbols)
         elif any(t.kind == "for" for t in scene.travels.values()):
             from dynsolve.principles.impulse_momentum import impulse_formulation
 
@@ -98,7 +121,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         if (
             scene.travels
             and not staged
-            and not any(t.kind == "for" for t in scene.travels.values())
+            and not any(t.kind in ("for", "until") for t in scene.travels.values())
         ):
             formulation = _with_energy(formulation, scene, symbols, given_values)
     except ValueError as exc:  # a stage's error names its line
@@ -122,6 +145,13 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         )
         for s, (value, dim, meaning) in formulation.derived.items()
     ]
+    if released:  # a slack cord's tension, a lost contact's forces: zero
+        zero = sympy.Integer(0)
+        reactions = dict(formulation.reactions)
+        for name, kind in released.items():
+            names = [name] if kind == "cord" else [f"N_{name}", f"F_{name}", f"x_{name}"]
+            reactions.update({n: (zero, (zero, zero)) for n in names})
+        formulation = replace(formulation, reactions=reactions)
     targets = _targets(spec, scene, formulation, symbols, dims, givens)
     check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     wanted = _wanted(targets, formulation)
@@ -133,6 +163,7 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         equations=equations,
         unknowns=tuple(formulation.unknowns) if wanted else (),
         knowns=knowns,
+        constraints=formulation.constraints if wanted else (),
         wanted=wanted,
     )
     symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
@@ -161,6 +192,48 @@ def build_scene_problem(spec: Spec, slipping: Mapping[str, int] | None = None) -
         rows,
         dict(slipping or {}),
         notes=notes,
+        released=dict(released or {}),
+        released_elements=removed,
+    )
+
+
+def _single_travel(scene: Scene, rigid: bool) -> bool:
+    """A lone particle's single travel (to or by), whose scene as described is also an
+    instant: its Newton–Euler equations give the reactions at state 1."""
+    from dynsolve.model.scene import Travel
+
+    events = scene.events
+    return (
+        len(events) == 1
+        and isinstance(events[0], Travel)
+        and events[0].kind in ("to", "by")
+        and not rigid
+        and not scene.movers
+    )
+
+
+def _with_instant(chain: Formulation, instant: Formulation) -> Formulation:
+    """The Newton–Euler equations of state 1, then the stage's equations (renumbered)."""
+    from dynsolve.system import Equation
+
+    n = len(instant.equations)
+    shifted = tuple(
+        Equation(e.lhs, e.rhs, f"eq. {n + k}", n + k, e.note)
+        for k, e in enumerate(chain.equations, start=1)
+    )
+    stages = tuple(replace(r, equations=tuple(i + n for i in r.equations)) for r in chain.stages)
+    return replace(
+        chain,
+        equations=instant.equations + shifted,
+        unknowns={**instant.unknowns, **chain.unknowns},
+        forces=instant.forces,
+        couples=instant.couples,
+        kinematics=instant.kinematics,
+        moment_points=instant.moment_points,
+        reactions=instant.reactions,
+        kinetic=instant.kinetic,
+        derived={**instant.derived, **chain.derived},
+        stages=stages,
     )
 
 
@@ -175,7 +248,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     """Whether the scene is followed through stages: several travel or impact lines, an
     impact with the ground, or a find that needs the states (T, work, …)."""
     from dynsolve.derived import called_functions
-    from dynsolve.model.scene import GROUND
+    from dynsolve.model.scene import GROUND, Impact
     from dynsolve.stage_finds import STAGE_FUNCTIONS
 
     events = scene.events
@@ -185,7 +258,14 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
-    return len(events) > 1 or ground or bool(events and (asked & set(STAGE_FUNCTIONS) or at_state))
+    stage_functions = {*STAGE_FUNCTIONS, "V", "F_avg"}
+    impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
+    return (
+        len(events) > 1
+        or ground
+        or impacts
+        or bool(events and (asked & stage_functions or at_state))
+    )
 
 
 def _targets(
@@ -287,6 +367,8 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
         ):
             extent = stmt.kind == "travel" and stmt.word == ""  # a distance may be 0
             sign = {"nonnegative": True} if extent else {"positive": True}
+            if any(p.key == "until" for p in stmt.props):
+                sign = {"real": True}  # its sign is checked: the event comes after the start
             found[sympy.Symbol(value.text, **sign)] = dim
     return found
 
@@ -300,10 +382,15 @@ def _stopping_distances(spec: Spec) -> list[object]:
         stmt.value
         for stmt in spec.scene
         if stmt.kind == "travel"
-        and stmt.word == ""
-        and stmt.direction is not None
         and isinstance(stmt.value, Name)
-        and any(p.key == "stops" for p in stmt.props)
+        and (
+            (
+                stmt.word == ""
+                and stmt.direction is not None
+                and any(p.key == "stops" for p in stmt.props)
+            )
+            or (stmt.word == "for" and any(p.key == "until" for p in stmt.props))
+        )
     ]
 
 
@@ -402,6 +489,8 @@ def _wanted(targets: tuple[Target, ...], formulation: Formulation) -> tuple[symp
         exprs = [target.expr] if target.expr is not None else []
         if target.kind == "steepest":  # needs the friction's sense in the solved scene
             exprs = [formulation.reactions[f"F_{target.expr}"][0]]
+        if target.kind == "threshold":  # solved apart, with its load as a letter
+            exprs = []
         if target.vector is not None:
             exprs += list(target.vector)
         for expr in exprs:
@@ -491,9 +580,9 @@ def _target(
         function, args, trial = args[0], (), True
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
-    if item.unit is None and function in ("T", "work", "energy_lost"):
+    if item.unit is None and function in ("T", "work", "energy_lost", "V"):
         unit = natural_unit(dim, spec.system, "E")  # an energy, not a moment
-    if target.kind == "steepest" and item.unit is None:
+    if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
 
@@ -528,14 +617,34 @@ def _quantity(
     def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
         return Target(name, symbol, dim, "", False, False, kind, expr, **extra)  # type: ignore[arg-type]
 
-    from dynsolve.stage_finds import STAGE_FUNCTIONS, stage_quantity
+    from dynsolve.stage_finds import STAGE_FUNCTIONS, potential_energy, stage_quantity
+
+    if function == "V" and not formulation.states:  # the scene as described
+        bodies = (_body(args[0], scene, where),) if args else tuple(scene.bodies)
+        g = symbols.get("g", sympy.Symbol("g", positive=True))
+        return target("signed", Dim(2, 1, -2), potential_energy(scene, bodies, g))
+    if function == "V" and len(args) <= 2 and args:
+        return target(
+            "signed", Dim(2, 1, -2), stage_quantity("V", args, scene, formulation, where)[2]
+        )
+    if function == "power":
+        return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
+    if function == "F_avg":
+        kind, dim, vector = _average_force(args, scene, formulation, symbols, dims, where)
+        return target(kind, dim, vector=vector)
 
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
         kind, dim, expr, vector = stage_quantity(function, args, scene, formulation, where)
         return target(kind, dim, expr, vector=vector)
+    from dynsolve.thresholds import THRESHOLDS, threshold_target
+
+    if function in THRESHOLDS:
+        expr = threshold_target(function, args, scene, formulation, symbols, where)
+        load = expr.args[1]
+        return target("threshold", dims.get(load.name, Dim.of("force")), expr)
     if function == "steepest":
-        support = next((s for s in scene.supports if s.name == (args or ("",))[0]), None)
+        support = _support_named((args or ("",))[0], scene, where, rough=True)
         if support is None or support.mu_s is None or scene.gravity is None:
             raise SpecError(
                 "steepest(C) needs a contact C with mu_s, and gravity",
@@ -552,6 +661,36 @@ def _quantity(
                 hint=f"add 'travel {body}: to (x, y)'",
             )
         return target("magnitude", Dim(1, 0, -1), formulation.speeds[body])
+    if function == "angle" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.turns:
+            raise SpecError(
+                f"{body} does not go round a centre until an event",
+                where,
+                hint=f"angle(B) is the angle turned by 'travel {body}: until CORD slack' "
+                "or 'until contact lost'",
+            )
+        return target("magnitude", Dim(), formulation.turns[body])
+    if function == "height" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.turns:
+            raise SpecError(
+                f"{body} does not go round a centre until an event",
+                where,
+                hint="height(B) is how far G rises (up positive) until the event",
+            )
+        assert scene.gravity is not None  # an until event needs gravity
+        up = (-scene.gravity[0], -scene.gravity[1])
+        return target("along", Dim.of("length"), formulation.heights[body], axis=up)
+    if function == "distance" and len(args) == 1:
+        body = _body(args[0], scene, where)
+        if body not in formulation.displacements:
+            raise SpecError(
+                f"{body} does not move over an interval",
+                where,
+                hint=f"distance(B) is how far G moves over 'travel {body}: for t, …'",
+            )
+        return target("vector", Dim.of("length"), vector=formulation.displacements[body])
     if function in ("a_max", "a_min") and len(args) == 1:
         if args[0] not in scene.movers or args[0] in scene.bodies:
             raise SpecError(
@@ -636,6 +775,66 @@ def _quantity(
         f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
     )
     raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def _power(
+    args: tuple[str, ...], scene: Scene, formulation: Formulation, where: Position
+) -> sympy.Expr:
+    """P = F·v_P of a force (or M ω of a couple) at the instant."""
+    if len(args) != 1 or not formulation.kinematics:
+        raise SpecError(
+            "power(F) is the power of one force or couple at the instant",
+            where,
+            hint="write power(P) in a scene without travels or impacts",
+        )
+    name = args[0]
+    for body, forces in formulation.forces.items():
+        kin = formulation.kinematics.get(body)
+        if kin is None:
+            continue
+        G = scene.bodies[body].G
+        v_G = scene.velocities.get(body, (sympy.Integer(0), sympy.Integer(0)))
+        for force in forces:
+            if force.name == name:
+                r = (force.point[0] - G[0], force.point[1] - G[1])
+                v_P = (v_G[0] - kin.omega * r[1], v_G[1] + kin.omega * r[0])
+                return tidy(force.magnitude * dot(force.direction, v_P))
+        for couple in formulation.couples.get(body, ()):
+            if couple.name == name:
+                return tidy(couple.moment * kin.omega)
+    names = sorted(
+        {f.name for fs in formulation.forces.values() for f in fs}
+        | {c.name for cs in formulation.couples.values() for c in cs}
+    )
+    close = difflib.get_close_matches(name, names, n=1)
+    hint = f"did you mean '{close[0]}'?" if close else "forces: " + ", ".join(names)
+    raise SpecError(f"'{name}' is not a force or couple of the scene", where, hint)
+
+
+def _average_force(
+    args: tuple[str, ...],
+    scene: Scene,
+    formulation: Formulation,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+    where: Position,
+) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr]]:
+    """F_avg(B, t_c [, k]) = impulse(B [, k]) / t_c over a given contact time."""
+    from dynsolve.stage_finds import stage_quantity
+
+    if len(args) not in (2, 3) or args[1] not in symbols:
+        raise SpecError(
+            "F_avg takes the body and the contact time: F_avg(B, t_c) or F_avg(B, t_c, k)",
+            where,
+            hint="t_c is a given time, e.g. t_c = 0.002 s",
+        )
+    if dims.get(args[1]) != Dim(0, 0, 1):
+        raise SpecError(f"'{args[1]}' is not a time", where, hint="give the contact time in s")
+    impulse_args = (args[0], *args[2:])
+    _, _, _, vector = stage_quantity("impulse", impulse_args, scene, formulation, where)
+    assert vector is not None
+    t_c = symbols[args[1]]
+    return "vector", Dim.of("force"), (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
 
 
 def steepest(
@@ -771,6 +970,26 @@ def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:
     )
 
 
+def _support_named(name: str, scene: Scene, where: Position, rough: bool = False) -> object:
+    """The support named ``name``; a point name shared by several bodies' supports
+    (``contact A at G`` and ``contact B at G`` are ``G_A`` and ``G_B``) finds the one of
+    them that fits (rough, when ``rough``), else says which names to use."""
+    exact = next((s for s in scene.supports if s.name == name), None)
+    if exact is not None:
+        return exact
+    shared = [s for s in scene.supports if s.at == name]
+    fitting = [s for s in shared if not rough or s.mu_s is not None]
+    if len(fitting) == 1:
+        return fitting[0]
+    if len(fitting) > 1:
+        raise SpecError(
+            f"several supports are at {name}",
+            where,
+            hint="name one: " + ", ".join(s.name for s in fitting),
+        )
+    return None
+
+
 def _body(name: str, scene: Scene, where: Position) -> str:
     if name not in scene.bodies:
         close = difflib.get_close_matches(name, list(scene.bodies), n=1)
@@ -806,9 +1025,20 @@ def assess(
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions
 
-        return chain_assumptions(scene, formulation, substitution), slips
+        chained = chain_assumptions(scene, formulation, substitution)
+        if not formulation.kinematics:
+            return chained, slips
+        checks += chained  # a single travel: its state 1 is checked as an instant too
     if scene.travels and not formulation.reactions:
-        return _between_states(problem, substitution), slips
+        events = tuple(_event_checks(formulation, substitution))
+        return _between_states(problem, substitution) + events, slips
+    checks += _event_checks(formulation, substitution)
+    sliding_until = {
+        s.name
+        for s in scene.supports
+        for t in scene.travels.values()
+        if t.until == "rolls" and s.body == t.body and s.kind == "contact" and not s.smooth
+    }
     for support in scene.supports:
         if support.kind == "pin":
             continue
@@ -819,7 +1049,7 @@ def assess(
                     f"contact at {support.name} kept",
                     N >= 0,
                     f"N_{support.name} = {N:.4g} {'≥' if N >= 0 else '<'} 0"
-                    + ("" if N >= 0 else ": the body leaves the surface"),
+                    + ("" if N >= 0 else f": the body leaves the surface; {RELEASED}"),
                 )
             )
         friction_name = f"F_{support.name}"
@@ -832,6 +1062,8 @@ def assess(
                 checks.append(slide)
                 if not slide.holds and "re-solved" in slide.detail:
                     slips[support.name] = 0
+        elif support.name in sliding_until:
+            pass  # kinetic friction until it rolls: checked by the event's time
         elif friction_name in formulation.reactions and N is not None:
             check = _no_slip(support, formulation.reactions[friction_name][0], N, substitution)
             if check is not None:
@@ -856,10 +1088,85 @@ def assess(
                     f"cord {cord.name} taut",
                     T >= 0,
                     f"{cord.name} = {T:.4g} {'≥' if T >= 0 else '<'} 0"
-                    + ("" if T >= 0 else ": the cord goes slack"),
+                    + ("" if T >= 0 else f": the cord goes slack; {RELEASED}"),
                 )
             )
+    checks += _released_checks(problem, substitution)
     return tuple(checks), slips
+
+
+RELEASED = "re-solved without it (its force zero)"
+
+
+def _released_checks(
+    problem: SceneProblem, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """A cord re-solved slack must not be stretched by the motion found without it (its
+    end moves toward its anchor or the other end), and a contact re-solved lost must see
+    its point leave the surface (a_P·n ≥ 0, from rest at the instant)."""
+    from dynsolve.model.scene import Cord, Support
+
+    checks = []
+    for name, element in problem.released_elements.items():
+        if isinstance(element, Cord):
+            cord = element
+            a_1 = _accel(problem, cord.body, cord.point)
+            a_2: Vec = (sympy.Integer(0), sympy.Integer(0))
+            if cord.other and cord.other_point is not None:
+                a_2 = _accel(problem, cord.other, cord.other_point)
+            closing = real_value(
+                dot((a_1[0] - a_2[0], a_1[1] - a_2[1]), cord.direction), substitution
+            )
+            holds = closing is None or closing >= -SENSE_TOLERANCE * max(1.0, abs(closing))
+            detail = (
+                f"{name} = 0; without it, its ends do not draw apart (relative "
+                f"acceleration along it {0.0 if closing is None else closing:.4g} toward the "
+                "anchor)"
+            )
+            if not holds:
+                detail = f"{name} = 0, but without it the motion would stretch it: neither holds"
+            checks.append(Assumption(f"cord {name} slack", holds, detail))
+        else:
+            assert isinstance(element, Support)
+            support = element
+            a_P = _accel(problem, support.body, support.point)
+            away = real_value(dot(a_P, support.normal), substitution)
+            holds = away is None or away >= -SENSE_TOLERANCE * max(1.0, abs(away))
+            detail = (
+                f"N_{name} = 0; without the contact its point accelerates away from the "
+                f"surface at {0.0 if away is None else away:.4g}"
+            )
+            if not holds:
+                detail = f"N_{name} = 0, but without it the body would move into the surface"
+            checks.append(Assumption(f"contact at {name} lost", holds, detail))
+    return checks
+
+
+def _accel(problem: SceneProblem, body: str, point: Vec) -> Vec:
+    """The acceleration of a body's point at the instant (zero for no equations of motion)."""
+    from dynsolve.principles.newton_euler import point_acceleration
+
+    kin = problem.formulation.kinematics.get(body)
+    if kin is None:
+        return (sympy.Integer(0), sympy.Integer(0))
+    return point_acceleration(kin, problem.scene.bodies[body].G, point)
+
+
+def _event_checks(
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """Each until event comes after the start: its time (or turn) is positive."""
+    checks = []
+    for name, value, detail in formulation.events:
+        number = real_value(value, substitution)
+        if number is None:
+            continue
+        holds = number > 0
+        text = detail.format(value=number)
+        if not holds:
+            text += ": it would have to happen before the start, so it never happens"
+        checks.append(Assumption(name, holds, text))
+    return checks
 
 
 def _held_at_rest(scene: Scene, checks: list[Assumption]) -> tuple[Assumption, ...]:
@@ -1148,10 +1455,13 @@ def free_bodies(
             )
             if magnitude is not None and magnitude < 0:
                 dx, dy = -dx, -dy
+            kind = force.kind
+            if force.kind == "friction" and force.known:  # as the equations write it
+                kind = f"friction = μk N_{force.name[2:]}"
             rows.append(
                 ForceRow(
                     force.name,
-                    force.kind,
+                    kind,
                     force.point_name or "P",
                     x,
                     y,

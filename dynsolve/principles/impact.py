@@ -25,6 +25,7 @@ from collections.abc import Mapping
 import sympy
 
 from dynsolve.model.scene import Impact, Scene, Vec
+from dynsolve.numbers import tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, dot
 from dynsolve.system import Equation
 from dynsolve.units import Dim
@@ -133,6 +134,8 @@ def pivot_formulation(
     """
     from dynsolve.solver.roots import sign_of
 
+    if any(p.normal is not None for p in scene.pivots):
+        return rebound_formulation(scene)
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}
     after_omega: dict[str, sympy.Expr] = {}
@@ -161,4 +164,87 @@ def pivot_formulation(
         after_omega[pivot.body] = sense * omega
     return bare_formulation(
         scene.bodies, equations=tuple(equations), unknowns=unknowns, after_omega=after_omega
+    )
+
+
+def rebound_formulation(scene: Scene) -> Formulation:
+    """A rigid body striking a fixed point with restitution e along the line n (smooth):
+    m (v_G2 − v_G1) = J n, I_G (ω₂ − ω₁) = r_P/G × J n, and (v_P2)·n = −e (v_P1)·n with
+    v_P = v_G + ω k × r_P/G; the impulse J ≥ 0 pushes the body back along −n.
+
+    >>> import sympy
+    >>> from dynsolve.model.scene import Scene, Body, Pivot
+    >>> rod = Body("rod", 2, sympy.Rational(1, 6), (0, 0), (0, 0), "rod", (1,), {}, False, "",
+    ...            0, 0)
+    >>> ledge = Pivot("rod", "P", (sympy.Rational(1, 2), 0), e=sympy.Rational(1, 2),
+    ...               normal=(0, -1))
+    >>> scene = Scene({"rod": rod}, {"P": ledge.point}, (), (), (), None, {},
+    ...               velocities={"rod": (0, -3)}, pivots=(ledge,))
+    >>> f = rebound_formulation(scene)
+    >>> sympy.solve([e.residual for e in f.equations], list(f.unknowns))  # hand: see tests
+    {J_P: 9/4, omega_2_rod: 27/4, v_2x_rod: 0, v_2y_rod: -15/8}
+    """
+    (pivot,) = scene.pivots
+    assert pivot.normal is not None and pivot.e is not None
+    name, point = pivot.body, pivot.name
+    body = scene.bodies[name]
+    n = pivot.normal
+    r = (pivot.point[0] - body.G[0], pivot.point[1] - body.G[1])
+    v1 = scene.velocities.get(name, ZERO)
+    w1 = sympy.Integer(0) + scene.omegas.get(name, 0)
+    v2 = (sympy.Symbol(f"v_2x_{name}", real=True), sympy.Symbol(f"v_2y_{name}", real=True))
+    w2 = sympy.Symbol(f"omega_2_{name}", real=True)
+    J = sympy.Symbol(f"J_{point}", nonnegative=True)
+    push = (-n[0], -n[1])  # the point pushes the body back
+    m, I_G = body.mass, body.I_G
+
+    def v_P(v: Vec, w: sympy.Expr) -> sympy.Expr:
+        return dot((v[0] - w * r[1], v[1] + w * r[0]), n)
+
+    equations = [
+        Equation(m * v1[i] + J * push[i], m * v2[i], f"eq. {i + 1}", i + 1,
+                 f"linear impulse and momentum along {axis}: m v_G1 + J n = m v_G2 ({name})")
+        for i, axis in enumerate("xy")
+    ]  # fmt: skip
+    equations.append(
+        Equation(
+            I_G * w1 + J * (r[0] * push[1] - r[1] * push[0]),
+            I_G * w2,
+            "eq. 3",
+            3,
+            f"angular impulse and momentum about G: I_G ω₁ + r_{point}/G × J n = I_G ω₂ ({name})",
+        )
+    )
+    equations.append(
+        Equation(
+            -pivot.e * v_P(v1, w1),
+            v_P(v2, w2),
+            "eq. 4",
+            4,
+            f"restitution at {point}: (v_{point}2)·n = −e (v_{point}1)·n, v_{point} = v_G + "
+            f"ω k × r_{point}/G (smooth: no impulse across the line)",
+        )
+    )
+    return bare_formulation(
+        scene.bodies,
+        equations=tuple(tidy_equation(e) for e in equations),
+        unknowns={v2[0]: Dim(1, 0, -1), v2[1]: Dim(1, 0, -1), w2: Dim(0, 0, -1), J: Dim(1, 1, -1)},
+        after={name: v2},
+        after_omega={name: w2},
+        events=(
+            (
+                f"{name} strikes {point}",
+                tidy(v_P(v1, w1)),
+                f"before the impact {point} of {name} closes on the point at {{value:.4g}} "
+                "along the line",
+            ),
+        ),
+    )
+
+
+def tidy_equation(equation: Equation) -> Equation:
+    from dynsolve.numbers import tidy
+
+    return Equation(
+        tidy(equation.lhs), tidy(equation.rhs), equation.label, equation.line, equation.note
     )

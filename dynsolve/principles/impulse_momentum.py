@@ -23,12 +23,13 @@ A direction (or point) with no external impulse is named: momentum is conserved 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace as replaced
 
 import sympy
 
 from dynsolve.model.scene import Scene, Vec
 from dynsolve.numbers import tidy
-from dynsolve.principles.newton_euler import Formulation, formulate
+from dynsolve.principles.newton_euler import Formulation, formulate, touches_at_rim
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
@@ -55,7 +56,13 @@ def constant_forces(scene: Scene) -> str:
             (body.G[0] - support.point[0]) ** 2 + (body.G[1] - support.point[1]) ** 2
         ):
             return f"the weight's moment about {support.name} changes as {body.name} turns"
-        if support.kind == "contact" and not body.particle and body.name not in scene.motions:
+        rim = touches_at_rim(body, support)  # a round body's contact stays below G
+        if (
+            support.kind == "contact"
+            and not body.particle
+            and body.name not in scene.motions
+            and not rim
+        ):
             return f"the contact point {support.name} moves on {body.name} as it turns"
     for load in scene.loads:
         body = scene.bodies.get(load.body)
@@ -80,7 +87,17 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
     (travel,) = scene.travels.values()
     dt = travel.duration
     assert dt is not None
-    motion = formulate(scene, symbols)
+    slipping: dict[str, int] = {}
+    rolls = None
+    if travel.until == "rolls":
+        from dynsolve.principles.until import friction_sense, sliding_contact
+
+        if travel.body not in scene.omegas:  # sliding without spin, not rolling at v_G
+            scene = replaced(scene, omegas={**scene.omegas, travel.body: sympy.Integer(0)})
+
+        rolls = sliding_contact(scene, travel)
+        slipping[rolls.name] = friction_sense(scene, travel, rolls)
+    motion = formulate(scene, symbols, slipping)
     replace: dict[sympy.Symbol, sympy.Expr] = {}
     unknowns: dict[sympy.Symbol, Dim] = {
         s: d for s, d in motion.unknowns.items() if not _is_acceleration(s, motion)
@@ -88,6 +105,8 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
     speeds: dict[str, sympy.Expr] = {}
     spins: dict[str, sympy.Expr] = {}
     several = len(scene.bodies) > 1
+    ends: dict[str, tuple[Vec, sympy.Expr]] = {}
+    moved: dict[str, Vec] = {}
     for name, kin in motion.kinematics.items():
         v1 = scene.velocities.get(name, ZERO)
         tag = f"_{name}" if several else ""
@@ -111,9 +130,12 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
             if not travel.stops:
                 unknowns[w2] = Dim(0, 0, -1)
         spin = tidy(kin.omega + (alpha * dt).xreplace(replace))
-        v_G = tuple(v1[i] + (kin.a_G[i] * dt).xreplace(replace) for i in range(2))
+        v_G = tuple(tidy(v1[i] + (kin.a_G[i] * dt).xreplace(replace)) for i in range(2))
         speeds[name] = tidy(sympy.sqrt(v_G[0] ** 2 + v_G[1] ** 2))
         spins[name] = spin
+        ends[name] = (v_G[0], v_G[1]), spin
+        # constant accelerations: Δr_G = (v_G1 + v_G2) Δt / 2
+        moved[name] = (tidy((v1[0] + v_G[0]) * dt / 2), tidy((v1[1] + v_G[1]) * dt / 2))
     equations = tuple(
         Equation(
             tidy((e.lhs * dt).xreplace(replace)),
@@ -124,6 +146,46 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         )
         for e in motion.equations
     )
+    notes = [
+        (
+            "impulse and momentum",
+            f"the forces stay constant for Δt = {sympy.sstr(dt)}: each reaction below is "
+            "its average over the interval, its impulse that times Δt",
+        )
+    ]
+    events: tuple[tuple[str, sympy.Expr, str], ...] = ()
+    if rolls is not None:
+        from dynsolve.principles.until import contact_slip
+
+        body = scene.bodies[travel.body]
+        v_G2, w2 = ends[travel.body]
+        slip = contact_slip(body, rolls, v_G2, w2)
+        r = tuple(sympy.sstr(tidy(rolls.point[i] - body.G[i])) for i in range(2))
+        number = len(equations) + 1
+        rule = Equation(
+            slip,
+            sympy.Integer(0),
+            f"eq. {number}",
+            number,
+            f"it rolls at the end: the contact point {rolls.name} stops slipping, "
+            f"(v_G2 + ω₂ k × r_{rolls.name}/G)·t = 0 with r_{rolls.name}/G = ({r[0]}, {r[1]})",
+        )
+        equations = (*equations, rule)
+        notes.append(
+            (
+                f"slides until it rolls at {rolls.name}",
+                f"kinetic friction F = μk N opposes the slip of {rolls.name} at state 1 "
+                f"for the whole interval (the slip falls linearly to zero at Δt = "
+                f"{sympy.sstr(dt)}); afterwards {travel.body} rolls",
+            )
+        )
+        events = (
+            (
+                f"slides until it rolls at {rolls.name}",
+                dt,
+                f"the slip of {rolls.name} reaches zero after Δt = {{value:.4g}} s",
+            ),
+        )
     return Formulation(
         equations=equations,
         unknowns=unknowns,
@@ -134,13 +196,9 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         reactions=motion.reactions,
         speeds=speeds,
         spins=spins,
-        notes=(
-            (
-                "impulse and momentum",
-                f"the forces stay constant for Δt = {sympy.sstr(dt)}: each reaction below is "
-                "its average over the interval, its impulse that times Δt",
-            ),
-        ),
+        notes=tuple(notes),
+        displacements=moved,
+        events=events,
     )
 
 

@@ -21,7 +21,7 @@ from dynsolve.model.scene import Body, Scene, Support, Vec
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.names import pretty
 from dynsolve.numbers import tidy
-from dynsolve.system import Equation
+from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim
 
 FORCE, ACCELERATION, LENGTH = Dim.of("force"), Dim.of("acceleration"), Dim.of("length")
@@ -90,6 +90,12 @@ class Formulation:
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     states: tuple[State, ...] = ()  # the motion at each numbered state of a chain of stages
     stages: tuple[StageRecord, ...] = ()  # what each stage found, in order
+    displacements: Mapping[str, Vec] = field(default_factory=dict)  # Δr_G over an interval
+    # until events: (what, detail, value to check > 0 or None, its meaning)
+    events: tuple[tuple[str, sympy.Expr, str], ...] = ()
+    turns: Mapping[str, sympy.Expr] = field(default_factory=dict)  # angle turned round a centre
+    heights: Mapping[str, sympy.Expr] = field(default_factory=dict)  # rise of G (up +)
+    constraints: tuple[Constraint, ...] = ()  # root branches the formulation chose
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

@@ -174,8 +174,20 @@ class _Chain:
                 f"{stage.title}: where {event.body} is after an earlier stage is not followed "
                 "(only a particle's position is); describe this part as a scene of its own",
             )
+        if isinstance(event, Pivot) and event.normal is not None:
+            raise StageError(
+                stage,
+                f"{stage.title}: a rebound off a point (e > 0) cannot be chained with other "
+                "stages yet; describe it as a scene of its own",
+            )
         if isinstance(event, Pivot):
             return self.pivot(stage, event)
+        if event.kind == "until":
+            raise StageError(
+                stage,
+                f"{stage.title}: 'until {event.until}' cannot be chained with other stages "
+                "yet; describe it as a scene of its own",
+            )
         if event.kind == "for":
             raise StageError(
                 stage,

@@ -372,8 +372,40 @@ def _equations_section(equations: Sequence[EquationRow]) -> str:
     return "\n\n".join(["\\subsection*{Equations}", *(_equation(e) for e in equations)])
 
 
+_SUBSCRIPTED = re.compile(
+    r"\(([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+)\)_([A-Za-z0-9]+)"  # (a_G)_x
+    r"|([ΣΔ]?)([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+(?:/[A-Za-z0-9]+)?)([²³]?)"  # ΣF_x, r_G/A, r_G²
+)
+_POWERS = {"²": "^{2}", "³": "^{3}", "": ""}
+
+
+def caption_latex(text: str) -> str:
+    """A principle's caption with its symbols typeset as mathematics (subscripts, Σ),
+    the words around them as text.
+
+    >>> caption_latex("ΣF_x = m (a_G)_x (drum)")
+    '$\\\\Sigma F_{x}$ = m $(a_{G})_{x}$ (drum)'
+    >>> caption_latex("ΣM_O = I_O α, I_O = I_G + m r_G²")
+    '$\\\\Sigma M_{O}$ = $I_{O}$ $\\\\alpha$, $I_{O}$ = $I_{G}$ + m $r_{G}^{2}$'
+    """
+    out, last = [], 0
+    for match in _SUBSCRIPTED.finditer(text):
+        out.append(escape_latex(text[last : match.start()]))
+        if match.group(1):
+            base, inner, outer = match.group(1), match.group(2), match.group(3)
+            math = f"({safe_math(base).strip()}_{{{inner}}})_{{{outer}}}"
+        else:
+            sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match.group(4)]
+            base = safe_math(match.group(5)).strip()
+            math = f"{sigma}{base}_{{{match.group(6)}}}{_POWERS[match.group(7)]}"
+        out.append(f"${math}$")
+        last = match.end()
+    out.append(escape_latex(text[last:]))
+    return "".join(out)
+
+
 def _equation(row: EquationRow) -> str:
-    note = escape_latex(row.note)
+    note = caption_latex(row.note)
     if row.constraint:
         note = "Constraint" + (f": {note}" if note else "")
     head = f"\\noindent\\textit{{{note}}}\\hfill{{\\small {_dimension(row)}}}"
@@ -391,7 +423,7 @@ _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 def _dimension(row: EquationRow) -> str:
     """``[force, N] ✓`` from ``force [N]``, or a marked mismatch."""
     match = _DIMENSION.match(row.dimension.strip())
-    text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
+    text = f"{match.group(1)}, {pretty_unit(match.group(2))}" if match else row.dimension.strip()
     shown = f"{{[}}{escape_latex(text)}{{]}}" if text else ""
     if row.dimension_ok:
         return f"{shown}~$\\checkmark$"

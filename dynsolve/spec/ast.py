@@ -37,6 +37,7 @@ __all__ = [
     "Unary",
     "UnitExpr",
     "UnitFactor",
+    "VaryStmt",
 ]
 
 
@@ -280,6 +281,29 @@ class SceneStmt:
 
 
 @dataclass(frozen=True)
+class VaryStmt:
+    """A ``vary`` line: a range ``m = 40..60 kg step 5`` or ``k = ±10% sigfig 3``.
+
+    ``kind`` is "range" (``low``, ``high``, ``step`` in ``unit``), "percent"
+    (``percent`` of the given's value either side, rounded to ``sigfig`` figures), or
+    "allow" (the line ``allow changes``: a variant's assumptions may differ from the base
+    problem's; ``name`` is empty).
+    """
+
+    name: str
+    kind: Literal["range", "percent", "allow"]
+    low: Fraction = Fraction(0)
+    high: Fraction = Fraction(0)
+    step: Fraction = Fraction(0)
+    unit: UnitExpr | None = None
+    percent: Fraction = Fraction(0)
+    sigfig: int = 3
+    text: str = ""
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Spec:
     """A whole parsed spec file."""
 
@@ -295,3 +319,4 @@ class Spec:
     scene: tuple[SceneStmt, ...] = ()
     kinematics: tuple[EquationStmt, ...] = ()  # rectilinear motion: a(t), a(v), a(x) or x(t)
     defines: tuple[EquationStmt, ...] = ()  # derived finds: NAME = expression (scene mode)
+    vary: tuple[VaryStmt, ...] = ()  # per-student variants of givens (dynsolve variants)

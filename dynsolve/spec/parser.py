@@ -53,6 +53,7 @@ from dynsolve.spec.ast import (
     Unary,
     UnitExpr,
     UnitFactor,
+    VaryStmt,
 )
 
 MAX_FILE_BYTES = 256 * 1024
@@ -70,9 +71,11 @@ MAX_STATEMENTS = 1000
 
 SECTIONS = (
     "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "define",
-    "answers",
+    "answers", "vary",
 )  # fmt: skip
-BLOCK_SECTIONS = ("given", "scene", "kinematics", "equations", "find", "define", "answers")
+BLOCK_SECTIONS = (
+    "given", "scene", "kinematics", "equations", "find", "define", "answers", "vary",
+)  # fmt: skip
 _FIELDS = {
     "given": "givens",
     "scene": "scene",
@@ -81,6 +84,7 @@ _FIELDS = {
     "find": "finds",
     "define": "defines",
     "answers": "answers",
+    "vary": "vary",
 }
 SYSTEMS = {"si": "SI", "fps": "FPS"}
 SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
@@ -138,6 +142,7 @@ def _lark() -> lark.Lark:
             "answer_formula",
             "unit_line",
             "scene_line",
+            "quantity_line",
         ],
         cache=True,
     )
@@ -191,6 +196,7 @@ class _Sections:
     kinematics: list[EquationStmt] | None = None
     defines: list[EquationStmt] | None = None
     define_line: int = 0
+    vary: list[VaryStmt] | None = None
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -348,6 +354,11 @@ def _body_line(
     elif section == "define":
         assert parts.defines is not None
         parts.defines.append(_define(text, comment, file, line, offset))
+    elif section == "vary":
+        from dynsolve.spec.vary_line import parse_vary_line
+
+        assert parts.vary is not None
+        parts.vary.append(parse_vary_line(text, file, line, offset))
     elif section == "scene":
         assert parts.scene is not None
         parts.scene.append(_parse(text, "scene_line", file, line, offset))
@@ -411,6 +422,30 @@ def parse_unit(text: str, file: str = "<unit>") -> UnitExpr:
     return _parse(text, "unit_line", file, 1, 0)
 
 
+def parse_unit_at(text: str, file: str, line: int, offset: int) -> UnitExpr:
+    """Parse a unit written at ``file:line`` after ``offset`` columns (errors point there)."""
+    return _parse(text, "unit_line", file, line, offset)
+
+
+def parse_quantity(text: str, file: str = "<value>", line: int = 1, offset: int = 0) -> Quantity:
+    """Parse a number with an optional unit, as on a ``given`` line (``45 kg``, ``-3.5``).
+
+    Untrusted text (a cell of a variants file) goes through the same grammar and bounds
+    as a spec; nothing is evaluated.
+
+    >>> q = parse_quantity("45 kg")
+    >>> q.value, q.unit.text
+    (Fraction(45, 1), 'kg')
+    """
+    if len(text) > MAX_LINE_LENGTH or any(not c.isprintable() for c in text):
+        raise SpecError(
+            "the value is too long or holds control characters",
+            Position(file, line, offset + 1),
+            hint="write a number and a unit, e.g. '45 kg'",
+        )
+    return _parse(text.translate(_SPACES).strip(), "quantity_line", file, line, offset)
+
+
 def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
     """Bound the nesting of operations (each operator or call is one level)."""
     stack: list[tuple[Any, int]] = [(tree, 0)]
@@ -440,6 +475,7 @@ _LINE_KINDS = {
     "answer_line": ("an answer", "'name = value unit', e.g. 'T = 106 N +- 0.5%'"),
     "answer_formula": ("an answer", "'name = value unit' or 'name = formula'"),
     "unit_line": ("a unit", "a unit such as 'm/s^2' or 'N*m'"),
+    "quantity_line": ("a value", "a number and a unit, e.g. '45 kg'"),
     "scene_line": (
         "a scene line",
         "e.g. 'body drum: mass m, gyration k_O' (see docs/scene-mode.md)",
@@ -668,6 +704,9 @@ class _Builder(Transformer_NonRecursive):
     def unit_line(self, c: list[Any]) -> UnitExpr:
         return c[0]
 
+    def quantity_line(self, c: list[Any]) -> Quantity:
+        return c[0]
+
     def unit_expr(self, c: list[Any]) -> UnitExpr:
         (factors,) = c
         line, column = (factors[0].line, factors[0].column) if factors else (self.line, 0)
@@ -815,8 +854,15 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("omega", body, body=str(body), value=value, word=word)
 
     def pivot_stmt(self, c: list[Any]) -> SceneStmt:
-        body, point, restitution = c
-        return self._stmt("pivot", body, body=str(body), name=str(point), value=restitution)
+        body, point, restitution, *line = c
+        return self._stmt(
+            "pivot",
+            body,
+            body=str(body),
+            name=str(point),
+            value=restitution,
+            direction=line[0] if line else None,
+        )
 
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
         body, other, restitution, line = c
@@ -847,9 +893,13 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def _stops(self, c: list[Any]) -> tuple[list[Any], tuple[Prop, ...]]:
-        """Split a trailing ', stops' (at rest in state 2) off a travel line."""
+        """Split a trailing ', stops' (at rest in state 2; also ', until stops') or
+        ', until rolls' (slides until it rolls) off a travel line."""
         if isinstance(c[-1], Token) and c[-1].type == "STOPS":
-            return c[:-1], (Prop("stops", line=self.line, column=self._col(c[-1])),)
+            where = {"line": self.line, "column": self._col(c[-1])}
+            if str(c[-1]).rstrip().endswith("rolls"):
+                return c[:-1], (Prop("until", word="rolls", **where),)
+            return c[:-1], (Prop("stops", **where),)
         return c, ()
 
     def travel_stmt(self, c: list[Any]) -> SceneStmt:
@@ -865,6 +915,29 @@ class _Builder(Transformer_NonRecursive):
     def travel_for_stmt(self, c: list[Any]) -> SceneStmt:
         (body, duration), stops = self._stops(c)
         return self._stmt("travel", body, body=str(body), value=duration, word="for", props=stops)
+
+    def travel_until_stmt(self, c: list[Any]) -> SceneStmt:
+        """``travel B: until NAME slack`` or ``until contact lost``: a particle on a circle
+        (a cord or link to a fixed point, or a circular path) goes on until the cord's
+        tension or the surface's push falls to zero."""
+        body, until, first, *rest = c
+        words = (str(first), *(str(w) for w in rest))
+        event = " ".join(words[1:])
+        if words in (("rolls",), ("stops",)):
+            raise SpecError(
+                f"'until {words[0]}' ends an interval whose time is named",
+                self._at(first),
+                hint=f"write e.g. 'travel {body}: for t_1, until {words[0]}' and find t_1",
+            )
+        if len(words) != 2 or event not in ("slack", "lost"):
+            raise SpecError(
+                f"unknown end of a travel: 'until {' '.join(words)}'",
+                self._at(first),
+                hint="write 'until CORD slack', 'until contact lost' (or, on a 'for' line, "
+                "', until rolls' / ', until stops')",
+            )
+        prop = Prop("until", word=event, about=words[0], line=self.line, column=self._col(until))
+        return self._stmt("travel", body, body=str(body), word="until", props=(prop,))
 
     def travel_turns_stmt(self, c: list[Any]) -> SceneStmt:
         (body, angle, sense), stops = self._stops(c)
@@ -1058,7 +1131,40 @@ def _finish(parts: _Sections, file: str) -> Spec:
         scene=tuple(parts.scene or ()),
         kinematics=tuple(parts.kinematics or ()),
         defines=tuple(parts.defines or ()),
+        vary=_checked_vary(tuple(parts.vary or ()), givens, file),
     )
+
+
+def _checked_vary(
+    vary: tuple[VaryStmt, ...], givens: tuple[Given, ...], file: str
+) -> tuple[VaryStmt, ...]:
+    """Only a given with a value may vary, and each at most once."""
+    valued = {g.name for g in givens if g.quantity is not None}
+    seen: dict[str, int] = {}
+    for stmt in vary:
+        where = Position(file, stmt.line, stmt.column)
+        if stmt.kind == "allow":
+            continue
+        if stmt.name not in valued:
+            symbolic = any(g.name == stmt.name for g in givens)
+            close = difflib.get_close_matches(stmt.name, sorted(valued), n=1)
+            hint = (
+                "give it a value in 'given:' first"
+                if symbolic
+                else f"did you mean '{close[0]}'?"
+                if close
+                else "only givens with a value can vary: " + (", ".join(sorted(valued)) or "none")
+            )
+            what = "a symbolic given" if symbolic else "not a given"
+            raise SpecError(f"'{stmt.name}' cannot vary: it is {what}", where, hint=hint)
+        if stmt.name in seen:
+            raise SpecError(
+                f"'{stmt.name}' varies twice (first on line {seen[stmt.name]})",
+                where,
+                hint="keep one vary line per given",
+            )
+        seen[stmt.name] = stmt.line
+    return vary
 
 
 def _check_given_names(givens: tuple[Given, ...], file: str) -> None:

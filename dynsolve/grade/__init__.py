@@ -1,0 +1,1 @@
+"""Batch grading: per-student variants, expected answers, grading and reports."""

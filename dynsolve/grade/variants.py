@@ -1,0 +1,147 @@
+"""The variants file: write and read each student's givens (CSV), bounded and positioned.
+
+Format: a header ``student,units,NAME,...`` then one row per student; a cell holds a
+given's value with its unit as a spec would write it (``45 kg``); an empty cell keeps the
+spec's value. ``units`` is ``SI`` for a student's variant as drawn, ``US`` for its US
+customary twin, whose id is the student's id followed by ``@US``.
+
+>>> import pathlib, tempfile
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "v.csv"
+>>> rows = [VariantRow("s01", "SI", {"m": "45 kg"}),
+...         VariantRow("s01@US", "US", {"m": "3.083 slug"})]
+>>> write_variants(path, rows, ("m",))
+>>> read_variants(path)
+{'s01': {'m': '45 kg'}, 's01@US': {'m': '3.083 slug'}}
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from dynsolve.errors import Position, SpecError
+from dynsolve.files import read_capped, write_text
+
+MAX_BYTES = 64 * 1024 * 1024
+MAX_ROWS = 200_000
+MAX_CELL = 200
+MAX_ID = 64
+ID_COLUMNS = ("student", "student_id", "id")
+TWIN_SUFFIX = "@US"
+
+
+class CsvError(SpecError):
+    """A roster or variants file is malformed (its position names the row)."""
+
+
+@dataclass(frozen=True)
+class VariantRow:
+    """One row of the variants file: a student (or a US twin) and their givens."""
+
+    student: str
+    units: str  # "SI" or "US"
+    cells: Mapping[str, str]
+
+
+def write_variants(path: Path, rows: Iterable[VariantRow], names: Sequence[str]) -> None:
+    """Write the rows, with a column per given in ``names`` (atomic, as every output)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(("student", "units", *names))
+    for row in rows:
+        writer.writerow((row.student, row.units, *(row.cells.get(n, "") for n in names)))
+    write_text(path, buffer.getvalue())
+
+
+def read_variants(path: str | Path) -> dict[str, dict[str, str]]:
+    """Each student's (or twin's) id → {given name: cell text}; empty cells are left out."""
+    header, rows = _read_table(path, "variants")
+    names = [h for h in header[1:] if h != "units"]
+    indices = [i for i, h in enumerate(header) if i > 0 and h != "units"]
+    out: dict[str, dict[str, str]] = {}
+    for line, row in rows:
+        student = _student(row[0], path, line, out)
+        out[student] = {n: row[i] for n, i in zip(names, indices, strict=True) if row[i]}
+    return out
+
+
+def read_roster(path: str | Path) -> list[str]:
+    """The student ids of a roster CSV: the column headed student/student_id/id, else the
+    first column; other columns (names, emails) are ignored.
+
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "roster.csv"
+    >>> _ = path.write_text("name,id\\nAda,s1\\nBen,s2\\n")
+    >>> read_roster(path)
+    ['s1', 's2']
+    """
+    header, rows = _read_table(path, "roster")
+    lowered = [h.lower() for h in header]
+    column = next((lowered.index(c) for c in ID_COLUMNS if c in lowered), 0)
+    seen: dict[str, None] = {}
+    for line, row in rows:
+        seen[_student(row[column], path, line, seen)] = None
+    if not seen:
+        raise CsvError(f"{path} lists no students", Position(str(path), 1, 1), "add rows")
+    return list(seen)
+
+
+def _student(text: str, path: str | Path, line: int, seen: Mapping[str, object]) -> str:
+    student = text.strip()
+    where = Position(str(path), line, 1)
+    if not student or len(student) > MAX_ID or not student.isprintable():
+        raise CsvError(
+            f"a student id must be 1 to {MAX_ID} printable characters, got {student[:20]!r}",
+            where,
+            hint="fix the id in the first column",
+        )
+    if student in seen:
+        raise CsvError(f"student '{student}' appears twice", where, "keep one row per student")
+    return student
+
+
+def _read_table(path: str | Path, what: str) -> tuple[list[str], list[tuple[int, list[str]]]]:
+    raw = read_capped(path, MAX_BYTES)
+    where = Position(str(path), 1, 1)
+    if len(raw) > MAX_BYTES:
+        raise CsvError(f"the {what} file is over {MAX_BYTES} bytes", where, "split the class")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise CsvError(f"the {what} file is not UTF-8 text", where, "save it as UTF-8") from None
+    reader = csv.reader(io.StringIO(text, newline=""))
+    try:
+        header = [h.strip() for h in next(reader)]
+    except (StopIteration, csv.Error):
+        raise CsvError(f"the {what} file is empty", where, "write a header row") from None
+    if not header or not header[0]:
+        raise CsvError(f"the {what} file has no header", where, "first row: student,...")
+    rows = []
+    try:
+        for row in reader:
+            line = reader.line_num
+            if not any(cell.strip() for cell in row):
+                continue
+            if len(rows) >= MAX_ROWS:
+                raise CsvError(f"more than {MAX_ROWS} rows", Position(str(path), line, 1), "")
+            if len(row) != len(header):
+                raise CsvError(
+                    f"row has {len(row)} cells, the header {len(header)}",
+                    Position(str(path), line, 1),
+                    hint="every row needs one cell per column (commas inside a cell: quote it)",
+                )
+            if any(len(cell) > MAX_CELL for cell in row):
+                raise CsvError(
+                    f"a cell is over {MAX_CELL} characters", Position(str(path), line, 1), ""
+                )
+            rows.append((line, [cell.strip() for cell in row]))
+    except csv.Error as error:
+        raise CsvError(
+            f"cannot read the {what} file: {error}",
+            Position(str(path), reader.line_num, 1),
+            hint="check the quoting",
+        ) from None
+    return header, rows
