@@ -215,7 +215,7 @@ def _compare_formula(
     target = real_value(expected.subs(knowns))
     if value is None or target is None:
         return Verdict(False, shown, "the formula cannot be evaluated with the givens")
-    passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) + 1e-12
+    passed = abs(value - target) <= float(DEFAULT_RELATIVE) * abs(target) or value == target
     return Verdict(passed, shown, f"formula gives {target:.6g}, computed {value:.6g} (base units)")
 
 

@@ -25,7 +25,7 @@ from dynsolve.results import Check, Solution
 if TYPE_CHECKING:
     import pint
 
-Mode = Literal["exact", "numeric"]
+Mode = Literal["exact", "numeric", "auto"]
 BLOCK_SECONDS = 5.0  # symbolic solve of one nonlinear block, before the numeric fallback
 
 

@@ -50,11 +50,21 @@ SUFFIX_FORMATS = {
 }
 
 
+class CheckFormat(enum.StrEnum):
+    """Formats of ``dynsolve check``'s report."""
+
+    text = "text"
+    json = "json"
+    junit = "junit"
+
+
 class Mode(enum.StrEnum):
-    """Solve modes: exact (rationals, radicals, formulas) or numeric (floating point)."""
+    """Solve modes: exact (rationals, radicals, formulas), numeric (floating point) or auto
+    (numeric, escalated to exact when float64 would lose more than 3 digits)."""
 
     exact = "exact"
     numeric = "numeric"
+    auto = "auto"
 
 
 @dataclass(frozen=True)
@@ -169,7 +179,11 @@ def solve(
         ),
     ] = None,
     mode: Annotated[
-        Mode, typer.Option(help="exact: rationals and formulas; numeric: floating point.")
+        Mode,
+        typer.Option(
+            help="exact: rationals and formulas; numeric: floating point; auto: numeric, "
+            "escalated to exact when float64 would lose more than 3 digits."
+        ),
     ] = Mode.exact,
     handout: Annotated[
         bool,
@@ -255,6 +269,13 @@ def check(
     mode: Annotated[Mode, typer.Option(help="Solve mode for every spec.")] = Mode.exact,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
+    report_format: Annotated[
+        CheckFormat,
+        typer.Option("--format", help="text (a table), json or junit (XML for CI) on stdout."),
+    ] = CheckFormat.text,
+    verbose: Annotated[
+        bool, typer.Option("--verbose", "-v", help="List the passing files too.")
+    ] = False,
 ) -> None:
     """Solve every .dyn spec under PATHS and compare it with its answer key.
 
@@ -265,11 +286,13 @@ def check(
     or check fails; 2 when a spec is malformed.
     """
     from dynsolve.budget import run_each
+    from dynsolve.render.check_report import FileOutcome, check_json, check_junit
     from dynsolve.render.terminal import failures_table
 
     files = _collect(paths)
     budget = Budget(time_budget, memory_budget)
     failures: list[tuple[str, object]] = []
+    reports: list[FileOutcome] = []
     passed = failed = malformed = 0
     jobs = [(file, mode.value, budget) for file in files]
     outcomes = run_each(solve_and_check, jobs, budget)
@@ -277,20 +300,165 @@ def check(
         outcome = _refused_if_stopped(result)
         if isinstance(outcome, _Refused):
             failures.extend((str(file), error.text) for error in outcome.errors)
+            reports.append(
+                FileOutcome(
+                    str(file), "malformed", tuple(("input", e.text) for e in outcome.errors)
+                )
+            )
             malformed += 1
         elif outcome:
             failures.extend((str(file), check) for check in outcome)
+            reports.append(
+                FileOutcome(str(file), "failed", tuple((c.name, c.detail) for c in outcome))
+            )
             failed += 1
         else:
+            reports.append(FileOutcome(str(file), "passed", ()))
             passed += 1
+    worst = ExitCode.BAD_INPUT if malformed else ExitCode.FAILED if failed else ExitCode.OK
+    if report_format != CheckFormat.text:
+        render = check_json if report_format == CheckFormat.json else check_junit
+        stdout.out(render(reports), highlight=False)
+        raise typer.Exit(worst)
+    if verbose:
+        for report in reports:
+            if report.status == "passed":
+                stdout.out(f"passed  {report.file}", highlight=False)
     if failures:
         stdout.print(failures_table(failures))  # type: ignore[arg-type]
     summary = f"{passed} passed, {failed} failed" + (
         f", {malformed} malformed" if malformed else ""
     )
     stdout.print(summary)
-    worst = ExitCode.BAD_INPUT if malformed else ExitCode.FAILED if failed else ExitCode.OK
     raise typer.Exit(worst)
+
+
+@app.command()
+def grade(
+    problem: Annotated[Path, typer.Argument(help="The .dyn problem.", show_default=False)],
+    answers: Annotated[
+        Path,
+        typer.Argument(help="CSV: a student column, one column per find.", show_default=False),
+    ],
+    output: Annotated[
+        Path | None, typer.Option("--output", "-o", help="Per-student report (CSV).")
+    ] = None,
+    json_report: Annotated[
+        Path | None, typer.Option("--json", help="The whole report as JSON.")
+    ] = None,
+    gradebook: Annotated[
+        Path | None,
+        typer.Option("--gradebook", help="Gradebook CSV: student,score,points,max_points."),
+    ] = None,
+    histogram: Annotated[
+        Path | None, typer.Option("--histogram", help="Score histogram (.png or .svg).")
+    ] = None,
+    variants: Annotated[
+        Path | None, typer.Option("--variants", help="Each student's givens (dynsolve variants).")
+    ] = None,
+    rtol: Annotated[
+        str | None, typer.Option("--rtol", help="Relative tolerance: '1%' or 0.01.")
+    ] = None,
+    atol: Annotated[
+        str | None, typer.Option("--atol", help="Absolute tolerance with a unit: '0.01 m/s'.")
+    ] = None,
+    sigfig: Annotated[
+        int | None,
+        typer.Option("--sigfig", min=1, max=15, help="Grade to N significant figures."),
+    ] = None,
+    decdig: Annotated[
+        int | None, typer.Option("--decdig", min=0, max=15, help="Grade to N decimal digits.")
+    ] = None,
+    partial: Annotated[
+        str | None,
+        typer.Option(
+            "--partial",
+            help="Credit for a right value with a wrong sign or too few figures: '50%'.",
+        ),
+    ] = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue a killed run from its journal.")
+    ] = False,
+    diagnose: Annotated[
+        bool, typer.Option("--diagnose/--no-diagnose", help="Name the classic mistakes.")
+    ] = True,
+) -> None:
+    """Grade a class's answers to PROBLEM: scores, verdicts and feedback per student.
+
+    Each cell is a number with a unit ('11.3 rad/s^2', '4.52 m/s^2 down', '23.8 lb') or a
+    bare number in the column header's unit ('alpha [rad/s^2]'). Rules come from the
+    spec's grading: section and these options (docs/grading.md). Prints the class
+    summary; exit code 0 when the run completed, 2 on bad input.
+    """
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.command import GradeRequest
+    from dynsolve.grade.command import grade as grade_answers
+    from dynsolve.grade.semantics import Rule
+    from dynsolve.render.grade_summary import summary_renderables
+
+    outputs = [p for p in (output, json_report, gradebook, histogram) if p is not None]
+    for path in outputs:
+        if path.suffix.lower() in (".dyn",) or any(
+            path.exists() and i.exists() and path.resolve() == i.resolve()
+            for i in (problem, answers, variants)
+            if i is not None
+        ):
+            _fail(f"refusing to write {path}: it is an input file", "choose another path")
+        _refuse_unwritable(path)
+    if histogram is not None and histogram.suffix.lower() not in (".png", ".svg"):
+        _fail(f"--histogram {histogram}: write .png or .svg", "e.g. --histogram scores.png")
+    overrides = Rule(
+        rtol=_fraction_option("--rtol", rtol) if rtol else Rule().rtol,
+        sigfig=sigfig or 0,
+        decdig=decdig or 0,
+        partial=_fraction_option("--partial", partial) if partial else 0.0,
+    )
+    request = GradeRequest(
+        problem, answers, output, json_report, gradebook, histogram, variants, overrides,
+        atol or "", resume, diagnose,
+    )  # fmt: skip
+    try:
+        run = _with_progress(lambda progress: grade_answers(request, progress))
+    except DynsolveError as error:
+        _fail_with(error)
+    for warning in run.warnings:
+        stderr.out(f"warning: {warning}", highlight=False)
+    for renderable in summary_renderables(run.results, run.title):
+        stdout.print(renderable)
+    stdout.out(f"keys: {run.path}", highlight=False)
+    for path in run.written:
+        stderr.out(f"wrote {path}", highlight=False)
+    raise typer.Exit(ExitCode.OK)
+
+
+def _fraction_option(option: str, text: str) -> float:
+    """'1%' or '0.01' as a fraction; anything else stops with a hint."""
+    import re
+
+    match = re.fullmatch(r"\s*(\d+(?:\.\d*)?|\.\d+)\s*(%?)\s*", text)
+    if match is None:
+        _fail(f"{option} {text}: not a number or percentage", f"e.g. {option} 1%")
+    assert match is not None
+    value = float(match[1]) / (100 if match[2] else 1)
+    if value > 1:
+        _fail(f"{option} {text}: more than 100 %", f"e.g. {option} 1%")
+    return value
+
+
+def _with_progress(work: Callable[[Callable[[int, int], None]], _Outcome]) -> _Outcome:
+    """Run ``work`` with a progress callback: a rich bar on a terminal's stderr."""
+    if not stderr.is_terminal:
+        return work(lambda done, total: None)
+    from rich.progress import Progress
+
+    with Progress(console=stderr, transient=True) as bar:
+        task = bar.add_task("grading", total=None)
+
+        def advance(done: int, total: int) -> None:
+            if done % 50 == 0 or done == total:
+                bar.update(task, completed=done, total=total)
+
+        return work(advance)
 
 
 class UnitsChoice(enum.StrEnum):

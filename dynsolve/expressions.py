@@ -42,6 +42,9 @@ _RELATIONS: dict[str, Callable[[sympy.Expr, sympy.Expr], sympy.Basic]] = {
 }
 
 
+MAX_ROOT_INDEX = 1000  # a power whose exponent's denominator is larger is taken in floating point
+
+
 def to_sympy(
     expr: Expr,
     symbols: Mapping[str, sympy.Expr],
@@ -91,6 +94,10 @@ def _build(
         return left * right
     if expr.op == "/":
         return left / right
+    if isinstance(right, sympy.Rational) and right.q > MAX_ROOT_INDEX:
+        # 1e-9^1e-30 is a 10^30-th root: no readable exact form, and sympy's rational
+        # arithmetic on it ran until the time budget; a 30-digit exponent is exact enough
+        right = sympy.Float(right, 30)
     return left**right
 
 

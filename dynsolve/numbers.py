@@ -12,6 +12,7 @@ from collections.abc import Callable, Mapping, Sequence
 import sympy
 
 IMAGINARY_TOLERANCE = 1e-12
+MAX_DIGITS = 400  # evalf may work this many digits through cancellation (sympy: 100)
 
 
 def real_value(
@@ -23,8 +24,8 @@ def real_value(
         value = value.xreplace(dict(substitution))
     if value.free_symbols:
         return None
-    number = complex(sympy.N(value, 30))
-    if abs(number.imag) > IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
+    number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
+    if abs(number.imag) > IMAGINARY_TOLERANCE * abs(number.real):
         return None
     return number.real
 

@@ -97,6 +97,10 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
     >>> solve_spec(spec).answers[0].shown
     '19.6 N'
     """
+    if options is not None and options.mode == "auto":
+        from dynsolve.precision import solve_auto
+
+        return solve_auto(spec, options, solve_spec)
     try:
         with step("building the equations"):
             if spec.kinematics:

@@ -45,7 +45,7 @@ class Constraint:
     line: int = 0
 
 
-SolveMode = Literal["exact", "numeric"]
+SolveMode = Literal["exact", "numeric", "auto"]
 
 
 @dataclass(frozen=True)
@@ -54,7 +54,9 @@ class SolveOptions:
 
     ``exact`` keeps rationals and radicals and only falls back to numbers when a
     nonlinear block exceeds ``time_budget`` seconds; ``numeric`` goes straight to
-    floating point root finding.
+    floating point root finding; ``auto`` solves numerically, measures the digits
+    float64 loses against a 30-digit re-solve and escalates to exact when more than 3 are
+    lost (:mod:`dynsolve.precision`).
     """
 
     mode: SolveMode = "exact"

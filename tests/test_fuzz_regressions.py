@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from typer.testing import CliRunner
 
@@ -75,3 +77,47 @@ def test_a_constraint_with_a_side_that_is_not_real_is_a_clean_error(tmp_path):
     assert "c.dyn:2:3: this constraint compares a value that is not a real number" in (
         result.output
     )
+
+
+@pytest.mark.parametrize(
+    ("equation", "name", "expected"),
+    [
+        # 1e-9^1e-30 = exp(1e-30 * ln 1e-9) = 1 - 2.1e-29; sin(0.5) = 0.4794255386 (tables)
+        ("theta = 1e-9^1e-30 + sin(.5)", "theta", 1.4794255386),
+        # 0.5^1e-9/1e30 is about 1e-30, atan2(1e-30, 0.5) = 2e-30 rad, cos of it = 1
+        ("t = cos(atan2(0.5^1e-9/1e30*1, .5))", "t", 1.0),
+        # --3 = 3, 1e3^1e-30 = 1 (to 1e-29), exp(log(-9.81)) = -9.81: 3 - 1 - 9.81 = -7.81
+        ("x = --3+-1e3^1e-30+exp(log(-9.81))", "x", -7.81),
+    ],
+)
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_tiny_exponents_solve_fast(equation, name, expected, mode):
+    # Open fuzz hangs: a Float^Float power such as 1e-9^1e-30 became a 10^30-th root of a
+    # rational, and sympy's linsolve worked on it until the whole run's time budget (30 s).
+    import time
+
+    from dynsolve.pipeline import solve_text
+    from dynsolve.system import SolveOptions
+
+    started = time.process_time()
+    solution = solve_text(
+        f"equations:\n  {equation}\nfind: {name}\n", options=SolveOptions(mode=mode)
+    )
+    assert time.process_time() - started < 5.0
+    (row,) = solution.answers
+    assert row.value == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_a_huge_power_in_an_exponential_stays_within_memory(mode):
+    # Fuzz memory hit: with t = 1e30 deg = 1.745e28 (a number in rad), the root finder tried
+    # θ where t^θ is about 1e30 and mpmath built exp(1e30) digit by digit (over 2 GB).
+    # By hand: at the root t^θ = 10^(28.24 θ) is about 1e-20, so θ = -0.5 - exp(-1.5)
+    # = -0.5 - 0.22313 = -0.72313.
+    from dynsolve.pipeline import solve_text
+    from dynsolve.system import SolveOptions
+
+    text = "given:\n  t = 1e30 deg\nequations:\n  theta = -.5-exp(t^theta-2+0.5)\nfind: theta\n"
+    solution = solve_text(text, options=SolveOptions(mode=mode))
+    (row,) = solution.answers
+    assert row.value == pytest.approx(-0.5 - math.exp(-1.5), rel=1e-9)

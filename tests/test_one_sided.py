@@ -50,7 +50,8 @@ def test_a_pull_steeper_than_the_weight_lifts_the_block_off_the_floor():
     got = answers(solution)
     a_y = (30 * math.sin(math.radians(60)) - 2 * 9.81) / 2
     assert got["a"].value == pytest.approx(math.hypot(7.5, a_y), rel=1e-9)
-    assert got["a"].direction == f"angle {math.degrees(math.atan2(a_y, 7.5)):.1f}°"
+    elevation = math.degrees(math.atan2(a_y, 7.5))
+    assert got["a"].direction == f"{elevation:.1f}° above the horizontal, to the right"
     assert got["N_G"].value == pytest.approx(0.0, abs=1e-12)
     # the trial's normal force, a magnitude with its sense: 6.361 N down (a pull)
     assert got["N_1"].value == pytest.approx(30 * math.sin(math.radians(60)) - 2 * 9.81)

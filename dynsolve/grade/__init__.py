@@ -1,1 +1,1 @@
-"""Batch grading: per-student variants, expected answers, grading and reports."""
+"""Batch grading: per-student variants, expected answers, grading, diagnosis and reports."""

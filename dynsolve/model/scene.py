@@ -1003,7 +1003,10 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
     path = mover.path
     at = {path.x: body.G[0], path.y: body.G[1]}
     residual = real_value(path.curve.xreplace(at), builder.given_values)
-    if tidy(path.curve.xreplace(at)) != 0 and (residual is None or abs(residual) > 1e-9):
+    on_path = path.curve.xreplace(at)
+    terms = [real_value(t, builder.given_values) for t in sympy.Add.make_args(on_path)]
+    size = sum(abs(t) for t in terms if t is not None)  # relative: scale-free
+    if tidy(path.curve.xreplace(at)) != 0 and (residual is None or abs(residual) > 1e-9 * size):
         raise SpecError(
             f"{body.name}'s G is not on the path {path.name}",
             where,

@@ -215,6 +215,16 @@ def extreme_time(
     return Crossings((best,), tuple(discarded))
 
 
+def _size(expr: sympy.Expr, values: Values) -> float:
+    """The sum of the magnitudes of ``expr``'s terms at ``values``: the scale a zero is judged on,
+    so a problem scaled by 10^k decides its signs the same way."""
+    total = 0.0
+    for term in sympy.Add.make_args(expr):
+        number = real_value(tidy(sympy.Integer(0) + term).xreplace(values))
+        total += abs(number) if number is not None else 0.0
+    return total
+
+
 def _sign(expr: sympy.Expr, values: Values) -> int | None:
     """The sign of ``expr`` (−1, 0, 1) at ``values``, or by assumptions when symbols remain;
     None when it is not real. ValueError when it cannot be decided."""
@@ -223,7 +233,7 @@ def _sign(expr: sympy.Expr, values: Values) -> int | None:
         number = real_value(at)
         if number is None:
             return None
-        return 0 if abs(number) <= 1e-12 else (1 if number > 0 else -1)
+        return 0 if abs(number) <= 1e-12 * _size(expr, values) else (1 if number > 0 else -1)
     if at.is_real is False:
         return None
     if at.is_zero:

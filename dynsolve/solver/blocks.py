@@ -29,6 +29,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import TypeVar
@@ -39,7 +40,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
-from dynsolve.numbers import mpmath_function
+from dynsolve.numbers import MAX_DIGITS, mpmath_function
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -47,6 +48,7 @@ FORMULA_MAX_OPS = 60  # formulas longer than this (sympy.count_ops) are not show
 FORMULA_MAX_UNKNOWNS = 8  # bigger linear blocks are solved with the numbers substituted
 START_FACTORS = (1, 0.5, 2, 10, -1, 0.1, -0.5, -2, 100, -10, 0.01, 1000, -100)
 NUMERIC_DIGITS = 15
+GUARD_DIGITS = 20  # the root finder works this many digits beyond the ones kept (cancellation)
 DEFAULT_OPTIONS = SolveOptions()
 _SYMPY_GAVE_UP = (
     NotImplementedError,
@@ -57,6 +59,7 @@ _SYMPY_GAVE_UP = (
     BasePolynomialError,
 )
 _TIMEOUT = "symbolic solve exceeded the time budget"
+_DIGITS: ContextVar[int] = ContextVar("numeric_digits", default=NUMERIC_DIGITS)
 
 _Result = TypeVar("_Result")
 
@@ -81,6 +84,32 @@ class BlockSolution:
     missing_equations: int = 0  # independent equations the block lacks
     inconsistent: bool = False  # the block's equations contradict each other
     exhaustive: bool = True  # False when the roots come from a numeric search
+
+
+def numeric_digits() -> int:
+    """The significant digits numeric values are computed to (15, float64-like, by default).
+
+    >>> numeric_digits()
+    15
+    """
+    return _DIGITS.get()
+
+
+@contextmanager
+def working_digits(digits: int) -> Iterator[None]:
+    """Compute numeric values to ``digits`` significant digits inside the ``with`` body.
+
+    ``--mode auto`` re-solves at 30 digits to measure how many float64 loses.
+
+    >>> with working_digits(30):
+    ...     numeric_digits()
+    30
+    """
+    token = _DIGITS.set(digits)
+    try:
+        yield
+    finally:
+        _DIGITS.reset(token)
 
 
 class BudgetExceeded(BaseException):
@@ -300,7 +329,7 @@ def _in_mode(
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Exact values as they are; in numeric mode, floating point ones."""
     if options.mode == "numeric":
-        return {u: v.evalf(NUMERIC_DIGITS) for u, v in values.items()}
+        return {u: v.evalf(numeric_digits(), maxn=MAX_DIGITS) for u, v in values.items()}
     return dict(values)
 
 
@@ -472,15 +501,47 @@ def numeric_roots(
     unknowns = list(unknowns)
     function = mpmath_function(unknowns, list(residuals))
     size = mpmath_function(unknowns, [_term_size(r) for r in residuals])
-    jacobian = mpmath_function(unknowns, sympy.Matrix(residuals).jacobian(unknowns))
+    matrix = sympy.Matrix(residuals).jacobian(unknowns)
+    jacobian = mpmath_function(unknowns, matrix)
+    guard = finite_guard(unknowns, [*residuals, *matrix])
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
     for start in _starting_points(residuals, len(unknowns)):
-        root = _find_root(function, jacobian, start)
+        root = _find_root(function, jacobian, start, size, guard)
         if root is None or _seen(root, found):
             continue
         if _converged(function, size, jacobian, root):
             found.append(root)
     return [tuple(_to_sympy(x) for x in root) for root in found]
+
+
+def finite_guard(
+    unknowns: Sequence[sympy.Symbol], exprs: Sequence[sympy.Expr]
+) -> Callable[[Sequence[object]], bool]:
+    """A cheap test, in complex float64, that ``exprs`` stay finite at a point: mpmath would
+    otherwise build numbers such as exp(1e30) digit by digit, for gigabytes.
+
+    >>> x = sympy.Symbol("x")
+    >>> ok = finite_guard([x], [sympy.exp(x) - 1])
+    >>> ok([1.0]), ok([1e30])
+    (True, False)
+    """
+    import numpy
+
+    renamed = {v: sympy.Dummy(f"u{i}") for i, v in enumerate(unknowns)}
+    compiled = sympy.lambdify(
+        list(renamed.values()), [e.xreplace(renamed) for e in exprs], modules="numpy"
+    )
+
+    def finite(point: Sequence[object]) -> bool:
+        try:
+            values = [complex(v) for v in point]  # type: ignore[arg-type]
+            with numpy.errstate(all="ignore"):
+                results = numpy.asarray(compiled(*values), dtype=complex)
+        except (ArithmeticError, ValueError, TypeError):
+            return False
+        return bool(numpy.isfinite(results).all())
+
+    return finite
 
 
 def _term_size(residual: sympy.Expr) -> sympy.Expr:
@@ -506,20 +567,112 @@ def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float
 
 
 def _find_root(
-    function: Callable[..., list[object]], jacobian: Callable[..., object], start: list[float]
+    function: Callable[..., list[object]],
+    jacobian: Callable[..., object],
+    start: list[float],
+    size: Callable[..., list[object]] | None = None,
+    finite: Callable[[Sequence[object]], bool] | None = None,
 ) -> list[mpmath.mpc | mpmath.mpf] | None:
-    """One mpmath ``findroot`` run (secant in 1-D, Newton with Jacobian otherwise)."""
+    """Damped Newton from ``start`` with scale-free stopping rules.
+
+    mpmath's ``findroot`` stops on an absolute residual (``MDNewton``) or an absolute step
+    (``Secant``, which also starts 0.25 from ``x0``): a problem whose residuals are 1e-27
+    stopped where it started. Here the search stops when a step no
+    longer moves any unknown relative to itself. Steps are damped on a norm of the residuals
+    weighted by the size of their terms at the start (fixed for the search, so the Newton
+    step is always a descent direction).
+
+    >>> import sympy
+    >>> x = sympy.Symbol("x")
+    >>> f = mpmath_function([x], [x**2 - sympy.Float("1e-400")])
+    >>> J = mpmath_function([x], sympy.Matrix([[2 * x]]))
+    >>> root = _find_root(f, J, [3e-200])
+    >>> float(root[0] / sympy.Float("1e-200"))
+    1.0
+    """
     try:
-        with mpmath.workdps(NUMERIC_DIGITS + 5):
-            if len(start) == 1:
-                root = mpmath.findroot(lambda x: function(x)[0], start[0], verify=False)
-                return [root]
-            root = mpmath.findroot(
-                lambda *x: function(*x), start, J=lambda *x: jacobian(*x), verify=False
-            )
-            return [root[i] for i in range(len(start))]
+        with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
+            x = mpmath.matrix([mpmath.mpf(v) for v in start])
+            tiny = mpmath.mpf(10) ** -(numeric_digits() + 3)
+            if finite is not None and not finite(list(x)):
+                return None  # beyond float range at the start: no place to search from
+            values = mpmath.matrix(function(*x))
+            weights = _weights(size, x, len(values))
+            measure = _measure(values, weights)
+            for _ in range(NEWTON_STEPS):
+                if measure == 0:
+                    break
+                step = _newton_step(_as_matrix(jacobian(*x), len(start)), values)
+                if all(abs(step[i]) <= tiny * abs(x[i]) for i in range(len(x))):
+                    break  # converged: the step is below the working precision
+                damping = mpmath.mpf(1)
+                while True:
+                    trial = x - damping * step
+                    if finite is not None and not finite(list(trial)):
+                        damping /= 2  # the step leaves float range: shorten it
+                        if damping < 1e-6:
+                            return None
+                        continue
+                    trial_values = mpmath.matrix(function(*trial))
+                    trial_measure = _measure(trial_values, weights)
+                    if trial_measure < measure or damping < 1e-6:
+                        break
+                    damping /= 2
+                moved = any(abs(trial[i] - x[i]) > tiny * abs(x[i]) for i in range(len(x)))
+                if trial_measure >= measure and damping < 1e-6:
+                    break  # no descent: a minimum of the residuals or a stationary point
+                x, values, measure = trial, trial_values, trial_measure
+                if not moved:
+                    break
+            return [x[i] for i in range(len(start))]
     except (ArithmeticError, ValueError, TypeError):
         return None
+
+
+NEWTON_STEPS = 100
+
+
+def _as_matrix(value: object, n: int) -> mpmath.matrix:
+    """A Jacobian as an mpmath matrix (lambdify may give a matrix, list or a number)."""
+    if isinstance(value, mpmath.matrix):
+        return value
+    return mpmath.matrix(value) if n > 1 else mpmath.matrix([[value]])
+
+
+def _newton_step(J: mpmath.matrix, F: mpmath.matrix) -> mpmath.matrix:
+    """Solve ``J step = F`` with rows, then columns, scaled to a largest entry of 1.
+
+    mpmath's LU calls a matrix singular relative to its largest entry, so unknowns of
+    very different sizes (v_G = 2e9 ft/s beside omega = 2.65 rad/s) looked singular.
+
+    >>> J = mpmath.matrix([[1, -8e8], [1.2e9, 5e26]])
+    >>> step = _newton_step(J, J * mpmath.matrix([2e9, 2.5]))
+    >>> [mpmath.nstr(s, 6) for s in step]
+    ['2.0e+9', '2.5']
+    """
+    n = J.rows
+    rows = [max(abs(J[i, j]) for j in range(n)) or 1 for i in range(n)]
+    scaled = mpmath.matrix(n, n)
+    for i in range(n):
+        for j in range(n):
+            scaled[i, j] = J[i, j] / rows[i]
+    columns = [max(abs(scaled[i, j]) for i in range(n)) or 1 for j in range(n)]
+    for i in range(n):
+        for j in range(n):
+            scaled[i, j] /= columns[j]
+    y = mpmath.lu_solve(scaled, mpmath.matrix([F[i] / rows[i] for i in range(n)]))
+    return mpmath.matrix([y[j] / columns[j] for j in range(n)])
+
+
+def _weights(size: Callable[..., list[object]] | None, x: mpmath.matrix, n: int) -> list[object]:
+    """Fixed weights for one search: 1 / the size of each residual's terms at the start."""
+    sizes = size(*x) if size is not None else [1] * n
+    return [1 / abs(s) if s and mpmath.isfinite(abs(s)) else mpmath.mpf(1) for s in sizes]
+
+
+def _measure(values: mpmath.matrix, weights: list[object]) -> mpmath.mpf:
+    """The weighted 2-norm of the residuals (a fixed norm, so Newton's step is a descent)."""
+    return mpmath.sqrt(mpmath.fsum((w * abs(values[i])) ** 2 for i, w in enumerate(weights)))
 
 
 def _converged(
@@ -535,29 +688,30 @@ def _converged(
     products like ``sin(x)``, while ``exp(x) = 0`` far out on the left fails both).
     """
     try:
-        with mpmath.workdps(NUMERIC_DIGITS + 5):
+        with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
             values, sizes = function(*root), size(*root)
             if all(
                 abs(v) == 0 or abs(v) <= 1e-10 * abs(s) for v, s in zip(values, sizes, strict=True)
             ):
                 return True
-            step = mpmath.lu_solve(jacobian(*root), mpmath.matrix(values))
-            return all(abs(step[i]) <= 1e-9 * max(1, abs(x)) for i, x in enumerate(root))
+            step = _newton_step(_as_matrix(jacobian(*root), len(root)), mpmath.matrix(values))
+            scale = max(abs(x) for x in root)  # relative: a root of 1e-200 is not "about 0"
+            return all(abs(step[i]) <= 1e-9 * (abs(x) or scale) for i, x in enumerate(root))
     except (ArithmeticError, ValueError, TypeError):
         return False
 
 
 def _seen(root: Sequence[object], found: list[list[mpmath.mpc | mpmath.mpf]]) -> bool:
-    """True when ``root`` equals an earlier root to about nine digits."""
+    """True when ``root`` equals an earlier root to about nine digits (relative, so scale-free)."""
     return any(
-        all(abs(a - b) <= 1e-9 * max(1, abs(a), abs(b)) for a, b in zip(root, old, strict=True))
+        all(abs(a - b) <= 1e-9 * max(abs(a), abs(b)) for a, b in zip(root, old, strict=True))
         for old in found
     )
 
 
 def _to_sympy(x: mpmath.mpc | mpmath.mpf) -> sympy.Expr:
     """An mpmath number as a sympy Float (complex when its imaginary part is not negligible)."""
-    real, imag = mpmath.re(x), mpmath.im(x)
-    if abs(imag) <= 1e-12 * max(1, abs(real)):
-        return sympy.Float(real, NUMERIC_DIGITS)
-    return sympy.Float(real, NUMERIC_DIGITS) + sympy.I * sympy.Float(imag, NUMERIC_DIGITS)
+    real, imag, digits = mpmath.re(x), mpmath.im(x), numeric_digits()
+    if abs(imag) <= 1e-12 * abs(real) or imag == 0:
+        return sympy.Float(real, digits)
+    return sympy.Float(real, digits) + sympy.I * sympy.Float(imag, digits)

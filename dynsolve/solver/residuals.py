@@ -7,8 +7,10 @@ both sides are evaluated to 30 digits and
 * ``relative = absolute / scale`` with ``scale = max(|lhs|, |rhs|, |largest term|)``,
   where the terms are the top-level summands of either side. The term size keeps an
   equation written as ``T - m*g = 0`` from reading as 100 % off when a numeric root
-  leaves ``1e-15`` on a side that is zero. When the scale is below ``1e-300``
-  (both sides exactly or practically zero) the relative residual is 0.
+  leaves ``1e-15`` on a side that is zero; each side's :func:`term_size` (sums taken
+  as sums of magnitudes, also inside products) counts as a term too. When the scale is
+  0 (both sides exactly zero) the relative residual is 0; no absolute floor, so a
+  problem scaled by 10^k is judged the same way.
 
 When free symbols remain (a symbolic problem) the equation is *spot-checked*: the
 free symbols get fixed pseudo-random positive values (seeded, so reports are
@@ -34,6 +36,7 @@ from collections.abc import Collection, Mapping, Sequence
 
 import sympy
 
+from dynsolve.numbers import MAX_DIGITS
 from dynsolve.solver.blocks import as_expr, substitute
 from dynsolve.solver.outcome import Residual
 from dynsolve.system import Equation
@@ -66,12 +69,37 @@ def equation_residual(
         for t in sympy.Add.make_args(as_expr(side))
     ]
     letters = set().union(*(e.free_symbols for e in sides + terms))
+    spot: dict[sympy.Symbol, sympy.Expr] = {}
     if letters:
         spot = spot_values(letters)
         sides = [side.xreplace(spot) for side in sides]
         terms = [term.xreplace(spot) for term in terms]
-    absolute, relative = _measure(sides, terms)
+    values = {k: as_expr(v) for k, v in substitution.items()} | spot
+    inner = [term_size(as_expr(side), values) for side in (equation.lhs, equation.rhs)]
+    absolute, relative = _measure(sides, terms + [sympy.Float(x) for x in inner])
     return Residual(index, absolute, relative, evaluated=not letters)
+
+
+def term_size(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:
+    """The size of ``expr`` with every sum taken as a sum of magnitudes, at ``values``.
+
+    The scale a rounded zero is judged on: ``tan_b*(R*alpha*tan_b/c + a_y)`` is one
+    top-level term, but it is the difference of two parts of size 2.9 each, and a
+    float64 answer leaves 1e-16 of it (a relative residual of 1e-16, not 1.0).
+
+    >>> import sympy
+    >>> a, b = sympy.symbols("a b")
+    >>> term_size(3 * (a - b), {a: 2, b: 2})
+    12.0
+    """
+    if expr.is_Add:
+        return math.fsum(term_size(arg, values) for arg in expr.args)
+    if expr.is_Mul:
+        return math.prod(term_size(arg, values) for arg in expr.args)
+    if expr.is_Pow and expr.exp.is_number and expr.exp.is_positive:
+        return term_size(expr.base, values) ** float(expr.exp)
+    magnitude = _magnitude(sympy.N(expr.xreplace(values), 17))
+    return 0.0 if math.isnan(magnitude) else magnitude
 
 
 def spot_values(letters: Collection[sympy.Symbol]) -> dict[sympy.Symbol, sympy.Expr]:
@@ -91,15 +119,15 @@ def spot_values(letters: Collection[sympy.Symbol]) -> dict[sympy.Symbol, sympy.E
 def _measure(sides: Sequence[sympy.Expr], terms: Sequence[sympy.Expr]) -> tuple[float, float]:
     """Absolute and relative residual from the two sides and the additive terms."""
     try:
-        lhs, rhs = (sympy.N(side, DIGITS) for side in sides)
+        lhs, rhs = (sympy.N(side, DIGITS, maxn=MAX_DIGITS) for side in sides)
         absolute = _magnitude(lhs - rhs)
-        sizes = [_magnitude(sympy.N(t, DIGITS)) for t in terms]
+        sizes = [_magnitude(sympy.N(t, DIGITS, maxn=MAX_DIGITS)) for t in terms]
         scale = max(_magnitude(lhs), _magnitude(rhs), *sizes)
     except (TypeError, ValueError, ArithmeticError):
         return math.nan, math.nan
     if math.isnan(absolute) or math.isnan(scale):
         return math.nan, math.nan
-    relative = absolute / scale if scale > 1e-300 else 0.0
+    relative = absolute / scale if scale > 0 else 0.0
     return absolute, relative
 
 

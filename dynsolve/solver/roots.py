@@ -34,8 +34,15 @@ from dataclasses import dataclass, field
 import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
-from dynsolve.numbers import real_value
-from dynsolve.solver.blocks import FORMULA_MAX_OPS, NUMERIC_DIGITS, Candidate, as_expr, is_finite
+from dynsolve.numbers import MAX_DIGITS, real_value
+from dynsolve.solver.blocks import (
+    FORMULA_MAX_OPS,
+    NUMERIC_DIGITS,
+    Candidate,
+    as_expr,
+    is_finite,
+    numeric_digits,
+)
 from dynsolve.solver.outcome import DiscardedRoot
 from dynsolve.solver.residuals import equation_residual, is_satisfied
 from dynsolve.system import Constraint, Equation
@@ -45,6 +52,7 @@ SAMPLE_POINTS = 12
 SAMPLES_NEEDED = 3
 SAMPLE_SEED = 1729
 _IMAGINARY_TOLERANCE = 1e-12
+ROUNDING = 1e-12  # relative gap of floating point sides of <=, >=, == taken as equality
 
 
 @dataclass(frozen=True)
@@ -219,10 +227,10 @@ def is_real(value: sympy.Expr) -> bool | None:
     if value.free_symbols:
         return value.is_real
     try:
-        number = complex(sympy.N(value, NUMERIC_DIGITS + 5))
+        number = complex(sympy.N(value, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS))
     except (TypeError, ValueError):
         return value.is_real
-    return abs(number.imag) <= _IMAGINARY_TOLERANCE * max(1.0, abs(number.real))
+    return abs(number.imag) <= _IMAGINARY_TOLERANCE * abs(number.real)  # relative: scale-free
 
 
 def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) -> bool | None:
@@ -236,10 +244,31 @@ def truth(relation: Boolean, substitution: Mapping[sympy.Symbol, sympy.Expr]) ->
     (False, None)
     """
     try:
-        result = relation.xreplace({k: as_expr(v) for k, v in substitution.items()})
+        values = {k: as_expr(v) for k, v in substitution.items()}
+        if isinstance(relation, sympy.core.relational.Relational):
+            # each side on its own: sympy would decide Float <= Float itself, with no
+            # allowance for rounding (an impending-slip F = mu_s N failed at some scales)
+            lhs, rhs = relation.lhs.xreplace(values), relation.rhs.xreplace(values)
+            if lhs.is_number and rhs.is_number:
+                return _compare(relation.rel_op, lhs, rhs)
+        if isinstance(relation, (sympy.And, sympy.Or, sympy.Not)):
+            parts = [truth(arg, substitution) for arg in relation.args]
+            return _combine(relation, parts)
+        result = relation.xreplace(values)
     except (TypeError, ValueError):
         return None
     return _decide(result)
+
+
+def _combine(result: sympy.Basic, parts: list[bool | None]) -> bool | None:
+    """The truth of And/Or/Not from the truths of its parts."""
+    if isinstance(result, sympy.And):
+        return False if False in parts else (None if None in parts else True)
+    if isinstance(result, sympy.Or):
+        return True if True in parts else (None if None in parts else False)
+    if isinstance(result, sympy.Not) and parts[0] is not None:
+        return not parts[0]
+    return None
 
 
 def _decide(result: sympy.Basic) -> bool | None:
@@ -248,14 +277,7 @@ def _decide(result: sympy.Basic) -> bool | None:
         return bool(result)
     if isinstance(result, sympy.core.relational.Relational):
         return _decide_numerically(result)
-    parts = [_decide(arg) for arg in result.args]
-    if isinstance(result, sympy.And):
-        return False if False in parts else (None if None in parts else True)
-    if isinstance(result, sympy.Or):
-        return True if True in parts else (None if None in parts else False)
-    if isinstance(result, sympy.Not) and parts[0] is not None:
-        return not parts[0]
-    return None
+    return _combine(result, [_decide(arg) for arg in result.args])
 
 
 def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | None:
@@ -266,23 +288,32 @@ def _decide_numerically(relation: sympy.core.relational.Relational) -> bool | No
     sampled at seeded random positive values, and the relation is decided only when
     every real sample agrees.
     """
+    return _compare(relation.rel_op, relation.lhs, relation.rhs)
+
+
+def _compare(op: str, lhs: sympy.Expr, rhs: sympy.Expr) -> bool | None:
+    """``lhs op rhs`` decided numerically (see :func:`_decide_numerically`)."""
     compare = {
         ">": lambda d: d > 0, ">=": lambda d: d >= 0, "<": lambda d: d < 0,
         "<=": lambda d: d <= 0, "==": lambda d: d == 0, "!=": lambda d: d != 0,
     }  # fmt: skip
-    test = compare.get(relation.rel_op)
+    test = compare.get(op)
     if test is None:
         return None
-    difference = relation.lhs - relation.rhs
+    difference = lhs - rhs
     if not difference.is_number:
         verdicts = {test(d) for d in sampled(difference)}
         return verdicts.pop() if len(verdicts) == 1 else None
     try:
-        number = complex(sympy.N(difference, NUMERIC_DIGITS + 5))
+        number = complex(sympy.N(difference, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS))
+        scale = max(abs(complex(sympy.N(side, 17))) for side in (lhs, rhs))
     except (TypeError, ValueError):
         return None
-    if abs(number.imag) > _IMAGINARY_TOLERANCE * max(1.0, abs(number.real)):
+    if abs(number.imag) > _IMAGINARY_TOLERANCE * max(scale, abs(number.real)):
         return None
+    rounded = op in ("<=", ">=", "==") and difference.has(sympy.Float)
+    if rounded and abs(number.real) <= ROUNDING * scale:
+        return True  # floating point sides that agree to 12 digits are equal, at any scale
     return bool(test(number.real))
 
 
@@ -323,7 +354,7 @@ def _is_negative(value: sympy.Expr) -> bool:
         samples = sampled(value)
         return bool(samples) and all(v < 0 for v in samples)
     try:
-        return complex(sympy.N(value, NUMERIC_DIGITS + 5)).real < 0
+        return complex(sympy.N(value, NUMERIC_DIGITS + 5, maxn=MAX_DIGITS)).real < 0
     except (TypeError, ValueError):
         return bool(value.is_negative)
 
@@ -343,14 +374,14 @@ def _realised(candidate: Candidate) -> Candidate:
     values = {u: as_expr(v) for u, v in candidate.values.items()}
     for unknown, value in values.items():
         if is_finite(value) and not value.free_symbols and value.has(sympy.I) and is_real(value):
-            values[unknown] = sympy.re(sympy.N(value, NUMERIC_DIGITS))
+            values[unknown] = sympy.re(sympy.N(value, numeric_digits(), maxn=MAX_DIGITS))
     return Candidate(values, candidate.formulas)
 
 
 def _tidy(values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
     """Numbers too long to read (nested radicals) become Floats; the rest stay exact."""
     return {
-        u: sympy.N(v, NUMERIC_DIGITS)
+        u: sympy.N(v, numeric_digits(), maxn=MAX_DIGITS)
         if not v.free_symbols and sympy.count_ops(v) > FORMULA_MAX_OPS
         else v
         for u, v in values.items()

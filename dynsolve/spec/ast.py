@@ -281,6 +281,19 @@ class SceneStmt:
 
 
 @dataclass(frozen=True)
+class GradingRule:
+    """A ``grading:`` line: ``rtol 1%``, ``atol 0.01 m/s``, ``sigfig 3``, ``alpha weight 2``."""
+
+    part: str  # the find it applies to; "" for every part
+    key: str  # rtol, atol, sigfig, decdig, weight or partial
+    value: Fraction
+    text: str  # the number as written
+    unit: UnitExpr | None  # atol's unit
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
 class VaryStmt:
     """A ``vary`` line: a range ``m = 40..60 kg step 5`` or ``k = ±10% sigfig 3``.
 
@@ -319,4 +332,5 @@ class Spec:
     scene: tuple[SceneStmt, ...] = ()
     kinematics: tuple[EquationStmt, ...] = ()  # rectilinear motion: a(t), a(v), a(x) or x(t)
     defines: tuple[EquationStmt, ...] = ()  # derived finds: NAME = expression (scene mode)
+    grading: tuple[GradingRule, ...] = ()  # how ``dynsolve grade`` judges answers
     vary: tuple[VaryStmt, ...] = ()  # per-student variants of givens (dynsolve variants)

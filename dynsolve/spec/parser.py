@@ -41,6 +41,7 @@ from dynsolve.spec.ast import (
     Expr,
     FindItem,
     Given,
+    GradingRule,
     Location,
     Name,
     Num,
@@ -71,10 +72,10 @@ MAX_STATEMENTS = 1000
 
 SECTIONS = (
     "problem", "source", "units", "given", "scene", "kinematics", "equations", "find", "define",
-    "answers", "vary",
+    "answers", "vary", "grading",
 )  # fmt: skip
 BLOCK_SECTIONS = (
-    "given", "scene", "kinematics", "equations", "find", "define", "answers", "vary",
+    "given", "scene", "kinematics", "equations", "find", "define", "answers", "vary", "grading",
 )  # fmt: skip
 _FIELDS = {
     "given": "givens",
@@ -85,6 +86,7 @@ _FIELDS = {
     "define": "defines",
     "answers": "answers",
     "vary": "vary",
+    "grading": "grading",
 }
 SYSTEMS = {"si": "SI", "fps": "FPS"}
 SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
@@ -197,6 +199,7 @@ class _Sections:
     defines: list[EquationStmt] | None = None
     define_line: int = 0
     vary: list[VaryStmt] | None = None
+    grading: list[GradingRule] | None = None
 
 
 def parse_spec(text: str, file: str = "<spec>") -> Spec:
@@ -359,6 +362,11 @@ def _body_line(
 
         assert parts.vary is not None
         parts.vary.append(parse_vary_line(text, file, line, offset))
+    elif section == "grading":
+        from dynsolve.spec.grading_line import parse_grading_line
+
+        assert parts.grading is not None
+        parts.grading.append(parse_grading_line(text, file, line, offset))
     elif section == "scene":
         assert parts.scene is not None
         parts.scene.append(_parse(text, "scene_line", file, line, offset))
@@ -411,6 +419,17 @@ def _parse(
 
 
 _OPERATIONS = frozenset(("add", "sub", "mul", "div", "pow", "neg", "pos", "call"))
+
+
+def parse_answer_cell(text: str, file: str = "<cell>", line: int = 1) -> Answer:
+    """Parse a student's answer, a number with an optional unit and direction word
+    (``4.52 m/s^2 down``), with the grammar of an ``answers`` line; nothing is evaluated.
+
+    >>> cell = parse_answer_cell("-4.52 m/s^2")
+    >>> cell.quantity.text, cell.quantity.unit.text, cell.direction
+    ('-4.52', 'm/s^2', None)
+    """
+    return _parse("x = " + text, "answer_line", file, line, -4)
 
 
 def parse_unit(text: str, file: str = "<unit>") -> UnitExpr:
@@ -1132,6 +1151,7 @@ def _finish(parts: _Sections, file: str) -> Spec:
         kinematics=tuple(parts.kinematics or ()),
         defines=tuple(parts.defines or ()),
         vary=_checked_vary(tuple(parts.vary or ()), givens, file),
+        grading=tuple(parts.grading or ()),
     )
 
 

@@ -1,0 +1,207 @@
+"""Speed–accuracy benchmark: every bundled problem (and its scaled variants) in each mode.
+
+For each problem under ``problems/`` and each scale 10^k (masses and lengths rescaled
+through the parsed spec, :mod:`dynsolve.scaling`; k = 0 is the problem as written), the
+spec is solved in-process in ``exact``, ``numeric`` and ``auto`` mode. Method: one
+warm-up solve of the first problem in every mode (imports, unit cache, lark parser),
+then sympy's cache is cleared before every timed solve, so no mode profits from work
+another mode left in the cache; the time is ``time.process_time()`` (CPU time, so
+other processes on a shared machine do not count). The error of a mode is the largest
+relative difference of its answers from the exact mode's, per problem and in total;
+a problem whose exact solve produced no number for an answer is left out of the error.
+
+    python bench/accuracy.py [--ks -9,-3,3,9] [--modes exact,numeric,auto] [--no-write]
+
+writes the table to the section "Speed–accuracy" of ``docs/benchmarks.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+import time
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+import sympy  # noqa: E402
+
+from dynsolve.errors import DynsolveError  # noqa: E402
+from dynsolve.pipeline import solve_spec  # noqa: E402
+from dynsolve.results import Solution  # noqa: E402
+from dynsolve.scaling import scale_spec  # noqa: E402
+from dynsolve.spec.parser import parse_file  # noqa: E402
+from dynsolve.system import SolveOptions  # noqa: E402
+
+DOC = ROOT / "docs" / "benchmarks.md"
+HEADING = "## Speed–accuracy: `bench/accuracy.py`"
+NOTE = (
+    "Numeric mode shares everything but the nonlinear blocks with exact mode (building the "
+    "equations, the exact linear solve that yields the shown formulas, the checks), and the "
+    "corpus is mostly linear, so it is not faster here; the 10× target is missed. See "
+    "[precision.md](precision.md)."
+)
+
+
+@dataclass
+class Row:
+    """One problem at one scale: CPU seconds and largest relative error per mode."""
+
+    name: str
+    k: int
+    seconds: dict[str, float] = field(default_factory=dict)
+    error: dict[str, float] = field(default_factory=dict)
+    escalated: bool = False
+
+
+def _timed(spec: object, mode: str) -> tuple[Solution | None, float]:
+    sympy.core.cache.clear_cache()
+    started = time.process_time()
+    try:
+        solution = solve_spec(spec, SolveOptions(mode=mode))  # type: ignore[arg-type]
+    except DynsolveError:
+        solution = None
+    return solution, time.process_time() - started
+
+
+def _error(solution: Solution | None, reference: Solution | None) -> float:
+    """Largest relative difference of ``solution``'s answers from ``reference``'s."""
+    if reference is None:
+        return math.nan
+    if solution is None:
+        return math.inf
+    got = {row.name: row.value for row in solution.answers}
+    worst = 0.0
+    for row in reference.answers:
+        if row.value is None:
+            continue
+        value = got.get(row.name)
+        if value is None:
+            return math.inf
+        scale = abs(row.value)
+        worst = max(worst, abs(value - row.value) / scale if scale else abs(value))
+    return worst
+
+
+def measure(paths: list[Path], ks: list[int], modes: list[str]) -> list[Row]:
+    """Solve every problem at every scale in every mode; one row per problem and scale."""
+    first = parse_file(paths[0])
+    for mode in modes:  # warm-up, not timed
+        _timed(first, mode)
+    rows = []
+    for path in paths:
+        spec = parse_file(path)
+        for k in [0, *ks]:
+            row = Row(f"{path.parent.name}/{path.stem}", k)
+            scaled = scale_spec(spec, k) if k else spec
+            solutions = {}
+            for mode in modes:
+                solutions[mode], row.seconds[mode] = _timed(scaled, mode)
+            for mode in modes:
+                row.error[mode] = _error(solutions[mode], solutions.get("exact"))
+            auto = solutions.get("auto")
+            row.escalated = auto is not None and any(
+                c.name == "precision" and "escalated" in c.detail for c in auto.checks
+            )
+            rows.append(row)
+            print(_line(row, modes), flush=True)
+    return rows
+
+
+def _worst(errors: Iterable[float]) -> float:
+    return max((e for e in errors if not math.isnan(e)), default=0.0)
+
+
+def _fmt_error(value: float) -> str:
+    if math.isnan(value):
+        return "–"
+    return "0" if value == 0 else f"{value:.1e}"
+
+
+def _line(row: Row, modes: list[str]) -> str:
+    times = " ".join(f"{m}={row.seconds[m]:.2f}s" for m in modes)
+    errors = " ".join(f"{m}={_fmt_error(row.error[m])}" for m in modes if m != "exact")
+    return f"{row.name} k={row.k}: {times} | {errors}{' (auto escalated)' if row.escalated else ''}"
+
+
+def table(rows: list[Row], modes: list[str], ks: list[int]) -> str:
+    """The Markdown section: totals first, then one line per problem (worst over scales)."""
+    totals = {m: sum(r.seconds[m] for r in rows) for m in modes}
+    worst = {
+        m: max((r.error[m] for r in rows if not math.isnan(r.error[m])), default=0.0) for m in modes
+    }
+    unscaled = [r for r in rows if r.k == 0]
+    lines = [
+        HEADING,
+        "",
+        "Every bundled problem as written and with masses and lengths scaled by 10^k for "
+        f"k in {{{', '.join(map(str, ks))}}}, in each mode; CPU time (`time.process_time`), "
+        "sympy's cache cleared before each solve after one warm-up per mode; error = largest "
+        "relative difference of the answers from exact mode's. Regenerate with "
+        "`python bench/accuracy.py`.",
+        "",
+        "| mode | total CPU s (all scales) | total CPU s (as written) | vs exact | "
+        "largest rel. error |",
+        "|---|---:|---:|---:|---:|",
+    ]
+    for m in modes:
+        written = sum(r.seconds[m] for r in unscaled)
+        ratio = totals["exact"] / totals[m] if "exact" in totals and totals[m] else math.nan
+        lines.append(
+            f"| {m} | {totals[m]:.1f} | {written:.1f} | {ratio:.2f}× faster | "
+            f"{_fmt_error(worst[m])} |"
+        )
+    escalated = sum(r.escalated for r in rows)
+    lines += ["", f"auto escalated to exact in {escalated} of {len(rows)} solves.", "", NOTE, ""]
+    header = " | ".join(f"{m} s" for m in modes)
+    errors = " | ".join(f"{m} err" for m in modes if m != "exact")
+    lines += [f"| problem | {header} | {errors} |", "|---" * (1 + 2 * len(modes) - 1) + "|"]
+    by_name: dict[str, list[Row]] = {}
+    for r in rows:
+        by_name.setdefault(r.name, []).append(r)
+    for name, group in by_name.items():
+        times = " | ".join(f"{sum(r.seconds[m] for r in group) / len(group):.2f}" for m in modes)
+        errs = " | ".join(
+            _fmt_error(_worst(r.error[m] for r in group)) for m in modes if m != "exact"
+        )
+        lines.append(f"| {name} | {times} | {errs} |")
+    lines.append("")
+    lines.append("Times per problem are the mean over its scales; errors the worst over them.")
+    return "\n".join(lines) + "\n"
+
+
+def write(section: str) -> None:
+    """Replace (or append) the Speed–accuracy section of docs/benchmarks.md."""
+    text = DOC.read_text(encoding="utf-8")
+    pattern = re.compile(rf"{re.escape(HEADING)}\n.*?(?=\n## |\Z)", re.S)
+    if pattern.search(text):
+        text = pattern.sub(lambda _: section.rstrip("\n") + "\n", text)
+    else:
+        text = text.rstrip("\n") + "\n\n" + section
+    DOC.write_text(text, encoding="utf-8")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--ks", default="-9,-3,3,9", help="scales 10^k besides k = 0")
+    parser.add_argument("--modes", default="exact,numeric,auto")
+    parser.add_argument("--problems", default="problems/*/*.dyn", help="glob under the repo")
+    parser.add_argument("--no-write", action="store_true", help="print, do not update the doc")
+    args = parser.parse_args()
+    ks = [int(k) for k in args.ks.split(",") if k.strip()]
+    modes = args.modes.split(",")
+    paths = sorted(ROOT.glob(args.problems))
+    rows = measure(paths, ks, modes)
+    section = table(rows, modes, ks)
+    print(section)
+    if not args.no_write:
+        write(section)
+
+
+if __name__ == "__main__":
+    main()
