@@ -24,6 +24,7 @@ c*t_1**2/2 + v_0
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 
@@ -33,10 +34,12 @@ from dynsolve.dimensions import DimensionReport, check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
+from dynsolve.modes.oneline_events import EVENTS, QUANTITIES, find_event
 from dynsolve.names import latex_name, pretty
 from dynsolve.principles.rectilinear import KINDS, Motion, T, V, X, integrate_motion
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import EquationRow, Formula, Step
+from dynsolve.sections import combine_sections
 from dynsolve.spec.ast import EquationStmt, FindItem, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
@@ -79,6 +82,15 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     from dynsolve.modes.plane_kinematics import build_plane_problem, is_plane
 
     if is_plane(spec):
+        if spec.defines or spec.equations:
+            line = (*spec.equations, *spec.defines)[0]
+            section = "equations:" if spec.equations else "define:"
+            raise SpecError(
+                f"the {section} section cannot be combined with plane kinematics yet",
+                Position(spec.file, line.line, line.column),
+                hint="find each quantity of the motion; derived quantities are for one-line "
+                "motion and scenes",
+            )
         return build_plane_problem(spec)
     file = spec.file
     if len(spec.kinematics) != 1:
@@ -87,7 +99,8 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
             Position(file, spec.kinematics[1].line if spec.kinematics[1:] else 1, 1),
             hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
         )
-    check_answers_in_find(spec)
+    spec = combine_sections(spec)
+    check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     givens = givens_of(spec)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     statement = spec.kinematics[0]
@@ -102,45 +115,176 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
         raise SpecError(
             "the initial velocity v_0 is not given",
             Position(file, statement.line, statement.column),
-            hint="add 'v_0 = … m/s' under given: (and t_0, x_0 if not zero)",
+            hint="add 'v_0 = … m/s' under given:",
         )
     variables = {n: s for n, (s, _) in VARIABLES.items()}
     rhs = to_sympy(statement.rhs, {**symbols, **variables}, values)
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
     motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])
+    if kind in ("x(t)", "v(t)"):  # the start is the law's own
+        initial |= {n: _tidy(motion.formulas[f"{n}(t)"].subs(T, initial["t"])) for n in "xv"}
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
     given_dims = {g.name: g.dim for g in givens}
     numeric: list[Step] = []
-    targets = tuple(
-        _target(item, motion, all_symbols, given_dims, spec, (values, initial, numeric))
-        for item in spec.finds
-    )
-    for item, target in zip(spec.finds, targets, strict=True):
+    context = _Context(motion, all_symbols, given_dims, spec, values, initial, numeric, {})
+    defined_names = {line.lhs.text for line in spec.defines}  # type: ignore[union-attr]
+    for item in spec.finds:
+        if item.name in defined_names and item.ref is None:
+            continue  # a define listed in find: resolved below
+        if item.name in context.earlier:
+            raise SpecError(
+                f"'{item.name}' is listed twice in find",
+                Position(file, item.line, item.column),
+                hint="remove one",
+            )
+        target = context.target(item)
+        _check_real(item, target, values, file)
         _check_after_start(item, target, initial["t"], values, file)
-        _check_no_blow_up(item, motion, symbols, initial["t"], values, file)
-    _check_usage(spec, givens, symbols)
+        _check_no_blow_up(item, motion, context.lookup(), initial["t"], values, file)
+        context.earlier[item.name] = target
+    targets = _with_defines(spec, context)
+    notes = _check_usage(spec, givens, symbols, kind)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
     steps = _steps(motion, values, all_symbols)
     steps += tuple(replace(step, index=len(steps) + i) for i, step in enumerate(numeric, 1))
     system = EquationSystem(equations=(), unknowns=(), knowns=values)
     return KinematicsProblem(
-        spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion
+        spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion, notes
     )
 
 
-def _check_usage(spec: Spec, givens: list[GivenInfo], symbols: Mapping[str, object]) -> None:
-    """A given never read by the relation or the finds, whose name is a near miss of an
-    initial condition taken as 0 (``x0`` for ``x_0``), is an error."""
-    from dynsolve.usage import check_near_misses
+def _tidy(expr: sympy.Expr) -> sympy.Expr:
+    from dynsolve.numbers import tidy
+
+    return tidy(expr)
+
+
+@dataclass
+class _Context:
+    """What resolving a find needs: the motion, the givens, the start and earlier finds."""
+
+    motion: Motion
+    symbols: Mapping[str, sympy.Symbol]
+    given_dims: Mapping[str, Dim]
+    spec: Spec
+    values: Mapping[sympy.Symbol, sympy.Expr]
+    initial: Mapping[str, sympy.Expr]
+    numeric: list[Step]
+    earlier: dict[str, Target]
+
+    def lookup(self) -> dict[str, sympy.Expr]:
+        """Every name a find may be evaluated at: givens, t_0/x_0/v_0 and earlier finds."""
+        found: dict[str, sympy.Expr] = {f"{n}_0": e for n, e in self.initial.items()}
+        found |= dict(self.symbols)
+        found |= {n: t.expr for n, t in self.earlier.items() if t.expr is not None}
+        return found
+
+    def dims(self) -> dict[str, Dim]:
+        found = {f"{n}_0": _DIMS[n] for n in self.initial}
+        return found | dict(self.given_dims) | {n: t.dim for n, t in self.earlier.items()}
+
+    def target(self, item: FindItem) -> Target:
+        if item.ref is not None and item.ref.function in EVENTS:
+            return _event_target(item, self)
+        return _target(
+            item,
+            self.motion,
+            self.lookup(),
+            self.dims(),
+            self.spec,
+            (self.values, self.initial, self.numeric),
+        )
+
+
+def _with_defines(spec: Spec, context: _Context) -> tuple[Target, ...]:
+    """The finds' targets with the define lines' derived quantities (a define listed in
+    find takes its place there; the others follow), resolved by :mod:`dynsolve.derived`."""
+    from dynsolve.derived import define_targets
+    from dynsolve.spec.ast import QuantityRef
+
+    found = tuple(context.earlier.values())
+    if not spec.defines:
+        return found
+
+    def resolve(function: str, args: tuple[str, ...], where: Position) -> Target:
+        ref = QuantityRef(function, args, where.line, where.column)
+        name = f"{function}({', '.join(args)})"
+        return context.target(FindItem(name, None, where.line, where.column, ref))
+
+    lookup = context.lookup()
+    names = (*context.given_dims, "t_0", "x_0", "v_0")
+    defined = {
+        t.name: replace(t, unit=natural_unit(t.dim, spec.system))
+        for t in define_targets(spec, found, {n: lookup[n] for n in names}, context.dims(), resolve)
+    }
+    for target in found:
+        if target.name in defined:
+            raise SpecError(
+                f"'{target.name}' is both a find and a defined quantity",
+                Position(spec.file, 1, 1),
+                hint="choose another name for the derived quantity",
+            )
+    ordered: list[Target] = []
+    for item in spec.finds:
+        if item.name in defined and item.ref is None:
+            target = defined.pop(item.name)
+            if item.unit is not None:
+                _check_unit(item, target.dim, spec)
+                target = replace(target, unit=item.unit.text, requested=True)
+            ordered.append(target)
+        else:
+            ordered.append(context.earlier[item.name])
+    return (*ordered, *defined.values())
+
+
+def _check_unit(item: FindItem, dim: Dim, spec: Spec) -> None:
+    if item.unit is not None and resolve_unit(item.unit, spec.file).dim != dim:
+        raise SpecError(
+            f"{item.name} is {dim.name}, not in {item.unit.text}",
+            Position(spec.file, item.line, item.column),
+            hint=f"use a unit of {dim.name}",
+        )
+
+
+def _check_usage(
+    spec: Spec, givens: list[GivenInfo], symbols: Mapping[str, object], kind: str
+) -> tuple[tuple[str, str], ...]:
+    """A given never read by the relation, the finds or the define lines is named in a
+    note (with a did-you-mean); one whose name is a near miss of an initial condition
+    taken as 0 (``x0`` for ``x_0``) is an error. x(t) and v(t) laws carry their own
+    start: a given x_0 (and v_0) is not read by them."""
+    from dynsolve.usage import check_near_misses, unused_note
 
     statement = spec.kinematics[0]
     used = {n.text for side in (statement.lhs, statement.rhs) for n in iter_names(side)}
     used |= {arg for item in spec.finds if item.ref is not None for arg in item.ref.args}
-    used |= {"t_0", "x_0", "v_0"}
-    defaulted = [n for n in ("t_0", "x_0", "v_0") if n not in symbols]
-    check_near_misses(givens, used, defaulted, spec.file)
+    for line in spec.defines:
+        used |= {n.text for n in iter_names(line.rhs)} | _call_args(line.rhs)
+    read = {"a(t)": "txv", "a(v)": "txv", "a(x)": "txv", "x(t)": "t", "v(t)": "tx"}[kind]
+    starts = {f"{n}_0" for n in read}
+    defaulted = [n for n in sorted(starts) if n not in symbols]
+    check_near_misses(givens, used | starts, defaulted, spec.file)
+    return unused_note(givens, used | starts, starts)
+
+
+def _call_args(expr: object) -> set[str]:
+    """The names passed to quantity calls in a define line (``x(t_2)`` reads t_2)."""
+    from dynsolve.spec.ast import Binary, Call, Name, Unary
+
+    found: set[str] = set()
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, Call):
+            found |= {a.text for a in node.args if isinstance(a, Name)}
+            stack.extend(node.args)
+        elif isinstance(node, Unary):
+            stack.append(node.operand)
+        elif isinstance(node, Binary):
+            stack.extend((node.left, node.right))
+    return found
 
 
 def _mass_times_a(
@@ -197,7 +341,7 @@ _DIMS = {"t": Dim.of("time"), "x": Dim.of("length"), "v": Dim.of("velocity"), "a
 def _target(
     item: FindItem,
     motion: Motion,
-    symbols: Mapping[str, sympy.Symbol],
+    symbols: Mapping[str, sympy.Expr],
     given_dims: Mapping[str, Dim],
     spec: Spec,
     numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]]
@@ -214,6 +358,9 @@ def _target(
     argument = ref.args[0]
     variable = argument if argument in VARIABLES else _variable_of(argument, given_dims, where)
     name = f"{ref.function}({variable})"
+    if name not in motion.formulas and ref.function == "t" and variable == "v":
+        hint = f"the time at which v = {argument} is t_at(v, {argument})"
+        raise SpecError(f"t(v) could not be found from {motion.given}", where, hint=hint)
     numeric = None
     if name not in motion.formulas and numbers is not None and argument not in VARIABLES:
         numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
@@ -238,6 +385,154 @@ def _target(
         )
     return Target(
         item.name, sympy.Symbol(item.name), dim, unit, item.unit is not None, False, "signed", expr
+    )
+
+
+_EVENT_DIMS = {"t_at": "t", "x_at": "x", "distance": "x"}
+
+
+def _event_target(item: FindItem, context: _Context) -> Target:
+    """A find of an event of the motion (``t_at``, ``x_at``, ``max``, ``min``,
+    ``distance``): its arguments resolved, the event found, and its step recorded."""
+    from dynsolve.numbers import real_value
+
+    assert item.ref is not None
+    ref, spec = item.ref, context.spec
+    where = Position(spec.file, ref.line, ref.column)
+    args, function = ref.args, ref.function
+    counts = {"t_at": (2, 3), "x_at": (2, 3), "max": (1, 2), "min": (1, 2), "distance": (1, 2)}
+    usage = {
+        "t_at": "t_s = t_at(v, 0), or t_at(x, x_1, 2) for the second time",
+        "x_at": "x_s = x_at(v, 0), the position where v = 0",
+        "max": "x_max = max(x), or max(x, t_2) over t₀ … t₂",
+        "min": "v_min = min(v), or min(v, t_2) over t₀ … t₂",
+        "distance": "s = distance(t_2) from t₀, or distance(t_1, t_2)",
+    }[function]
+    low, high = counts[function]
+    if not low <= len(args) <= high:
+        raise SpecError(f"{function} takes {low} or {high} arguments", where, hint=usage)
+    resolved: list[object] = []
+    if function == "distance":
+        resolved = [_event_value(a, "t", context, where) for a in args]
+    else:
+        quantity = args[0]
+        if quantity not in QUANTITIES:
+            raise SpecError(
+                f"'{quantity}' is not a quantity of one-line motion",
+                where,
+                hint="one of x, v, a (plane motion, with two relations, has y, v_x, …)",
+            )
+        resolved.append(quantity)
+        if function in ("t_at", "x_at"):
+            resolved.append(_event_value(args[1], quantity, context, where))
+            if len(args) == 3:
+                if not args[2].isdigit() or int(args[2]) < 1:
+                    raise SpecError(
+                        f"the root's number '{args[2]}' is not 1, 2, 3, …", where, hint=usage
+                    )
+                resolved.append(int(args[2]))
+        elif len(args) == 2:
+            resolved.append(_event_value(args[1], "t", context, where))
+    t0, x0 = context.initial["t"], context.initial["x"]
+    try:
+        event = find_event(function, resolved, context.motion, t0, context.values, x0)
+    except ValueError as error:
+        raise SpecError(str(error), where, hint=usage) from None
+    dim = _DIMS[_EVENT_DIMS.get(function, args[0])]
+    _check_unit(item, dim, spec)
+    unit = item.unit.text if item.unit is not None else natural_unit(dim, spec.system)
+
+    def shown(expr: sympy.Expr) -> str:
+        number = real_value(expr, context.values)
+        return f"{number:.6g}" if number is not None else sympy.sstr(expr).replace("**", "^")
+
+    discarded = tuple(f"t = {shown(t)}: {why}" for t, why in event.discarded)
+    results = ()
+    if event.time is not None and function not in ("t_at",):
+        results += (Formula("t", sympy.sstr(event.time), sympy.latex(event.time),
+                            shown(event.time), shown(event.time)),)  # fmt: skip
+    text = sympy.sstr(event.expr).replace("**", "^")
+    results += (Formula(item.name, text, sympy.latex(event.expr), shown(event.expr),
+                        shown(event.expr)),)  # fmt: skip
+    method = "root choice" if function in ("t_at", "x_at") else "extreme"
+    if function == "distance":
+        method = "integration"
+    rule = f"{item.name} = {function}({', '.join(args)}): {event.rule}"
+    context.numeric.append(Step(0, (), (item.name,), method, results, discarded, rule))
+    return Target(
+        item.name,
+        sympy.Symbol(item.name),
+        dim,
+        unit,
+        item.unit is not None,
+        False,
+        "signed",
+        event.expr,
+    )
+
+
+def _event_value(name: str, quantity: str, context: _Context, where: Position) -> sympy.Expr:
+    """An event's value or time: 0, a given, t_0/x_0/v_0 or an earlier find, of the
+    dimension of ``quantity``."""
+    dim = _DIMS[quantity]
+    if name[:1].isdigit() or name.startswith("."):
+        if sympy.Rational(name) != 0:
+            raise SpecError(
+                f"the number {name} has no unit",
+                where,
+                hint="give the value as a given with its unit (0 may be written as is)",
+            )
+        return sympy.Integer(0)
+    lookup, dims = context.lookup(), context.dims()
+    if name not in lookup or name in VARIABLES:
+        later = any(f.name == name for f in context.spec.finds)
+        close = difflib.get_close_matches(name, [n for n in dims], n=1)
+        hint = (
+            f"list '{name}' before the find that uses it"
+            if later
+            else f"did you mean '{close[0]}'?"
+            if close
+            else "declare it under given:"
+        )
+        raise SpecError(f"'{name}' is neither a given nor an earlier find", where, hint=hint)
+    if dims[name] != dim:
+        raise SpecError(
+            f"'{name}' is {dims[name].name}, but {quantity} is {dim.name}",
+            where,
+            hint=f"give a value of {dim.name}",
+        )
+    return lookup[name]
+
+
+def _check_real(
+    item: FindItem, target: Target, values: Mapping[sympy.Symbol, sympy.Expr], file: str
+) -> None:
+    """Fail loudly when a value found is not real: v(x₁) or t(x₁) past the turning point,
+    where v² < 0 — the motion never gets there on this branch.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("kinematics:\\n  x = 2*t\\nfind: v_1 = v(x_1)", "k.dyn")
+    >>> target = Target("v_1", sympy.Symbol("v_1"), _DIMS["v"], "m/s", False, False, "signed",
+    ...                 sympy.sqrt(-15))
+    >>> _check_real(spec.finds[0], target, {}, "k.dyn")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dynsolve.errors.SpecError: k.dyn:3:7: v_1 is not real ...
+    """
+    from dynsolve.numbers import real_value
+
+    if target.expr is None:
+        return
+    value = target.expr.xreplace(dict(values))
+    if value.has(sympy.zoo, sympy.oo, -sympy.oo, sympy.nan):
+        return  # infinite: the blow-up and root checks speak to it
+    if value.free_symbols or real_value(value) is not None:
+        return
+    raise SpecError(
+        f"{target.name} is not real ({sympy.sstr(sympy.N(value, 4))}): the motion never "
+        "reaches that value on this branch (past a turning point v² < 0)",
+        Position(file, item.line, item.column),
+        hint="check the value against the turning point: x_at(v, 0)",
     )
 
 
@@ -279,7 +574,7 @@ def _check_after_start(
 def _check_no_blow_up(
     item: FindItem,
     motion: Motion,
-    symbols: Mapping[str, sympy.Symbol],
+    symbols: Mapping[str, sympy.Expr],
     t_0: sympy.Expr,
     values: Mapping[sympy.Symbol, sympy.Expr],
     file: str,
@@ -344,7 +639,7 @@ def _check_no_blow_up(
 def _numerically(
     function: str,
     variable: str,
-    at: sympy.Symbol,
+    at: sympy.Expr,
     motion: Motion,
     numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]],
 ) -> sympy.Expr | None:
@@ -381,7 +676,7 @@ def _variable_of(given: str, given_dims: Mapping[str, Dim], where: Position) -> 
         raise SpecError(
             f"'{given}' is neither t, x, v nor a given",
             where,
-            hint="evaluate at a given, e.g. v(t_1) with t_1 = 2 s",
+            hint="evaluate at a given or an earlier find, e.g. v(t_1) with t_1 = 2 s",
         )
     for name, (_, dim) in VARIABLES.items():
         if dim == dim_of_given:

@@ -331,6 +331,8 @@ class _Builder:
             used = [self.initial_lines.get(n) for n in (f"{axis}_0", f"v_{axis}0")]
             lines = tuple(sorted({st.line, *(s.line for s in used if s and kind != "x(t)")}))
             for key, how in motion.steps:
+                if key not in ("x(t)", "v(t)", "a(t)"):
+                    continue  # t(v), x(v): one-line relations, not components
                 quantity = names[("x(t)", "v(t)", "a(t)").index(key)]
                 rule = _AXIS_RULES.get(how, how).format(axis)
                 step_lines = (st.line,) if how in ("given", "v = dx/dt", "a = dv/dt") else lines

@@ -61,6 +61,9 @@ def build_scene_problem(
     """Model the scene, write its equations and resolve the find list. ``released`` maps
     cords found slack and contacts found lost in an earlier trial to what they were
     ("cord", "contact"): they are left out (their force is zero)."""
+    from dynsolve.sections import combine_sections
+
+    spec = combine_sections(spec)
     if not spec.finds:
         raise SpecError("nothing to find", Position(spec.file, 1, 1), hint="add a 'find:' line")
     givens = givens_of(spec)
@@ -171,6 +174,7 @@ def build_scene_problem(
         for t, item in zip(targets[: len(spec.finds)], spec.finds, strict=True)
         if item.ref is not None and item.ref.function == "I"
     )
+    notes += _unused(spec)
     notes += tuple(
         _path_note(scene, name, _path_extremes(scene, name, Position(spec.file, 1, 1)))
         for name in scene.movers
@@ -233,6 +237,13 @@ def _with_instant(chain: Formulation, instant: Formulation) -> Formulation:
     )
 
 
+def _unused(spec: Spec) -> tuple[tuple[str, str], ...]:
+    """A note naming each given the scene never reads (with a did-you-mean)."""
+    from dynsolve.usage import scene_reads, unused_note
+
+    return unused_note(givens_of(spec), scene_reads(spec))
+
+
 def _staged(scene: Scene, spec: Spec) -> bool:
     """Whether the scene is followed through stages: several travel or impact lines, an
     impact with the ground, or a find that needs the states (T, work, …)."""
@@ -277,6 +288,20 @@ def _targets(
     )
     if not spec.defines:
         return found
+    for item in spec.finds:  # a defined name must not hide a quantity of the scene
+        if item.name in names and item.ref is None:
+            try:
+                _target(item, spec, scene, formulation, symbols, dims)
+            except SpecError:
+                continue
+            line = next(d for d in spec.defines if d.lhs.text == item.name)  # type: ignore[union-attr]
+            raise SpecError(
+                f"'{item.name}' is already a quantity of the scene: its definition on line "
+                f"{line.line} would replace it",
+                Position(spec.file, line.line, line.column),
+                hint="choose another name for the derived quantity; an equation to solve "
+                "for a scene quantity cannot be combined with the scene: section",
+            )
 
     def resolve(function: str, args: tuple[str, ...], where: Position) -> Target:
         item = FindItem(f"{function}({', '.join(args)})", None, where.line, where.column)

@@ -16,7 +16,7 @@ keeping the branch that meets the initial condition. ``crossing_times`` and
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cmp_to_key
 
@@ -91,7 +91,41 @@ def integrate_motion(
             keep("a(t)", sympy.diff(found["v(t)"], T), "a = dv/dt")
     else:
         raise ValueError(f"unknown kind of motion {kind!r}; one of {', '.join(KINDS)}")
+    if kind in ("a(t)", "x(t)", "v(t)"):
+        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0)
     return Motion(kind, found, tuple(steps))
+
+
+def _time_inverses(
+    found: dict[str, sympy.Expr],
+    keep: Callable[[str, sympy.Expr | None, str], None],
+    a: sympy.Expr | None,
+    t0: sympy.Expr,
+) -> None:
+    """t(v), x(v), v(x), t(x) of a motion known in t: the constant-acceleration formulas
+    when a is a constant, else v(t) inverted on the branch through t₀ (when sympy can).
+
+    >>> b, v0 = sympy.symbols("b v_0", positive=True)
+    >>> m = integrate_motion(-b + 0 * T, "a(t)", sympy.Integer(0), sympy.Integer(0), v0)
+    >>> m.formulas["t(v)"], m.formulas["x(v)"]
+    (-(v - v_0)/b, (-v**2 + v_0**2)/(2*b))
+    """
+    v0, x0 = tidy(found["v(t)"].subs(T, t0)), tidy(found["x(t)"].subs(T, t0))
+    if a is not None and not a.has(T) and not a.is_zero:
+        keep("t(v)", t0 + (V - v0) / a, "t = t₀ + (v − v₀)/a (constant a)")
+        keep("x(v)", x0 + (V**2 - v0**2) / (2 * a), "v² = v₀² + 2 a (x − x₀) (constant a)")
+        start = v0 if not v0.is_zero else a
+        sign = -1 if start.is_negative else 1
+        keep(
+            "v(x)",
+            sign * sympy.sqrt(v0**2 + 2 * a * (X - x0)),
+            "v² = v₀² + 2 a (x − x₀), the sense of the start (before any turning point)",
+        )
+        keep("t(x)", found["t(v)"].subs(V, found["v(x)"]), "t(x) = t(v(x)) (constant a)")
+        return
+    keep("t(v)", _invert(found["v(t)"], T, V, v0, t0), "t(v) by inverting v(t) (branch through t₀)")
+    if "t(v)" in found:
+        keep("x(v)", found["x(t)"].subs(T, found["t(v)"]), "x(v) = x(t(v))")
 
 
 @dataclass(frozen=True)

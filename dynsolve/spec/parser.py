@@ -1128,9 +1128,10 @@ def _literal_value(expr: Expr) -> Fraction | None:
 
 
 def _finish(parts: _Sections, file: str) -> Spec:
-    if parts.defines and parts.scene is None:
+    if parts.defines and parts.scene is None and parts.kinematics is None:
         raise SpecError(
-            "'define:' lists quantities of a scene; this spec has no 'scene:' section",
+            "'define:' lists quantities of a scene or a motion; this spec has no 'scene:' "
+            "or 'kinematics:' section",
             Position(file, parts.define_line, 1),
             hint="in equation mode write the expression as an equation: 'dE = T1 - T2'",
         )
