@@ -118,3 +118,14 @@ def test_exact_root_of_1e_minus_200_is_not_rounded_away() -> None:
     (x,) = [row.value for row in solution.answers]
     assert x == pytest.approx(1e-200, rel=1e-12)
     assert solution.passed
+
+
+@pytest.mark.parametrize("k", [-9, 9])
+def test_the_simulation_check_is_scale_free(k: int) -> None:
+    # regression: the cross-check integrated with an absolute atol of 1e-12, so at lengths of
+    # 1e-9 m the collar's simulated speed came out wrong and the check failed only when scaled
+    path = ROOT / "problems" / "seed" / "we_seed_collar.dyn"
+    spec = parse_file(path)
+    scaled = solve_spec(scale_spec(spec, k), SolveOptions(mode="numeric"))
+    (check,) = [c for c in scaled.checks if c.name.startswith("simulation")]
+    assert check.passed, check.detail

@@ -31,6 +31,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
+import numpy as np
 import sympy
 from scipy.integrate import quad
 
@@ -139,7 +140,8 @@ def simulate_leg(
     unit = length if motion.unit == "m" else motion.unit
     how = (
         f"M(q) q'' + ½ M'(q) q'² = Q(q, q') in q = {motion.coordinate} [{unit}], "
-        f"solve_ivp {run.method} (rtol {run.rtol:.0e}, atol {run.atol:.0e}); "
+        f"solve_ivp {run.method} (rtol {run.rtol:.0e}, atol {TIGHT_ATOL:.0e} of each "
+        "state's scale); "
     )
     try:
         if leg.travel.stops:
@@ -249,8 +251,14 @@ def _run(motion: OneDof, q_end: float, qd0: float) -> Run:
         raise NotSimulable("the scene is at rest in equilibrium at the start: it does not move")
     end = Event("end of the travel", lambda q, qd: q - q_end, 1)
     stop = Event("at rest", lambda q, qd: qd, -1)
+    # absolute tolerances in the travel's own scales (q, q', and the work of friction), so
+    # the check is the same for a problem in metres and one scaled by 1e-9
+    energy = max(abs(motion.kinetic(0.0, speed)), abs(motion.energy(0.0, qd0)), 1e-300)
+    atol = TIGHT_ATOL * np.array([abs(q_end), speed, energy])
+    if motion.frictionless:
+        atol = atol[:2]
     return integrate(
-        motion, 0.0, qd0, HORIZON * q_end / speed, [end, stop], METHOD, TIGHT_RTOL, TIGHT_ATOL
+        motion, 0.0, qd0, HORIZON * q_end / speed, [end, stop], METHOD, TIGHT_RTOL, atol
     )
 
 

@@ -49,7 +49,7 @@ class Run:
     stopped_by: str  # the terminal event's name, or "" at the end time
     method: str
     rtol: float
-    atol: float
+    atol: float | np.ndarray  # a scalar, or one per state (the cross-check)
     evaluations: int
     drift: float = field(default=0.0)  # max |E(t) − E(0)| / scale, E = T + V − U_f
     last: tuple[float, float, float, float] | None = None  # (t, q, q', U_f) at a terminal event
@@ -63,7 +63,7 @@ def integrate(
     events: Sequence[Event] = (),
     method: str = "DOP853",
     rtol: float = TIGHT_RTOL,
-    atol: float = TIGHT_ATOL,
+    atol: float | np.ndarray = TIGHT_ATOL,
     max_step: float = np.inf,
     t_eval: np.ndarray | None = None,
 ) -> Run:
