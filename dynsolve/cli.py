@@ -698,6 +698,9 @@ def solve_and_render(
     """The worker's job for ``solve``: solve, check and render one spec (a file's path, or
     stdin's text; or one student's variant of it: their givens replaced, the answer key
     dropped) to text."""
+    from dynsolve.startup import import_solver
+
+    import_solver()
     from dynsolve.budget import step
     from dynsolve.errors import DynsolveError
     from dynsolve.pipeline import solve_file, solve_text
@@ -728,6 +731,9 @@ def solve_and_render(
 
 def solve_and_check(file: Path, mode: str, budget: Budget) -> tuple[Check, ...] | _Refused:
     """The worker's job for ``check``: the failed checks of one spec (none: it passed)."""
+    from dynsolve.startup import import_solver
+
+    import_solver()
     from dynsolve.errors import DynsolveError
     from dynsolve.pipeline import solve_file
 

@@ -15,7 +15,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
@@ -50,6 +50,9 @@ from dynsolve.spec.parser import parse_file, parse_spec
 from dynsolve.suspicious import suspicious_notes
 from dynsolve.system import EquationSystem, SolveOptions
 from dynsolve.units import BASE_UNITS, Dim, natural_unit
+
+if TYPE_CHECKING:
+    from dynsolve.modes.scene_mode import SceneProblem
 
 RESIDUAL_LIMIT = 1e-9
 NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
@@ -115,10 +118,21 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
         raise error.located(spec.file, columns) from None
 
 
+def _simulation_checks(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """The simulation cross-checks of a scene with a travel or stages (numpy and scipy are
+    imported only then: an instant's scene does not pay for them)."""
+    if not (problem.scene.travels or problem.formulation.stages):
+        return ()
+    from dynsolve.simulate.crosscheck import simulation_checks
+
+    return simulation_checks(problem, values)
+
+
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
     from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
-    from dynsolve.simulate.crosscheck import simulation_checks
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -157,7 +171,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         trial,
         assumptions,
         free_bodies(problem, outcome.values),
-        cross_checks(problem, outcome.values) + simulation_checks(problem, outcome.values),
+        cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
     )
     shown = tuple(_trial(*each, outcome, options) for each in trials)
     return replace(solution, trials=shown) if shown else solution

@@ -395,10 +395,32 @@ def _unit_cache() -> _UnitCache:
         import platformdirs
 
         folder = platformdirs.user_cache_dir("dynsolve")
-    from importlib.metadata import version
+    key = hashlib.sha256("\n".join((*_EXTRA_DEFINITIONS, _pint_install())).encode()).hexdigest()[
+        :12
+    ]
+    return _UnitCache(Path(folder) / f"units-v2-{key}.json")
 
-    key = hashlib.sha256("\n".join(_EXTRA_DEFINITIONS).encode()).hexdigest()[:12]
-    return _UnitCache(Path(folder) / f"units-v1-pint{version('pint')}-{key}.json")
+
+def _pint_install() -> str:
+    """Where pint is installed and when: a new pint (or a reinstall) starts a new cache.
+
+    Cheaper than ``importlib.metadata.version`` (which imports the metadata machinery and
+    scans the installed distributions) and pint itself is not imported.
+
+    >>> "pint" in _pint_install()
+    True
+    """
+    import importlib.util
+
+    spec = importlib.util.find_spec("pint")
+    origin = spec.origin if spec is not None else None
+    if origin is None:
+        return "pint: not found"
+    try:
+        stamp = os.stat(origin).st_mtime_ns
+    except OSError:
+        stamp = 0
+    return f"{origin}:{stamp}"
 
 
 def _exact(factor: float) -> sympy.Expr:

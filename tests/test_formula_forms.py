@@ -1,0 +1,70 @@
+"""Formulas shown stay as tidy as they were (issue 14: simplify only where it pays).
+
+``tests/data/formula_forms.json`` holds, for every bundled problem solved in exact
+mode, each formula dynsolve prints (equations, solve steps, answers' exact forms) as
+it printed them just before cheap tidying replaced ``sympy.simplify`` (2026-11-24). It is a
+record of *form*, not of values (the values are checked against textbook answers by
+each problem's ``answers:`` key): a printed formula may get shorter, never longer.
+Regenerate after a deliberate change of form with
+``DYNSOLVE_REGENERATE_FORMS=1 pytest tests/test_formula_forms.py``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from dynsolve.pipeline import solve_file
+from dynsolve.render.json import render_json
+from dynsolve.system import SolveOptions
+
+ROOT = Path(__file__).resolve().parent.parent
+RECORD = ROOT / "tests" / "data" / "formula_forms.json"
+PROBLEMS = sorted((ROOT / "problems").rglob("*.dyn"))
+SLACK = 2  # characters: a different but equally tidy order of terms may print a little longer
+
+
+def printed_forms(path: Path) -> dict[str, str]:
+    """Every formula the JSON output of ``path`` prints, keyed by where it appears."""
+    data = json.loads(render_json(solve_file(path, SolveOptions(mode="exact"))))
+    forms: dict[str, str] = {}
+    for equation in data["equations"]:
+        forms[f"equation {equation['line']}"] = equation["text"]
+    for step in data["steps"]:
+        for result in step["results"]:
+            if result.get("formula"):
+                forms[f"step {step['index']} {result['name']}"] = result["formula"]
+    for answer in data["answers"]:
+        if answer.get("exact"):
+            forms[f"answer {answer['name']}"] = answer["exact"]
+    return forms
+
+
+def _name(path: Path) -> str:
+    return path.relative_to(ROOT / "problems").as_posix()
+
+
+@pytest.mark.skipif(
+    not os.environ.get("DYNSOLVE_REGENERATE_FORMS"), reason="regenerates the record on request"
+)
+def test_regenerate_the_record() -> None:
+    record = {_name(p): printed_forms(p) for p in PROBLEMS}
+    RECORD.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+
+
+@pytest.mark.parametrize("path", PROBLEMS, ids=_name)
+def test_no_printed_formula_got_longer(path: Path) -> None:
+    record = json.loads(RECORD.read_text(encoding="utf-8"))
+    if _name(path) not in record:
+        pytest.skip("a problem bundled after the record was made")
+    before = record[_name(path)]
+    now = printed_forms(path)
+    longer = {
+        where: (before[where], text)
+        for where, text in now.items()
+        if where in before and len(text) > len(before[where]) + SLACK
+    }
+    assert not longer, longer
