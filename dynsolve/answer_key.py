@@ -21,7 +21,7 @@ from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange, bound, value_bound
-from dynsolve.numbers import real_value
+from dynsolve.numbers import real_value, tidy
 from dynsolve.quantities import convert, resolve_quantity, resolve_unit
 from dynsolve.spec.ast import Answer, EquationStmt, Name, Spec
 from dynsolve.spec.parser import iter_names
@@ -31,6 +31,8 @@ DEFAULT_RELATIVE = Fraction(1, 200)  # 0.5 %: three significant figures
 ZERO_ABSOLUTE = Fraction(1, 10**9)  # for an expected zero, in the answer's unit
 NEGATIVE = ("cw", "down", "left")
 EQUIVALENCE_POINTS = 4
+EQUIVALENCE_RTOL = 1e-9  # two formulas agree at a point within this relative difference
+EQUIVALENCE_SIMPLIFY_OPS = 80  # larger differences are not given to sympy.simplify
 
 
 @dataclass(frozen=True)
@@ -220,8 +222,11 @@ def _compare_formula(
 
 
 def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdict:
+    """Two formulas compared numerically first, at random points (relative tolerance
+    ``EQUIVALENCE_RTOL``), and only then confirmed symbolically, cheaply (``tidy`` of the
+    difference; ``simplify`` for a small difference free of floating-point numbers)."""
     difference = expected - computed
-    if difference == 0 or sympy.simplify(difference) == 0:
+    if difference == 0:
         return Verdict(True, shown, "equivalent (exactly)")
     rng = random.Random(20261121)
     # every symbol of either side gets a value, also one that cancels in the difference
@@ -231,9 +236,26 @@ def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdi
         a, b = _complex_value(expected.subs(point)), _complex_value(computed.subs(point))
         if a is None:
             return Verdict(False, shown, "the formula has no finite value (a division by zero?)")
-        if b is None or abs(a - b) > 1e-9 * max(abs(a), abs(b), 1e-300):
+        if b is None or abs(a - b) > EQUIVALENCE_RTOL * max(abs(a), abs(b), 1e-300):
             return Verdict(False, shown, f"not equivalent: computed {computed}")
-    return Verdict(True, shown, f"equivalent (numerically, at {EQUIVALENCE_POINTS} points)")
+    if _zero_symbolically(difference):
+        return Verdict(True, shown, "equivalent (exactly)")
+    return Verdict(
+        True,
+        shown,
+        f"equivalent (numerically: equal within {EQUIVALENCE_RTOL:g} at {EQUIVALENCE_POINTS} "
+        "random points)",
+    )
+
+
+def _zero_symbolically(difference: sympy.Expr) -> bool:
+    """``difference`` shown to be 0 by cheap tidying, or by ``simplify`` when it is small and
+    exact (floats never cancel exactly: there the numeric test is the answer)."""
+    if tidy(difference) == 0:
+        return True
+    if difference.has(sympy.Float) or sympy.count_ops(difference) > EQUIVALENCE_SIMPLIFY_OPS:
+        return False
+    return sympy.simplify(difference) == 0
 
 
 def _complex_value(expr: sympy.Expr) -> complex | None:

@@ -27,7 +27,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
 from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import real_value
+from dynsolve.numbers import real_value, tidy
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
@@ -582,9 +582,10 @@ class _View:
         if number is None:
             value, sense = self.sensed(target, value)
             direction = sense or direction
-        exact = self.text(_tidy(value)) if number is None else sympy.sstr(value)
+        exact = sympy.sstr(value)
         if number is None:
-            latex = self.latex(_tidy(value))
+            tidied = _tidy(value)
+            exact, latex = self.text(tidied), self.latex(tidied)
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
 
@@ -782,7 +783,7 @@ def _count(n: int, noun: str) -> str:
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
-    """A readable form of a symbolic answer, simplified only when small."""
+    """A readable form of a symbolic answer, tidied only when small."""
     if sympy.count_ops(expr) > 80:
         return expr
-    return sympy.simplify(expr)
+    return tidy(expr)

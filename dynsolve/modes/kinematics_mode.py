@@ -25,7 +25,7 @@ c*t_1**2/2 + v_0
 from __future__ import annotations
 
 import difflib
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import sympy
@@ -121,7 +121,8 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     rhs = to_sympy(statement.rhs, {**symbols, **variables}, values)
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
-    motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"])
+    invert = not _values_at_times_only(spec, givens, kind)
+    motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"], invert)
     if kind in ("x(t)", "v(t)"):  # the start is the law's own
         initial |= {n: _tidy(motion.formulas[f"{n}(t)"].subs(T, initial["t"])) for n in "xv"}
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
@@ -152,6 +153,23 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     system = EquationSystem(equations=(), unknowns=(), knowns=values)
     return KinematicsProblem(
         spec, tuple(givens), system, dims, targets, all_symbols, (row,), steps, motion, notes
+    )
+
+
+def _values_at_times_only(spec: Spec, givens: Sequence[GivenInfo], kind: str) -> bool:
+    """True when an acceleration law's finds are all x or v at given times, every given has
+    a value and nothing else is asked: numbers, for which integrating the motion numerically
+    is the direct path, so no relation need be inverted (sympy may spend seconds trying).
+    """
+    if not kind.startswith("a(") or spec.defines or any(g.value is None for g in givens):
+        return False
+    times = {g.name for g in givens if g.dim == _DIMS["t"]}
+    return all(
+        item.ref is not None
+        and item.ref.function in ("x", "v")
+        and len(item.ref.args) == 1
+        and item.ref.args[0] in times
+        for item in spec.finds
     )
 
 
@@ -659,9 +677,14 @@ def _numerically(
     t_0, x_0, v_0 = start
     x, v = integrate_numerically(a, motion.given, t_0, x_0, v_0, t_1)  # type: ignore[arg-type]
     value = sympy.Float(x if function == "x" else v, 15)
+    why = (
+        f"sympy could not invert the relation into {function}(t)"
+        if motion.inverted
+        else "only values at given times are asked, so no relation is inverted into a formula"
+    )
     how = (
         f"{function}({at}) by integrating x' = v, v' = {motion.given} numerically from t₀ "
-        f"(mpmath ODE solver): sympy could not invert the relation into {function}(t)"
+        f"(mpmath ODE solver): {why}"
     )
     shown = f"{float(value):.6g}"
     result = Formula(f"{function}({at})", shown, sympy.latex(value), shown, sympy.latex(value))

@@ -37,15 +37,29 @@ class Motion:
     given: str  # which relation the spec gives: "a(v)", …
     formulas: dict[str, sympy.Expr]  # "v(t)" → expression in t, "x(v)" → in v, …
     steps: tuple[tuple[str, str], ...]  # (relation, how it was found)
+    inverted: bool = True  # False: no relation was inverted (only values were asked)
 
 
 def integrate_motion(
-    expr: sympy.Expr, kind: str, t0: sympy.Expr, x0: sympy.Expr, v0: sympy.Expr
+    expr: sympy.Expr,
+    kind: str,
+    t0: sympy.Expr,
+    x0: sympy.Expr,
+    v0: sympy.Expr,
+    invert: bool = True,
 ) -> Motion:
-    """All of v(t), x(t), a(t) and, where they exist, t(v), x(v), v(x), t(x), a(x), a(v)."""
+    """All of v(t), x(t), a(t) and, where they exist, t(v), x(v), v(x), t(x), a(x), a(v).
+
+    With ``invert=False`` no relation is inverted (sympy's inversion may take seconds and
+    fail): what only an inversion gives is left out, for the caller to integrate
+    numerically when it only needs values.
+    """
     u = sympy.Dummy("u", real=True)
     found: dict[str, sympy.Expr] = {}
     steps: list[tuple[str, str]] = []
+
+    def _invert(*args: sympy.Expr) -> sympy.Expr | None:
+        return _inverse(*args) if invert else None
 
     def keep(name: str, value: sympy.Expr | None, how: str) -> None:
         if value is not None and name not in found:
@@ -92,8 +106,8 @@ def integrate_motion(
     else:
         raise ValueError(f"unknown kind of motion {kind!r}; one of {', '.join(KINDS)}")
     if kind in ("a(t)", "x(t)", "v(t)"):
-        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0)
-    return Motion(kind, found, tuple(steps))
+        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0, invert)
+    return Motion(kind, found, tuple(steps), invert)
 
 
 def _time_inverses(
@@ -101,6 +115,7 @@ def _time_inverses(
     keep: Callable[[str, sympy.Expr | None, str], None],
     a: sympy.Expr | None,
     t0: sympy.Expr,
+    invert: bool = True,
 ) -> None:
     """t(v), x(v), v(x), t(x) of a motion known in t: the constant-acceleration formulas
     when a is a constant, else v(t) inverted on the branch through t₀ (when sympy can).
@@ -123,7 +138,10 @@ def _time_inverses(
         )
         keep("t(x)", found["t(v)"].subs(V, found["v(x)"]), "t(x) = t(v(x)) (constant a)")
         return
-    keep("t(v)", _invert(found["v(t)"], T, V, v0, t0), "t(v) by inverting v(t) (branch through t₀)")
+    if not invert:
+        return
+    how = "t(v) by inverting v(t) (branch through t₀)"
+    keep("t(v)", _inverse(found["v(t)"], T, V, v0, t0), how)
     if "t(v)" in found:
         keep("x(v)", found["x(t)"].subs(T, found["t(v)"]), "x(v) = x(t(v))")
 
@@ -246,7 +264,7 @@ def _sign(expr: sympy.Expr, values: Values) -> int | None:
     raise ValueError(f"cannot tell the sign of {expr}; give values for {missing}")
 
 
-def _invert(
+def _inverse(
     relation: sympy.Expr,
     variable: sympy.Symbol,
     argument: sympy.Symbol,

@@ -40,7 +40,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
-from dynsolve.numbers import MAX_DIGITS, mpmath_function
+from dynsolve.numbers import MAX_DIGITS, mpmath_function, tidy
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -424,7 +424,10 @@ def _symbolic_candidates(
     else:
         problem, targets = residuals, list(unknowns)
     try:
-        roots, timed_out = _within_budget(lambda: sympy.solve(problem, targets, dict=True), seconds)
+        # sympy's own simplify of every root costs more than the solve; tidy() does it cheaply
+        roots, timed_out = _within_budget(
+            lambda: _tidy_roots(sympy.solve(problem, targets, dict=True, simplify=False)), seconds
+        )
     except _SYMPY_GAVE_UP:
         return None, "sympy found no closed form"
     if timed_out or roots is None:
@@ -441,6 +444,14 @@ def _symbolic_candidates(
     if not candidates:
         return None, "sympy found no solution" if not roots else "formulas undefined here"
     return BlockSolution(unknowns, "symbolic", tuple(candidates)), ""
+
+
+def _tidy_roots(roots: list[dict[sympy.Symbol, sympy.Expr]]) -> list[dict]:
+    """Each root's value in its tidiest cheap form (:func:`~dynsolve.numbers.tidy`)."""
+    return [
+        {u: tidy(v) if sympy.count_ops(v) <= FORMULA_MAX_OPS else v for u, v in r.items()}
+        for r in roots
+    ]
 
 
 def _determines(root: Mapping[sympy.Symbol, sympy.Expr], unknowns: Sequence[sympy.Symbol]) -> bool:
