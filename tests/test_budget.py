@@ -22,7 +22,7 @@ from dynsolve.cli import ExitCode, _Done, _Target, app, solve_and_render
 from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
 ROOT = Path(__file__).resolve().parent.parent
-DRAG_FALL = ROOT / "problems" / "kinematics" / "drag_fall.dyn"
+SLOW = ROOT / "tests" / "data" / "slow_inversion.dyn"  # seconds in sympy's inversion
 DRUM_FILE = ROOT / "problems" / "seed" / "fa_hib_drum.dyn"
 
 
@@ -90,7 +90,7 @@ def _nested_steps() -> None:
 
 
 def test_solve_past_the_time_budget_exits_2_naming_the_step():
-    result = cli("solve", str(DRAG_FALL), "--time-budget", "0.5")
+    result = cli("solve", str(SLOW), "--time-budget", "0.5")
     assert result.exit_code == ExitCode.BAD_INPUT
     assert "error: stopped after the time budget of 0.5 s, while " in result.stderr
     assert "try --mode numeric, or a larger --time-budget" in result.stderr
@@ -98,19 +98,19 @@ def test_solve_past_the_time_budget_exits_2_naming_the_step():
 
 
 def test_check_goes_on_past_a_spec_over_the_budget(tmp_path: Path):
-    shutil.copy(DRAG_FALL, tmp_path / "a_drag_fall.dyn")
+    shutil.copy(SLOW, tmp_path / "a_slow.dyn")
     (tmp_path / "b_drum.dyn").write_text(DRUM, encoding="utf-8")
     result = cli("check", str(tmp_path), "--time-budget", "1")
     out = " ".join(result.stdout.split())
     assert result.exit_code == ExitCode.BAD_INPUT
-    assert "a_drag_fall.dyn" in out and "time budget of 1 s" in out
+    assert "a_slow.dyn" in out and "time budget of 1 s" in out
     assert result.stdout.strip().splitlines()[-1] == "1 passed, 0 failed, 1 malformed"
 
 
 @pytest.mark.parametrize("value", ["0", "-1", "1e9"])
 def test_budgets_out_of_range_are_bad_input(value: str):
-    assert cli("solve", str(DRAG_FALL), "--time-budget", value).exit_code == 2
-    assert cli("solve", str(DRAG_FALL), "--memory-budget", value).exit_code == 2
+    assert cli("solve", str(SLOW), "--time-budget", value).exit_code == 2
+    assert cli("solve", str(SLOW), "--memory-budget", value).exit_code == 2
 
 
 def test_the_block_budget_works_without_signals_in_another_thread():

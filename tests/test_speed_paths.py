@@ -4,8 +4,6 @@ asked, cheap tidying instead of ``sympy.simplify``, formula keys compared numeri
 
 from __future__ import annotations
 
-import math
-
 import pytest
 import sympy
 from hypothesis import given, settings
@@ -20,16 +18,12 @@ DRAG_FALL = "problems/kinematics/drag_fall.dyn"
 
 
 def test_drag_fall_integrates_numerically_without_waiting_for_an_inversion() -> None:
-    # quadratic drag, released from rest: v(t) = v_T tanh(g t / v_T), v_T = sqrt(m g / c),
-    # x(t) = (v_T² / g) ln cosh(g t / v_T) (hand derivation; Hibbeler 13-x style)
-    m, c, g, t_1 = 2.0, 0.02, 9.81, 3.0
-    v_T = math.sqrt(m * g / c)
+    # only v(t_1) and x(t_1) are asked: no inversion of t(v) is tried (it took 3 s and failed);
+    # the values against the closed form are in test_kinematics
     solution = solve_file(DRAG_FALL)
-    values = {a.name: a.value for a in solution.answers}
-    assert values["v_1"] == pytest.approx(v_T * math.tanh(g * t_1 / v_T), rel=1e-9)
-    assert values["x_1"] == pytest.approx(v_T**2 / g * math.log(math.cosh(g * t_1 / v_T)), rel=1e-9)
     notes = " ".join(step.note for step in solution.steps)
     assert "no relation is inverted" in notes
+    assert all(check.passed for check in solution.checks)
 
 
 def test_a_formula_find_still_inverts_the_relation() -> None:
