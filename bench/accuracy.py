@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import re
 import sys
 import time
 from collections.abc import Iterable
@@ -30,6 +29,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 import sympy  # noqa: E402
+from report import write_section  # noqa: E402
 
 from dynsolve.errors import DynsolveError  # noqa: E402
 from dynsolve.pipeline import solve_spec  # noqa: E402
@@ -175,15 +175,9 @@ def table(rows: list[Row], modes: list[str], ks: list[int]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write(section: str) -> None:
-    """Replace (or append) the Speed–accuracy section of docs/benchmarks.md."""
-    text = DOC.read_text(encoding="utf-8")
-    pattern = re.compile(rf"{re.escape(HEADING)}\n.*?(?=\n## |\Z)", re.S)
-    if pattern.search(text):
-        text = pattern.sub(lambda _: section.rstrip("\n") + "\n", text)
-    else:
-        text = text.rstrip("\n") + "\n\n" + section
-    DOC.write_text(text, encoding="utf-8")
+def write(section: str, command: str) -> None:
+    """Replace (or append) the Speed–accuracy section of docs/benchmarks.md, stamped."""
+    write_section(HEADING, section.removeprefix(HEADING).strip(), command, DOC)
 
 
 def main() -> None:
@@ -200,7 +194,7 @@ def main() -> None:
     section = table(rows, modes, ks)
     print(section)
     if not args.no_write:
-        write(section)
+        write(section, " ".join(["python bench/accuracy.py", *sys.argv[1:]]))
 
 
 if __name__ == "__main__":

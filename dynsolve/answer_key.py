@@ -251,11 +251,13 @@ def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdi
 def _zero_symbolically(difference: sympy.Expr) -> bool:
     """``difference`` shown to be 0 by cheap tidying, or by ``simplify`` when it is small and
     exact (floats never cancel exactly: there the numeric test is the answer)."""
+    if difference.has(sympy.Float):
+        return False
     if tidy(difference) == 0:
         return True
-    if difference.has(sympy.Float) or sympy.count_ops(difference) > EQUIVALENCE_SIMPLIFY_OPS:
-        return False
-    return sympy.simplify(difference) == 0
+    return (
+        sympy.count_ops(difference) <= EQUIVALENCE_SIMPLIFY_OPS and sympy.simplify(difference) == 0
+    )
 
 
 def _complex_value(expr: sympy.Expr) -> complex | None:

@@ -33,6 +33,7 @@ def real_value(
 
 SIMPLIFY_OPS = 40  # sympy.simplify, the last resort, only on forms at most this large
 EXPAND_OPS = 60  # distributing products only on forms at most this large
+CANCEL_OPS = 0  # without a symbolic denominator, cancel only forms at most this large
 
 
 @cacheit  # the model asks for the same forms again and again (a third are repeats)
@@ -73,16 +74,23 @@ def _size(expr: sympy.Expr) -> tuple[int, int]:
 
 
 def _cheap_forms(expr: sympy.Expr) -> list[sympy.Expr]:
-    """The canonical forms :func:`tidy` chooses from (each costs about one ``cancel``)."""
-    forms = [expr, sympy.together(expr), sympy.factor_terms(expr)]
+    """The canonical forms :func:`tidy` chooses from; the costlier ones only where they can
+    change the form (a symbolic denominator or a small form for ``cancel``, a product of a
+    sum for ``expand_mul``, a root for ``powsimp``, a sine or cosine for Pythagoras)."""
+    forms = [expr, sympy.factor_terms(expr)]
     distributable = [expr]
-    try:
-        cancelled = sympy.cancel(expr)
-        forms += [cancelled, sympy.factor_terms(cancelled)]
-        distributable.append(cancelled)
-    except sympy.PolynomialError:  # a form cancel cannot treat as a rational function
-        pass
-    forms += [sympy.expand_mul(f) for f in distributable if sympy.count_ops(f) <= EXPAND_OPS]
+    denominator = _symbolic_denominator(expr)
+    if denominator:
+        forms.append(sympy.together(expr))
+    if denominator or sympy.count_ops(expr) <= CANCEL_OPS:
+        try:
+            cancelled = sympy.cancel(expr)
+            forms += [cancelled, sympy.factor_terms(cancelled)]
+            distributable.append(cancelled)
+        except sympy.PolynomialError:  # a form cancel cannot treat as a rational function
+            pass
+    if any(any(f.is_Add for f in m.args) for m in expr.atoms(sympy.Mul)):
+        forms += [sympy.expand_mul(f) for f in distributable if sympy.count_ops(f) <= EXPAND_OPS]
     if any(p.exp.is_Rational and not p.exp.is_Integer for p in expr.atoms(sympy.Pow)):
         forms += [sympy.powsimp(f) for f in distributable]  # sqrt(3)*sqrt(x) = sqrt(3*x)
     arguments = {f.args[0] for f in expr.atoms(sympy.sin, sympy.cos)}
@@ -92,7 +100,12 @@ def _cheap_forms(expr: sympy.Expr) -> list[sympy.Expr]:
             replaced = form.subs(one)
             if replaced != form:
                 forms += [replaced, sympy.factor_terms(sympy.cancel(replaced))]
-    return forms
+    return list(dict.fromkeys(forms))  # each distinct form once, in order
+
+
+def _symbolic_denominator(expr: sympy.Expr) -> bool:
+    """A power with a negative exponent of something with a symbol (``1/(a + b)``, ``a**-2``)."""
+    return any(p.exp.is_negative and p.base.free_symbols for p in expr.atoms(sympy.Pow))
 
 
 def _worth_simplifying(expr: sympy.Expr) -> bool:

@@ -36,7 +36,16 @@ from dynsolve.expressions import to_sympy
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.oneline_events import EVENTS, QUANTITIES, find_event
 from dynsolve.names import latex_name, pretty
-from dynsolve.principles.rectilinear import KINDS, Motion, T, V, X, integrate_motion
+from dynsolve.numbers import real_value
+from dynsolve.principles.rectilinear import (
+    KINDS,
+    Motion,
+    MotionBlowsUp,
+    T,
+    V,
+    X,
+    integrate_motion,
+)
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import EquationRow, Formula, Step
 from dynsolve.sections import combine_sections
@@ -381,7 +390,16 @@ def _target(
         raise SpecError(f"t(v) could not be found from {motion.given}", where, hint=hint)
     numeric = None
     if name not in motion.formulas and numbers is not None and argument not in VARIABLES:
-        numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
+        try:
+            numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
+        except MotionBlowsUp as blow_up:
+            end = real_value(symbols[argument], numbers[0])
+            raise SpecError(
+                f"{ref.function}(t) is not finite at t = {blow_up.time:.6g} s, before "
+                f"{argument} = {end:.6g} s: the motion blows up there (found by integrating it)",
+                where,
+                hint="ask for a time before it, or check the law's sign and the initial conditions",
+            ) from None
     if numeric is not None:
         motion = replace(motion, formulas={**motion.formulas, name: numeric})
         argument = variable  # already evaluated at the given

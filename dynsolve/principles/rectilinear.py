@@ -310,7 +310,69 @@ def integrate_numerically(
         x, v = state
         return [v, rate({"a(t)": t, "a(v)": v, "a(x)": x}[kind])]
 
+    with step("checking the motion stays finite (scipy ODE)"):
+        escape = escape_time(a, kind, t0, x0, v0, t1)
+    if escape is not None:
+        raise MotionBlowsUp(escape)
     with step("integrating the motion numerically (mpmath ODE)"):
         solution = mpmath.odefun(slopes, t0, [x0, v0])
         x, v = solution(t1)
     return float(x), float(v)
+
+
+class MotionBlowsUp(ArithmeticError):
+    """x or v grows without bound before the time asked for; ``time`` is where it does."""
+
+    def __init__(self, time: float) -> None:
+        super().__init__(f"the motion blows up at t = {time:.6g}")
+        self.time = time
+
+
+BLOW_UP_FACTOR = 1e12  # x or v this many times its natural scale: taken as unbounded
+
+
+def escape_time(
+    a: sympy.Expr, kind: str, t0: float, x0: float, v0: float, t1: float
+) -> float | None:
+    """The time before ``t1`` at which the motion leaves every finite bound, or None.
+
+    A float64 integration (scipy's ``solve_ivp``, DOP853) from t₀ that stops when x or v
+    exceeds ``BLOW_UP_FACTOR`` times its natural scale, or when the step size collapses:
+    mpmath's Taylor solver would otherwise creep towards the singularity forever.
+
+    >>> escape_time(V**2, "a(v)", 0.0, 0.0, 1.0, 2.0)  # v = 1/(1 − t)
+    1.0
+    >>> escape_time(-V, "a(v)", 0.0, 0.0, 2.0, 1.0) is None
+    True
+    """
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    variable = {"a(t)": T, "a(v)": V, "a(x)": X}[kind]
+    rate = sympy.lambdify(variable, a, "numpy")
+    span = t1 - t0
+    a0 = float(rate({"a(t)": t0, "a(v)": v0, "a(x)": x0}[kind]))
+    v_scale = max(abs(v0), abs(a0) * span, abs(x0) / span, 1e-300)
+    x_scale = max(abs(x0), v_scale * span)
+
+    def slopes(t: float, state: np.ndarray) -> list[float]:
+        x, v = state
+        return [v, rate({"a(t)": t, "a(v)": v, "a(x)": x}[kind])]
+
+    def unbounded(t: float, state: np.ndarray) -> float:
+        return BLOW_UP_FACTOR - max(abs(state[0]) / x_scale, abs(state[1]) / v_scale)
+
+    unbounded.terminal = True  # type: ignore[attr-defined]
+    with np.errstate(all="ignore"):
+        run = solve_ivp(
+            slopes,
+            (t0, t1),
+            [x0, v0],
+            method="DOP853",
+            rtol=1e-10,
+            atol=[1e-12 * x_scale, 1e-12 * v_scale],
+            events=unbounded,
+        )
+    if run.status == 1 or (run.status == -1 and run.t[-1] < t1):
+        return float(round(run.t[-1], 6 - int(np.floor(np.log10(abs(run.t[-1]) or 1.0)))))
+    return None

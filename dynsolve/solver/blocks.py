@@ -362,7 +362,8 @@ def _solve_nonlinear(
     letters = set().union(*(r.free_symbols for r in substituted)) - set(unknowns)
     names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
-        return solve_numerically(substituted, unknowns, "numeric mode")
+        every_root = _polynomial_roots(substituted, unknowns, options)
+        return every_root or solve_numerically(substituted, unknowns, "numeric mode")
     solution, reason = _solve_symbolically(residuals, substituted, unknowns, given, options)
     if solution is not None and options.mode == "numeric":
         note = f"numeric mode needs values for {names}; solved symbolically"
@@ -373,6 +374,41 @@ def _solve_nonlinear(
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
     return solve_numerically(substituted, unknowns, reason)
+
+
+POLYNOMIAL_DEGREE = 4  # numeric mode solves polynomial blocks up to this degree exactly
+POLYNOMIAL_UNKNOWNS = 4
+
+
+def _polynomial_roots(
+    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...], options: SolveOptions
+) -> BlockSolution | None:
+    """Numeric mode's path for a small polynomial block (numbers only): every root, from
+    sympy's algebraic solve, in floating point. Faster than a root search from many
+    starting points, and sure to miss none; None when the block is not such a polynomial
+    or sympy does not finish within the block's budget.
+
+    >>> import sympy
+    >>> w = sympy.Symbol("w")
+    >>> found = _polynomial_roots([sympy.Float(2) * w**2 - 8], (w,), SolveOptions(mode="numeric"))
+    >>> sorted(float(c.values[w]) for c in found.candidates), found.exhaustive
+    ([-2.0, 2.0], True)
+    """
+    if len(unknowns) > POLYNOMIAL_UNKNOWNS:
+        return None
+    for residual in residuals:
+        numerator = sympy.fraction(sympy.together(residual))[0]
+        if not numerator.is_polynomial(*unknowns):
+            return None
+        if sympy.Poly(numerator, *unknowns).total_degree() > POLYNOMIAL_DEGREE:
+            return None
+    exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
+    attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None)
+    if attempt is None or not attempt.candidates or attempt.free:
+        return None
+    candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
+    note = "numeric mode: a polynomial block, every root (sympy), in floating point"
+    return BlockSolution(unknowns, "numeric", candidates, note=note)
 
 
 def _solve_symbolically(
