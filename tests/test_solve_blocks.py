@@ -102,7 +102,17 @@ def test_numeric_mode_finds_roots_of_a_coupled_block():
     roots = {
         (round(float(c.values[x]), 9), round(float(c.values[y]), 9)) for c in solution.candidates
     }
-    assert roots and roots <= {(3, 4), (4, 3), (-3, -4), (-4, -3)}
+    # a small polynomial block: solved algebraically, every root in floats (issue 14)
+    assert roots == {(3, 4), (4, 3), (-3, -4), (-4, -3)}
+    assert solution.exhaustive and solution.method == "numeric"
+
+
+def test_numeric_mode_searches_a_transcendental_coupled_block():
+    # x = cos(y), y = x: the root x = y = 0.739085… (the Dottie number) by a numeric search,
+    # which cannot promise it found every root
+    solution = solve_block([x - sympy.cos(y), y - x], [x, y], {}, SolveOptions(mode="numeric"))
+    (candidate,) = solution.candidates
+    assert float(candidate.values[x]) == pytest.approx(0.7390851332, rel=1e-9)
     assert not solution.exhaustive
 
 

@@ -220,7 +220,9 @@ def substitute(expr: sympy.Expr, given: Mapping[sympy.Symbol, sympy.Expr]) -> sy
     >>> substitute(m * g, {m: 2, g: sympy.Rational(981, 100)})
     981/50
     """
-    return as_expr(expr).xreplace({k: as_expr(v) for k, v in given.items()})
+    expr = as_expr(expr)
+    # only the symbols present: converting every given per call is quadratic in big scenes
+    return expr.xreplace({k: as_expr(given[k]) for k in expr.free_symbols if k in given})
 
 
 def is_finite(value: sympy.Expr) -> bool:
@@ -250,7 +252,8 @@ def solve_block(
     [-sqrt(2)*sqrt(g*h), sqrt(2)*sqrt(g*h)]
     """
     unknowns = tuple(unknowns)
-    given = {k: as_expr(v) for k, v in given.items()}
+    present = set().union(*(as_expr(r).free_symbols for r in residuals))
+    given = {k: as_expr(given[k]) for k in present if k in given}  # not all: n² in big scenes
     try:
         matrix, rhs = sympy.linear_eq_to_matrix(list(residuals), list(unknowns))
     except NonlinearError:

@@ -74,7 +74,8 @@ def equation_residual(
         spot = spot_values(letters)
         sides = [side.xreplace(spot) for side in sides]
         terms = [term.xreplace(spot) for term in terms]
-    values = {k: as_expr(v) for k, v in substitution.items()} | spot
+    present = as_expr(equation.lhs).free_symbols | as_expr(equation.rhs).free_symbols
+    values = {k: as_expr(substitution[k]) for k in present if k in substitution} | spot
     inner = [term_size(as_expr(side), values) for side in (equation.lhs, equation.rhs)]
     absolute, relative = _measure(sides, terms + [sympy.Float(x) for x in inner])
     return Residual(index, absolute, relative, evaluated=not letters)

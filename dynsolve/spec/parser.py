@@ -64,6 +64,7 @@ _SPACES = str.maketrans({"\u00a0": " ", "\u2009": " ", "\u202f": " ", "\u2007": 
 MAX_LINES = 5000
 MAX_LINE_LENGTH = 1000
 MAX_DEPTH = 40
+CHAIN_STEP = 6  # operations of one flat sum (or product) per level of nesting
 MAX_DIGITS = 40
 MAX_LITERAL_EXPONENT = 100
 MAX_POWER = 64
@@ -419,6 +420,8 @@ def _parse(
 
 
 _OPERATIONS = frozenset(("add", "sub", "mul", "div", "pow", "neg", "pos", "call"))
+_FAMILIES = {"add": "sum", "sub": "sum", "mul": "product", "div": "product"}
+_CHAINS = frozenset(("sum", "product"))  # a chain a + b - c + … nests no deeper than a + b
 
 
 def parse_answer_cell(text: str, file: str = "<cell>", line: int = 1) -> Answer:
@@ -466,13 +469,18 @@ def parse_quantity(text: str, file: str = "<value>", line: int = 1, offset: int 
 
 
 def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
-    """Bound the nesting of operations (each operator or call is one level)."""
-    stack: list[tuple[Any, int]] = [(tree, 0)]
+    """Bound the nesting of operations: each operator or call is one level, except along a
+    flat chain of sums (or of products), which counts one level per ``CHAIN_STEP``
+    operations, so a 100-term sum is allowed and the true depth stays below
+    ``MAX_DEPTH * CHAIN_STEP`` (the recursion of every walker of the tree stays bounded)."""
+    stack: list[tuple[Any, int, str, int]] = [(tree, 0, "", 0)]
     while stack:
-        node, depth = stack.pop()
+        node, depth, parent, run = stack.pop()
         if not isinstance(node, lark.Tree):
             continue
-        if node.data in _OPERATIONS:
+        family = _FAMILIES.get(node.data, node.data)
+        run = run + 1 if family in _CHAINS and family == parent else 0
+        if node.data in _OPERATIONS and run % CHAIN_STEP == 0:
             depth += 1
         if depth > MAX_DEPTH:
             token = next((c for c in node.children if isinstance(c, Token)), None)
@@ -484,7 +492,7 @@ def _check_depth(tree: lark.Tree, file: str, line: int, offset: int) -> None:
                 Position(file, line, column),
                 hint="split it into several equations with intermediate names",
             )
-        stack.extend((child, depth) for child in node.children)
+        stack.extend((child, depth, family, run) for child in node.children)
 
 
 _LINE_KINDS = {
