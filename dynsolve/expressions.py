@@ -18,7 +18,7 @@ from collections.abc import Callable, Mapping
 import sympy
 
 from dynsolve.magnitude import Bound, OutOfRange, check_operation, value_bound
-from dynsolve.spec.ast import Call, Expr, Name, Num, Unary
+from dynsolve.spec.ast import Binary, Call, Expr, Name, Num, Unary
 
 _FUNCTIONS: dict[str, Callable[..., sympy.Expr]] = {
     "sin": sympy.sin,
@@ -84,12 +84,10 @@ def _build(
         args = [_build(a, symbols, known) for a in expr.args]
         _checked(expr.function, args, known, expr)
         return _FUNCTIONS[expr.function](*args)
+    if isinstance(expr, Binary) and expr.op in "+-":
+        return _sum(expr, symbols, known)
     left, right = _build(expr.left, symbols, known), _build(expr.right, symbols, known)
-    _checked(expr.op.replace("-", "+"), [left, right], known, expr)
-    if expr.op == "+":
-        return left + right
-    if expr.op == "-":
-        return left - right
+    _checked(expr.op, [left, right], known, expr)
     if expr.op == "*":
         return left * right
     if expr.op == "/":
@@ -99,6 +97,23 @@ def _build(
         # arithmetic on it ran until the time budget; a 30-digit exponent is exact enough
         right = sympy.Float(right, 30)
     return left**right
+
+
+def _sum(
+    expr: Binary, symbols: Mapping[str, sympy.Expr], known: Mapping[sympy.Symbol, Bound]
+) -> sympy.Expr:
+    """A chain ``a + b - c + …`` built as one sum: the parser nests it to the left, and
+    adding term by term re-sorts (and re-bounds) the growing sum each time, n² for n terms."""
+    terms: list[sympy.Expr] = []
+    node: Expr = expr
+    while isinstance(node, Binary) and node.op in "+-":
+        right = _build(node.right, symbols, known)
+        terms.append(right if node.op == "+" else -right)
+        node = node.left
+    terms.append(_build(node, symbols, known))
+    terms.reverse()
+    _checked("+", terms, known, expr)
+    return sympy.Add(*terms)
 
 
 def _checked(
