@@ -125,10 +125,13 @@ def significant_figures(number: str) -> int:
 
 
 def decimal_digits(number: str) -> int:
-    """Digits written after the decimal point (of the mantissa, before any exponent).
+    """The decimal place the number is written to: digits after the point, less the power
+    of ten (``1.5e2`` = 150 is written to the tens, -1; ``4.52e-1`` = 0.452 to 3 decimals).
 
     >>> decimal_digits("4.520"), decimal_digits("12"), decimal_digits("1.5e2")
-    (3, 0, 1)
+    (3, 0, -1)
+    >>> decimal_digits("4.52e-1"), decimal_digits("2E+3")
+    (3, -3)
     """
-    mantissa = number.lower().split("e")[0]
-    return len(mantissa.partition(".")[2])
+    mantissa, _, exponent = number.lower().partition("e")
+    return len(mantissa.partition(".")[2]) - (int(exponent) if exponent else 0)

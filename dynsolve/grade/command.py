@@ -72,6 +72,7 @@ def grade(request: GradeRequest, progress: Callable[[int, int], None] | None = N
     warnings = list(sheet.warnings)
     if request.atol_text:
         rules = _with_atol(rules, keys, request.atol_text, warnings)
+    warnings += zero_key_warnings(keys, rules)
     doctor = Diagnoser(spec, request.options) if request.diagnose else None
     journal = None
     anchor = request.report or request.json or request.gradebook
@@ -104,6 +105,33 @@ def _keys(request: GradeRequest, spec: object, sheet: AnswerSheet) -> Keys:
         return variant_keys(spec, {}, request.options)  # type: ignore[arg-type]  # says why
     variants = read_variants(request.variants)
     return variant_keys(spec, variants, request.options)  # type: ignore[arg-type]
+
+
+def zero_key_warnings(keys: Keys, rules: dict[str, Rule]) -> list[str]:
+    """A warning per part whose key is exactly 0 for some student while its rule has no
+    absolute tolerance: a relative tolerance (or significant figures) of 0 is 0, so only an
+    answer of exactly 0 would pass.
+
+    >>> from dynsolve.grade.semantics import Key
+    >>> from dynsolve.units import Dim
+    >>> keys = Keys({"a": Key("a", 0.0, Dim.of("acceleration"), "m/s^2")})
+    >>> zero_key_warnings(keys, {"a": Rule()})[0].split(":")[0]
+    'the key of a is 0'
+    """
+    out = []
+    for part, rule in rules.items():
+        if rule.atol:
+            continue
+        tables = [keys.shared, *keys.per_student.values()]
+        zeros = [t[part] for t in tables if part in t and t[part].value == 0]
+        if zeros:
+            unit = zeros[0].unit
+            out.append(
+                f"the key of {part} is 0: with no absolute tolerance only an answer of exactly 0 "
+                f"passes; set one, e.g. 'grading:' line '{part} atol 0.01 {unit}' or "
+                f"--atol '0.01 {unit}'"
+            )
+    return out
 
 
 def _with_atol(

@@ -8,8 +8,9 @@ positive; a direction word gives the sign). The comparison is one of:
   within 0.51 units of the N-th significant figure of the key (PrairieLearn's
   ``pl-number-input`` sigfig rule), so with a key of 4.5168 and N = 3, ``4.52`` and
   ``4.517`` pass, ``4.5`` fails (too few figures) and ``4.53`` fails (wrong value);
-- ``decdig N``: at least N decimals written, and within 0.51·10^-N of the key expressed
-  in the unit the student wrote.
+- ``decdig N``: written to at least N decimal places, and within 0.51·10^-N of the key
+  expressed in the unit the student wrote. In e-notation the place is the mantissa's
+  decimals less the exponent: ``4.52e-1`` is written to 3 decimals, ``1.5e2`` to the tens.
 
 A right magnitude with the wrong sign or direction, or a right value with too few
 figures, earns the ``partial`` credit (0 unless set).
@@ -111,10 +112,13 @@ def judge(text: str, key: Key, rule: Rule, header_unit: str = "") -> PartResult:
 def _compare(cell: Cell, key: Key, rule: Rule) -> PartResult:
     short = _short(cell, rule)
     if short:  # fewer figures or decimals than asked: judged to the figures written
-        written = replace(rule, sigfig=significant_figures(cell.number)) if rule.sigfig else rule
-        if rule.decdig:
-            written = replace(rule, decdig=decimal_digits(cell.number))
-        if matches(cell.value, key, written, cell):
+        if rule.decdig:  # to the decimal place written (0 or less: units, tens, …)
+            place = SIGFIG_SLACK * 10.0 ** -decimal_digits(cell.number)
+            factor = cell.factor or key.factor
+            right = abs(cell.value - key.value) / factor <= place
+        else:
+            right = matches(cell.value, key, replace(rule, sigfig=significant_figures(cell.number)))
+        if right:
             return PartResult("sigfig", rule.partial, short, cell.value)
     elif matches(cell.value, key, rule, cell):
         return PartResult("correct", 1.0, "", cell.value)
@@ -135,7 +139,7 @@ def _short(cell: Cell, rule: Rule) -> str:
         plural = "s" * (figures != 1)
         return f"{cell.number} has {figures} significant figure{plural}; give {rule.sigfig}"
     if rule.decdig and decimal_digits(cell.number) < rule.decdig:
-        return f"{cell.number}: give {rule.decdig} decimals"
+        return f"{cell.number} is written to fewer than {rule.decdig} decimals; give {rule.decdig}"
     return ""
 
 
