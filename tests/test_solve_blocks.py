@@ -253,3 +253,21 @@ def test_symbolic_residual_is_spot_checked():
 def test_numeric_mode_with_free_symbols_notes_why_it_stayed_symbolic():
     solution = solve_block([v**2 - 2 * g * h], [v], {}, SolveOptions(mode="numeric"))
     assert solution.note == "numeric mode needs values for g, h; solved symbolically"
+
+
+@pytest.mark.parametrize("name", ["bob_cord_slack", "dome_contact_lost"])
+def test_numeric_mode_starts_angles_near_one_radian_at_any_scale(name):
+    # regression (bench/accuracy.py, 2026-11-24): with lengths ×1e9 every unknown started at
+    # the data's scale, so the angle where the cord goes slack was found 1e12 rad away and
+    # rejected: no valid root. Scaled answers must still match the key (angles unchanged).
+    from pathlib import Path
+
+    from dynsolve.pipeline import solve_spec
+    from dynsolve.scaling import scale_spec
+    from dynsolve.spec.parser import parse_file
+
+    path = Path(__file__).resolve().parent.parent / "problems" / "scenes" / f"{name}.dyn"
+    solution = solve_spec(scale_spec(parse_file(path), 9), SolveOptions(mode="numeric"))
+    theta = next(a for a in solution.answers if a.name == "theta")
+    unscaled = next(a for a in solve_spec(parse_file(path)).answers if a.name == "theta")
+    assert theta.value == pytest.approx(unscaled.value, rel=1e-12)

@@ -415,3 +415,19 @@ def test_the_example_class_variants_file_is_what_its_command_writes(tmp_path: Pa
     assert result.exit_code == ExitCode.OK, result.output
     assert out.read_text() == (folder / "variants.csv").read_text()
     assert len(read_variants(out)) == 30
+
+
+@pytest.mark.parametrize("path", [DRUM, WHEEL], ids=["drum", "wheel_couple"])
+def test_the_closed_form_keeps_exactly_the_draws_full_solves_keep(path: Path) -> None:
+    # issue 9: make_variants keeps first draws the closed form answers on the base branch
+    # without a full solve each; the variants must be those of a full solve per student
+    from dynsolve.grade.generate import _checked_draw, signature
+    from dynsolve.system import SolveOptions
+
+    spec = parse_file(path)
+    plan, students = vary_plan(spec), [f"s{i}" for i in range(40)]
+    options = SolveOptions()
+    base = signature(solve_spec(with_variant(spec, {}, "base"), options))
+    slow = {s: _checked_draw(spec, plan, 3, s, base, options) for s in students}
+    fast = {row.student: row.cells for row in make_variants(spec, students, seed=3)}
+    assert fast == slow

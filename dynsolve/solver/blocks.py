@@ -533,7 +533,7 @@ def solve_numerically(
     if candidates:
         note = f"{reason}; solved numerically"
     else:
-        starts = len(_starting_points(residuals, len(unknowns)))
+        starts = len(_starting_points(residuals, unknowns))
         note = f"{reason}; numeric search from {starts} starting points found no root"
     return BlockSolution(tuple(unknowns), "numeric", candidates, note=note, exhaustive=False)
 
@@ -555,7 +555,7 @@ def numeric_roots(
     jacobian = mpmath_function(unknowns, matrix)
     guard = finite_guard(unknowns, [*residuals, *matrix])
     found: list[list[mpmath.mpc | mpmath.mpf]] = []
-    for start in _starting_points(residuals, len(unknowns)):
+    for start in _starting_points(residuals, unknowns):
         root = _find_root(function, jacobian, start, size, guard)
         if root is None or _seen(root, found):
             continue
@@ -600,12 +600,23 @@ def _term_size(residual: sympy.Expr) -> sympy.Expr:
     return sympy.Add(*(sympy.Abs(t) for t in terms))
 
 
-def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float]]:
-    """Starting vectors: each factor of START_FACTORS times 1 and times the data's scale.
+def _starting_points(
+    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol]
+) -> list[list[float]]:
+    """Starting vectors: each factor of START_FACTORS times 1 and times the data's scale;
+    and, where some unknowns are angles (arguments of sin, cos, tan), the angles near 1
+    and the others at the data's scale: a pendulum of length 1e9 m has speeds of 1e9 but
+    its angle is still about 1 rad (starting it at 1e9 rad finds roots 1e12 rad away).
 
     In several unknowns the entries are spread a little (1, 1.13, 1.26, ...) so a
     symmetric system does not start on its singular diagonal.
+
+    >>> x, th = sympy.symbols("x theta")
+    >>> starts = _starting_points([x - 10**9 * sympy.cos(th)], [x, th])
+    >>> [1e8, 1.13] in [[round(a, 2) for a in s] for s in starts]
+    True
     """
+    n = len(unknowns)
     scales = [1.0]
     numbers = [abs(float(a)) for r in residuals for a in r.atoms(sympy.Number) if a != 0]
     numbers = [x for x in numbers if 0 < x < math.inf]  # an underflow is no scale for log
@@ -613,7 +624,16 @@ def _starting_points(residuals: Sequence[sympy.Expr], n: int) -> list[list[float
         typical = math.exp(sum(math.log(x) for x in numbers) / len(numbers))
         if not 0.3 < typical < 3:
             scales.append(typical)
-    return [[s * f * (1 + 0.13 * i) for i in range(n)] for s in scales for f in START_FACTORS]
+    starts = [[s * f * (1 + 0.13 * i) for i in range(n)] for s in scales for f in START_FACTORS]
+    trigonometric = (sympy.sin, sympy.cos, sympy.tan)
+    inside = set().union(*(f.free_symbols for r in residuals for f in r.atoms(*trigonometric)))
+    angles = [u in inside for u in unknowns]
+    if len(scales) > 1 and any(angles) and not all(angles):
+        starts += [
+            [(1.0 if angles[i] else scales[1] * f) * (1 + 0.13 * i) for i in range(n)]
+            for f in START_FACTORS
+        ]
+    return starts
 
 
 def _find_root(
