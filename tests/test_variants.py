@@ -431,3 +431,18 @@ def test_the_closed_form_keeps_exactly_the_draws_full_solves_keep(path: Path) ->
     slow = {s: _checked_draw(spec, plan, 3, s, base, options) for s in students}
     fast = {row.student: row.cells for row in make_variants(spec, students, seed=3)}
     assert fast == slow
+
+
+def test_a_variant_whose_solve_runs_past_its_budget_is_redrawn_then_refused(monkeypatch) -> None:
+    # issue 9: the per-variant full solve runs under a budget in a worker, like `dynsolve
+    # solve`; a wheel variant that rolls/slips needs a full solve, and with a budget no solve
+    # can meet, every draw is refused and the error says why, naming the student
+    import dynsolve.grade.generate as generate
+    from dynsolve.budget import Budget
+
+    monkeypatch.setattr(generate, "VARIANT_BUDGET", Budget(seconds=0.001))
+    monkeypatch.setattr(generate, "_closed_form_accepts", lambda *args: {})
+    with pytest.raises(SpecError) as caught:
+        make_variants(parse_file(WHEEL), ["alice"], seed=1)
+    assert "student alice: no valid variant in 20 draws" in caught.value.message
+    assert "time budget" in caught.value.message

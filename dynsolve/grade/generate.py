@@ -28,6 +28,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from dynsolve.budget import Budget
 from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.format import sig
 from dynsolve.grade.substitute import read_cell, with_variant
@@ -40,6 +41,7 @@ from dynsolve.system import SolveOptions
 from dynsolve.units import from_base, natural_unit
 
 MAX_ATTEMPTS = 20
+VARIANT_BUDGET = Budget(seconds=60.0)  # one variant's full solve (every bundled one: < 6 s)
 Units = str  # "si", "us" or "both"
 
 
@@ -179,14 +181,27 @@ def _checked_draw(
 def _why_not(
     spec: Spec, cells: dict[str, str], student: str, base: Signature, options: SolveOptions
 ) -> str:
-    """Why this variant cannot be used ("" when it can)."""
-    from dynsolve.pipeline import solve_spec
+    """Why this variant cannot be used ("" when it can). Its full solve runs in a worker
+    process under ``VARIANT_BUDGET`` (as ``dynsolve solve`` does): a variant that would
+    solve for ever is redrawn, not waited for."""
+    from dynsolve.budget import WorkerFailed, run
 
     try:
-        solution = solve_spec(with_variant(spec, cells, student), options)
+        solution = run(_solve_variant, (spec, cells, student, options), VARIANT_BUDGET)
     except DynsolveError as error:
         return error.message
+    except WorkerFailed as error:  # a bug: said, and the variant not used
+        return f"internal error while solving it: {str(error).strip().splitlines()[-1]}"
     return base.differs(signature(solution), allows_changes(spec))
+
+
+def _solve_variant(
+    spec: Spec, cells: dict[str, str], student: str, options: SolveOptions
+) -> Solution:
+    """The worker's job: one student's variant solved (module level: ``spawn`` pickles it)."""
+    from dynsolve.pipeline import solve_spec
+
+    return solve_spec(with_variant(spec, cells, student), options)
 
 
 def us_twin(spec: Spec, cells: dict[str, str]) -> dict[str, str]:
