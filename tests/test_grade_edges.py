@@ -67,3 +67,42 @@ def test_an_absolute_tolerance_grades_around_a_zero_key(tmp_path):
         "s2": "correct",
     }
     assert not any("key of a is 0" in w for w in run.warnings)
+
+
+ROD = """given:
+  m = 10 kg
+  L = 2 m
+  g = 9.81 m/s^2
+scene:
+  point O: (0, 0)
+  body rod: mass m, rod L, at (L/2, 0)
+  pin rod at O
+  gravity
+find: alpha = alpha(rod) [rad/s^2]
+"""
+
+
+def test_i_g_for_i_o_is_diagnosed_in_a_scene(tmp_path):
+    # a rod pinned at one end, released horizontal: alpha = (m g L/2)/(m L²/3) = 3g/(2L)
+    # = 7.36 rad/s² cw; with I_G = m L²/12 for I_O: alpha = 6g/L = 29.4 rad/s² (by hand)
+    problem, answers = tmp_path / "rod.dyn", tmp_path / "a.csv"
+    problem.write_text(ROD, encoding="utf-8")
+    answers.write_text("student,alpha\ns1,7.36 rad/s^2 cw\ns2,29.4 rad/s^2 cw\n", encoding="utf-8")
+    run = grade(GradeRequest(problem, answers))
+    parts = {r.student: r.parts["alpha"] for r in run.results}
+    assert parts["s1"]["verdict"] == "correct"
+    assert parts["s2"]["verdict"] == "wrong"
+    assert "parallel-axis" in parts["s2"]["feedback"]
+
+
+def test_i_g_for_i_o_is_diagnosed_on_each_students_variant(tmp_path):
+    # s1 has L = 3 m: 3g/(2L) = 4.905, with I_G: 6g/L = 19.62 rad/s²;
+    # s2 has L = 1 m: 14.715, with I_G: 58.86 rad/s² (by hand)
+    problem, answers, variants = tmp_path / "rod.dyn", tmp_path / "a.csv", tmp_path / "v.csv"
+    problem.write_text(ROD + "vary:\n  L = 1..3 m step 1\n", encoding="utf-8")
+    variants.write_text("student,L\ns1,3 m\ns2,1 m\n", encoding="utf-8")
+    answers.write_text("student,alpha\ns1,19.6 rad/s^2 cw\ns2,14.7 rad/s^2 cw\n", encoding="utf-8")
+    run = grade(GradeRequest(problem, answers, variants=variants))
+    parts = {r.student: r.parts["alpha"] for r in run.results}
+    assert parts["s2"]["verdict"] == "correct"
+    assert parts["s1"]["verdict"] == "wrong" and "parallel-axis" in parts["s1"]["feedback"]

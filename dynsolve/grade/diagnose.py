@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from dynsolve.grade.semantics import Key, Rule
+from dynsolve.principles.newton_euler import parallel_axis_forgotten
 from dynsolve.spec.ast import Binary, EquationStmt, Given, Name, Quantity, Spec
 from dynsolve.spec.parser import parse_unit
 from dynsolve.system import SolveOptions
@@ -104,6 +105,11 @@ class Diagnoser:
                 values = _solve(spec, self.options)
                 if values is not None:
                     self._mistakes.append(Mistake(sentence, values))
+            if _pinned_scene(self.spec):
+                with parallel_axis_forgotten():
+                    values = _solve(self.spec, self.options)
+                if values is not None:
+                    self._mistakes.append(Mistake(PINNED_I_G, values))
         return self._mistakes
 
     def _answer_side(self, part: str, keys: Mapping[str, Key]) -> list[tuple[str, float]]:
@@ -186,7 +192,48 @@ def variant_mistakes(
                 for name, answer in expected.answers.items()
             }
             out[student].append(Mistake(sentence, values))
+    if _pinned_scene(spec):
+        out = _merge(out, _forgotten_parallel_axis(spec, variants, options))
     return out
+
+
+PINNED_I_G = (
+    "I_G used for the moment of inertia about the pin (the parallel-axis term m r_G² forgotten)"
+)
+
+
+def _pinned_scene(spec: Spec) -> bool:
+    """A scene with a pinned body: where I about the pin may be mistaken for I_G."""
+    return any(stmt.kind == "pin" for stmt in spec.scene)
+
+
+def _forgotten_parallel_axis(
+    spec: Spec, variants: Mapping[str, Mapping[str, str]], options: SolveOptions
+) -> dict[str, list[Mistake]]:
+    """Every student's answers with I_G taken for I about the pin (scene mode)."""
+    from dynsolve.grade.cells import NEGATIVE
+    from dynsolve.grade.expected import expected_answers
+
+    try:
+        with parallel_axis_forgotten():
+            result = expected_answers(spec, variants, options)
+    except Exception:
+        return {}
+    out: dict[str, list[Mistake]] = {}
+    for student, expected in getattr(result, "students", result).items():
+        if not expected.error:
+            values = {
+                name: (-1.0 if answer.direction in NEGATIVE else 1.0) * answer.value
+                for name, answer in expected.answers.items()
+            }
+            out[student] = [Mistake(PINNED_I_G, values)]
+    return out
+
+
+def _merge(
+    first: dict[str, list[Mistake]], second: dict[str, list[Mistake]]
+) -> dict[str, list[Mistake]]:
+    return {student: first.get(student, []) + second.get(student, []) for student in first}
 
 
 def _variants(spec: Spec) -> list[tuple[str, Spec]]:

@@ -11,7 +11,9 @@ Nothing here solves; the result is an equation system and the diagrams as data.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -26,6 +28,28 @@ from dynsolve.units import Dim
 
 FORCE, ACCELERATION, LENGTH = Dim.of("force"), Dim.of("acceleration"), Dim.of("length")
 ANGULAR_ACCELERATION, MOMENT = Dim.of("angular_acceleration"), Dim.of("moment")
+
+
+# Set only by the grading diagnosis (dynsolve.grade.diagnose): the classic mistake of taking
+# I_G for the moment of inertia about a pin away from G, re-solved to name a student's number.
+PARALLEL_AXIS_FORGOTTEN: ContextVar[bool] = ContextVar("parallel_axis_forgotten", default=False)
+
+
+@contextmanager
+def parallel_axis_forgotten() -> Iterator[None]:
+    """Within the block, a pinned body's I about its pin is taken as I_G (the mistake).
+
+    >>> with parallel_axis_forgotten():
+    ...     PARALLEL_AXIS_FORGOTTEN.get()
+    True
+    >>> PARALLEL_AXIS_FORGOTTEN.get()
+    False
+    """
+    token = PARALLEL_AXIS_FORGOTTEN.set(True)
+    try:
+        yield
+    finally:
+        PARALLEL_AXIS_FORGOTTEN.reset(token)
 
 
 @dataclass(frozen=True)
@@ -693,7 +717,7 @@ class _Writer:
             self.suffix("r_G", body.name), r_G_value, LENGTH, f"distance {pin_name}–G"
         )
         I_O = body.I_G
-        if not on_axis:
+        if not on_axis and not PARALLEL_AXIS_FORGOTTEN.get():
             I_O = self.name_quantity(
                 self.suffix(f"I_{pin_name}", body.name),
                 tidy(body.I_G + m * r_G_value**2),
