@@ -121,11 +121,10 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
 def _simulation_checks(
     problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Check, ...]:
-    """The simulation cross-checks of a scene with a travel or stages (numpy and scipy are
-    imported only then: an instant's scene does not pay for them)."""
+    """The simulation cross-checks of a scene's travels (:mod:`dynsolve.simulate.legs`)."""
     if not (problem.scene.travels or problem.formulation.stages):
         return ()
-    from dynsolve.simulate.crosscheck import simulation_checks
+    from dynsolve.simulate.legs import simulation_checks
 
     return simulation_checks(problem, values)
 

@@ -45,3 +45,13 @@ def test_a_warm_run_does_not_import_pint(tmp_path: Path) -> None:
     env = {**os.environ, "DYNSOLVE_CACHE_DIR": str(tmp_path)}
     assert "pint" in _modules_after(code, env)  # a first run fills the empty cache
     assert "pint" not in _modules_after(code, env)
+
+
+def test_scenes_with_nothing_to_integrate_do_not_import_scipy():
+    # symbolic givens, or an 'until' travel: the cross-check only notes why it is not
+    # simulated (dynsolve.simulate.legs), so scipy's 0.35 s import is not paid
+    for spec in ("seed/we_seed_collar-symbolic.dyn", "scenes/bob_cord_slack.dyn"):
+        loaded = _modules_after(
+            f"from dynsolve.pipeline import solve_file\nsolve_file('problems/{spec}')"
+        )
+        assert "scipy" not in loaded, spec

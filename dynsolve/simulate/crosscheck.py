@@ -28,8 +28,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from dataclasses import replace
 
 import numpy as np
 import sympy
@@ -48,76 +47,12 @@ from dynsolve.simulate.equations import (
     straight_line,
 )
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
-
-if TYPE_CHECKING:
-    from dynsolve.modes.scene_mode import SceneProblem
+from dynsolve.simulate.legs import Leg
 
 AGREEMENT = 1e-6  # relative
 METHOD = "DOP853"
 HORIZON = 200.0  # the run gives up after this many times the travel's time scale
 LENGTH_UNITS = {"SI": "m", "FPS": "ft"}
-
-
-@dataclass(frozen=True)
-class Leg:
-    """One travel to simulate: the moving part of the scene, from the travel's start state
-    (its ``velocities``/``omegas``), and what the principle found at its end."""
-
-    label: str
-    scene: Scene
-    travel: Travel
-    speeds: Mapping[str, sympy.Expr]  # |v_G| at the end, per body
-    spins: Mapping[str, sympy.Expr]  # ω at the end (ccw positive), per body
-
-
-def simulation_checks(
-    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
-) -> tuple[Check, ...]:
-    """A check per travel of a solved scene problem (a note where it cannot be simulated)."""
-    formulation, scene = problem.formulation, problem.scene
-    substitution = {**problem.system.knowns, **values}
-    symbols, system = problem.symbols, problem.spec.system
-    legs: list[Leg] = []
-    notes: list[Check] = []
-    if formulation.stages:
-        for record in formulation.stages:
-            event = record.stage.event
-            if not isinstance(event, Travel):
-                continue
-            label = f"stage {record.stage.number}"
-            if record.scene is None:
-                notes.append(Check(f"simulation: {label}", True, "not simulated: " + _why(event)))
-                continue
-            end = formulation.states[record.stage.number]
-            legs.append(
-                Leg(
-                    label,
-                    record.scene,
-                    event,
-                    {n: sympy.sqrt(v[0] ** 2 + v[1] ** 2) for n, v in end.velocities.items()},
-                    dict(end.omegas),
-                )
-            )
-    elif len(scene.travels) == 1:
-        (travel,) = scene.travels.values()
-        if travel.kind == "for":
-            notes.append(Check("simulation", True, "not simulated: " + _why(travel)))
-        else:
-            legs.append(Leg("", scene, travel, formulation.speeds, formulation.spins))
-    symbolic = sorted(g.name for g in problem.givens if g.value is None and g.given is not None)
-    if symbolic:  # nothing to integrate: said once per travel, without building anything
-        why = f"not simulated: symbolic givens ({', '.join(symbolic)}) have no values"
-        return tuple(notes) + tuple(
-            Check(f"simulation: {leg.label}" if leg.label else "simulation", True, why)
-            for leg in legs
-        )
-    return tuple(notes) + tuple(simulate_leg(leg, symbols, substitution, system) for leg in legs)
-
-
-def _why(travel: Travel) -> str:
-    if travel.kind == "for":
-        return "a travel over an interval (impulse and momentum) is not simulated yet"
-    return "the moving part of the scene was not recorded"
 
 
 def simulate_leg(
@@ -192,7 +127,7 @@ def travel_motion(
         return mechanism(scene, param, symbols, values, what, "m", simplify), abs(distance)
     if travel.kind == "to":
         return _to_motion(scene, travel, symbols, values, simplify)
-    raise NotSimulable(f"a travel '{travel.kind}' is not simulated")
+    raise NotSimulable(f"a travel '{travel.kind}' is not simulated")  # see legs.SIMULATED_KINDS
 
 
 def _to_motion(
