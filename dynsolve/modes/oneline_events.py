@@ -244,7 +244,7 @@ def _turning_x(
     the nearest root ahead of x₀ (``back``: behind it, where the motion turns again)."""
     law = motion.formulas["v(x)"]
     squared = tidy(law**2)
-    roots = sympy.solve(sympy.Eq(squared, level**2), X)
+    roots = [tidy(r) for r in sympy.solve(sympy.Eq(squared, level**2), X, simplify=False)]
     sense = _sign(law.subs(X, x0), values) or _sign(motion.formulas["a(x)"].subs(X, x0), values)
     if not sense:
         raise ValueError("the particle starts at rest where a = 0: it never moves")

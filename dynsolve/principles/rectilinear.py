@@ -174,7 +174,7 @@ def crossing_times(
     if tidy(q - level) == 0:
         raise ValueError(f"{q} equals {level} at every time")
     try:
-        roots = sympy.solve(sympy.Eq(q, level), T)
+        roots = [tidy(r) for r in sympy.solve(sympy.Eq(q, level), T, simplify=False)]
     except NotImplementedError as error:
         raise ValueError(f"sympy cannot solve {q} = {level} for t") from error
     kept: list[sympy.Expr] = []
@@ -279,7 +279,9 @@ def _inverse(
         return None
     try:
         with time_budget(INVERT_BUDGET):
-            roots = sympy.solve(sympy.Eq(argument, relation), variable)
+            roots = [
+                tidy(r) for r in sympy.solve(sympy.Eq(argument, relation), variable, simplify=False)
+            ]
     except (NotImplementedError, ValueError, BudgetExceeded):
         return None
     for root in roots:
