@@ -15,7 +15,9 @@ Ratio = extrapolated per-variant time / vectorized evaluation time (target >= 10
 also against build + evaluation. Peak memory: traced Python allocations of a second,
 identical run (``tracemalloc``), and the process's peak resident size.
 
-    python bench/grading.py [--students 10000] [--sample 50] [--problem examples/grading/drum.dyn]
+    python bench/grading.py [--students 10000] [--sample 50] [--problem P] [--no-write]
+
+writes its table to the section 'Grading' of docs/benchmarks.md (bench/report.py).
 """
 
 from __future__ import annotations
@@ -31,6 +33,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from report import write_section  # noqa: E402
+
 from dynsolve.grade.expected import expected_answers, per_variant  # noqa: E402
 from dynsolve.grade.vary import draw, vary_plan  # noqa: E402
 from dynsolve.spec.parser import parse_file  # noqa: E402
@@ -39,12 +43,22 @@ from dynsolve.system import SolveOptions  # noqa: E402
 DEFAULT_PROBLEM = ROOT / "examples" / "grading" / "drum.dyn"
 
 
+HEADING = "## Grading: `bench/grading.py`"
+ABOUT = (
+    "Expected answers of every student, each with their own variant of the problem "
+    "(drawn as `dynsolve variants` draws them): the vectorized closed form against a full "
+    "solve per variant (timed on a sample, extrapolated). See the script's docstring for "
+    "what each figure includes."
+)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--students", type=int, default=10_000)
     parser.add_argument("--sample", type=int, default=50)
     parser.add_argument("--seed", type=int, default=2026)
     parser.add_argument("--problem", type=Path, default=DEFAULT_PROBLEM)
+    parser.add_argument("--no-write", action="store_true", help="print, do not update the doc")
     args = parser.parse_args()
 
     spec = parse_file(args.problem)
@@ -102,6 +116,12 @@ def main() -> None:
     width = max(len(name) for name, _ in rows)
     for name, value in rows:
         print(f"{name:<{width}}  {value}")
+    if not args.no_write:
+        body = "\n".join(
+            [ABOUT, "", "| figure | value |", "|---|---|"]
+            + [f"| {name} | {value} |" for name, value in rows]
+        )
+        write_section(HEADING, body, " ".join(["python bench/grading.py", *sys.argv[1:]]))
 
 
 if __name__ == "__main__":

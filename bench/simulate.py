@@ -10,7 +10,9 @@ integration (best of --repeat runs, alternating; the energy drift computed in bo
 the energy drift max |E(t) − E(0)| / scale. The ratio is dynsolve / hand at equal method
 and tolerance. Target: ratio ≤ 1.0 and drift ≤ 1e-9 at rtol 1e-12 (DOP853).
 
-    python bench/simulate.py [--repeat 9] [--methods RK45,DOP853,Radau,LSODA]
+    python bench/simulate.py [--repeat 9] [--methods RK45,DOP853,Radau,LSODA] [--no-write]
+
+writes its table to the section 'Simulation' of docs/benchmarks.md (bench/report.py).
 """
 
 from __future__ import annotations
@@ -28,6 +30,19 @@ from scipy.integrate import solve_ivp
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+HEADING = "## Simulation: `bench/simulate.py`"
+ABOUT = """dynsolve's integrator (`dynsolve/simulate/`: the equation of motion built from the scene,
+lambdified, integrated with `solve_ivp`) against a hand-written script of the same system in
+the same run: its Lagrangian written out by hand, lambdified with sympy, integrated by
+`solve_ivp` with the same method, tolerances (atol = rtol/100) and coordinate, its energy
+drift computed the same way. Two systems over 10 s: a compound pendulum (2-kg, 1-m bar
+pinned at its end) released from 60°, and the seed's 40-lb disk rolling against a wound
+spring under a 15 ft·lb couple (`problems/seed/rwe_seed_disk40lb.dyn`, FPS). Error: |q(10 s)
+− q_ref| / |q_ref|, the reference being the hand script at DOP853, rtol 1e-13. Time: best of
+the runs alternating dynsolve and the hand script, integration and drift only. Drift:
+max |Δ(T + V)| / max(T, range of V). Target: ratio ≤ 1.0, drift ≤ 1e-9 at rtol 1e-12."""
+
+from report import write_section  # noqa: E402
 
 from dynsolve.simulate.integrator import integrate  # noqa: E402
 from dynsolve.simulate.run import motion_of  # noqa: E402
@@ -117,7 +132,9 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=9)
     parser.add_argument("--methods", default="RK45,DOP853,Radau,LSODA")
     parser.add_argument("--rtols", default="1e-6,1e-8,1e-10,1e-12")
+    parser.add_argument("--no-write", action="store_true", help="print, do not update the doc")
     args = parser.parse_args()
+    builds: list[str] = []
     systems = {
         "compound pendulum, 60°": (parse_spec(PENDULUM, "pendulum.dyn"), hand_pendulum()),
         "rolling disk, wound spring (seed)": (
@@ -125,9 +142,10 @@ def main() -> None:
             hand_disk(),
         ),
     }
-    print("| system | method | rtol | error dynsolve | error hand | evaluations dynsolve / hand "
-          "| time dynsolve | time hand | ratio | drift dynsolve | drift hand |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    lines = [ABOUT, ""]
+    show(lines, "| system | method | rtol | error dynsolve | error hand | evaluations dynsolve / "
+         "hand | time dynsolve | time hand | ratio | drift dynsolve | drift hand |")  # fmt: skip
+    show(lines, "|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (spec, hand) in systems.items():
         from dynsolve.model.scene import build_scene
         from dynsolve.modes.equation_mode import givens_of
@@ -152,13 +170,27 @@ def main() -> None:
                 )
                 error_ours = abs(float(run.q[-1]) - reference) / size
                 error_hand = abs(q_hand - reference) / size
-                print(
+                show(
+                    lines,
                     f"| {name} | {method} | {rtol:.0e} | {error_ours:.1e} | {error_hand:.1e} "
                     f"| {run.evaluations} / {nfev} "
                     f"| {ours_time * 1e3:.1f} ms | {hand_time * 1e3:.1f} ms "
-                    f"| {ours_time / hand_time:.2f} | {run.drift:.1e} | {drift_hand:.1e} |"
+                    f"| {ours_time / hand_time:.2f} | {run.drift:.1e} | {drift_hand:.1e} |",
                 )
-        print(f"<!-- {name}: building the equation of motion from the scene took {build:.2f} s -->")
+        builds.append(f"{name} {build:.2f} s")
+    lines += [
+        "",
+        "Building the equation of motion from the scene, once: " + "; ".join(builds) + ".",
+    ]
+    if not args.no_write:
+        command = " ".join(["python bench/simulate.py", *sys.argv[1:]])
+        write_section(HEADING, "\n".join(lines), command)
+
+
+def show(lines: list[str], line: str) -> None:
+    """Print a table line as it is measured, and keep it for the document."""
+    print(line, flush=True)
+    lines.append(line)
 
 
 if __name__ == "__main__":
