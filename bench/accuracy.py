@@ -41,10 +41,13 @@ from dynsolve.system import SolveOptions  # noqa: E402
 DOC = ROOT / "docs" / "benchmarks.md"
 HEADING = "## Speed–accuracy: `bench/accuracy.py`"
 NOTE = (
-    "Numeric mode shares everything but the nonlinear blocks with exact mode (building the "
-    "equations, the exact linear solve that yields the shown formulas, the checks), and the "
-    "corpus is mostly linear, so it is not faster here; the 10× target is missed. See "
-    "[precision.md](precision.md)."
+    "Numeric mode shares with exact mode the building of the model and its equations (most "
+    "of the time here: symbolic geometry, one-line kinematics' integrals, tidying), the "
+    "linear solve that yields the shown formulas and the checks; it differs in the "
+    "nonlinear blocks (small polynomial blocks solved algebraically and evaluated in "
+    "floats, others by a root search). The corpus is mostly linear, so numeric mode is only "
+    "a little faster; the 3× target (issue 14) and 10× (issue 10) are missed: they need the "
+    "numbers substituted before the model is built. See [precision.md](precision.md)."
 )
 
 
