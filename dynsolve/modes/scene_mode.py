@@ -464,6 +464,31 @@ def cross_checks(
                 f"{how}: {other:.7g} (work–energy: {found:.7g}; relative difference {gap:.1e})",
             )
         )
+    return tuple(checks) + _moment_checks(problem, substitution)
+
+
+def _moment_checks(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Method II for each rigid body with equations of motion at the instant: its moments
+    balanced about other points (:mod:`dynsolve.principles.moment_check`)."""
+    from dynsolve.principles.moment_check import balance
+
+    formulation, checks = problem.formulation, []
+    for name, kinematics in formulation.kinematics.items():
+        body = problem.scene.bodies.get(name)
+        if body is None or kinematics.motion == "particle":  # a translating "particle" counts
+            continue
+        check = balance(
+            name,
+            body,
+            formulation.forces.get(name, ()),
+            formulation.couples.get(name, ()),
+            kinematics,
+            values,
+        )
+        if check is not None:
+            checks.append(check)
     return tuple(checks)
 
 
