@@ -436,6 +436,8 @@ class _View:
             show_formula = (
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
+            if show_formula and formula is not None:
+                formula = combined_roots(formula, {**self.knowns, **self.outcome.values})
             numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
@@ -779,6 +781,35 @@ class _View:
 def _count(n: int, noun: str) -> str:
     """``3 equations``, ``1 equation``."""
     return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
+def combined_roots(formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``formula`` with the square roots of a product combined into one, for display, where
+    every radicand is positive at the problem's values (``sqrt(a)*sqrt(b) = sqrt(a*b)``
+    holds there); unchanged when that is not known, or for fewer than two roots.
+
+    >>> g, h, m = sympy.symbols("g h m")
+    >>> v = sympy.sqrt(2) * sympy.sqrt(g) * sympy.sqrt(h) / sympy.sqrt(m)
+    >>> nine, two, one = sympy.Integer(9), sympy.Integer(2), sympy.Integer(1)
+    >>> combined_roots(v, {g: nine, h: two, m: one})
+    sqrt(2*g*h/m)
+    >>> combined_roots(sympy.sqrt(g) * sympy.sqrt(h), {g: nine})  # h has no value: kept
+    sqrt(g)*sqrt(h)
+    """
+    inside, outside = [], []
+    for factor in sympy.Mul.make_args(formula):
+        if factor.is_Pow and abs(factor.exp) == sympy.Rational(1, 2):
+            inside.append(factor.base ** (2 * factor.exp))
+        else:
+            outside.append(factor)
+    if len(inside) < 2:
+        return formula
+    for radicand in inside:
+        number = real_value(radicand, values)
+        if number is None or number <= 0:
+            return formula
+    root = sympy.Pow(sympy.Mul(*inside), sympy.Rational(1, 2), evaluate=False)
+    return sympy.Mul(*outside, root, evaluate=False) if outside else root
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:

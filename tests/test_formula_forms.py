@@ -68,3 +68,12 @@ def test_no_printed_formula_got_longer(path: Path) -> None:
         if where in before and len(text) > len(before[where]) + SLACK
     }
     assert not longer, longer
+
+
+def test_the_roots_of_a_shown_formula_are_combined_where_positive():
+    # issue 12 (combined radicals): the disk's speed from work and energy,
+    # v = sqrt(2 g r s_G (M − 2 k r s_G) / (W (k_G² + r²))), not seven separate square roots
+    forms = printed_forms(ROOT / "problems" / "seed" / "rwe_seed_disk40lb.dyn")
+    step = next(text for where, text in forms.items() if where.startswith("step"))
+    assert step.count("sqrt") <= 2
+    assert "sqrt(g*r*s_G*(M - 2*k*r*s_G)/(W*(k_G^2 + r^2)))" in step
