@@ -4,6 +4,8 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from dynsolve.errors import SpecError
 from dynsolve.pipeline import solve_file
@@ -77,3 +79,53 @@ def test_the_cube_that_just_tips_over(tmp_path):
     assert v_min.value == pytest.approx(4 * math.sqrt(a * g * (math.sqrt(2) - 1) / 3), rel=1e-12)
     assert omega_1.value == pytest.approx(3 * v_min.value / (8 * a), rel=1e-12)
     assert any(c.name == "assumption: plastic impact at B" and c.passed for c in solution.checks)
+
+
+REBOUND = """\
+given:
+  m = {m} kg
+  L = {L} m
+  v_1 = {v_1} m/s
+  e = {e}
+  d = {d} m
+scene:
+  point P: (d, 0)
+  body rod: mass m, rod L, at (0, 0)
+  velocity rod: v_1, down
+  impact rod at P: e e, line down
+find: v_2 = v_after(rod) [m/s], omega_2 = omega_after(rod), J_P [N*s]
+"""
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    m=st.integers(1, 20),
+    L=st.sampled_from(["0.5", "1", "2.4"]),
+    v_1=st.integers(1, 10),
+    e=st.sampled_from(["0", "0.25", "0.5", "1"]),
+    share=st.sampled_from([0.25, 0.4, 0.5]),
+)
+def test_a_free_rod_striking_a_point_keeps_its_angular_momentum_about_it(
+    tmp_path_factory, m, L, v_1, e, share
+):
+    # a rod falling flat (no spin) at v_1 strikes a fixed point a distance d from G, line of
+    # impact vertical. By hand: J up at P, m Δv_G = J, I_G ω_2 = d J, v_P2 = e v_1 (up), so
+    # J = (1 + e) v_1 / (1/m + d²/I_G) with I_G = m L²/12; and H_P = m d v_1 is kept.
+    L_m, e_v = float(L), float(e)
+    d = round(share * L_m, 6)
+    path = tmp_path_factory.mktemp("rebound") / "rebound.dyn"
+    path.write_text(REBOUND.format(m=m, L=L, v_1=v_1, e=e, d=d), encoding="utf-8")
+    got = {a.name: a for a in solve_file(path).answers}
+    I_G = m * L_m**2 / 12
+    J = (1 + e_v) * v_1 / (1 / m + d**2 / I_G)
+    v_2y = -v_1 + J / m  # up positive
+    omega_2 = d * J / I_G  # ccw positive
+    signed_v = got["v_2"].value * (1 if got["v_2"].direction == "up" else -1)
+    signed_w = got["omega_2"].value * (1 if got["omega_2"].direction == "ccw" else -1)
+    assert got["J_P"].value == pytest.approx(J, rel=1e-9)
+    assert signed_v == pytest.approx(v_2y, rel=1e-9, abs=1e-12)
+    assert signed_w == pytest.approx(omega_2, rel=1e-9)
+    # angular momentum about P: before m d v_1; after I_G ω_2 + (r_G/P × m v_2) = I_G ω_2 − d m v_2y
+    assert I_G * signed_w - d * m * signed_v == pytest.approx(m * d * v_1, rel=1e-9)
+    # kinetic energy never grows
+    assert m * signed_v**2 + I_G * signed_w**2 <= m * v_1**2 * (1 + 1e-12)
