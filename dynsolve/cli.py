@@ -77,14 +77,16 @@ class _Target:
     terminal: bool
     colours: str | None
     layout: str = "full"  # LaTeX and Markdown: full, handout or key
+    plot: str = ""  # the --plot file's suffix (.png, .svg, .pdf), "" for none
 
 
 @dataclass(frozen=True)
 class _Done:
-    """A solved spec's rendered output and exit code."""
+    """A solved spec's rendered output, exit code and, with --plot, the figure's bytes."""
 
     text: str
     exit_code: int
+    plot: bytes | None = None
 
 
 @dataclass(frozen=True)
@@ -218,6 +220,15 @@ def solve(
             metavar="FILE",
         ),
     ] = None,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            help="Also draw the motion of a kinematics: section (x, v, a against t, or the "
+            "path) to FILE: .png, .svg or .pdf.",
+            show_default=False,
+            metavar="FILE",
+        ),
+    ] = None,
 ) -> None:
     """Solve one spec and show its unit-checked derivation.
 
@@ -234,13 +245,16 @@ def solve(
         _refuse_overwriting_input(Path(file), output)
     elif output is not None:
         _refuse_unwritable(output)
+    if plot is not None:
+        _check_plot_path(plot, file)
     source = _read_stdin(chosen) if file == "-" else ("file", file)
     cells = _variant_cells(variant, variants)
     budget = Budget(time_budget, memory_budget)
     width, terminal, colours = stdout.width, stdout.is_terminal, stdout.color_system
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
     rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
-    target = _Target(rendered, output is None, width, terminal, colours, layout)
+    suffix = plot.suffix.lower() if plot is not None else ""
+    target = _Target(rendered, output is None, width, terminal, colours, layout, suffix)
     job = (source, mode.value, budget, target, cells)
     outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
@@ -253,7 +267,18 @@ def solve(
         _write_pdf(output, outcome.text)
     else:
         _write_output(output, outcome.text)
+    if plot is not None and outcome.plot is not None:
+        _write_output(plot, outcome.plot)
     raise typer.Exit(outcome.exit_code)
+
+
+def _check_plot_path(plot: Path, file: str) -> None:
+    from dynsolve.plots import FORMATS
+
+    if plot.suffix.lower() not in FORMATS:
+        _fail(f"cannot write {plot}: use {', '.join(FORMATS)}", "choose another name")
+    if file != "-":
+        _refuse_overwriting_input(Path(file), plot)
 
 
 @app.command()
@@ -707,6 +732,8 @@ def solve_and_render(
 
     kind, value = source
     try:
+        if target.plot:  # refused before the solve, so no derivation is lost
+            _figure(source, variant, "")
         if variant is not None:
             from dataclasses import replace
 
@@ -724,9 +751,34 @@ def solve_and_render(
             solution = solve_text(value, STDIN_NAME, _options(mode, budget))
         with step("rendering the output"):
             text = _render(solution, target)
+        figure = _figure(source, variant, target.plot) if target.plot else None
     except DynsolveError as error:
         return _Refused(_reports(error, source))
-    return _Done(text, ExitCode.OK if solution.passed else ExitCode.FAILED)
+    return _Done(text, ExitCode.OK if solution.passed else ExitCode.FAILED, figure)
+
+
+def _figure(
+    source: tuple[str, str], variant: tuple[str, dict[str, str]] | None, suffix: str
+) -> bytes:
+    """The --plot figure of a kinematics spec (the worker's part of ``solve --plot``); with
+    no ``suffix`` only the check that there is one to draw."""
+    from dynsolve.budget import step
+    from dynsolve.modes.kinematics_mode import build_kinematics_problem
+    from dynsolve.plots import motion_plot, not_plottable
+    from dynsolve.spec.parser import parse_file, parse_spec
+
+    kind, value = source
+    spec = parse_file(value) if kind == "file" else parse_spec(value, STDIN_NAME)
+    if variant is not None:
+        from dynsolve.grade.substitute import with_variant
+
+        spec = with_variant(spec, variant[1], variant[0])
+    if not spec.kinematics:
+        raise not_plottable(spec.file)
+    if not suffix:  # only the check
+        return b""
+    with step("drawing the plot"):
+        return motion_plot(build_kinematics_problem(spec), suffix)
 
 
 def solve_and_check(file: Path, mode: str, budget: Budget) -> tuple[Check, ...] | _Refused:
