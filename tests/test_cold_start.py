@@ -30,11 +30,18 @@ def test_the_command_line_imports_nothing_heavy_before_a_command_runs() -> None:
     assert not loaded & set(HEAVY), loaded & set(HEAVY)
 
 
-def test_a_scene_at_an_instant_does_not_import_the_simulation_libraries() -> None:
+def _warm(code: str, tmp_path: Path) -> dict[str, str]:
+    """An environment with its own unit cache, filled by one run of ``code`` (a cold cache
+    imports pint, which imports numpy and scipy when they are installed)."""
+    env = {**os.environ, "DYNSOLVE_CACHE_DIR": str(tmp_path)}
+    _modules_after(code, env)
+    return env
+
+
+def test_a_scene_at_an_instant_does_not_import_the_simulation_libraries(tmp_path: Path) -> None:
     # the drum (Hibbeler 17.11) has no travel: nothing to simulate, so no numpy/scipy
-    loaded = _modules_after(
-        "from dynsolve.pipeline import solve_file\nsolve_file('problems/seed/fa_hib_drum.dyn')"
-    )
+    code = "from dynsolve.pipeline import solve_file\nsolve_file('problems/seed/fa_hib_drum.dyn')"
+    loaded = _modules_after(code, _warm(code, tmp_path))
     assert "sympy" in loaded
     assert not loaded & {"scipy", "numpy", "matplotlib", "pydantic"}
 
@@ -47,11 +54,9 @@ def test_a_warm_run_does_not_import_pint(tmp_path: Path) -> None:
     assert "pint" not in _modules_after(code, env)
 
 
-def test_scenes_with_nothing_to_integrate_do_not_import_scipy():
+def test_scenes_with_nothing_to_integrate_do_not_import_scipy(tmp_path: Path) -> None:
     # symbolic givens, or an 'until' travel: the cross-check only notes why it is not
     # simulated (dynsolve.simulate.legs), so scipy's 0.35 s import is not paid
     for spec in ("seed/we_seed_collar-symbolic.dyn", "scenes/bob_cord_slack.dyn"):
-        loaded = _modules_after(
-            f"from dynsolve.pipeline import solve_file\nsolve_file('problems/{spec}')"
-        )
-        assert "scipy" not in loaded, spec
+        code = f"from dynsolve.pipeline import solve_file\nsolve_file('problems/{spec}')"
+        assert "scipy" not in _modules_after(code, _warm(code, tmp_path)), spec
