@@ -33,6 +33,7 @@ from dynsolve.results import (
     AnswerRow,
     Assumption,
     Check,
+    EnergyTerm,
     EquationRow,
     Formula,
     FreeBody,
@@ -173,7 +174,43 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
     )
     shown = tuple(_trial(*each, outcome, options) for each in trials)
-    return replace(solution, trials=shown) if shown else solution
+    energy = _energy_terms(problem, outcome, options)
+    return replace(solution, trials=shown, energy=energy) if shown or energy else solution
+
+
+ENERGY = Dim(2, 1, -2)
+_ENERGY_MEANINGS = {"T1": "kinetic energy in state 1", "T2": "kinetic energy in state 2"}
+
+
+def _energy_terms(
+    problem: SceneProblem, outcome: Outcome, options: SolveOptions
+) -> tuple[EnergyTerm, ...]:
+    """A scene's work–energy equation term by term, as the textbook writes it: T1, each
+    U(1→2) with its value, T2 (with the solved speed put in)."""
+    terms = problem.formulation.energy_terms
+    if not terms:
+        return ()
+    view = _View(problem, outcome, {}, options)
+    values = {**problem.system.knowns, **outcome.values}
+    unit = natural_unit(ENERGY, problem.spec.system)
+    rows = []
+    for label, expr in terms:
+        name, _, meaning = label.partition(" = ")
+        meaning = meaning or _ENERGY_MEANINGS.get(name, "")
+        number = real_value(expr, values)
+        shown = format_quantity(number, unit) if number is not None else ""
+        symbolic = bool((sympy.Integer(0) + expr).free_symbols)
+        rows.append(
+            EnergyTerm(
+                name,
+                meaning,
+                view.text(expr) if symbolic else "",
+                view.latex(expr) if symbolic else "",
+                shown,
+                f"{latex_number(number)}\\,{latex_unit(unit)}" if number is not None else "",
+            )
+        )
+    return tuple(rows)
 
 
 def _trial(

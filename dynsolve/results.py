@@ -144,6 +144,18 @@ class Trial:
 
 
 @dataclass(frozen=True)
+class EnergyTerm:
+    """One term of a work–energy equation as the textbook lists it: T1, each U, T2."""
+
+    name: str  # "T1", "U_W", "T2"
+    meaning: str  # "kinetic energy in state 1", "W·Δr_G (disk)"
+    formula: str  # in the givens' symbols, "" when it is a number
+    formula_latex: str
+    value: str  # with its unit, e.g. "9.38 lb·ft"
+    value_latex: str
+
+
+@dataclass(frozen=True)
 class Solution:
     """Everything about one solved spec."""
 
@@ -164,6 +176,7 @@ class Solution:
     assumptions: tuple[Assumption, ...] = ()
     warnings: tuple[str, ...] = ()  # likely slips in the spec: a bare-number angle, lb as a mass
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
+    energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
 
     @property
     def passed(self) -> bool:

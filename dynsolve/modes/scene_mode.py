@@ -417,7 +417,9 @@ def _with_energy(
     speeds, spins = dict(formulation.speeds), dict(formulation.spins)
     notes = list(formulation.notes)
     second = list(formulation.second)
+    terms = list(formulation.energy_terms)
     for energy in energy_equations(_after_pivot(scene, formulation), symbols, given_values):
+        terms += energy.terms
         number = len(equations) + 1
         equation = energy.equation
         equations.append(
@@ -440,6 +442,7 @@ def _with_energy(
         spins=spins,
         notes=tuple(notes),
         second=tuple(second),
+        energy_terms=tuple(terms),
     )
 
 

@@ -120,6 +120,8 @@ class Formulation:
     turns: Mapping[str, sympy.Expr] = field(default_factory=dict)  # angle turned round a centre
     heights: Mapping[str, sympy.Expr] = field(default_factory=dict)  # rise of G (up +)
     constraints: tuple[Constraint, ...] = ()  # root branches the formulation chose
+    # work and energy term by term: ("T1", T1), ("U_W = W·Δr_G (disk)", U), …, ("T2", T2)
+    energy_terms: tuple[tuple[str, sympy.Expr], ...] = ()
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

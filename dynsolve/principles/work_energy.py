@@ -63,6 +63,8 @@ class Energy:
     second: tuple[float, str, str] | None = None
     velocities: Mapping[str, Vec] = field(default_factory=dict)  # v_G in state 2, per body
     works: Mapping[str, sympy.Expr] = field(default_factory=dict)  # U(1→2) per force's name
+    # the equation's terms as the textbook lists them: ("T1", T1), each ("U_… = …", U), ("T2", T2)
+    terms: tuple[tuple[str, sympy.Expr], ...] = ()
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -320,6 +322,11 @@ def _equation(T1: sympy.Expr, work: _Work, T2: sympy.Expr) -> Equation:
     return Equation(sympy.Add(T1, *work.terms), T2, "energy", 0, note)
 
 
+def _terms(T1: sympy.Expr, work: _Work, T2: sympy.Expr) -> tuple[tuple[str, sympy.Expr], ...]:
+    """T1, each work term with the note that names it, and T2: the equation term by term."""
+    return (("T1", tidy(T1)), *zip(work.notes, work.terms, strict=True), ("T2", tidy(T2)))
+
+
 def energy_equations(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
@@ -372,6 +379,7 @@ def _particle(
         second,
         {name: velocity},
         work.named,
+        _terms(mass * dot(v1, v1) / 2, work, T2),
     )
 
 
@@ -419,6 +427,7 @@ def _mechanism(
         second,
         {n: (tidy(v[0]), tidy(v[1])) for n, v in v_G.items()},
         work.named,
+        _terms(T1, work, T2),
     )
 
 

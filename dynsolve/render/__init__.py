@@ -23,7 +23,9 @@ def sheet_plan(layout: Layout) -> tuple[str, ...]:
     >>> "key" in sheet_plan("handout") or "checks" in sheet_plan("handout")
     False
     """
-    derivation = ("givens", "free_body", "assumptions", "trials", "equations", "steps", "answers")
+    derivation = (
+        "givens", "free_body", "assumptions", "trials", "equations", "energy", "steps", "answers"
+    )  # fmt: skip
     if layout == "key":
         return ("title", "answers", "key", "checks")
     if layout == "handout":

@@ -50,6 +50,7 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         "messages": list(solution.messages),
         "warnings": list(solution.warnings),
         "trials": [asdict(trial) for trial in solution.trials],
+        "energy": [asdict(term) for term in solution.energy],
         "schema": SCHEMA_VERSION,
     }
 

@@ -28,6 +28,7 @@ from dynsolve.results import (
     AnswerRow,
     Assumption,
     Check,
+    EnergyTerm,
     EquationRow,
     ForceRow,
     Formula,
@@ -286,6 +287,7 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [_equations_section(solution.equations)],
+        "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
         "checks": lambda: [_checks_section(solution.checks)],
@@ -364,6 +366,25 @@ def _given_cells(given: GivenRow) -> list[str]:
 
 
 # ---- equations
+
+
+def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
+    """T1, each U(1→2) and T2 with formula and value (nothing without a travel)."""
+    if not terms:
+        return []
+    rows = [
+        [
+            _math(latex_name(t.name)),
+            _math(t.formula_latex),
+            _math(t.value_latex),
+            escape_latex(t.meaning),
+        ]
+        for t in terms
+    ]
+    title = "\\subsection*{Work and energy: $T_1 + \\Sigma U_{1 \\to 2} = T_2$, term by term}"
+    return [
+        title + "\n" + _table("@{}lllp{0.35\\linewidth}@{}", ["Term", "Formula", "Value", ""], rows)
+    ]
 
 
 def _equations_section(equations: Sequence[EquationRow]) -> str:

@@ -20,6 +20,7 @@ from dynsolve.results import (
     AnswerRow,
     Assumption,
     Check,
+    EnergyTerm,
     EquationRow,
     ForceRow,
     Formula,
@@ -94,6 +95,7 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [_equations_section(solution.equations)],
+        "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
         "checks": lambda: [_checks_section(solution.checks)],
@@ -204,6 +206,24 @@ def _trial_section(trial: Trial) -> str:
     remarks = [f"*Remark:* {escape_markdown(r)}" for r in trial.remarks]
     title = f"## Trial: {escape_markdown(trial.assumption)} (assumed, then checked)"
     return "\n\n".join([title, equations, steps, verdict, *remarks])
+
+
+def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
+    """T1, each U(1→2) and T2 with formula and value (nothing without a travel)."""
+    if not terms:
+        return []
+    rows = [
+        [
+            _cell_math(latex_name(t.name)),
+            _cell_math(t.formula_latex),
+            _cell_math(t.value_latex),
+            escape_markdown(t.meaning),
+        ]
+        for t in terms
+    ]
+    header = ["Term", "Formula", "Value", ""]
+    title = "## Work and energy: T1 + ΣU(1→2) = T2, term by term"
+    return [f"{title}\n\n" + _table(header, [":--"] * 4, rows)]
 
 
 def _solution_section(steps: Sequence[Step]) -> str:

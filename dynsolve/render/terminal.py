@@ -67,6 +67,8 @@ def solution_renderable(solution: Solution) -> RenderableType:
     for trial in solution.trials:
         parts += [_heading(f"Trial: {trial.assumption} (assumed, then checked)"), _trial(trial)]
     parts += [_heading("Equations (units checked)"), _equations(solution)]
+    if solution.energy:
+        parts += [_heading("Work and energy, term by term"), _energy(solution)]
     if solution.steps:
         parts += [_heading("Solve order"), *(_step(s) for s in solution.steps)]
     parts += [_heading("Answers"), _answers(solution)]
@@ -114,6 +116,19 @@ def _givens(solution: Solution) -> Table:
             Text(g.written),
             Text(g.base),
             Text(g.description, style="dim"),
+        )
+    return table
+
+
+def _energy(solution: Solution) -> Table:
+    """T1, each U(1→2) and T2 with its formula and value (T1 + ΣU = T2)."""
+    table = _table("term", "formula", "value", "")
+    for term in solution.energy:
+        table.add_row(
+            Text(pretty(term.name), style="bold"),
+            Text(term.formula),
+            Text(term.value),
+            Text(term.meaning, style="dim"),
         )
     return table
 
