@@ -233,7 +233,7 @@ def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdi
     free = sorted(expected.free_symbols | computed.free_symbols, key=lambda s: s.name)
     for _ in range(EQUIVALENCE_POINTS):
         point = {s: sympy.Rational(rng.randint(50, 400), 100) for s in free}
-        a, b = _complex_value(expected.subs(point)), _complex_value(computed.subs(point))
+        a, b = _complex_value(expected.xreplace(point)), _complex_value(computed.xreplace(point))
         if a is None:
             return Verdict(False, shown, "the formula has no finite value (a division by zero?)")
         if b is None or abs(a - b) > EQUIVALENCE_RTOL * max(abs(a), abs(b), 1e-300):
@@ -267,7 +267,7 @@ def _complex_value(expr: sympy.Expr) -> complex | None:
     (2j, None, None)
     """
     try:
-        value = complex(expr.evalf(30))
+        value = complex(expr.evalf(20))
     except (TypeError, ValueError, ArithmeticError):
         return None
     return value if cmath.isfinite(value) else None

@@ -115,11 +115,12 @@ def threshold(problem: Any, target: sympy.Expr, options: Any) -> sympy.Expr | No
     best: sympy.Expr | None = None
     best_value = None
     for condition in conditions:
-        expr = tidy(sympy.sympify(condition).xreplace(solved).xreplace(knowns))
+        expr = (sympy.Integer(0) + condition).xreplace(solved).xreplace(knowns)
+        expr = expr if expr.has(sympy.Float) else tidy(expr)  # floats never cancel exactly
         if expr.free_symbols - {load}:
             continue
         try:
-            roots = sympy.solve(expr, load)
+            roots = sympy.solve(expr, load, simplify=False)
         except (NotImplementedError, ValueError):
             continue
         for root in roots:
