@@ -132,6 +132,16 @@ def _simulation_checks(
 
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
+    from dynsolve.linkage.model import is_linkage
+
+    if is_linkage(spec):
+        from dynsolve.linkage.problem import build_linkage_problem
+        from dynsolve.linkage.problem import cross_checks as linkage_checks
+
+        linkage = build_linkage_problem(spec)
+        solved = solve_system(linkage.system, options)
+        checks = linkage_checks(linkage, solved.values)
+        return solve_problem(linkage, options, solved, second_methods=checks)
     from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
 
     problem = build_scene_problem(spec)
@@ -643,7 +653,11 @@ class _View:
     def base_units_note(self) -> str:
         """For a formula holding numbers of dimensional givens: which units they are in."""
         numeric = [
-            g for g in self.problem.givens if g.value is not None and not g.dim.dimensionless
+            g
+            for g in self.problem.givens
+            if g.value is not None
+            and not (sympy.Integer(0) + g.value).free_symbols
+            and not g.dim.dimensionless
         ]
         if not any(self.used(g) for g in numeric):
             return ""

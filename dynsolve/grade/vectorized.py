@@ -204,6 +204,17 @@ def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
         from dynsolve.modes.equation_mode import build_problem
 
         return [_Phase(build_problem(spec), _constraints)]
+    from dynsolve.linkage.model import is_linkage
+
+    if is_linkage(spec):
+        from dynsolve.linkage.problem import build_linkage_problem
+
+        linkage = build_linkage_problem(spec)
+        if linkage.placement.closure:
+            raise NotClosedForm(
+                "a linkage placed by loop closure (numerically) is solved per variant"
+            )
+        return [_Phase(linkage, _constraints)]
     from dynsolve.modes.scene_mode import assess, build_scene_problem
     from dynsolve.solver import solve_system
 

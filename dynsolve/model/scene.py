@@ -603,6 +603,27 @@ def _article(text: str) -> str:
     return ("an " if text[:1] in "aeiou" else "a ") + text
 
 
+SceneReader = _Builder
+
+
+def scene_reader(
+    spec: Spec,
+    symbols: Mapping[str, sympy.Expr],
+    dims: Mapping[str, Dim],
+    given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> SceneReader:
+    """A reader of a scene line's values, positions and directions: each checked against
+    its dimension, with a positioned error (used by front ends beside the scene model).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  L = 2 m\\nscene:\\n  point A: (L, 0)\\nfind: L\\n")
+    >>> L = sympy.Symbol("L", positive=True)
+    >>> scene_reader(spec, {"L": L}, {"L": LENGTH}).vector(spec.scene[0].vectors[0], "a position")
+    (L, 0)
+    """
+    return _Builder(spec, symbols, dims, given_values)
+
+
 def build_scene(
     spec: Spec,
     symbols: Mapping[str, sympy.Expr],

@@ -982,6 +982,61 @@ class _Builder(Transformer_NonRecursive):
         body, motion = c
         return self._stmt("motion", body, body=str(body), word=str(motion))
 
+    # ---- linkage lines (dynsolve.linkage)
+    def bar_stmt(self, c: list[Any]) -> SceneStmt:
+        """``bar BC: B to C [to E …] [, length L] [, angle theta]``: a rigid link through
+        joint points, in order; its length and direction (from the first point to the
+        second) may fix where the second point is."""
+        name, *rest = c
+        points = tuple(str(t) for t in rest if isinstance(t, Token))
+        props = tuple(p for p in rest if isinstance(p, Prop))
+        return self._stmt("bar", name, name=str(name), other=" ".join(points), props=props)
+
+    def prop_length(self, c: list[Any]) -> Prop:
+        return self._prop("length", c, values=(c[0],))
+
+    def prop_angle(self, c: list[Any]) -> Prop:
+        return self._prop("angle", c, values=(c[0],))
+
+    def joint_stmt(self, c: list[Any]) -> SceneStmt:
+        """``joint C: (x, y)`` (where C is at the instant) or ``joint C: near (x, y)``
+        (roughly where: it picks the assembly)."""
+        name, *rest = c
+        near = isinstance(rest[0], Token) and rest[0].type == "NEAR"
+        return self._stmt(
+            "joint", name, name=str(name), vectors=(rest[-1],), word="near" if near else ""
+        )
+
+    def slider_stmt(self, c: list[Any]) -> SceneStmt:
+        name, direction, *through = c
+        return self._stmt(
+            "slider",
+            name,
+            name=str(name),
+            direction=direction,
+            other=str(through[0]) if through else "",
+        )
+
+    def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
+        """``slider B: along bar CD``: joint B slides along the (moving) bar CD, a pin
+        in a slot or a collar on a rod."""
+        name, bar = c
+        return self._stmt("slider", name, name=str(name), body=str(bar))
+
+    def alpha_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value, *sense = c
+        if sense:
+            self._sense(sense[0])
+        word = str(sense[0]) if sense else "ccw"
+        return self._stmt("alpha", body, body=str(body), value=value, word=word)
+
+    def acceleration_stmt(self, c: list[Any]) -> SceneStmt:
+        point, value, direction = c
+        return self._stmt("acceleration", point, body=str(point), value=value, direction=direction)
+
+    def branch_stmt(self, c: list[Token]) -> SceneStmt:
+        return self._stmt("branch", c[0], word=str(c[0]))
+
     def _sense(self, token: Token) -> None:
         if str(token) not in ("cw", "ccw"):
             raise SpecError(

@@ -1,0 +1,376 @@
+"""The linkage of a scene: its bars, fixed and moving joints, sliders and drives.
+
+Read from the scene lines ``point``, ``bar``, ``joint``, ``slider``, ``omega``, ``alpha``,
+``velocity``, ``acceleration`` and ``branch`` (docs/scene-mode.md, *Linkages*). A point
+named in a bar is a pin joining every bar that names it; a fixed ``point`` is a pin to
+the ground. Positions are sympy expressions of the givens.
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   L = 0.2 m
+...   theta = 45 deg
+... scene:
+...   point A: (0, 0)
+...   bar AB: A to B, length L, angle theta
+...   omega AB: 0 cw
+... find: w = omega(AB)
+... ''', "p.dyn")
+>>> linkage = read_linkage(spec)
+>>> linkage.bars["AB"].points, linkage.fixed["A"]
+(('A', 'B'), (0, 0))
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import sympy
+
+from dynsolve.errors import Position, SpecError
+from dynsolve.model.scene import SceneReader, Vec, scene_reader
+from dynsolve.modes.equation_mode import givens_of
+from dynsolve.spec.ast import SceneStmt, Spec
+from dynsolve.units import Dim
+
+LENGTH = Dim.of("length")
+RATES = {
+    "omega": Dim(0, 0, -1),
+    "alpha": Dim(0, 0, -2),
+    "velocity": Dim.of("velocity"),
+    "acceleration": Dim.of("acceleration"),
+}
+LINKAGE_LINES = frozenset(
+    {"point", "bar", "joint", "slider", "omega", "alpha", "velocity", "acceleration", "branch"}
+    | {"gravity", "couple", "force"}
+)
+
+
+@dataclass(frozen=True)
+class Bar:
+    """A rigid link through ``points`` (in order); ``angle`` is the direction from the
+    first point to the second (ccw from +x), ``length`` their distance."""
+
+    name: str
+    points: tuple[str, ...]
+    length: sympy.Expr | None = None
+    angle: sympy.Expr | None = None
+    line: int = 0
+    column: int = 0
+    mass: sympy.Expr | None = None  # a uniform bar: G halfway between its two points
+    gyration: sympy.Expr | None = None  # about G; default L/√12 (a slender rod)
+
+
+@dataclass(frozen=True)
+class Slider:
+    """A joint that slides in a fixed straight guide along ``axis`` through ``through``
+    (a fixed point or given joint; empty: through the joint's own given position), or,
+    when ``bar`` is set, along that moving bar (a pin in its slot, a collar on it)."""
+
+    point: str
+    axis: Vec | None
+    through: str = ""
+    line: int = 0
+    column: int = 0
+    bar: str = ""
+
+
+@dataclass(frozen=True)
+class Drive:
+    """A given motion: ``omega``/``alpha`` of a bar (ccw-signed value) or the
+    ``velocity``/``acceleration`` of a joint (magnitude ``value`` along ``direction``)."""
+
+    kind: str
+    name: str
+    value: sympy.Expr
+    direction: Vec | None = None
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Load:
+    """A load on a bar: gravity on every bar with mass, a ``couple`` (``sense`` +1 ccw,
+    −1 cw) or a ``force`` at a point of the bar along ``direction``; ``name`` is its
+    magnitude, a given or an unknown to find."""
+
+    kind: str
+    name: str
+    bar: str = ""
+    point: str = ""
+    direction: Vec | None = None
+    sense: int = 1
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Linkage:
+    """A scene's linkage as written: what is fixed, what is given and what moves."""
+
+    file: str
+    fixed: Mapping[str, Vec]
+    given: Mapping[str, Vec]  # joints placed exactly at the instant
+    near: Mapping[str, Vec]  # joints placed roughly (the assembly nearest is taken)
+    bars: Mapping[str, Bar]
+    sliders: Mapping[str, Slider]
+    drives: tuple[Drive, ...]
+    branch: str = ""
+    symbols: Mapping[str, sympy.Symbol] = field(default_factory=dict)
+    values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    declared: Mapping[str, tuple[int, int]] = field(default_factory=dict)
+    loads: tuple[Load, ...] = ()
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Every point a bar names, fixed or moving, in order of first mention."""
+        seen: dict[str, None] = {}
+        for bar in self.bars.values():
+            seen |= dict.fromkeys(bar.points)
+        return tuple(seen)
+
+    @property
+    def moving(self) -> tuple[str, ...]:
+        """The joints that are not fixed to the ground."""
+        return tuple(p for p in self.joints if p not in self.fixed)
+
+    def where(self, name: str) -> Position:
+        """Where ``name`` (a bar or point) was declared, for errors."""
+        line, column = self.declared.get(name, (1, 1))
+        return Position(self.file, line, column)
+
+    def drive(self, kind: str, name: str) -> Drive | None:
+        """The drive of this kind on a bar or joint, if the scene gives one."""
+        return next((d for d in self.drives if d.kind == kind and d.name == name), None)
+
+
+def is_linkage(spec: Spec) -> bool:
+    """Whether a spec's scene describes a linkage (it has ``bar`` lines).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> is_linkage(parse_spec("scene:\\n  bar AB: A to B\\nfind: w = omega(AB)\\n"))
+    True
+    """
+    return any(stmt.kind == "bar" for stmt in spec.scene or ())
+
+
+def read_linkage(spec: Spec) -> Linkage:
+    """The linkage of ``spec``'s scene; a positioned SpecError for a line it cannot take."""
+    givens = givens_of(spec)
+    symbols = {g.name: g.symbol for g in givens}
+    values = {g.symbol: g.value for g in givens if g.value is not None}
+    reader = scene_reader(spec, symbols, {g.name: g.dim for g in givens}, values)
+    fixed: dict[str, Vec] = {}
+    given: dict[str, Vec] = {}
+    near: dict[str, Vec] = {}
+    bars: dict[str, Bar] = {}
+    sliders: dict[str, Slider] = {}
+    drives: list[Drive] = []
+    loads: list[Load] = []
+    branch = ""
+    declared: dict[str, tuple[int, int]] = {}
+    statements = tuple(spec.scene or ())
+    for stmt in statements:
+        where = Position(spec.file, stmt.line, stmt.column)
+        if stmt.kind not in LINKAGE_LINES:
+            raise SpecError(
+                f"a '{stmt.kind}' line cannot go in a linkage scene (one with bars)",
+                where,
+                hint="a linkage takes point, bar, joint, slider, omega, alpha, velocity, "
+                "acceleration, branch, gravity, couple and force lines (see docs/scene-mode.md, "
+                "Linkages)",
+            )
+        if stmt.kind == "point":
+            if stmt.body:
+                raise SpecError(
+                    "in a linkage, a point of a bar is a joint the bar names",
+                    where,
+                    hint=f"name it in the bar ('bar {stmt.body}: … to {stmt.name}') and place "
+                    f"it with 'joint {stmt.name}: (x, y)'",
+                )
+            _new(stmt.name, declared, where, "point")
+            fixed[stmt.name] = reader.vector(stmt.vectors[0], "a position")
+        elif stmt.kind == "bar":
+            _new(stmt.name, declared, where, "bar")
+            bars[stmt.name] = _bar(stmt, reader, where)
+    for stmt in statements:
+        where = Position(spec.file, stmt.line, stmt.column)
+        if stmt.kind == "joint":
+            _joint_named(stmt.name, bars, fixed, where)
+            (near if stmt.word == "near" else given)[stmt.name] = reader.vector(
+                stmt.vectors[0], "a position"
+            )
+            declared.setdefault(stmt.name, (stmt.line, stmt.column))
+        elif stmt.kind == "slider":
+            _joint_named(stmt.name, bars, fixed, where)
+            if stmt.name in sliders:
+                raise SpecError(f"joint {stmt.name} has two sliders", where, "keep one")
+            if stmt.body:
+                sliders[stmt.name] = _on_bar(stmt, bars, where)
+                continue
+            assert stmt.direction is not None
+            sliders[stmt.name] = Slider(
+                stmt.name, reader.direction(stmt.direction), stmt.other, stmt.line, stmt.column
+            )
+        elif stmt.kind in RATES:
+            drives.append(_drive(stmt, reader, bars, fixed, where))
+        elif stmt.kind == "branch":
+            branch = stmt.word
+        elif stmt.kind in ("gravity", "couple", "force"):
+            loads.append(_load(stmt, reader, bars, where))
+    for slider in sliders.values():
+        if slider.through and slider.through not in fixed and slider.through not in given:
+            raise SpecError(
+                f"the guide of slider {slider.point} passes through '{slider.through}', "
+                "which is neither a fixed point nor a placed joint",
+                Position(spec.file, slider.line, slider.column),
+                hint=f"declare 'point {slider.through}: (x, y)'",
+            )
+    return Linkage(
+        spec.file,
+        fixed,
+        given,
+        near,
+        bars,
+        sliders,
+        tuple(drives),
+        branch,
+        symbols,
+        values,
+        declared,
+        tuple(loads),
+    )
+
+
+def _new(name: str, declared: dict[str, tuple[int, int]], where: Position, what: str) -> None:
+    if name in declared:
+        line, _ = declared[name]
+        raise SpecError(f"'{name}' is declared twice (first on line {line})", where, "rename one")
+    declared[name] = (where.line, where.column)
+
+
+def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
+    points = tuple(stmt.other.split())
+    if len(set(points)) != len(points):
+        raise SpecError(f"bar {stmt.name} names a point twice", where, "list each point once")
+    props = {p.key: p for p in stmt.props}
+    if len(props) != len(stmt.props):
+        raise SpecError(f"bar {stmt.name} has a property twice", where, "keep one")
+    if len(points) > 2 and {"length", "angle"} & set(props):
+        raise SpecError(
+            f"bar {stmt.name} has {len(points)} points: its shape comes from their positions",
+            where,
+            hint="place each point with 'joint P: (x, y)' instead of a length or angle",
+        )
+    length = angle = mass = gyration = None
+    if "mass" in props:
+        if len(points) != 2:
+            raise SpecError(
+                f"bar {stmt.name}: a mass is taken as a uniform bar between two points",
+                where,
+                hint="give a bar with mass two points (its ends)",
+            )
+        mass = reader.value(props["mass"].values[0], Dim.of("mass"), "a bar's mass")
+    if "gyration" in props:
+        if "mass" not in props:
+            raise SpecError(f"bar {stmt.name}: a gyration needs a mass", where, "add 'mass m'")
+        gyration = reader.value(props["gyration"].values[0], LENGTH, "a radius of gyration")
+    if "length" in props:
+        length = reader.value(props["length"].values[0], LENGTH, "a bar's length")
+    if "angle" in props:
+        angle = reader.value(props["angle"].values[0], Dim(), "a bar's angle")
+    return Bar(stmt.name, points, length, angle, stmt.line, stmt.column, mass, gyration)
+
+
+def _joint_named(
+    name: str, bars: Mapping[str, Bar], fixed: Mapping[str, Vec], where: Position
+) -> None:
+    named = {p for bar in bars.values() for p in bar.points}
+    if name in named and name not in fixed:
+        return
+    if name in fixed:
+        raise SpecError(
+            f"'{name}' is a fixed point: it does not move",
+            where,
+            hint="a joint line places a moving joint; fixed points are placed by 'point'",
+        )
+    close = difflib.get_close_matches(name, sorted(named), n=1)
+    hint = f"did you mean '{close[0]}'?" if close else "name it in a bar first ('bar AB: A to B')"
+    raise SpecError(f"no bar has a joint '{name}'", where, hint)
+
+
+def _load(stmt: SceneStmt, reader: SceneReader, bars: Mapping[str, Bar], where: Position) -> Load:
+    """``gravity [: DIR]``, ``couple M on BAR: cw|ccw`` or ``force P on BAR at JOINT: DIR``."""
+    if stmt.kind == "gravity":
+        direction = reader.direction(stmt.direction) if stmt.direction else (0, -1)
+        return Load("gravity", "g", direction=direction, line=stmt.line, column=stmt.column)
+    if stmt.body not in bars:
+        close = difflib.get_close_matches(stmt.body, sorted(bars), n=1)
+        raise SpecError(
+            f"there is no bar '{stmt.body}'",
+            where,
+            hint=f"did you mean '{close[0]}'?" if close else "a load acts on a bar",
+        )
+    if stmt.kind == "couple":
+        sense = -1 if stmt.word == "cw" else 1
+        return Load("couple", stmt.name, stmt.body, sense=sense, line=stmt.line, column=stmt.column)
+    assert stmt.location is not None and stmt.direction is not None
+    point = stmt.location.point
+    if point not in (*bars[stmt.body].points, "G"):
+        raise SpecError(
+            f"force {stmt.name} acts at '{point or 'a position'}', not a point of bar {stmt.body}",
+            where,
+            hint=f"apply it at one of {', '.join(bars[stmt.body].points)} or G",
+        )
+    return Load(
+        "force",
+        stmt.name,
+        stmt.body,
+        point,
+        reader.direction(stmt.direction),
+        line=stmt.line,
+        column=stmt.column,
+    )
+
+
+def _on_bar(stmt: SceneStmt, bars: Mapping[str, Bar], where: Position) -> Slider:
+    """``slider B: along bar CD``: B must not be a point of CD itself (it slides on it)."""
+    if stmt.body not in bars:
+        close = difflib.get_close_matches(stmt.body, sorted(bars), n=1)
+        raise SpecError(
+            f"there is no bar '{stmt.body}'",
+            where,
+            hint=f"did you mean '{close[0]}'?" if close else "name the bar it slides along",
+        )
+    if stmt.name in bars[stmt.body].points:
+        raise SpecError(
+            f"{stmt.name} is a point of bar {stmt.body}, so it cannot slide along it",
+            where,
+            hint=f"leave {stmt.name} out of 'bar {stmt.body}: …' (it is a pin of another "
+            "bar, riding in the slot)",
+        )
+    return Slider(stmt.name, None, "", stmt.line, stmt.column, stmt.body)
+
+
+def _drive(
+    stmt: SceneStmt,
+    reader: SceneReader,
+    bars: Mapping[str, Bar],
+    fixed: Mapping[str, Vec],
+    where: Position,
+) -> Drive:
+    assert stmt.value is not None
+    value = reader.value(stmt.value, RATES[stmt.kind], f"an {stmt.kind}")
+    if stmt.kind in ("omega", "alpha"):
+        if stmt.body not in bars:
+            close = difflib.get_close_matches(stmt.body, sorted(bars), n=1)
+            hint = f"did you mean '{close[0]}'?" if close else "name a bar"
+            raise SpecError(f"there is no bar '{stmt.body}'", where, hint)
+        signed = -value if stmt.word == "cw" else value
+        return Drive(stmt.kind, stmt.body, signed, None, stmt.line, stmt.column)
+    _joint_named(stmt.body, bars, fixed, where)
+    assert stmt.direction is not None
+    direction = reader.direction(stmt.direction)
+    return Drive(stmt.kind, stmt.body, value, direction, stmt.line, stmt.column)

@@ -1,0 +1,516 @@
+"""Turn a linkage scene into a problem: positions, relative-motion equations and targets.
+
+The joints are placed (:mod:`~dynsolve.linkage.position`); each placed coordinate that
+is not a plain number or a given becomes a derived quantity (``x_C``, ``y_C``) shown
+with its value, so the equations read as the textbook's ``v_C = v_B + ω_BC × r_C/B``
+with ``r_C/B = (x_C − x_B, y_C − y_B)``. Only the levels the find list needs are
+written (no acceleration equations for a velocity question). ``find`` takes
+``omega(BAR)``, ``alpha(BAR)``, ``v(P)``, ``a(P)`` (a slider's along its guide, signed
+with a direction word; any other joint's magnitude with its direction), the components
+``v_x(P)``, ``v_y(P)``, ``a_x(P)``, ``a_y(P)``, and ``theta(BAR)`` (the bar's direction
+from its first point to its second, from +x, ccw).
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   L = 0.2 m
+...   theta = 45 deg
+...   v_A = 2 m/s
+... scene:
+...   point O: (0, 0)
+...   bar AB: A to B, length L
+...   joint A: (0, L*sin(theta))
+...   joint B: (L*cos(theta), 0)
+...   slider A: along up, through O
+...   slider B: along right, through O
+...   velocity A: v_A, down
+... find: v_B = v(B), w = omega(AB)
+... ''', "blocks.dyn")
+>>> problem = build_linkage_problem(spec)
+>>> [str(e.lhs - e.rhs) for e in problem.system.equations]
+['-omega_AB*y_A + v_B', '-omega_AB*x_B + v_A']
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+
+import sympy
+
+from dynsolve.dimensions import DimensionReport
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.format import quantity as format_quantity
+from dynsolve.linkage.kinetics import FreeBodies, free_bodies, has_kinetics, power_balance
+from dynsolve.linkage.model import LENGTH, Linkage, read_linkage
+from dynsolve.linkage.position import Placement, place
+from dynsolve.linkage.relations import TOGGLE, Level, condition, in_line, relative_motion
+from dynsolve.model.scene import Vec
+from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
+from dynsolve.modes.scene_mode import _row, _unit, _unused
+from dynsolve.quantities import convert
+from dynsolve.results import Check, EquationRow, Step
+from dynsolve.spec.ast import FindItem, Spec
+from dynsolve.system import EquationSystem
+from dynsolve.units import Dim, natural_unit
+
+FUNCTIONS = (
+    "force",
+    "omega",
+    "alpha",
+    "v",
+    "a",
+    "v_x",
+    "v_y",
+    "a_x",
+    "a_y",
+    "theta",
+    "v_rel",
+    "a_rel",
+)
+ACCELERATIONS = ("alpha", "a", "a_x", "a_y", "a_rel")
+
+
+@dataclass(frozen=True)
+class LinkageProblem:
+    """A linkage ready to solve, shaped as the pipeline expects (``SolvableProblem``)."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+    rows: tuple[EquationRow, ...]
+    linkage: Linkage
+    placement: Placement
+    steps: tuple[Step, ...] = ()
+    notes: tuple[tuple[str, str], ...] = ()
+    mode: str = "linkage"
+    levels: Mapping[str, Level] = field(default_factory=dict)
+    r: Mapping[str, Vec] = field(default_factory=dict)
+    free: FreeBodies | None = None
+
+
+def build_linkage_problem(spec: Spec) -> LinkageProblem:
+    """Read, place and relate the linkage of ``spec``; resolve its find list."""
+    where = Position(spec.file, 1, 1)
+    if not spec.finds:
+        raise SpecError("nothing to find", where, hint="add a 'find:' line")
+    if spec.equations or spec.defines:
+        line = (spec.equations or spec.defines)[0]
+        raise SpecError(
+            "equations and define lines cannot be combined with a linkage yet",
+            Position(spec.file, line.line, line.column),
+            hint="ask for the linkage's own quantities (omega(BC), v(C), …)",
+        )
+    linkage = read_linkage(spec)
+    placement = place(linkage)
+    givens = list(givens_of(spec))
+    taken = {g.name for g in givens}
+    linkage, drives = _named_drives(linkage, taken)
+    givens += drives
+    taken |= {g.name for g in drives}
+    r, derived = _coordinates(linkage, placement, taken, spec)
+    givens += derived
+    placed = {g.symbol: g.value for g in derived if g.value is not None}
+    slots, directions = _slot_directions(linkage, r, taken, placed)
+    givens += directions
+    asked = {item.ref.function if item.ref else item.name for item in spec.finds}
+    levels = {"velocity": relative_motion(linkage, r, "velocity", slots=slots)}
+    kinetics = has_kinetics(linkage)
+    if asked & set(ACCELERATIONS) or kinetics:
+        _needs_acceleration_drives(linkage)
+        velocity = levels["velocity"]
+        levels["acceleration"] = relative_motion(
+            linkage, r, "acceleration", velocity.rotation, slots, velocity.relative
+        )
+    unknowns: dict[sympy.Symbol, Dim] = {}
+    for level in levels.values():
+        unknowns |= dict(level.unknowns)
+    free = None
+    if kinetics:
+        g = next(g.symbol for g in givens if g.name == "g")
+        free = free_bodies(linkage, r, levels["velocity"], levels["acceleration"], g, taken)
+        unknowns |= dict(free.unknowns)
+    clash = sorted({s.name for s in unknowns} & taken)
+    if clash:
+        raise SpecError(
+            f"the given '{clash[0]}' has the name of an unknown of the linkage",
+            where,
+            hint="rename the given (dynsolve names the unknowns omega_BAR, v_Px, …)",
+        )
+    knowns = {g.symbol: g.value for g in givens if g.value is not None}
+    notes = _placement_notes(linkage, placement, spec)
+    notes += _toggle_notes(linkage, levels["velocity"], r, knowns)
+    symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
+    dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
+    targets = tuple(
+        _target(item, spec, linkage, levels, r, dims, slots, free) for item in spec.finds
+    )
+    check_answers_in_find(spec)
+    wanted: list[sympy.Symbol] = []
+    for target in targets:
+        for expr in (target.expr, *(target.vector or ())):
+            if expr is None:
+                continue
+            wanted += [
+                s
+                for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str)
+                if s in unknowns and s not in wanted
+            ]
+    if free is not None:  # the power check needs every velocity
+        wanted += [s for s in levels["velocity"].unknowns if s not in wanted]
+    equations = tuple(e for level in levels.values() for e in level.equations)
+    equations += free.equations if free is not None else ()
+    system = EquationSystem(
+        equations=equations, unknowns=tuple(unknowns), knowns=knowns, wanted=tuple(wanted)
+    )
+    symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
+    try:
+        rows = tuple(_row(e, symbol_dims, spec) for e in equations)
+    except DimensionError as error:
+        raise DimensionError(error.message, where, error.hint) from None
+    return LinkageProblem(
+        spec,
+        tuple(givens),
+        system,
+        DimensionReport(dims, (), frozenset()),
+        targets,
+        symbols,
+        rows,
+        linkage,
+        placement,
+        notes=notes + _unused(spec),
+        levels=levels,
+        r=r,
+        free=free,
+    )
+
+
+def _coordinates(
+    linkage: Linkage, placement: Placement, taken: set[str], spec: Spec
+) -> tuple[dict[str, Vec], list[GivenInfo]]:
+    """Each joint's position for the equations: a number or a given as it is, any other
+    coordinate as a derived quantity ``x_P``/``y_P`` with its formula and value."""
+    r: dict[str, Vec] = {}
+    derived: list[GivenInfo] = []
+    for point in linkage.joints:
+        position = placement.positions[point]
+        coordinates = []
+        for axis, value in zip("xy", position, strict=True):
+            if isinstance(value, sympy.Float) and value.is_zero:  # on a guide through 0
+                value = sympy.Integer(0)
+            plain = value.is_Number and not isinstance(value, sympy.Float)
+            if plain or (value.is_Symbol and value.name in taken):
+                coordinates.append(value)
+                continue
+            name = f"{axis}_{point}"
+            if name in taken:
+                raise SpecError(
+                    f"the given '{name}' has the name of joint {point}'s coordinate",
+                    linkage.where(point),
+                    hint="rename the given",
+                )
+            symbol = sympy.Symbol(name, real=True)
+            how = placement.how.get(point, "fixed point")
+            shown = sympy.Float(value, 6) if isinstance(value, sympy.Float) else value
+            derived.append(
+                GivenInfo(
+                    name,
+                    symbol,
+                    value.xreplace(dict(linkage.values)) if linkage.values else value,
+                    LENGTH,
+                    None,
+                    f"{axis} of {point} ({how})",
+                    shown,
+                )
+            )
+            coordinates.append(symbol)
+        r[point] = (coordinates[0], coordinates[1])
+    return r, derived
+
+
+def _slot_directions(
+    linkage: Linkage,
+    r: Mapping[str, Vec],
+    taken: set[str],
+    placed: Mapping[sympy.Symbol, sympy.Expr],
+) -> tuple[dict[str, Vec], list[GivenInfo]]:
+    """The direction of each bar a joint slides along, as (cos θ, sin θ) of the bar's
+    angle ``theta_BAR`` (a derived quantity, from its first point to its second)."""
+    slots: dict[str, Vec] = {}
+    derived: list[GivenInfo] = []
+    for slider in linkage.sliders.values():
+        if not slider.bar or slider.bar in slots:
+            continue
+        first, second = linkage.bars[slider.bar].points[:2]
+        dx, dy = r[second][0] - r[first][0], r[second][1] - r[first][1]
+        angle = sympy.atan2(dy, dx)
+        name = f"theta_{slider.bar}"
+        if name in taken:
+            length = sympy.sqrt(dx**2 + dy**2)
+            slots[slider.bar] = (dx / length, dy / length)
+            continue
+        symbol = sympy.Symbol(name, real=True)
+        value = angle.xreplace(dict(placed)).xreplace(dict(linkage.values))
+        derived.append(
+            GivenInfo(
+                name, symbol, value, Dim(), None, f"direction of {slider.bar} (from +x)", angle
+            )
+        )
+        slots[slider.bar] = (sympy.cos(symbol), sympy.sin(symbol))
+    return slots, derived
+
+
+def _named_drives(linkage: Linkage, taken: set[str]) -> tuple[Linkage, list[GivenInfo]]:
+    """Each driven bar's ω and α under its own name (``omega_AB = -n``: cw), so the
+    equations read as the textbook writes them."""
+    named: list[GivenInfo] = []
+    drives = []
+    for drive in linkage.drives:
+        name = f"{drive.kind}_{drive.name}"
+        if drive.kind not in ("omega", "alpha") or name in taken or drive.value.is_Symbol:
+            drives.append(drive)
+            continue
+        symbol = sympy.Symbol(name, real=True)
+        dim = Dim(0, 0, -1) if drive.kind == "omega" else Dim(0, 0, -2)
+        value = drive.value.xreplace(dict(linkage.values)) if linkage.values else drive.value
+        what = "ω" if drive.kind == "omega" else "α"
+        named.append(
+            GivenInfo(
+                name,
+                symbol,
+                value,
+                dim,
+                None,
+                f"{what} of {drive.name} (given; ccw +)",
+                drive.value,
+            )
+        )
+        drives.append(replace(drive, value=symbol))
+    return replace(linkage, drives=tuple(drives)), named
+
+
+def _needs_acceleration_drives(linkage: Linkage) -> None:
+    """Accelerations asked: each velocity drive needs its acceleration (α of a driven
+    bar, a of a driven joint), stated even when zero."""
+    pairs = {"omega": "alpha", "velocity": "acceleration"}
+    for drive in linkage.drives:
+        if drive.kind in pairs and linkage.drive(pairs[drive.kind], drive.name) is None:
+            example = (
+                f"'alpha {drive.name}: 0' if its ω is constant"
+                if drive.kind == "omega"
+                else f"'acceleration {drive.name}: 0, right' if its speed is constant"
+            )
+            raise SpecError(
+                f"accelerations are asked, but the drive of {drive.name} gives only its "
+                f"{drive.kind}",
+                Position(linkage.file, drive.line, drive.column),
+                hint=f"add {example}",
+            )
+
+
+def _placement_notes(
+    linkage: Linkage, placement: Placement, spec: Spec
+) -> tuple[tuple[str, str], ...]:
+    """How the joints were placed, and the assemblies not taken."""
+    if not placement.closure:
+        return ()
+    unit = natural_unit(LENGTH, spec.system)
+    found = [p for p, how in placement.how.items() if how == "loop closure"]
+
+    def at(point: str, xy: tuple[float, float]) -> str:
+        x, y = (format_quantity(convert(c, unit, spec.system), "") for c in xy)
+        return f"{point} = ({x}, {y}) {unit}"
+
+    numbers = {p: tuple(float(c) for c in placement.positions[p]) for p in found}
+    detail = (
+        f"{', '.join(placement.closure)} solved for {', '.join(found)}: "
+        + ", ".join(at(p, numbers[p]) for p in found)  # type: ignore[arg-type]
+        + f", {placement.rule}"
+    )
+    if placement.others:
+        detail += "; other assembl" + ("ies" if len(placement.others) > 1 else "y") + ": "
+        detail += "; ".join(", ".join(at(p, xy) for p, xy in o.items()) for o in placement.others)
+    return (("loop closure", detail),)
+
+
+def _toggle_notes(
+    linkage: Linkage, level: Level, r: Mapping[str, Vec], knowns: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[str, str], ...]:
+    """The velocity equations' condition number; at a toggle position, an error."""
+    lengths = []
+    for bar in linkage.bars.values():
+        for point in bar.points[1:]:
+            dx = (r[point][0] - r[bar.points[0]][0]).xreplace(dict(knowns))
+            dy = (r[point][1] - r[bar.points[0]][1]).xreplace(dict(knowns))
+            try:
+                lengths.append(float(sympy.N(sympy.sqrt(dx**2 + dy**2), 15)))
+            except TypeError:
+                return ()
+    number = condition(level, knowns, max(lengths, default=1.0))
+    if number is None:
+        return ()
+    if number > TOGGLE:
+        lines = in_line(linkage, r, knowns)
+        first = lines[0].split()[0] if lines else next(iter(linkage.bars))
+        raise SpecError(
+            "the linkage is at a toggle (dead-centre) position"
+            + (f": {'; '.join(lines)}" if lines else "")
+            + f", so its velocity equations are singular (condition number {number:.3g}) "
+            "and the bars' angular velocities are not determined here",
+            linkage.where(first),
+            hint="a different input angle (even slightly) or a different drive gives an "
+            "answer; at the toggle itself the driven bar cannot drive the output",
+        )
+    detail = f"condition number {number:.3g} of the velocity equations"
+    if number > 1e3:
+        detail += " (large: near a toggle position, where small errors in the givens grow)"
+    return (("conditioning", detail),)
+
+
+def _target(
+    item: FindItem,
+    spec: Spec,
+    linkage: Linkage,
+    levels: Mapping[str, Level],
+    r: Mapping[str, Vec],
+    dims: Mapping[str, Dim],
+    slots: Mapping[str, Vec],
+    free: FreeBodies | None,
+) -> Target:
+    where = Position(spec.file, item.line, item.column)
+    if item.ref is None:
+        forces = {s.name: s for s in free.unknowns} if free is not None else {}
+        if item.name in forces:
+            unit, dim = _unit(item, dims[item.name], spec, where)
+            symbol = forces[item.name]
+            requested = item.unit is not None
+            if free is not None and item.name in free.normals:  # a guide's push, in words
+                normal = free.normals[item.name]
+                return Target(
+                    item.name, symbol, dim, unit, requested, False, "along", symbol, axis=normal
+                )
+            return Target(item.name, symbol, dim, unit, requested, False, "signed", symbol)
+        if item.name in dims and item.name not in {
+            s.name for lv in levels.values() for s in lv.unknowns
+        }:
+            dim = dims[item.name]
+            unit, dim = _unit(item, dim, spec, where)
+            symbol = sympy.Symbol(item.name)
+            return Target(item.name, symbol, dim, unit, item.unit is not None, True)
+        raise SpecError(
+            f"'{item.name}' is not a quantity of the linkage",
+            where,
+            hint="ask for omega(BAR), alpha(BAR), v(P), a(P), v_x(P), …, theta(BAR), "
+            "e.g. 'w_BC = omega(BC)'",
+        )
+    function, args = item.ref.function, item.ref.args
+    if function not in FUNCTIONS or len(args) != 1:
+        close = difflib.get_close_matches(function, FUNCTIONS, n=1)
+        raise SpecError(
+            f"'{function}({', '.join(args)})' is not a linkage quantity",
+            where,
+            hint=f"did you mean '{close[0]}(…)'?"
+            if close
+            else "ask for omega(BAR), alpha(BAR), v(P), a(P), v_x(P), v_y(P), a_x(P), "
+            "a_y(P) or theta(BAR)",
+        )
+    name = args[0]
+    level = levels["acceleration" if function in ACCELERATIONS else "velocity"]
+    symbol = sympy.Symbol(item.name)
+
+    def target(kind: str, dim: Dim, expr: sympy.Expr | None = None, **extra: object) -> Target:
+        unit, dim = _unit(item, dim, spec, where)
+        if kind == "angle":
+            unit = "deg" if item.unit is None else unit
+            kind = "signed"
+        return Target(
+            item.name, symbol, dim, unit, item.unit is not None, False, kind, expr, **extra
+        )  # type: ignore[arg-type]
+
+    if function in ("v_rel", "a_rel"):
+        slider = linkage.sliders.get(name)
+        if slider is None or not slider.bar:
+            raise SpecError(
+                f"{function}({name}) is the rate of a joint sliding along a bar, and {name} "
+                "does not",
+                where,
+                hint="declare it with 'slider P: along bar BAR'",
+            )
+        dim = Dim.of("velocity") if function == "v_rel" else Dim.of("acceleration")
+        return target("along", dim, level.relative[name], axis=slots[slider.bar])
+    if function == "force":
+        if free is None or name not in free.at_joint:
+            raise SpecError(
+                f"force({name}) is the force at a pin of a loaded linkage, and {name} is not one",
+                where,
+                hint="force(P) needs a pin P joining bars (or a bar to the ground) in a "
+                "linkage with masses or loads",
+            )
+        return target("vector", Dim.of("force"), vector=free.at_joint[name])
+    if function in ("omega", "alpha", "theta"):
+        if name not in linkage.bars:
+            close = difflib.get_close_matches(name, sorted(linkage.bars), n=1)
+            raise SpecError(
+                f"there is no bar '{name}'",
+                where,
+                hint=f"did you mean '{close[0]}'?" if close else "name a bar",
+            )
+        if function == "theta":
+            first, second = linkage.bars[name].points[:2]
+            dx, dy = r[second][0] - r[first][0], r[second][1] - r[first][1]
+            return target("angle", Dim(), sympy.atan2(dy, dx))
+        dim = Dim(0, 0, -1) if function == "omega" else Dim(0, 0, -2)
+        return target("rotation", dim, level.rotation[name])
+    if name not in level.rate:
+        close = difflib.get_close_matches(name, sorted(level.rate), n=1)
+        raise SpecError(
+            f"there is no joint '{name}'",
+            where,
+            hint=f"did you mean '{close[0]}'?" if close else "name a point of a bar",
+        )
+    dim = Dim.of("velocity") if function.startswith("v") else Dim.of("acceleration")
+    vector = level.rate[name]
+    if function in ("v_x", "a_x", "v_y", "a_y"):
+        return target("signed", dim, vector[0 if function.endswith("x") else 1])
+    slider = linkage.sliders.get(name)
+    if slider is not None and slider.axis is not None:
+        return target("along", dim, level.along[name], axis=slider.axis)
+    if name in linkage.fixed:
+        return target("magnitude", dim, sympy.Integer(0))
+    return target("vector", dim, vector=vector)
+
+
+def cross_checks(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Checks of a solved loaded linkage by a second method: the power equation (the
+    loads' power equals the rate of change of the kinetic energy), in which no pin or
+    guide force appears."""
+    if problem.free is None:
+        return ()
+    g = problem.symbols["g"]
+    balance = power_balance(
+        problem.linkage,
+        problem.r,
+        problem.levels["velocity"],
+        problem.levels["acceleration"],
+        g,
+        {**problem.system.knowns, **values},
+    )
+    if balance is None:
+        return ()
+    supplied, stored = balance
+    scale = max(abs(supplied), abs(stored), 1e-300)
+    error = abs(supplied - stored) / scale
+    unit = natural_unit(Dim(2, 1, -3), problem.spec.system)
+    shown = format_quantity(convert(supplied, unit, problem.spec.system), unit)
+    detail = (
+        f"power of the loads {shown} = dT/dt = Σ (m v_G·a_G + I_G ω α) "
+        f"{format_quantity(convert(stored, unit, problem.spec.system), unit)} "
+        f"(relative difference {error:.1e})"
+    )
+    return (Check("power equation", error < 1e-9, detail),)
