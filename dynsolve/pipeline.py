@@ -135,13 +135,14 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     from dynsolve.linkage.model import is_linkage
 
     if is_linkage(spec):
-        from dynsolve.linkage.problem import build_linkage_problem
+        from dynsolve.linkage.problem import build_linkage_problem, figure
         from dynsolve.linkage.problem import cross_checks as linkage_checks
 
         linkage = build_linkage_problem(spec)
         solved = solve_system(linkage.system, options)
         checks = linkage_checks(linkage, solved.values)
-        return solve_problem(linkage, options, solved, second_methods=checks)
+        solution = solve_problem(linkage, options, solved, second_methods=checks)
+        return replace(solution, linkage=figure(linkage))
     from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
 
     problem = build_scene_problem(spec)

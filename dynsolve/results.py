@@ -156,6 +156,17 @@ class EnergyTerm:
 
 
 @dataclass(frozen=True)
+class LinkageFigure:
+    """A linkage at the instant, as data for a drawing (positions in metres)."""
+
+    joints: tuple[tuple[str, float, float, bool], ...]  # name, x, y, fixed to the ground
+    bars: tuple[tuple[str, tuple[str, ...]], ...]  # name, its joints in order
+    guides: tuple[tuple[str, float, float], ...]  # a slider's joint and its guide's direction
+    wheels: tuple[tuple[str, str, float], ...]  # a wheel or gear: bar, centre joint, radius
+    grounds: tuple[tuple[float, float, float, float], ...] = ()  # where a wheel rolls: K, n
+
+
+@dataclass(frozen=True)
 class Solution:
     """Everything about one solved spec."""
 
@@ -177,6 +188,7 @@ class Solution:
     warnings: tuple[str, ...] = ()  # likely slips in the spec: a bare-number angle, lb as a mass
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
+    linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
 
     @property
     def passed(self) -> bool:

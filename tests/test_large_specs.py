@@ -49,6 +49,33 @@ def dense_system(n: int, seed: int = 1) -> tuple[str, list[int]]:
     return "\n".join(lines) + "\n", solution
 
 
+def linkage_chain(n: int) -> str:
+    """A crank and n − 1 bars in a zigzag, each bar's far end a slider on a horizontal
+    guide: joints at (i a, (i mod 2) b), every one placed (no loop closure)."""
+    lines = ["given:", "  a = 0.3 m", "  b = 0.1 m", "  w = 2 rad/s", "scene:"]
+    lines += ["  point P0: (0, 0)", "  point Q: (0, b)"]
+    for i in range(1, n + 1):
+        height = "b" if i % 2 else "0"
+        lines.append(f"  bar L{i}: P{i - 1} to P{i}")
+        lines.append(f"  joint P{i}: ({i}*a, {height})")
+        if i > 1:
+            lines.append(f"  slider P{i}: along right, through {'Q' if i % 2 else 'P0'}")
+    lines += ["  omega L1: w ccw", f"find: v_end = v(P{n}), w_2 = omega(L2)"]
+    return "\n".join(lines) + "\n"
+
+
+def test_a_chain_of_50_bars_moves_as_the_first_slider():
+    # by hand: v_P1 = ω k × (a, b) = (−ω b, ω a); bar 2 (r = (a, −b)), P2 horizontal:
+    # y: 0 = ω a + ω_2 a -> ω_2 = −ω; x: v_P2 = −ω b − ω_2 (−b) = −2 ω b = −0.4 m/s; every
+    # later bar joins two horizontal sliders: ω_i = 0, the same speed.
+    solution = solve_text(linkage_chain(50), "linkchain.dyn")
+    found = {a.name: a for a in solution.answers}
+    assert found["v_end"].value == pytest.approx(0.4, rel=1e-12)
+    assert found["v_end"].direction == "left"
+    assert found["w_2"].value == pytest.approx(2, rel=1e-12) and found["w_2"].direction == "cw"
+    assert all(check.passed for check in solution.checks)
+
+
 def test_a_chain_of_40_blocks_accelerates_as_one_mass():
     # the whole chain: P = (n m) a -> a = 10/(40*2) = 0.125 m/s²; the first cord pulls
     # only the first block: T0 = m a = 0.25 N (by hand)

@@ -487,3 +487,101 @@ def test_the_power_check_catches_a_wrong_moment_equation(monkeypatch):
     solution = solve_file(PROBLEMS / "slider_crank_forces.dyn")
     power = next(c for c in solution.checks if c.name == "power equation")
     assert not power.passed
+
+
+# ---- rolling wheels and gears -------------------------------------------------------------
+
+
+def test_bar_driven_by_a_rolling_wheel():
+    """Wheel r = 0.5 m rolling, ω = 4 rad/s cw; A at 45° on the rim; AB = 1.5 m, B on the
+    ground. By hand: K the contact point, v_A = ω k × r_A/K; B = (x_A + √(L² − y_A²), 0);
+    y: 0 = v_Ay + ω_AB (x_B − x_A); x: v_B = v_Ax − ω_AB (0 − y_A)."""
+    solution = solve_file(PROBLEMS / "wheel_and_bar.dyn")
+    assert all(c.passed for c in solution.checks)
+    found = answers(solution)
+    w, r, L = -4.0, 0.5, 1.5
+    xA, yA = r * math.cos(math.pi / 4), r + r * math.sin(math.pi / 4)
+    vA = (-w * yA, w * xA)
+    xB = xA + math.sqrt(L**2 - yA**2)
+    w_AB = -vA[1] / (xB - xA)
+    assert signed(found["w_AB"], "ccw") == pytest.approx(w_AB, rel=1e-12)
+    v_B = vA[0] + w_AB * yA
+    assert signed(found["v_B"], "right") == pytest.approx(v_B, rel=1e-12)
+    # the instantaneous centre of AB: above B (v_B horizontal), at v_B/ω_AB
+    assert found["x_IC"].value == pytest.approx(xB, rel=1e-12)
+    assert found["y_IC"].value == pytest.approx(v_B / w_AB, rel=1e-12)
+    centre = next(c for c in solution.checks if c.name == "instantaneous centre of AB")
+    assert centre.passed and "r_B/IC" in centre.detail
+
+
+def test_planet_gear_on_a_rotating_arm():
+    """Fixed sun (r_S = 0.1 m), arm at ω_0 = 5 rad/s ccw, planet r_P = 0.05 m: the planet's
+    pitch point on the sun is at rest, so v_B = ω_0 (r_S + r_P) = ω_P r_P."""
+    solution = solve_file(PROBLEMS / "planetary.dyn")
+    assert all(c.passed for c in solution.checks)
+    found = answers(solution)
+    assert signed(found["w_P"], "ccw") == pytest.approx(5 * 0.15 / 0.05, rel=1e-12)
+    assert found["v_B"].value == pytest.approx(5 * 0.15, rel=1e-12)
+
+
+def test_rolling_disk_driven_by_a_couple():
+    """A uniform disk rolling with α given: M = (I_G + m r²) α, F = −m α r (against the
+    roll), N = m g (Hibbeler 17.5)."""
+    text = """\
+given:
+  m = 10 kg
+  r = 0.3 m
+  alpha_0 = 2 rad/s^2
+scene:
+  bar disk: O, mass m
+  joint O: (0, r)
+  rolls disk: radius r
+  omega disk: 0
+  alpha disk: alpha_0 ccw
+  couple M on disk: ccw
+  gravity
+find: M, F = F_disk, N = N_disk
+"""
+    found = answers(solve_text(text, "disk.dyn"))
+    assert found["M"].value == pytest.approx((10 * 0.09 / 2 + 10 * 0.09) * 2, rel=1e-12)
+    assert found["F"].value == pytest.approx(10 * 2 * 0.3) and found["F"].direction == "left"
+    assert found["N"].value == pytest.approx(10 * 9.81) and found["N"].direction == "up"
+
+
+def test_gears_whose_centres_do_not_fit_their_radii_are_refused():
+    text = (PROBLEMS / "planetary.dyn").read_text().replace(
+        "joint B: (r_S + r_P, 0)", "joint B: (r_S + 2*r_P, 0)"
+    )
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "gears.dyn")
+    assert "radii add up" in str(error.value)
+
+
+def test_linkage_lines_in_a_scene_of_bodies_are_not_ignored():
+    text = """\
+given:
+  m = 1 kg
+scene:
+  body b: particle, mass m, at (0, 0)
+  alpha b: 0
+  gravity
+find: a = a_G(b)
+"""
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "bodies.dyn")
+    assert "'alpha' describes a linkage" in str(error.value)
+
+
+# ---- the solution sheet -------------------------------------------------------------------
+
+
+def test_the_sheet_draws_the_linkage_at_the_instant():
+    from dynsolve.render.latex import render_latex
+
+    solution = solve_file(PROBLEMS / "wheel_and_bar.dyn")
+    assert solution.linkage is not None
+    joints = {name: (x, y, fixed) for name, x, y, fixed in solution.linkage.joints}
+    assert joints["O"][:2] == pytest.approx((0.0, 0.5)) and not joints["O"][2]
+    assert solution.linkage.grounds == (pytest.approx((0.0, 0.0, 0.0, 1.0)),)
+    tex = render_latex(solution, "handout")
+    assert "The linkage at the instant" in tex and "\\begin{picture}" in tex

@@ -121,6 +121,22 @@ def free_bodies(
             forces[bars[0]].append((on_pin, point))
             if slider.bar:
                 forces[slider.bar].append(((-on_pin[0], -on_pin[1]), point))
+    if linkage.meshes:
+        mesh = linkage.meshes[0]
+        raise SpecError(
+            "forces between gears in mesh are not supported yet",
+            Position(linkage.file, mesh.line, mesh.column),
+            hint="ask for the gears' motion only (omega, alpha, v, a), without masses or loads",
+        )
+    for wheel in linkage.wheels.values():  # the ground's friction and normal push at K
+        n = wheel.normal
+        tangent = (n[1], -n[0])
+        friction = unknown(f"F_{wheel.bar}", FORCE)
+        normal = unknown(f"N_{wheel.bar}", FORCE)
+        push = (friction * tangent[0] + normal * n[0], friction * tangent[1] + normal * n[1])
+        forces[wheel.bar].append((push, "K"))
+        normals[normal.name] = n
+        normals[friction.name] = tangent
     couples: dict[str, sympy.Expr] = {b: ZERO for b in linkage.bars}
     dims: dict[str, Dim] = {}
     for load in linkage.loads:
@@ -141,16 +157,16 @@ def free_bodies(
     gravity = next((load for load in linkage.loads if load.kind == "gravity"), None)
     equations: list[Equation] = []
     for bar in linkage.bars.values():
-        first, second = bar.points[0], bar.points[1]
-        G = ((r[first][0] + r[second][0]) / 2, (r[first][1] + r[second][1]) / 2)
+        first = bar.points[0]
+        G, I_G = mass_centre(linkage, bar.name, r)
         where = {p: r[p] for p in bar.points} | {"G": G}
-        m = bar.mass if bar.mass is not None else ZERO
-        if m != 0 and len(bar.points) != 2:
-            raise SpecError(
-                f"bar {bar.name}: a mass is taken as a uniform bar between two points",
-                linkage.where(bar.name),
-                hint="give a bar with mass two points",
+        if bar.name in linkage.wheels:
+            wheel = linkage.wheels[bar.name]
+            where["K"] = (
+                G[0] - wheel.radius * wheel.normal[0],
+                G[1] - wheel.radius * wheel.normal[1],
             )
+        m = bar.mass if bar.mass is not None else ZERO
         applied = list(forces[bar.name])
         if gravity is not None and m != 0:
             assert gravity.direction is not None
@@ -159,8 +175,6 @@ def free_bodies(
         w, alpha = velocity.rotation[bar.name], acceleration.rotation[bar.name]
         a_P = acceleration.rate[first]
         a_G = (a_P[0] - alpha * dy - w**2 * dx, a_P[1] + alpha * dx - w**2 * dy)
-        length_sq = (r[second][0] - r[first][0]) ** 2 + (r[second][1] - r[first][1]) ** 2
-        I_G = m * (bar.gyration**2 if bar.gyration is not None else length_sq / 12)
         total = [sum((f[0][k] for f in applied), ZERO) for k in (0, 1)]
         moment = couples[bar.name] + sum(
             (
@@ -177,6 +191,30 @@ def free_bodies(
         equations.append(Equation(moment, I_G * alpha, note, bar.line, note))
     _check_count(linkage, unknowns, equations)
     return FreeBodies(tuple(equations), unknowns, at_joint, dims, normals)
+
+
+def mass_centre(linkage: Linkage, name: str, r: Mapping[str, Vec]) -> tuple[Vec, sympy.Expr]:
+    """A bar's G and I_G: a wheel or gear at its centre (a uniform disk, m ρ²/2, unless
+    a gyration is given), any other bar halfway between its two points (m L²/12)."""
+    bar = linkage.bars[name]
+    m = bar.mass if bar.mass is not None else ZERO
+    first = bar.points[0]
+    if linkage.round(name):
+        radius = (
+            linkage.wheels[name].radius
+            if name in linkage.wheels
+            else next(
+                mesh.radii[0] if mesh.first == name else mesh.radii[1]
+                for mesh in linkage.meshes
+                if name in (mesh.first, mesh.second)
+            )
+        )
+        k_sq = bar.gyration**2 if bar.gyration is not None else radius**2 / 2
+        return r[first], m * k_sq
+    second = bar.points[1]
+    G = ((r[first][0] + r[second][0]) / 2, (r[first][1] + r[second][1]) / 2)
+    length_sq = (r[second][0] - r[first][0]) ** 2 + (r[second][1] - r[first][1]) ** 2
+    return G, m * (bar.gyration**2 if bar.gyration is not None else length_sq / 12)
 
 
 def _slot(linkage: Linkage, r: Mapping[str, Vec], bar: str) -> Vec:
@@ -228,15 +266,14 @@ def power_balance(
     supplied: sympy.Expr = ZERO
     stored: sympy.Expr = ZERO
     for bar in linkage.bars.values():
-        first, second = bar.points[0], bar.points[1]
-        h = ((r[second][0] - r[first][0]) / 2, (r[second][1] - r[first][1]) / 2)
+        first = bar.points[0]
+        G, I_G = mass_centre(linkage, bar.name, r)
+        h = (G[0] - r[first][0], G[1] - r[first][1])
         w, alpha = velocity.rotation[bar.name], acceleration.rotation[bar.name]
         v_P, a_P = velocity.rate[first], acceleration.rate[first]
         v_G = (v_P[0] - w * h[1], v_P[1] + w * h[0])
         a_G = (a_P[0] - alpha * h[1] - w**2 * h[0], a_P[1] + alpha * h[0] - w**2 * h[1])
         m = bar.mass if bar.mass is not None else ZERO
-        length_sq = 4 * (h[0] ** 2 + h[1] ** 2)
-        I_G = m * (bar.gyration**2 if bar.gyration is not None else length_sq / 12)
         stored += m * (v_G[0] * a_G[0] + v_G[1] * a_G[1]) + I_G * w * alpha
         if gravity is not None and m != 0:
             assert gravity.direction is not None

@@ -36,6 +36,7 @@ from dynsolve.spec.ast import SceneStmt, Spec
 from dynsolve.units import Dim
 
 LENGTH = Dim.of("length")
+UP: Vec = (sympy.Integer(0), sympy.Integer(1))
 RATES = {
     "omega": Dim(0, 0, -1),
     "alpha": Dim(0, 0, -2),
@@ -44,7 +45,7 @@ RATES = {
 }
 LINKAGE_LINES = frozenset(
     {"point", "bar", "joint", "slider", "omega", "alpha", "velocity", "acceleration", "branch"}
-    | {"gravity", "couple", "force"}
+    | {"gravity", "couple", "force", "wheel", "mesh"}
 )
 
 
@@ -107,6 +108,30 @@ class Load:
 
 
 @dataclass(frozen=True)
+class Wheel:
+    """A bar that is a wheel centred on its first point, rolling without slipping on
+    fixed ground: it touches it at ``radius`` from the centre, against ``normal``."""
+
+    bar: str
+    radius: sympy.Expr
+    normal: Vec
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Mesh:
+    """Two gears (bars centred on their first points) in external mesh: their pitch
+    circles, of radii ``radii``, roll on each other where they touch."""
+
+    first: str
+    second: str
+    radii: tuple[sympy.Expr, sympy.Expr]
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Linkage:
     """A scene's linkage as written: what is fixed, what is given and what moves."""
 
@@ -122,6 +147,12 @@ class Linkage:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     declared: Mapping[str, tuple[int, int]] = field(default_factory=dict)
     loads: tuple[Load, ...] = ()
+    wheels: Mapping[str, Wheel] = field(default_factory=dict)
+    meshes: tuple[Mesh, ...] = ()
+
+    def round(self, bar: str) -> bool:
+        """Whether the bar is a wheel or a gear (its G and turning centre: its first point)."""
+        return bar in self.wheels or any(bar in (m.first, m.second) for m in self.meshes)
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -169,6 +200,8 @@ def read_linkage(spec: Spec) -> Linkage:
     sliders: dict[str, Slider] = {}
     drives: list[Drive] = []
     loads: list[Load] = []
+    wheels: dict[str, Wheel] = {}
+    meshes: list[Mesh] = []
     branch = ""
     declared: dict[str, tuple[int, int]] = {}
     statements = tuple(spec.scene or ())
@@ -220,6 +253,32 @@ def read_linkage(spec: Spec) -> Linkage:
             branch = stmt.word
         elif stmt.kind in ("gravity", "couple", "force"):
             loads.append(_load(stmt, reader, bars, where))
+        elif stmt.kind == "wheel":
+            _bar_named(stmt.body, bars, where)
+            assert stmt.value is not None
+            normal = reader.direction(stmt.direction) if stmt.direction else UP
+            radius = reader.value(stmt.value, LENGTH, "a wheel's radius")
+            wheels[stmt.body] = Wheel(stmt.body, radius, normal, stmt.line, stmt.column)
+        elif stmt.kind == "mesh":
+            _bar_named(stmt.body, bars, where)
+            _bar_named(stmt.other, bars, where)
+            radii = tuple(reader.value(e, LENGTH, "a gear's radius") for e in stmt.vectors[0])
+            meshes.append(Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column))  # type: ignore[arg-type]
+    for bar in bars.values():
+        round_bar = bar.name in wheels or any(bar.name in (m.first, m.second) for m in meshes)
+        if bar.mass is not None and len(bar.points) != 2 and not round_bar:
+            raise SpecError(
+                f"bar {bar.name}: a mass is taken as a uniform bar between two points",
+                Position(spec.file, bar.line, bar.column),
+                hint="give a bar with mass two points (its ends), or make it a wheel",
+            )
+        if len(bar.points) == 1 and not round_bar:
+            raise SpecError(
+                f"bar {bar.name} has one point: only a wheel or a gear may",
+                Position(spec.file, bar.line, bar.column),
+                hint=f"name its other end ('bar {bar.name}: {bar.points[0]} to B'), or make it "
+                f"a wheel ('rolls {bar.name}: radius r') or a gear ('mesh …')",
+            )
     for slider in sliders.values():
         if slider.through and slider.through not in fixed and slider.through not in given:
             raise SpecError(
@@ -241,6 +300,8 @@ def read_linkage(spec: Spec) -> Linkage:
         values,
         declared,
         tuple(loads),
+        wheels,
+        tuple(meshes),
     )
 
 
@@ -266,12 +327,6 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
         )
     length = angle = mass = gyration = None
     if "mass" in props:
-        if len(points) != 2:
-            raise SpecError(
-                f"bar {stmt.name}: a mass is taken as a uniform bar between two points",
-                where,
-                hint="give a bar with mass two points (its ends)",
-            )
         mass = reader.value(props["mass"].values[0], Dim.of("mass"), "a bar's mass")
     if "gyration" in props:
         if "mass" not in props:
@@ -333,6 +388,13 @@ def _load(stmt: SceneStmt, reader: SceneReader, bars: Mapping[str, Bar], where: 
         line=stmt.line,
         column=stmt.column,
     )
+
+
+def _bar_named(name: str, bars: Mapping[str, Bar], where: Position) -> None:
+    if name not in bars:
+        close = difflib.get_close_matches(name, sorted(bars), n=1)
+        hint = f"did you mean '{close[0]}'?" if close else "declare it with 'bar NAME: O to …'"
+        raise SpecError(f"there is no bar '{name}'", where, hint)
 
 
 def _on_bar(stmt: SceneStmt, bars: Mapping[str, Bar], where: Position) -> Slider:

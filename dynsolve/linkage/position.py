@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.errors import SpecError
+from dynsolve.errors import Position, SpecError
 from dynsolve.linkage.model import Linkage
 from dynsolve.model.scene import Vec
 from dynsolve.numbers import tidy
@@ -159,6 +159,22 @@ def _check_given(linkage: Linkage, positions: Mapping[str, Vec], unknown: Sequen
                         hint="the angle is measured from +x, ccw, from the first point to "
                         "the second",
                     )
+    for mesh in linkage.meshes:
+        one, two = (linkage.bars[b].points[0] for b in (mesh.first, mesh.second))
+        if one in unknown or two in unknown:
+            continue
+        first, second = _numbers(linkage, positions[one]), _numbers(linkage, positions[two])
+        radii = _numbers(linkage, mesh.radii)
+        if first is None or second is None or radii is None:
+            continue
+        span = math.hypot(second[0] - first[0], second[1] - first[1])
+        if abs(span - sum(radii)) > AGREE * max(span, sum(radii)):
+            raise SpecError(
+                f"gears {mesh.first} and {mesh.second}: their centres are {span:.6g} apart "
+                f"(base units), but their radii add up to {sum(radii):.6g}",
+                Position(linkage.file, mesh.line, mesh.column),
+                hint="gears in external mesh have their centres r_1 + r_2 apart",
+            )
     for slider in linkage.sliders.values():
         if slider.bar:
             ends = linkage.bars[slider.bar].points[:2]
@@ -250,6 +266,14 @@ def _closure(
         assert slider.axis is not None
         residuals.append(dx * slider.axis[1] - dy * slider.axis[0])
         texts.append(f"{slider.point} on its guide through {slider.through}")
+    for mesh in linkage.meshes:
+        one, two = (linkage.bars[b].points[0] for b in (mesh.first, mesh.second))
+        if not {one, two} & set(unknown):
+            continue
+        dx, dy = where[two][0] - where[one][0], where[two][1] - where[one][1]
+        span = mesh.radii[0] + mesh.radii[1]
+        residuals.append((dx**2 + dy**2 - span**2) / span)
+        texts.append(f"|{two} − {one}| = {sympy.sstr(span)} (gears in mesh)")
     if len(residuals) != 2 * len(unknown):
         count = 2 * len(unknown)
         fewer = len(residuals) < count

@@ -34,6 +34,7 @@ from its first point to its second, from +x, ccw).
 from __future__ import annotations
 
 import difflib
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
@@ -50,13 +51,15 @@ from dynsolve.model.scene import Vec
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.scene_mode import _row, _unit, _unused
 from dynsolve.quantities import convert
-from dynsolve.results import Check, EquationRow, Step
+from dynsolve.results import Check, EquationRow, LinkageFigure, Step
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
 from dynsolve.units import Dim, natural_unit
 
 FUNCTIONS = (
     "force",
+    "x_IC",
+    "y_IC",
     "omega",
     "alpha",
     "v",
@@ -382,23 +385,28 @@ def _target(
     free: FreeBodies | None,
 ) -> Target:
     where = Position(spec.file, item.line, item.column)
-    if item.ref is None:
+    alias = item.ref.function if item.ref is not None and not item.ref.args else item.name
+    if item.ref is None or alias != item.name:  # a name, or another name for it (F = F_W)
         forces = {s.name: s for s in free.unknowns} if free is not None else {}
-        if item.name in forces:
-            unit, dim = _unit(item, dims[item.name], spec, where)
-            symbol = forces[item.name]
+        if alias in forces:
+            unit, dim = _unit(item, dims[alias], spec, where)
+            symbol = forces[alias]
             requested = item.unit is not None
-            if free is not None and item.name in free.normals:  # a guide's push, in words
-                normal = free.normals[item.name]
+            if free is not None and alias in free.normals:  # a guide's push, in words
+                normal = free.normals[alias]
                 return Target(
                     item.name, symbol, dim, unit, requested, False, "along", symbol, axis=normal
                 )
             return Target(item.name, symbol, dim, unit, requested, False, "signed", symbol)
-        if item.name in dims and item.name not in {
-            s.name for lv in levels.values() for s in lv.unknowns
-        }:
-            dim = dims[item.name]
-            unit, dim = _unit(item, dim, spec, where)
+        motion = {s.name: s for level in levels.values() for s in level.unknowns}
+        if alias in motion:  # an unknown by its own name: omega_BC, v_Cx, …
+            unit, dim = _unit(item, dims[alias], spec, where)
+            requested = item.unit is not None
+            return Target(
+                item.name, motion[alias], dim, unit, requested, False, "signed", motion[alias]
+            )
+        if alias == item.name and item.name in dims:  # a given, asked back
+            unit, dim = _unit(item, dims[item.name], spec, where)
             symbol = sympy.Symbol(item.name)
             return Target(item.name, symbol, dim, unit, item.unit is not None, True)
         raise SpecError(
@@ -451,6 +459,16 @@ def _target(
                 "linkage with masses or loads",
             )
         return target("vector", Dim.of("force"), vector=free.at_joint[name])
+    if function in ("x_IC", "y_IC"):
+        if name not in linkage.bars:
+            close = difflib.get_close_matches(name, sorted(linkage.bars), n=1)
+            hint = f"did you mean '{close[0]}'?" if close else "name a bar"
+            raise SpecError(f"there is no bar '{name}'", where, hint)
+        first = linkage.bars[name].points[0]
+        w, v = level.rotation[name], level.rate[first]
+        if function == "x_IC":  # r_IC = r_P + (k × v_P)/ω
+            return target("signed", LENGTH, r[first][0] - v[1] / w)
+        return target("signed", LENGTH, r[first][1] + v[0] / w)
     if function in ("omega", "alpha", "theta"):
         if name not in linkage.bars:
             close = difflib.get_close_matches(name, sorted(linkage.bars), n=1)
@@ -487,9 +505,80 @@ def _target(
 def cross_checks(
     problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Check, ...]:
-    """Checks of a solved loaded linkage by a second method: the power equation (the
-    loads' power equals the rate of change of the kinetic energy), in which no pin or
-    guide force appears."""
+    """Checks of a solved linkage by a second method: each asked instantaneous centre
+    (every point's speed is ω times its distance from it), and for a loaded linkage the
+    power equation (the loads' power equals the rate of change of the kinetic energy),
+    in which no pin or guide force appears."""
+    return _centre_checks(problem, values) + _power_check(problem, values)
+
+
+def _centre_checks(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """The instantaneous centre of each bar asked for (x_IC, y_IC): where it is, and each
+    of the bar's points moving at |ω| times its distance from it, perpendicular to it."""
+    known = {**problem.system.knowns, **values}
+    asked = {
+        item.ref.args[0]
+        for item in problem.spec.finds
+        if item.ref and item.ref.function in ("x_IC", "y_IC")
+    }
+    level = problem.levels["velocity"]
+    unit = natural_unit(LENGTH, problem.spec.system)
+    checks = []
+    for name in sorted(asked):
+        bar = problem.linkage.bars[name]
+        numbers = {}
+        for point in bar.points:
+            exprs = (*problem.r[point], *level.rate[point])
+            try:
+                numbers[point] = [float(sympy.N(_full(e, known), 20)) for e in exprs]
+            except TypeError:
+                return ()
+        try:
+            w = float(sympy.N(_full(level.rotation[name], known), 20))
+        except TypeError:
+            return ()
+        if w == 0:
+            checks.append(
+                Check(
+                    f"instantaneous centre of {name}", True, f"{name} translates (ω = 0): no centre"
+                )
+            )
+            continue
+        x, y, vx, vy = numbers[bar.points[0]]
+        centre = (x - vy / w, y + vx / w)
+        parts, worst = [], 0.0
+        for point, (px, py, ux, uy) in numbers.items():
+            dx, dy = px - centre[0], py - centre[1]
+            predicted = (-w * dy, w * dx)
+            speed = math.hypot(ux, uy)
+            worst = max(
+                worst,
+                math.hypot(predicted[0] - ux, predicted[1] - uy)
+                / max(speed, abs(w) * math.hypot(dx, dy), 1e-300),
+            )
+            distance = format_quantity(convert(math.hypot(dx, dy), unit, problem.spec.system), unit)
+            parts.append(f"r_{point}/IC = {distance}")
+        at = ", ".join(format_quantity(convert(c, unit, problem.spec.system), "") for c in centre)
+        detail = (
+            f"IC at ({at}) {unit}; "
+            + ", ".join(parts)
+            + f"; each v = ω × r/IC (largest relative difference {worst:.1e})"
+        )
+        checks.append(Check(f"instantaneous centre of {name}", worst < 1e-9, detail))
+    return tuple(checks)
+
+
+def _full(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with the known values put in, twice (derived quantities hold givens)."""
+    return (sympy.Integer(0) + expr).xreplace(dict(known)).xreplace(dict(known))
+
+
+def _power_check(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """The power equation of a loaded linkage (see :func:`cross_checks`)."""
     if problem.free is None:
         return ()
     g = problem.symbols["g"]
@@ -514,3 +603,50 @@ def cross_checks(
         f"(relative difference {error:.1e})"
     )
     return (Check("power equation", error < 1e-9, detail),)
+
+
+def figure(problem: LinkageProblem) -> LinkageFigure | None:
+    """The linkage at the instant for a drawing, in metres; None when a position is
+    symbolic."""
+    linkage = problem.linkage
+    known = dict(problem.system.knowns)
+    joints = []
+    for point in linkage.joints:
+        try:
+            x, y = (float(sympy.N(_full(c, known), 15)) for c in problem.placement.positions[point])
+        except TypeError:
+            return None
+        joints.append((point, x, y, point in linkage.fixed))
+    guides = []
+    for slider in linkage.sliders.values():
+        if slider.axis is None:
+            continue
+        try:
+            dx, dy = (float(sympy.N(_full(c, known), 15)) for c in slider.axis)
+        except TypeError:
+            return None
+        guides.append((slider.point, dx, dy))
+    wheels = []
+    radii = {w.bar: w.radius for w in linkage.wheels.values()}
+    for mesh in linkage.meshes:
+        radii.setdefault(mesh.first, mesh.radii[0])
+        radii.setdefault(mesh.second, mesh.radii[1])
+    for bar, radius in radii.items():
+        try:
+            wheels.append(
+                (bar, linkage.bars[bar].points[0], float(sympy.N(_full(radius, known), 15)))
+            )
+        except TypeError:
+            return None
+    grounds = []
+    where = {name: (x, y) for name, x, y, _ in joints}
+    for wheel in linkage.wheels.values():
+        centre = where[linkage.bars[wheel.bar].points[0]]
+        try:
+            n = [float(sympy.N(_full(c, known), 15)) for c in wheel.normal]
+            radius = float(sympy.N(_full(wheel.radius, known), 15))
+        except TypeError:
+            return None
+        grounds.append((centre[0] - radius * n[0], centre[1] - radius * n[1], n[0], n[1]))
+    bars = tuple((b.name, b.points) for b in linkage.bars.values())
+    return LinkageFigure(tuple(joints), bars, tuple(guides), tuple(wheels), tuple(grounds))

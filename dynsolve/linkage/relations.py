@@ -162,8 +162,59 @@ def relative_motion(
             equations.append(
                 Equation(lhs, right, f"{law} ({axis})", slider.line, f"{law} ({axis})")
             )
+    equations += _rolling(linkage, level, rotation, rate)
+    equations += _meshing(linkage, level, r, rotation, rate)
     _check_count(linkage, level, unknowns, equations)
     return Level(rotation, rate, along, unknowns, tuple(equations), relative)
+
+
+def _rolling(
+    linkage: Linkage, level: str, rotation: Mapping[str, sympy.Expr], rate: Mapping[str, Vec]
+) -> list[Equation]:
+    """A wheel rolling on fixed ground touches it at K = O − ρ n with v_K = 0 and
+    a_K = ω² ρ n: v_O = ω × r_O/K and a_O = α × r_O/K (Hibbeler 16.5: v_O = ω r, a_O = α r)."""
+    rotation_name, _, rate_name, _, _ = LEVELS[level]
+    equations = []
+    for wheel in linkage.wheels.values():
+        centre = linkage.bars[wheel.bar].points[0]
+        w, n, rho = rotation[wheel.bar], wheel.normal, wheel.radius
+        rhs = (-w * rho * n[1], w * rho * n[0])
+        law = f"{rate_name}_{centre} = {pretty(rotation_name)}_{wheel.bar} × r_{centre}/K (rolls)"
+        for axis, lhs, right in zip("xy", rate[centre], rhs, strict=True):
+            if (lhs - right).free_symbols or lhs != right:
+                equations.append(
+                    Equation(lhs, right, f"{law} ({axis})", wheel.line, f"{law} ({axis})")
+                )
+    return equations
+
+
+def _meshing(
+    linkage: Linkage,
+    level: str,
+    r: Mapping[str, Vec],
+    rotation: Mapping[str, sympy.Expr],
+    rate: Mapping[str, Vec],
+) -> list[Equation]:
+    """Gears in mesh: at the pitch point P the two gears' points share their velocity (and
+    acceleration) along the common tangent t = k × e, e from centre 1 to centre 2:
+    v_O1·t + ω_1 r_1 = v_O2·t − ω_2 r_2 (α in place of ω for accelerations)."""
+    rotation_name, _, rate_name, _, _ = LEVELS[level]
+    equations = []
+    for mesh in linkage.meshes:
+        one, two = (linkage.bars[b].points[0] for b in (mesh.first, mesh.second))
+        dx, dy = r[two][0] - r[one][0], r[two][1] - r[one][1]
+        distance = mesh.radii[0] + mesh.radii[1]  # the centres' distance (checked)
+        t = (-dy / distance, dx / distance)
+        lhs = rate[one][0] * t[0] + rate[one][1] * t[1] + rotation[mesh.first] * mesh.radii[0]
+        rhs = rate[two][0] * t[0] + rate[two][1] * t[1] - rotation[mesh.second] * mesh.radii[1]
+        w = pretty(rotation_name)
+        law = (
+            f"({rate_name}_P)_t on {mesh.first} = ({rate_name}_P)_t on {mesh.second}: "
+            f"{rate_name}_{one}·t + {w}_{mesh.first} r = {rate_name}_{two}·t − "
+            f"{w}_{mesh.second} r (mesh)"
+        )
+        equations.append(Equation(lhs, rhs, law, mesh.line, law))
+    return equations
 
 
 def _along_guide(linkage: Linkage, drive: Drive, axis: Vec) -> sympy.Expr:
@@ -228,24 +279,20 @@ def condition(level: Level, values: Mapping[sympy.Symbol, sympy.Expr], size: flo
     import numpy
 
     unknowns = list(level.unknowns)
-    if not unknowns:
+    if not unknowns or len(level.equations) != len(unknowns):
         return None
-    rows = []
-    for equation in level.equations:
+    column = {symbol: i for i, symbol in enumerate(unknowns)}
+    zero = dict.fromkeys(unknowns, ZERO)
+    rotations = (LEVELS["velocity"][1], LEVELS["acceleration"][1])
+    matrix = numpy.zeros((len(unknowns), len(unknowns)))
+    for i, equation in enumerate(level.equations):  # each row holds a few unknowns
         residual = (equation.lhs - equation.rhs).xreplace(dict(values))
-        row = []
-        for symbol in unknowns:
-            coefficient = sympy.N(
-                sympy.diff(residual, symbol).xreplace({s: 0 for s in unknowns}), 20
-            )
+        for symbol in residual.free_symbols & set(column):
+            coefficient = sympy.N(sympy.diff(residual, symbol).xreplace(zero), 20)
             if not coefficient.is_number:
                 return None
-            rotation = level.unknowns[symbol] in (LEVELS["velocity"][1], LEVELS["acceleration"][1])
-            row.append(float(coefficient) / size if rotation else float(coefficient))
-        rows.append(row)
-    matrix = numpy.array(rows, dtype=float)
-    if matrix.shape[0] != matrix.shape[1]:
-        return None
+            scale = size if level.unknowns[symbol] in rotations else 1.0
+            matrix[i, column[symbol]] = float(coefficient) / scale
     singular = numpy.linalg.svd(matrix, compute_uv=False)
     return math.inf if singular[-1] == 0 else float(singular[0] / singular[-1])
 

@@ -42,6 +42,15 @@ WORDS: dict[str, Vec] = {
     "left": (sympy.Integer(-1), sympy.Integer(0)),
 }
 LENGTH, MASS, FORCE = Dim.of("length"), Dim.of("mass"), Dim.of("force")
+LINKAGE_ONLY = {  # scene lines of a linkage (dynsolve.linkage), as written
+    "joint": "joint",
+    "slider": "slider",
+    "alpha": "alpha",
+    "acceleration": "acceleration",
+    "branch": "branch",
+    "wheel": "rolls …: radius",
+    "mesh": "mesh",
+}
 GROUND = "ground"  # `impact B with ground`: the fixed surface (unless a body is so named)
 
 
@@ -634,6 +643,12 @@ def build_scene(
     ``given_values`` lets numeric checks (0 ≤ e ≤ 1) be made at once."""
     builder = _Builder(spec, symbols, dims, given_values)
     for stmt in spec.scene:
+        if stmt.kind in LINKAGE_ONLY:
+            raise SpecError(
+                f"'{LINKAGE_ONLY[stmt.kind]}' describes a linkage, and this scene has no bars",
+                builder.where(stmt.line, stmt.column),
+                hint="declare the links with 'bar NAME: A to B' (docs/scene-mode.md, Linkages)",
+            )
         builder.declare(stmt)
     builder.finish_composites()
     builder.body_points()

@@ -24,6 +24,11 @@ from pathlib import PurePath
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
+from dynsolve.render.picture import HEAD_MM as _HEAD_MM
+from dynsolve.render.picture import SQUARE_MM as _SQUARE_MM
+from dynsolve.render.picture import Picture as _Picture
+from dynsolve.render.picture import Point
+from dynsolve.render.picture import polar as _polar
 from dynsolve.results import (
     AnswerRow,
     Assumption,
@@ -283,7 +288,7 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
             f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings
         ],
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
-        "free_body": lambda: _free_body_section(solution.free_body),
+        "free_body": lambda: _free_body_section(solution.free_body) + _linkage_section(solution),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [_equations_section(solution.equations)],
@@ -566,17 +571,24 @@ def _check_text(check: Check) -> str:
 
 # ---- free-body diagrams (scene mode)
 
-Point = tuple[float, float]
-
 _ROUND_SHAPES = frozenset({"disk", "ring", "cylinder", "sphere", "shell", "hollow"})
 _BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart), any size
 _ARROW_MM = 10.0  # every force arrow, whatever its magnitude
-_HEAD_MM, _HEAD_HALF_MM = 2.4, 0.9  # arrowhead length and half-width
-_SQUARE_MM = 8.0  # the side of the square drawn for a shape without a footprint
 _COUPLE_MM = 6.0  # the radius of a body's first couple arrow; the next ones 3 mm wider
 _LABEL_GAP_MM = 1.5
-_PT_PER_MM = 72.27 / 25.4
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _linkage_section(solution: Solution) -> list[str]:
+    """The linkage drawn at the instant (a scene of bars), or nothing."""
+    if solution.linkage is None:
+        return []
+    from dynsolve.render.linkage_figure import linkage_picture
+
+    return [
+        "\\subsection*{The linkage at the instant}",
+        "\\begin{center}\n" + linkage_picture(solution.linkage) + "\n\\end{center}",
+    ]
 
 
 def _free_body_section(bodies: Sequence[FreeBody]) -> list[str]:
@@ -649,123 +661,6 @@ def _footprint(shape: str, size: Sequence[float]) -> Point | None:
         height = sizes[1] if len(sizes) > 1 and sizes[1] else first
         return (first / 2, height / 2)
     return None
-
-
-class _Picture:
-    """Picture-mode commands in millimetres, and the box they cover."""
-
-    def __init__(self, thickness: float = 0.7) -> None:
-        self.commands: list[str] = []
-        self.thickness = thickness  # pt, as set by the last \linethickness
-        self.low = [-_SQUARE_MM / 2, -_SQUARE_MM / 2]
-        self.high = [_SQUARE_MM / 2, _SQUARE_MM / 2]
-
-    def cover(self, point: Point) -> None:
-        for axis in (0, 1):
-            self.low[axis] = min(self.low[axis], point[axis])
-            self.high[axis] = max(self.high[axis], point[axis])
-
-    def set_thickness(self, points: float) -> None:
-        self.thickness = points
-        self.commands.append(f"\\linethickness{{{_num(points)}pt}}")
-
-    def curve(self, start: Point, control: Point, end: Point) -> None:
-        """A quadratic Bezier curve drawn as overlapping square dots of the line's width.
-
-        The dot count is given explicitly: left to itself the kernel divides by zero on a
-        curve shorter than a quarter of the line width ("Arithmetic overflow").
-        """
-        reach = (math.dist(start, control) + math.dist(control, end)) * _PT_PER_MM
-        dots = max(1, math.ceil(reach / (0.3 * self.thickness)))
-        self.commands.append(f"\\qbezier[{dots}]{_xy(start)}{_xy(control)}{_xy(end)}")
-        self.cover(start)
-        self.cover(end)
-
-    def line(self, start: Point, end: Point) -> None:
-        self.curve(start, _lerp(start, end, 0.5), end)
-
-    def dashed(self, start: Point, end: Point, dash: float = 1.6, gap: float = 1.0) -> None:
-        length = math.dist(start, end)
-        if length == 0:
-            return
-        count = max(1, round((length + gap) / (dash + gap)))
-        on = length / (count + (count - 1) * gap / dash)  # dashes at both ends
-        step = on * (1 + gap / dash)
-        for i in range(count):
-            a, b = i * step / length, (i * step + on) / length
-            self.line(_lerp(start, end, a), _lerp(start, end, min(b, 1.0)))
-
-    def put(self, at: Point, content: str) -> None:
-        self.commands.append(f"\\put{_xy(at)}{{{content}}}")
-        self.cover(at)
-
-    def label(self, at: Point, direction: Point, text: str, width: float) -> None:
-        """``text`` just beyond ``at`` in ``direction``, aligned so it stays clear of it."""
-        dx, dy = direction
-        height = 4.0
-        if abs(dx) >= abs(dy):
-            align = "l" if dx > 0 else "r"
-            left = at[0] if dx > 0 else at[0] - width
-            low, high = (left, at[1] - height / 2), (left + width, at[1] + height / 2)
-        else:
-            align = "b" if dy > 0 else "t"
-            bottom = at[1] if dy > 0 else at[1] - height
-            low, high = (at[0] - width / 2, bottom), (at[0] + width / 2, bottom + height)
-        self.put(at, f"\\makebox(0,0)[{align}]{{{text}}}")
-        self.cover(low)
-        self.cover(high)
-
-    def arrowhead(self, tip: Point, unit: Point) -> None:
-        """A filled arrowhead: a fan of lines from the tip to its base."""
-        normal = (-unit[1], unit[0])
-        base = (tip[0] - _HEAD_MM * unit[0], tip[1] - _HEAD_MM * unit[1])
-        for k in range(-3, 4):
-            offset = k / 3 * _HEAD_HALF_MM
-            self.line(tip, (base[0] + offset * normal[0], base[1] + offset * normal[1]))
-
-    def arc(self, centre: Point, radius: float, start: float, sweep: float, dashed: bool) -> None:
-        """A circular arc (degrees, counterclockwise positive) in pieces of at most 45 deg."""
-        pieces = max(1, math.ceil(abs(sweep) / (15 if dashed else 45)))
-        step = sweep / pieces
-        reach = radius / math.cos(math.radians(step / 2))
-        for i in range(pieces):
-            if dashed and i % 2 and i != pieces - 1:
-                continue
-            a = start + i * step
-            self.curve(
-                _polar(centre, radius, a),
-                _polar(centre, reach, a + step / 2),
-                _polar(centre, radius, a + step),
-            )
-
-    def render(self) -> str:
-        margin = 1.0
-        x0, y0 = self.low[0] - margin, self.low[1] - margin
-        width, height = self.high[0] + margin - x0, self.high[1] + margin - y0
-        return "\n".join([
-            r"{\setlength{\unitlength}{1mm}%",
-            f"\\begin{{picture}}({_num(width)},{_num(height)})({_num(x0)},{_num(y0)})",
-            *self.commands,
-            r"\end{picture}}",
-        ])  # fmt: skip
-
-
-def _num(value: float) -> str:
-    text = f"{value:.2f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
-
-
-def _xy(point: Point) -> str:
-    return f"({_num(point[0])},{_num(point[1])})"
-
-
-def _lerp(a: Point, b: Point, t: float) -> Point:
-    return (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-
-
-def _polar(centre: Point, radius: float, degrees: float) -> Point:
-    angle = math.radians(degrees)
-    return (centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle))
 
 
 def _label_width(force: ForceRow) -> float:

@@ -1017,6 +1017,22 @@ class _Builder(Transformer_NonRecursive):
             other=str(through[0]) if through else "",
         )
 
+    def rolls_wheel_stmt(self, c: list[Any]) -> SceneStmt:
+        """``rolls W: radius r [, normal DIR]``: the bar W is a wheel centred on its first
+        point, rolling without slipping on fixed ground whose normal is DIR (up)."""
+        name, radius, *normal = c
+        return self._stmt(
+            "wheel", name, body=str(name), value=radius, direction=normal[0] if normal else None
+        )
+
+    def mesh_stmt(self, c: list[Any]) -> SceneStmt:
+        """``mesh A with B: radii r_A, r_B``: gears A and B (bars centred on their first
+        points) in external mesh, their pitch circles rolling on each other."""
+        first, second, r_first, r_second = c
+        return self._stmt(
+            "mesh", first, body=str(first), other=str(second), vectors=((r_first, r_second),)
+        )
+
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
         """``slider B: along bar CD``: joint B slides along the (moving) bar CD, a pin
         in a slot or a collar on a rod."""
