@@ -549,8 +549,10 @@ find: M, F = F_disk, N = N_disk
 
 
 def test_gears_whose_centres_do_not_fit_their_radii_are_refused():
-    text = (PROBLEMS / "planetary.dyn").read_text().replace(
-        "joint B: (r_S + r_P, 0)", "joint B: (r_S + 2*r_P, 0)"
+    text = (
+        (PROBLEMS / "planetary.dyn")
+        .read_text()
+        .replace("joint B: (r_S + r_P, 0)", "joint B: (r_S + 2*r_P, 0)")
     )
     with pytest.raises(SpecError) as error:
         solve_text(text, "gears.dyn")
