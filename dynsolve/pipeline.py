@@ -133,7 +133,15 @@ def _simulation_checks(
 def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
     """Solve a scene: assume no slip, check, and re-solve with kinetic friction if it fails."""
     from dynsolve.linkage.model import is_linkage
+    from dynsolve.rigid3d.model import is_3d
 
+    if is_3d(spec):
+        from dynsolve.rigid3d.problem import build_3d_problem, moment_check
+
+        problem3d = build_3d_problem(spec)
+        solved = solve_system(problem3d.system, options)
+        checks = moment_check(problem3d, solved.values)
+        return solve_problem(problem3d, options, solved, second_methods=checks)
     if is_linkage(spec):
         from dynsolve.linkage.problem import build_linkage_problem, figure
         from dynsolve.linkage.problem import cross_checks as linkage_checks

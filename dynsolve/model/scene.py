@@ -51,6 +51,7 @@ LINKAGE_ONLY = {  # scene lines of a linkage (dynsolve.linkage), as written
     "wheel": "rolls …: radius",
     "mesh": "mesh",
 }
+THREE_D_ONLY = {"rotates", "bearing", "axis", "axes", "inertia3", "torque"}
 GROUND = "ground"  # `impact B with ground`: the fixed surface (unless a body is so named)
 
 
@@ -643,6 +644,13 @@ def build_scene(
     ``given_values`` lets numeric checks (0 ≤ e ≤ 1) be made at once."""
     builder = _Builder(spec, symbols, dims, given_values)
     for stmt in spec.scene:
+        if any(p.key == "at3" for p in stmt.props):
+            raise SpecError(
+                "a body placed with three coordinates belongs in a 3D scene",
+                builder.where(stmt.line, stmt.column),
+                hint="a 3D scene says how the body turns ('rotates B: about …'); a plane "
+                "scene places bodies with 'at (x, y)'",
+            )
         if stmt.kind in LINKAGE_ONLY:
             raise SpecError(
                 f"'{LINKAGE_ONLY[stmt.kind]}' describes a linkage, and this scene has no bars",

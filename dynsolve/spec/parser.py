@@ -1120,6 +1120,44 @@ class _Builder(Transformer_NonRecursive):
     def vector(self, c: list[Any]) -> tuple[Expr, Expr]:
         return (c[0], c[1])
 
+    def vector3(self, c: list[Any]) -> tuple[Expr, Expr, Expr]:
+        return (c[0], c[1], c[2])
+
+    def prop_at3(self, c: list[Any]) -> Prop:
+        return self._prop("at3", c, vector=c[0])
+
+    # ---- 3D scene lines (dynsolve.rigid3d)
+    def rotates_stmt(self, c: list[Any]) -> SceneStmt:
+        """``rotates B: about (u), through (P), omega w [, alpha a]``: B turns about a
+        fixed axis."""
+        body, axis, through, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt(
+            "rotates", body, body=str(body), vectors=(axis, through), value=omega, props=props
+        )
+
+    def bearing_stmt(self, c: list[Any]) -> SceneStmt:
+        name, at, kind = c
+        return self._stmt("bearing", name, name=str(name), vectors=(at,), word=str(kind))
+
+    def axis_stmt(self, c: list[Any]) -> SceneStmt:
+        body, vector = c
+        return self._stmt("axis", body, body=str(body), vectors=(vector,))
+
+    def axes_stmt(self, c: list[Any]) -> SceneStmt:
+        body, x_axis, y_axis = c
+        return self._stmt("axes", body, body=str(body), vectors=(x_axis, y_axis))
+
+    def inertia3_stmt(self, c: list[Any]) -> SceneStmt:
+        body, *moments = c
+        return self._stmt("inertia3", body, body=str(body), vectors=(tuple(moments),))
+
+    def torque_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body = c
+        return self._stmt("torque", name, name=str(name), body=str(body))
+
     def dir_word(self, c: list[Token]) -> Direction:
         return Direction("word", word=str(c[0]), line=self.line, column=self._col(c[0]))
 

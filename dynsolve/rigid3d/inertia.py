@@ -1,0 +1,97 @@
+"""Inertia of a rigid body in 3D: the shape table about G, rotated into the scene's axes.
+
+Body axes: for a disk, cylinder, ring or rod, z is the axis of symmetry (a rod lies
+along z); for a plate ``a by b``, side a lies along x and side b along y (z normal).
+The scene's inertia tensor about G is I_G = R diag(I_x, I_y, I_z) Rᵀ, R's columns the
+body axes written in scene axes (Hibbeler 21.1).
+
+>>> import sympy
+>>> m, r = sympy.symbols("m r", positive=True)
+>>> principal("disk", m, (r,))
+(m*r**2/4, m*r**2/4, m*r**2/2)
+>>> tensor((m, m, 2 * m), ((0, 0, 1), (0, 1, 0), (-1, 0, 0)))
+Matrix([
+[2*m, 0, 0],
+[  0, m, 0],
+[  0, 0, m]])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import sympy
+
+from dynsolve.numbers import tidy
+
+Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
+SHAPES_3D = ("disk", "cylinder", "ring", "rod", "plate", "sphere", "shell", "particle")
+
+
+def principal(
+    shape: str, m: sympy.Expr, sizes: Sequence[sympy.Expr]
+) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr]:
+    """(I_x, I_y, I_z) about G in body axes for a shape of the table; ValueError with
+    the reason for a shape it does not hold."""
+    half = sympy.Rational(1, 2)
+    if shape == "particle":
+        return (sympy.Integer(0),) * 3  # type: ignore[return-value]
+    if not sizes:
+        raise ValueError(f"a {shape} needs its size (e.g. '{shape} r')")
+    first = sizes[0]
+    if shape == "disk":
+        return (m * first**2 / 4, m * first**2 / 4, half * m * first**2)
+    if shape == "cylinder":
+        if len(sizes) < 2:
+            raise ValueError("a 3D cylinder needs its length: 'cylinder r by h'")
+        side = m * (3 * first**2 + sizes[1] ** 2) / 12
+        return (side, side, half * m * first**2)
+    if shape == "ring":
+        return (half * m * first**2, half * m * first**2, m * first**2)
+    if shape == "rod":
+        return (m * first**2 / 12, m * first**2 / 12, sympy.Integer(0))
+    if shape == "plate":
+        if len(sizes) < 2:
+            raise ValueError("a plate needs both sides: 'plate a by b'")
+        a, b = first, sizes[1]
+        return (m * b**2 / 12, m * a**2 / 12, m * (a**2 + b**2) / 12)
+    if shape == "sphere":
+        return (sympy.Rational(2, 5) * m * first**2,) * 3  # type: ignore[return-value]
+    if shape == "shell":
+        return (sympy.Rational(2, 3) * m * first**2,) * 3  # type: ignore[return-value]
+    raise ValueError(f"the 3D shape table has no '{shape}' (it has {', '.join(SHAPES_3D)})")
+
+
+def tensor(moments: Sequence[sympy.Expr], axes: tuple[Vec3, Vec3, Vec3]) -> sympy.Matrix:
+    """I_G in scene axes: R diag(moments) Rᵀ, with R's columns the body's x, y, z axes."""
+    R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
+    return (R * sympy.diag(*moments) * R.T).applyfunc(tidy)
+
+
+def unit(vector: Sequence[sympy.Expr]) -> Vec3:
+    """``vector`` divided by its length (ValueError for a zero vector)."""
+    x, y, z = (sympy.sympify(c) for c in vector)
+    length = sympy.sqrt(x**2 + y**2 + z**2)
+    if length == 0:
+        raise ValueError("a direction cannot be (0, 0, 0)")
+    return (x / length, y / length, z / length)
+
+
+def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
+    """Orthonormal body axes from z (and x, when the body is not symmetric about z: made
+    perpendicular to z); for an axisymmetric body any x ⊥ z will do."""
+    z = unit(z_axis)
+    if x_axis is None:
+        trial: Vec3 = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
+        if sympy.simplify(abs(z[0]) - 1) == 0:
+            trial = (sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
+        x_axis = trial
+    dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
+    x = unit(tuple(sympy.simplify(a - dot * b) for a, b in zip(x_axis, z, strict=True)))
+    y = cross(z, x)
+    return (x, tuple(sympy.simplify(c) for c in y), z)  # type: ignore[return-value]
+
+
+def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:
+    """a × b."""
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])

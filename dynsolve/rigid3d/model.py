@@ -1,0 +1,281 @@
+"""The 3D scene of a spec: one rigid body turning about a fixed axis on its bearings.
+
+Lines (docs/scene-mode.md, *Rigid bodies in 3D*): ``body`` with a mass and a shape of
+the 3D table (or ``inertia B: I_x, I_y, I_z``) at a 3D position; ``axis B: (x, y, z)``
+(the body's z axis: a disk's or rod's axis) or ``axes B: (x-axis), (y-axis)``;
+``rotates B: about (ux, uy, uz), through (x, y, z), omega EXPR [, alpha EXPR]`` (ω and α
+along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrust``;
+``torque M on B`` (about the axis); ``gravity`` (−y: y is up).
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   m = 10 kg
+...   r = 0.1 m
+...   w = 30 rad/s
+...   L = 0.2 m
+... scene:
+...   body gear: mass m, disk r, at (0, 0, 0)
+...   axis gear: (1, 0, 0)
+...   rotates gear: about (1, 0, 0), through (0, 0, 0), omega w
+...   bearing A: at (-L, 0, 0), thrust
+...   bearing B: at (L, 0, 0), journal
+...   gravity
+... find: A_y
+... ''', "g.dyn")
+>>> scene = read_scene3d(spec)
+>>> scene.body.name, [b.kind for b in scene.bearings], scene.spin.axis
+('gear', ['thrust', 'journal'], (1, 0, 0))
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+import sympy
+
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.model.scene import SceneReader, scene_reader
+from dynsolve.modes.equation_mode import givens_of
+from dynsolve.rigid3d.inertia import Vec3, body_axes, principal, tensor, unit
+from dynsolve.spec.ast import Expr, SceneStmt, Spec
+from dynsolve.units import Dim
+
+LENGTH, MASS = Dim.of("length"), Dim.of("mass")
+MOMENT_OF_INERTIA = Dim(2, 1, 0)
+LINES_3D = frozenset(
+    {"body", "axis", "axes", "inertia3", "rotates", "bearing", "torque", "gravity"}
+)
+KINDS_3D = frozenset({"axis", "axes", "inertia3", "rotates", "bearing", "torque"})
+
+
+@dataclass(frozen=True)
+class Body3D:
+    """A rigid body: mass, G, and its inertia tensor about G in scene axes."""
+
+    name: str
+    mass: sympy.Expr
+    G: Vec3
+    I_G: sympy.Matrix
+    principal: tuple[sympy.Expr, sympy.Expr, sympy.Expr]
+    axes: tuple[Vec3, Vec3, Vec3]
+    shape: str
+
+
+@dataclass(frozen=True)
+class Spin:
+    """Rotation about a fixed axis (unit ``axis``) through ``through``: ω, α along it."""
+
+    axis: Vec3
+    through: Vec3
+    omega: sympy.Expr
+    alpha: sympy.Expr
+    line: int = 0
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """A bearing on the axis: a journal carries loads across the axis, a thrust also along it."""
+
+    name: str
+    at: Vec3
+    kind: str
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Scene3D:
+    """One body on a fixed axis with its bearings and loads."""
+
+    file: str
+    body: Body3D
+    spin: Spin
+    bearings: tuple[Bearing, ...]
+    gravity: Vec3 | None
+    torques: tuple[str, ...] = ()
+    symbols: Mapping[str, sympy.Symbol] = field(default_factory=dict)
+    values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+
+
+def is_3d(spec: Spec) -> bool:
+    """Whether a spec's scene is 3D (it has a 3D line: rotates, bearing, axis, …).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> is_3d(parse_spec("scene:\\n  bearing A: at (0, 0, 1), journal\\nfind: A_x\\n"))
+    True
+    """
+    return any(stmt.kind in KINDS_3D for stmt in spec.scene or ())
+
+
+def read_scene3d(spec: Spec) -> Scene3D:
+    """The 3D scene of ``spec``; a positioned SpecError for a line it cannot take."""
+    givens = givens_of(spec)
+    symbols = {g.name: g.symbol for g in givens}
+    values = {g.symbol: g.value for g in givens if g.value is not None}
+    reader = scene_reader(spec, symbols, {g.name: g.dim for g in givens}, values)
+    statements = tuple(spec.scene or ())
+    bodies = [s for s in statements if s.kind == "body"]
+    for stmt in statements:
+        if stmt.kind not in LINES_3D:
+            raise SpecError(
+                f"a '{stmt.kind}' line cannot go in a 3D scene",
+                Position(spec.file, stmt.line, stmt.column),
+                hint="a 3D scene takes body, axis, axes, inertia, rotates, bearing, torque "
+                "and gravity lines (docs/scene-mode.md, Rigid bodies in 3D)",
+            )
+    if len(bodies) != 1:
+        where = bodies[1] if bodies else (statements[0] if statements else None)
+        raise SpecError(
+            "a 3D scene holds one body turning about a fixed axis (for now)",
+            Position(spec.file, where.line if where else 1, where.column if where else 1),
+            hint="describe one 'body' (several bodies in 3D are not supported yet)",
+        )
+    body = _body(bodies[0], statements, reader, spec)
+    spins = [s for s in statements if s.kind == "rotates"]
+    if len(spins) != 1 or spins[0].body != body.name:
+        where = spins[1] if len(spins) > 1 else bodies[0]
+        raise SpecError(
+            f"say how {body.name} turns: one 'rotates {body.name}: about (ux, uy, uz), "
+            "through (x, y, z), omega w' line",
+            Position(spec.file, where.line, where.column),
+            hint="ω and α are along the axis by the right-hand rule",
+        )
+    spin = _spin(spins[0], reader, spec)
+    bearings = tuple(
+        Bearing(
+            s.name, _vector3(reader, s.vectors[0], "a bearing's position"), s.word, s.line, s.column
+        )
+        for s in statements
+        if s.kind == "bearing"
+    )
+    gravity = None
+    if any(s.kind == "gravity" for s in statements):
+        gravity = (sympy.Integer(0), sympy.Integer(-1), sympy.Integer(0))
+    torques = tuple(s.name for s in statements if s.kind == "torque")
+    for stmt in statements:
+        if stmt.kind == "torque" and stmt.body != body.name:
+            raise SpecError(
+                f"there is no body '{stmt.body}'",
+                Position(spec.file, stmt.line, stmt.column),
+                hint=f"the torque acts on {body.name}",
+            )
+    return Scene3D(spec.file, body, spin, bearings, gravity, torques, symbols, values)
+
+
+def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:
+    x, y, z = (reader.value(c, LENGTH, what) for c in vector)
+    return (x, y, z)
+
+
+def _direction3(reader: SceneReader, vector: Sequence[Expr], where: Position) -> Vec3:
+    """A direction: numbers, or lengths (such as a side of the body), normalised."""
+    try:
+        components = tuple(reader.value(c, Dim(), "a direction's component") for c in vector)
+    except DimensionError:
+        components = tuple(reader.value(c, LENGTH, "a direction's component") for c in vector)
+    try:
+        return unit(components)
+    except ValueError as error:
+        raise SpecError(str(error), where, "give a nonzero direction") from None
+
+
+def _body(
+    stmt: SceneStmt, statements: Sequence[SceneStmt], reader: SceneReader, spec: Spec
+) -> Body3D:
+    where = Position(spec.file, stmt.line, stmt.column)
+    props = {p.key: p for p in stmt.props}
+    if "at" in props:
+        raise SpecError(
+            "a body in a 3D scene is placed with three coordinates",
+            where,
+            hint="write 'at (x, y, z)'",
+        )
+    if "mass" in props:
+        m = reader.value(props["mass"].values[0], MASS, "a mass")
+    elif "weight" in props:
+        g = reader.symbols.get("g")
+        m = reader.value(props["weight"].values[0], Dim.of("force"), "a weight") / g
+    else:
+        raise SpecError(f"body {stmt.name} needs a mass", where, "add 'mass m'")
+    G = (
+        _vector3(reader, props["at3"].vector, "a position")
+        if "at3" in props
+        else (sympy.Integer(0),) * 3
+    )  # type: ignore[arg-type]
+    shapes = [p for p in stmt.props if p.key == "shape"]
+    explicit = [s for s in statements if s.kind == "inertia3" and s.body == stmt.name]
+    if explicit:
+        moments = tuple(
+            reader.value(e, MOMENT_OF_INERTIA, "a moment of inertia")
+            for e in explicit[0].vectors[0]
+        )
+        shape = "given principal moments"
+    elif shapes:
+        sizes = tuple(reader.value(v, LENGTH, "a size") for v in shapes[0].values)
+        try:
+            moments = principal(shapes[0].word, m, sizes)
+        except ValueError as error:
+            raise SpecError(str(error), where, "see the 3D shape table") from None
+        shape = shapes[0].word
+    else:
+        raise SpecError(
+            f"body {stmt.name} needs its inertia: a shape (disk r, plate a by b, …) or "
+            f"'inertia {stmt.name}: I_x, I_y, I_z'",
+            where,
+            hint="see the 3D shape table in docs/scene-mode.md",
+        )
+    z_axis: Vec3 = (sympy.Integer(0), sympy.Integer(0), sympy.Integer(1))
+    x_axis: Vec3 | None = None
+    for line in statements:
+        if line.body != stmt.name or line.kind not in ("axis", "axes"):
+            continue
+        at = Position(spec.file, line.line, line.column)
+        if line.kind == "axis":
+            z_axis = _direction3(reader, line.vectors[0], at)
+        else:
+            x_axis = _direction3(reader, line.vectors[0], at)
+            y_axis = _direction3(reader, line.vectors[1], at)
+            z_axis = (
+                x_axis[1] * y_axis[2] - x_axis[2] * y_axis[1],
+                x_axis[2] * y_axis[0] - x_axis[0] * y_axis[2],
+                x_axis[0] * y_axis[1] - x_axis[1] * y_axis[0],
+            )
+    if x_axis is None and sympy.simplify(moments[0] - moments[1]) != 0:
+        raise SpecError(
+            f"body {stmt.name} is not symmetric about its z axis (I_x ≠ I_y): give both "
+            "of its x and y axes",
+            where,
+            hint=f"write 'axes {stmt.name}: (x-axis), (y-axis)' in scene coordinates",
+        )
+    axes = body_axes(z_axis, x_axis)
+    return Body3D(stmt.name, m, G, tensor(moments, axes), moments, axes, shape)  # type: ignore[arg-type]
+
+
+def _spin(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Spin:
+    where = Position(spec.file, stmt.line, stmt.column)
+    axis = _direction3(reader, stmt.vectors[0], where)
+    if sum(1 for c in axis if c != 0) != 1:
+        raise SpecError(
+            "the axis of rotation must lie along x, y or z (the bearings' reactions are "
+            "named by those axes)",
+            where,
+            hint="choose the scene axes with the shaft along one of them",
+        )
+    through = _vector3(reader, stmt.vectors[1], "a point of the axis")
+    assert stmt.value is not None
+    omega = reader.value(stmt.value, Dim(0, 0, -1), "an angular velocity")
+    alpha = (
+        reader.value(stmt.props[0].values[0], Dim(0, 0, -2), "an angular acceleration")
+        if stmt.props
+        else sympy.Integer(0)
+    )
+    return Spin(axis, through, omega, alpha, stmt.line)
+
+
+def close_name(name: str, names: Sequence[str]) -> str:
+    """A did-you-mean hint for ``name`` among ``names``."""
+    close = difflib.get_close_matches(name, list(names), n=1)
+    return f"did you mean '{close[0]}'?" if close else ""

@@ -1,0 +1,362 @@
+"""Turn a 3D scene into a problem: ΣF = m a_G and ΣM_G = Ḣ_G about the fixed axis.
+
+With ω = ω u and α = α u about the fixed axis (unit u through O), r = r_G/O:
+a_G = α × r + ω × (ω × r), H_G = I_G ω, and since the body's axes turn with it
+(Ω = ω), Ḣ_G = (Ḣ_G)_xyz + Ω × H_G = I_G α + ω × H_G (Hibbeler 21.4). The bearings'
+reactions are named ``A_x``, ``A_y``, ``A_z`` (a journal carries none along the axis); a
+``torque`` acts about the axis. An equation with no unknown that holds identically
+(ΣM along the axis when α = 0 and no torque) is left out; one that does not hold is
+refused (a driving torque is missing). Finds: the reactions, a torque, ``T(B)``
+(½ ωᵀ I_G ω + ½ m v_G²), ``Hdot_x(B)`` … (the components of Ḣ_G).
+
+>>> from dynsolve.spec.parser import parse_spec
+>>> spec = parse_spec('''
+... given:
+...   m = 10 kg
+...   r = 0.1 m
+...   w = 30 rad/s
+...   L = 0.2 m
+... scene:
+...   body gear: mass m, disk r, at (0, 0, 0)
+...   axis gear: (1, 0, 0)
+...   rotates gear: about (1, 0, 0), through (0, 0, 0), omega w
+...   bearing A: at (-L, 0, 0), thrust
+...   bearing B: at (L, 0, 0), journal
+...   gravity
+... find: A_y, B_y
+... ''', "g.dyn")
+>>> problem = build_3d_problem(spec)
+>>> [e.note for e in problem.system.equations]
+['ΣF_x = m (a_G)_x', 'ΣF_y = m (a_G)_y', 'ΣF_z = m (a_G)_z', 'ΣM_G,y = (Ḣ_G)_y', 'ΣM_G,z = (Ḣ_G)_z']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.dimensions import DimensionReport
+from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.format import quantity as format_quantity
+from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
+from dynsolve.modes.scene_mode import _row, _unit, _unused
+from dynsolve.numbers import tidy
+from dynsolve.quantities import convert
+from dynsolve.results import Check, EquationRow, Step
+from dynsolve.rigid3d.inertia import Vec3, cross
+from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
+from dynsolve.spec.ast import FindItem, Spec
+from dynsolve.system import Equation, EquationSystem
+from dynsolve.units import Dim, natural_unit
+
+FORCE, MOMENT, ENERGY = Dim.of("force"), Dim(2, 1, -2), Dim(2, 1, -2)
+AXES = "xyz"
+
+
+@dataclass(frozen=True)
+class Problem3D:
+    """A 3D scene ready to solve, shaped as the pipeline expects (``SolvableProblem``)."""
+
+    spec: Spec
+    givens: tuple[GivenInfo, ...]
+    system: EquationSystem
+    dims: DimensionReport
+    targets: tuple[Target, ...]
+    symbols: Mapping[str, sympy.Symbol]
+    rows: tuple[EquationRow, ...]
+    scene: Scene3D
+    reactions: Mapping[str, tuple[Vec3, Vec3]]  # bearing -> (its force, where it acts)
+    H_dot: Vec3
+    a_G: Vec3
+    steps: tuple[Step, ...] = ()
+    notes: tuple[tuple[str, str], ...] = ()
+    mode: str = "3D scene"
+
+
+def build_3d_problem(spec: Spec) -> Problem3D:
+    """Read the 3D scene of ``spec``, write its six equations and resolve the find list."""
+    where = Position(spec.file, 1, 1)
+    if not spec.finds:
+        raise SpecError("nothing to find", where, hint="add a 'find:' line")
+    if spec.equations or spec.defines:
+        line = (spec.equations or spec.defines)[0]
+        raise SpecError(
+            "equations and define lines cannot be combined with a 3D scene yet",
+            Position(spec.file, line.line, line.column),
+            hint="ask for the scene's own quantities (reactions, T(B), Hdot_x(B), …)",
+        )
+    scene = read_scene3d(spec)
+    body, spin = scene.body, scene.spin
+    givens = list(givens_of(spec))
+    taken = {g.name for g in givens}
+    unknowns: dict[sympy.Symbol, Dim] = {}
+
+    def unknown(name: str, dim: Dim) -> sympy.Symbol:
+        if name in taken:
+            raise SpecError(
+                f"the given '{name}' has the name of an unknown of the scene",
+                where,
+                hint="rename the given (dynsolve names bearing reactions A_x, A_y, A_z)",
+            )
+        symbol = sympy.Symbol(name, real=True)
+        unknowns[symbol] = dim
+        return symbol
+
+    along = next(i for i, c in enumerate(spin.axis) if c != 0)
+    reactions: dict[str, tuple[Vec3, Vec3]] = {}
+    for bearing in scene.bearings:
+        force = tuple(
+            unknown(f"{bearing.name}_{AXES[i]}", FORCE)
+            if i != along or bearing.kind == "thrust"
+            else sympy.Integer(0)
+            for i in range(3)
+        )
+        reactions[bearing.name] = (force, bearing.at)  # type: ignore[assignment]
+    torque = sympy.Integer(0)
+    for name in scene.torques:
+        size = scene.symbols[name] if name in taken else unknown(name, MOMENT)
+        torque += size
+    omega = tuple(spin.omega * c for c in spin.axis)
+    alpha = tuple(spin.alpha * c for c in spin.axis)
+    r = tuple(body.G[i] - spin.through[i] for i in range(3))
+    w_r = cross(omega, r)
+    a_G = tuple(tidy(a + b) for a, b in zip(cross(alpha, r), cross(omega, w_r), strict=True))
+    H = tuple(body.I_G * sympy.Matrix(omega))
+    I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
+    H_dot = tuple(tidy(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
+    weight = (
+        tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
+        if scene.gravity
+        else (sympy.Integer(0),) * 3
+    )
+    equations: list[Equation] = []
+    for i, axis in enumerate(AXES):
+        total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
+        note = f"ΣF_{axis} = m (a_G)_{axis}"
+        equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
+    moment = [sympy.Integer(0)] * 3
+    for force, at in reactions.values():
+        arm = tuple(at[i] - body.G[i] for i in range(3))
+        moment = [m + c for m, c in zip(moment, cross(arm, force), strict=True)]
+    moment = [m + torque * c for m, c in zip(moment, spin.axis, strict=True)]
+    for i, axis in enumerate(AXES):
+        note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
+        lhs, rhs = moment[i], H_dot[i]
+        if not (set(unknowns) & (lhs - rhs).free_symbols):
+            if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
+                continue  # holds whatever the reactions: nothing to solve for
+            raise SpecError(
+                f"the moments about the {axis} axis cannot balance: (Ḣ_G)_{axis} = "
+                f"{sympy.sstr(rhs)} but no unknown load acts about it",
+                where,
+                hint="a driving torque is missing: add 'torque M on "
+                f"{body.name}' (M unknown) or check α",
+            )
+        equations.append(Equation(lhs, rhs, note, spin.line, note))
+    _check_determined(equations, unknowns, scene, body.name, where)
+    symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
+    dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
+    knowns = {g.symbol: g.value for g in givens if g.value is not None}
+    targets = tuple(
+        _target(item, spec, scene, unknowns, dims, omega, a_G, H_dot) for item in spec.finds
+    )
+    check_answers_in_find(spec)
+    # every reaction is solved: the second moment point checks them all
+    system = EquationSystem(tuple(equations), tuple(unknowns), knowns, wanted=tuple(unknowns))
+    symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
+    try:
+        rows = tuple(_row(e, symbol_dims, spec) for e in equations)
+    except DimensionError as error:
+        raise DimensionError(error.message, where, error.hint) from None
+    notes = (_inertia_note(scene, knowns, spec), *_unused(spec))
+    return Problem3D(
+        spec,
+        tuple(givens),
+        system,
+        DimensionReport(dims, (), frozenset()),
+        targets,
+        symbols,
+        rows,
+        scene,
+        reactions,
+        H_dot,  # type: ignore[arg-type]
+        a_G,  # type: ignore[arg-type]
+        notes=notes,
+    )
+
+
+def _check_determined(
+    equations: list[Equation],
+    unknowns: Mapping[sympy.Symbol, Dim],
+    scene: Scene3D,
+    body: str,
+    where: Position,
+) -> None:
+    """The reactions must be fixed by the equations (rank = number of unknowns) and the
+    equations consistent (an extra one may repeat the others: G off the shaft)."""
+    residuals = [e.lhs - e.rhs for e in equations]
+    A, b = sympy.linear_eq_to_matrix(residuals, list(unknowns))
+    A, b = A.xreplace(dict(scene.values)), b.xreplace(dict(scene.values))
+    rank = A.rank(simplify=True)
+    named = ", ".join(s.name for s in unknowns)
+    if rank < len(unknowns):
+        raise SpecError(
+            f"the reactions are not determined: {len(unknowns)} unknowns ({named}) but only "
+            f"{rank} independent equations",
+            where,
+            hint="a shaft needs two bearings on its axis, one of them a thrust bearing",
+        )
+    if A.row_join(b).rank(simplify=True) > rank:
+        raise SpecError(
+            f"the loads cannot balance: {len(unknowns)} unknowns ({named}) for "
+            f"{len(equations)} equations that disagree",
+            where,
+            hint=f"if {body} speeds up (α ≠ 0), a driving torque is missing: add 'torque M "
+            f"on {body}' (M unknown); else a bearing is missing",
+        )
+
+
+def _inertia_note(
+    scene: Scene3D, knowns: Mapping[sympy.Symbol, sympy.Expr], spec: Spec
+) -> tuple[str, str]:
+    """I_G in scene axes from the body's principal moments, as the derivation's step."""
+    body = scene.body
+    moments = ", ".join(sympy.sstr(tidy(m)) for m in body.principal)
+    rows = []
+    for i in range(3):
+        entries = []
+        for j in range(3):
+            value = (sympy.Integer(0) + body.I_G[i, j]).xreplace(dict(knowns))
+            entries.append(
+                f"{float(sympy.N(value)):.4g}"
+                if not value.free_symbols
+                else sympy.sstr(body.I_G[i, j])
+            )
+        rows.append("[" + ", ".join(entries) + "]")
+    unit = natural_unit(Dim(2, 1, 0), spec.system)
+    detail = (
+        f"{body.shape}: principal (I_x, I_y, I_z) = ({moments}) about G in body axes; "
+        f"I_G = R diag(I_x, I_y, I_z) Rᵀ in scene axes = [{', '.join(rows)}] {unit}"
+    )
+    return (f"inertia of {body.name}", detail)
+
+
+def _target(
+    item: FindItem,
+    spec: Spec,
+    scene: Scene3D,
+    unknowns: Mapping[sympy.Symbol, Dim],
+    dims: Mapping[str, Dim],
+    omega: tuple[sympy.Expr, ...],
+    a_G: tuple[sympy.Expr, ...],
+    H_dot: tuple[sympy.Expr, ...],
+) -> Target:
+    where = Position(spec.file, item.line, item.column)
+    alias = item.ref.function if item.ref is not None and not item.ref.args else item.name
+    symbol = sympy.Symbol(item.name)
+    named = {s.name: s for s in unknowns}
+    if item.ref is None or alias != item.name:
+        if alias in named:
+            unit, dim = _unit(item, dims[alias], spec, where)
+            return Target(
+                item.name, symbol, dim, unit, item.unit is not None, False, "signed", named[alias]
+            )
+        if alias == item.name and alias in dims:
+            unit, dim = _unit(item, dims[alias], spec, where)
+            return Target(item.name, symbol, dim, unit, item.unit is not None, True)
+        raise SpecError(
+            f"'{alias}' is not a quantity of the 3D scene",
+            where,
+            hint=close_name(alias, list(named))
+            or "ask for a bearing reaction (A_x, A_y, A_z), a torque, T(B) or Hdot_x(B)",
+        )
+    function, args = item.ref.function, item.ref.args
+    body = scene.body
+    if len(args) != 1 or args[0] != body.name:
+        raise SpecError(
+            f"'{function}({', '.join(args)})' should name the body, {body.name}",
+            where,
+            hint=f"e.g. T({body.name})",
+        )
+    if function == "T":
+        I_w = body.I_G * sympy.Matrix(omega)
+        v_G = cross(omega, tuple(body.G[i] - scene.spin.through[i] for i in range(3)))
+        energy = sum(w * h for w, h in zip(omega, I_w, strict=True)) / 2
+        energy += body.mass * sum(v**2 for v in v_G) / 2
+        unit, dim = _unit(item, ENERGY, spec, where)
+        unit = unit if item.unit is not None else natural_unit(ENERGY, spec.system, "E")
+        return Target(
+            item.name, symbol, dim, unit, item.unit is not None, False, "signed", tidy(energy)
+        )
+    components = {f"Hdot_{a}": H_dot[i] for i, a in enumerate(AXES)}
+    components |= {f"a_G{a}": a_G[i] for i, a in enumerate(AXES)}
+    if function in components:
+        dim = MOMENT if function.startswith("Hdot") else Dim.of("acceleration")
+        unit, dim = _unit(item, dim, spec, where)
+        return Target(
+            item.name,
+            symbol,
+            dim,
+            unit,
+            item.unit is not None,
+            False,
+            "signed",
+            components[function],
+        )
+    raise SpecError(
+        f"'{function}({args[0]})' is not a quantity of the 3D scene",
+        where,
+        hint="ask for T(B), Hdot_x(B), Hdot_y(B), Hdot_z(B), a_Gx(B), … or a reaction by name",
+    )
+
+
+def moment_check(
+    problem: Problem3D, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """A second moment point: about the first bearing, ΣM_O = Ḣ_G + r_G/O × m a_G, with the
+    solved reactions (an error in the moments about G shows here)."""
+    if not problem.scene.bearings:
+        return ()
+    known = {**problem.system.knowns, **values}
+    body = problem.scene.body
+    first = problem.scene.bearings[0]
+    origin = first.at
+    total = [sympy.Integer(0)] * 3
+    weight = (
+        tuple(body.mass * problem.scene.symbols["g"] * c for c in problem.scene.gravity)
+        if problem.scene.gravity
+        else (sympy.Integer(0),) * 3
+    )
+    loads = [(force, at) for force, at in problem.reactions.values()] + [(weight, body.G)]
+    for force, at in loads:
+        arm = tuple(at[i] - origin[i] for i in range(3))
+        total = [t + c for t, c in zip(total, cross(arm, force), strict=True)]
+    torques = sum(
+        (
+            (problem.scene.symbols[n] if n in problem.scene.symbols else sympy.Symbol(n, real=True))
+            for n in problem.scene.torques
+        ),
+        sympy.Integer(0),
+    )
+    total = [t + torques * c for t, c in zip(total, problem.scene.spin.axis, strict=True)]
+    r_G = tuple(body.G[i] - origin[i] for i in range(3))
+    m_a = tuple(body.mass * a for a in problem.a_G)
+    expected = [h + c for h, c in zip(problem.H_dot, cross(r_G, m_a), strict=True)]
+    worst, scale = 0.0, 0.0
+    for lhs, rhs in zip(total, expected, strict=True):
+        try:
+            a = float(sympy.N((sympy.Integer(0) + lhs).xreplace(known), 20))
+            b = float(sympy.N((sympy.Integer(0) + rhs).xreplace(known), 20))
+        except TypeError:
+            return ()
+        worst, scale = max(worst, abs(a - b)), max(scale, abs(a), abs(b))
+    error = worst / scale if scale else 0.0
+    unit = natural_unit(MOMENT, problem.spec.system)
+    shown = format_quantity(convert(scale, unit, problem.spec.system), unit)
+    detail = (
+        f"about bearing {first.name}: ΣM_{first.name} = Ḣ_G + r_G/{first.name} × m a_G "
+        f"(largest component {shown}; relative difference {error:.1e})"
+    )
+    return (Check(f"second moment point: bearing {first.name}", error < 1e-9, detail),)

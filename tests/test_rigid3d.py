@@ -1,0 +1,160 @@
+"""Rigid bodies in 3D scenes (issue 11, part 2): a body turning about a fixed axis on its
+bearings, ΣF = m a_G and ΣM_G = Ḣ_G = I_G α + ω × H_G with I_G rotated into the scene.
+
+Expected numbers: the seed notes' hand derivations (kept in the equation-mode versions
+under problems/equations/, solved here side by side) and hand derivations below.
+"""
+
+import math
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from dynsolve.cli import app
+from dynsolve.errors import SpecError
+from dynsolve.pipeline import solve_file, solve_text
+
+PROBLEMS = Path(__file__).parent.parent / "problems"
+
+
+def answers(solution) -> dict:
+    return {a.name: a for a in solution.answers}
+
+
+@pytest.mark.parametrize("example", ["3d_seed_tilted_gear", "3d_seed_plate_diagonal"])
+def test_scene_and_equation_mode_agree(example):
+    scene = solve_file(PROBLEMS / "seed" / f"{example}.dyn")
+    equations = solve_file(PROBLEMS / "equations" / f"{example}.dyn")
+    assert scene.mode == "3D scene" and scene.passed
+    assert equations.mode == "equations" and equations.passed
+    by_name = answers(equations)
+    for answer in scene.answers:
+        other = by_name[answer.name]
+        assert answer.value == pytest.approx(other.value, rel=1e-9, abs=1e-9), answer.name
+    assert any(c.name.startswith("second moment point") and c.passed for c in scene.checks)
+
+
+ECCENTRIC = """\
+given:
+  m = 4 kg
+  r = 0.1 m
+  e = 2 mm
+  L = 0.15 m
+  w = 100 rad/s
+  a = {alpha}
+scene:
+  body disk: mass m, disk r, at (0, e, 0)
+  axis disk: (1, 0, 0)
+  rotates disk: about (1, 0, 0), through (0, 0, 0), omega w, alpha a
+  bearing A: at (-L, 0, 0), thrust
+  bearing B: at (L, 0, 0), journal
+{extra}
+find: {find}
+"""
+
+
+def test_eccentric_disk_loads_each_bearing_with_half_the_rotating_force():
+    """G a distance e off the shaft (at +y): a_G = ω × (ω × r) = −ω² e ŷ; the disk's axis
+    is the shaft, so ω × H_G = 0 and Ḣ_G = 0. By hand: ΣF_y: A_y + B_y = −m e ω²;
+    ΣM_G,z: L (B_y − A_y) + e A_x = 0 with A_x = 0 (ΣF_x), so each bearing pulls the
+    shaft with m e ω²/2 toward −y (the rotating unbalance load)."""
+    text = ECCENTRIC.format(alpha="0 rad/s^2", extra="", find="A_y, B_y, A_x")
+    found = answers(solve_text(text, "eccentric.dyn"))
+    expected = -4 * 0.002 * 100**2 / 2
+    assert found["A_y"].value == pytest.approx(expected, rel=1e-12)
+    assert found["B_y"].value == pytest.approx(expected, rel=1e-12)
+    assert found["A_x"].value == pytest.approx(0, abs=1e-12)
+
+
+def test_an_angular_acceleration_needs_a_driving_torque():
+    text = ECCENTRIC.format(alpha="5 rad/s^2", extra="", find="A_y")
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "no_torque.dyn")
+    assert "driving torque is missing" in str(error.value)
+
+
+def test_the_driving_torque_is_the_axial_moment_of_inertia_times_alpha():
+    """By hand, moments about the shaft (the x axis through the bearings, where their
+    reactions have no moment): M = I_shaft α, with I_shaft = m r²/2 + m e² by the
+    parallel-axis theorem."""
+    text = ECCENTRIC.format(alpha="5 rad/s^2", extra="  torque M on disk", find="M")
+    found = answers(solve_text(text, "torque.dyn"))
+    m, r, e = 4.0, 0.1, 0.002
+    assert found["M"].value == pytest.approx((m * r**2 / 2 + m * e**2) * 5, rel=1e-12)
+
+
+def test_a_body_without_symmetry_needs_both_axes():
+    text = """\
+given:
+  M = 6 kg
+  a = 0.4 m
+  b = 0.2 m
+  w = 30 rad/s
+scene:
+  body plate: mass M, plate a by b, at (0, 0, 0)
+  axis plate: (0, 0, 1)
+  rotates plate: about (1, 0, 0), through (0, 0, 0), omega w
+  bearing C: at (-a, 0, 0), thrust
+  bearing D: at (a, 0, 0), journal
+find: T = T(plate)
+"""
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "plate.dyn")
+    assert "give both of its x and y axes" in str(error.value)
+
+
+def test_a_three_coordinate_body_in_a_plane_scene_is_refused():
+    text = """\
+given:
+  m = 1 kg
+scene:
+  body b: particle, mass m, at (0, 0, 0)
+  gravity
+find: a = a_G(b)
+"""
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "plane.dyn")
+    assert "3D scene" in str(error.value)
+
+
+def test_cli_solves_a_3d_scene():
+    result = CliRunner().invoke(app, ["solve", str(PROBLEMS / "seed" / "3d_seed_tilted_gear.dyn")])
+    assert result.exit_code == 0, result.output
+    assert "3D scene mode" in result.output and "ΣM_G,z" in result.output
+
+
+TILTED = """\
+given:
+  m = 10 kg
+  omega = {omega} rad/s
+  L_GA = 0.2 m
+  L_GB = 0.25 m
+  phi = {phi} deg
+  I_z = 0.1 kg*m^2
+  I_x = 0.05 kg*m^2
+scene:
+  body gear: mass m, at (0, 0, 0)
+  inertia gear: I_x, I_x, I_z
+  axis gear: (cos(phi), -sin(phi), 0)
+  rotates gear: about (1, 0, 0), through (0, 0, 0), omega omega
+  bearing A: at (-L_GA, 0, 0), thrust
+  bearing B: at (L_GB, 0, 0), journal
+  gravity
+find: A_y, B_y
+"""
+
+
+@settings(max_examples=10, deadline=None)
+@given(omega=st.integers(1, 200), phi=st.integers(-80, 80))
+def test_tilted_gear_reactions_follow_the_seed_formula(omega, phi):
+    """Seed 002 (askew gear): A_y + B_y = m g and L_GB B_y − L_GA A_y = (I_x − I_z)
+    sin φ cos φ ω², for any speed and tilt."""
+    found = answers(solve_text(TILTED.format(omega=omega, phi=phi), "tilted.dyn"))
+    A, B = found["A_y"].value, found["B_y"].value
+    assert pytest.approx(10 * 9.81, rel=1e-9) == A + B
+    t = math.radians(phi)
+    expected = (0.05 - 0.1) * math.sin(t) * math.cos(t) * omega**2
+    assert pytest.approx(expected, rel=1e-9, abs=1e-9) == 0.25 * B - 0.2 * A
