@@ -25,8 +25,9 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
 
@@ -37,6 +38,7 @@ from dynsolve.numbers import tidy
 
 DIGITS = 30  # the loop closure's working precision
 STARTS = 48  # starting points of the loop-closure root search
+NEWTON_STEPS = 60  # damped Newton steps from each start
 SAME = 1e-7  # two assemblies closer than this (relative to the linkage's size) are one
 AGREE = 1e-9  # a given geometry may miss its bars' lengths by this fraction
 
@@ -302,7 +304,6 @@ def _solve_all(
     """Every real solution of the loop closure, each polished to ``DIGITS`` digits."""
     import mpmath
     import numpy
-    import scipy.optimize
 
     coords = [sympy.Symbol(f"{axis}_{p}", real=True) for p in unknown for axis in "xy"]
     numeric = [r.xreplace(dict(linkage.values)) for r in residuals]
@@ -343,25 +344,29 @@ def _solve_all(
     j_mp = sympy.lambdify(coords, jacobian, "mpmath")
     with mpmath.workdps(DIGITS + 5):
         for start in starts:
-            result = scipy.optimize.root(
+            found_at = _newton(
                 lambda z: numpy.asarray(f_np(*z), dtype=float),
+                lambda z: numpy.asarray(j_np(*z), dtype=float),
                 start,
-                jac=lambda z: numpy.asarray(j_np(*z), dtype=float),
-                method="hybr",
+                size,
             )
-            if not result.success or numpy.max(numpy.abs(result.fun)) > 1e-8 * size:
+            if found_at is None or any(
+                max(abs(float(a) - float(b)) for a, b in zip(found_at, other, strict=True))
+                < SAME * size
+                for other in found
+            ):
                 continue
             try:
                 polished = mpmath.findroot(
                     lambda *z: f_mp(*z),
-                    [mpmath.mpf(float(v)) for v in result.x],
+                    [mpmath.mpf(float(v)) for v in found_at],
                     J=lambda *z: j_mp(*z),
                     tol=mpmath.mpf(10) ** (-2 * DIGITS),
                     maxsteps=60,
                     verify=False,
                 )
             except (ValueError, ZeroDivisionError):  # singular: a toggle or dead position
-                polished = [mpmath.mpf(float(v)) for v in result.x]
+                polished = [mpmath.mpf(float(v)) for v in found_at]
             values = [polished[i] for i in range(len(coords))]
             if any(
                 max(abs(float(a) - float(b)) for a, b in zip(values, other, strict=True))
@@ -381,6 +386,37 @@ def _solve_all(
         {p: (snapped(v[2 * i]), snapped(v[2 * i + 1])) for i, p in enumerate(unknown)}
         for v in found
     ]
+
+
+def _newton(
+    f: Callable[[Any], Any], jac: Callable[[Any], Any], start: Any, size: float
+) -> Any | None:
+    """A root of ``f`` near ``start`` by damped Newton steps (halved until |f| falls), or
+    None when it does not converge; residuals are lengths, so the tolerance is relative
+    to the linkage's ``size``."""
+    import numpy
+
+    z = numpy.array(start, dtype=float)
+    value = f(z)
+    for _ in range(NEWTON_STEPS):
+        norm = float(numpy.max(numpy.abs(value)))
+        if norm < 1e-12 * size:
+            return z
+        try:
+            step = numpy.linalg.lstsq(jac(z), -value, rcond=None)[0]
+        except numpy.linalg.LinAlgError:
+            return None
+        scale = 1.0
+        while scale > 1e-6:
+            trial = z + scale * step
+            trial_value = f(trial)
+            if float(numpy.max(numpy.abs(trial_value))) < norm:
+                break
+            scale /= 2
+        else:
+            return None
+        z, value = trial, trial_value
+    return z if float(numpy.max(numpy.abs(value))) < 1e-8 * size else None
 
 
 def _choose(

@@ -22,8 +22,6 @@ from collections.abc import Sequence
 
 import sympy
 
-from dynsolve.numbers import tidy
-
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
 SHAPES_3D = ("disk", "cylinder", "ring", "rod", "plate", "sphere", "shell", "particle")
 
@@ -65,31 +63,50 @@ def principal(
 def tensor(moments: Sequence[sympy.Expr], axes: tuple[Vec3, Vec3, Vec3]) -> sympy.Matrix:
     """I_G in scene axes: R diag(moments) Rᵀ, with R's columns the body's x, y, z axes."""
     R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
-    return (R * sympy.diag(*moments) * R.T).applyfunc(tidy)
+    return R * sympy.diag(*moments) * R.T
 
 
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:
-    """``vector`` divided by its length (ValueError for a zero vector)."""
+    """``vector`` divided by its length (ValueError for a zero vector); a vector already
+    of unit length (cos² + sin² = 1, tested at sample values) is kept as written."""
     x, y, z = (sympy.sympify(c) for c in vector)
-    length = sympy.sqrt(x**2 + y**2 + z**2)
-    if length == 0:
+    length_sq = x**2 + y**2 + z**2
+    if length_sq == 0:
         raise ValueError("a direction cannot be (0, 0, 0)")
+    if _is_one(length_sq):
+        return (x, y, z)
+    length = sympy.sqrt(length_sq)
     return (x / length, y / length, z / length)
+
+
+def _is_one(expr: sympy.Expr) -> bool:
+    """Whether ``expr`` is 1 for every value of its symbols (checked at sample points)."""
+    symbols = sorted(expr.free_symbols, key=str)
+    if not symbols:
+        return bool(abs(sympy.N(expr - 1, 30)) < 1e-25)
+    samples = ((0.3, 1.7, 2.9), (0.71, 0.12, 1.3), (2.2, 0.45, 0.8))
+    for sample in samples:
+        point = {s: sample[i % 3] + 0.1 * i for i, s in enumerate(symbols)}
+        if abs(complex(sympy.N(expr.xreplace(point), 20)) - 1) > 1e-15:
+            return False
+    return True
 
 
 def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
     """Orthonormal body axes from z (and x, when the body is not symmetric about z: made
-    perpendicular to z); for an axisymmetric body any x ⊥ z will do."""
+    perpendicular to z); for an axisymmetric body x is taken ⊥ z in the scene's x–y
+    plane (any x ⊥ z will do)."""
     z = unit(z_axis)
     if x_axis is None:
-        trial: Vec3 = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
-        if sympy.simplify(abs(z[0]) - 1) == 0:
-            trial = (sympy.Integer(0), sympy.Integer(1), sympy.Integer(0))
-        x_axis = trial
-    dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
-    x = unit(tuple(sympy.simplify(a - dot * b) for a, b in zip(x_axis, z, strict=True)))
+        if z[0] == 0 and z[1] == 0:  # z along the scene's z
+            x = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
+        else:
+            x = unit((-z[1], z[0], sympy.Integer(0)))
+    else:
+        dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
+        x = unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True)))
     y = cross(z, x)
-    return (x, tuple(sympy.simplify(c) for c in y), z)  # type: ignore[return-value]
+    return (x, y, z)
 
 
 def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:

@@ -122,10 +122,10 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     alpha = tuple(spin.alpha * c for c in spin.axis)
     r = tuple(body.G[i] - spin.through[i] for i in range(3))
     w_r = cross(omega, r)
-    a_G = tuple(tidy(a + b) for a, b in zip(cross(alpha, r), cross(omega, w_r), strict=True))
+    a_G = tuple(a + b for a, b in zip(cross(alpha, r), cross(omega, w_r), strict=True))
     H = tuple(body.I_G * sympy.Matrix(omega))
     I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
-    H_dot = tuple(tidy(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
+    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
         if scene.gravity
