@@ -158,3 +158,40 @@ def test_tilted_gear_reactions_follow_the_seed_formula(omega, phi):
     t = math.radians(phi)
     expected = (0.05 - 0.1) * math.sin(t) * math.cos(t) * omega**2
     assert pytest.approx(expected, rel=1e-9, abs=1e-9) == 0.25 * B - 0.2 * A
+
+
+GYRO = """\
+given:
+  m = 0.5 kg
+  r = 40 mm
+  d = 60 mm
+  w_s = 300 rad/s
+scene:
+  body rotor: mass m, disk r, at (d, 0, 0)
+  rotates rotor: about (0, 1, 0), through (0, 0, 0), omega {rate}
+  spins rotor: about (1, 0, 0), omega w_s
+  bearing O: at (0, 0, 0), ball
+  gravity
+find: {find}
+"""
+
+
+def test_gyroscope_steady_precession():
+    """Rotor (thin disk, I_s = m r²/2) spinning at ω_s about x, G at d from the pivot O,
+    precessing about y (Hibbeler 21.5): ΣM_O = Ω × H_O gives m g d = Ω I_s ω_s, so
+    Ω = m g d/(I_s ω_s) = 2.4525 rad/s; the pivot pulls G round: O_x = −m Ω² d, O_y = m g."""
+    solution = solve_text(GYRO.format(rate="Omega", find="Omega, O_x, O_y"), "gyro.dyn")
+    assert solution.passed
+    found = answers(solution)
+    omega = 0.5 * 9.81 * 0.06 / (0.5 * 0.04**2 / 2 * 300)
+    assert found["Omega"].value == pytest.approx(omega, rel=1e-12)
+    assert found["O_x"].value == pytest.approx(-0.5 * omega**2 * 0.06, rel=1e-12)
+    assert found["O_y"].value == pytest.approx(0.5 * 9.81, rel=1e-12)
+
+
+def test_a_misspelt_rate_is_not_taken_for_an_unknown():
+    with pytest.raises(SpecError) as error:
+        solve_text(
+            GYRO.format(rate="Omega", find="Omega, O_x").replace("omega w_s", "omega w_S"), "t.dyn"
+        )
+    assert "'w_S' is not a given" in str(error.value) and "w_s" in str(error.value)

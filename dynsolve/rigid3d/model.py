@@ -40,15 +40,15 @@ from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.rigid3d.inertia import Vec3, body_axes, principal, tensor, unit
-from dynsolve.spec.ast import Expr, SceneStmt, Spec
+from dynsolve.spec.ast import Expr, Name, SceneStmt, Spec
 from dynsolve.units import Dim
 
 LENGTH, MASS = Dim.of("length"), Dim.of("mass")
 MOMENT_OF_INERTIA = Dim(2, 1, 0)
 LINES_3D = frozenset(
-    {"body", "axis", "axes", "inertia3", "rotates", "bearing", "torque", "gravity"}
+    {"body", "axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "gravity"}
 )
-KINDS_3D = frozenset({"axis", "axes", "inertia3", "rotates", "bearing", "torque"})
+KINDS_3D = frozenset({"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque"})
 
 
 @dataclass(frozen=True)
@@ -76,8 +76,19 @@ class Spin:
 
 
 @dataclass(frozen=True)
+class SpinOf:
+    """The body's spin about its own axis ``axis`` (its z, through G) relative to the
+    frame that turns with the ``rotates`` line (the precession)."""
+
+    axis: Vec3
+    omega: sympy.Expr
+    alpha: sympy.Expr
+
+
+@dataclass(frozen=True)
 class Bearing:
-    """A bearing on the axis: a journal carries loads across the axis, a thrust also along it."""
+    """A bearing on the shaft: a journal carries loads across the shaft, a thrust also
+    along it; a ball joint (``ball``), anywhere, carries loads every way."""
 
     name: str
     at: Vec3
@@ -98,6 +109,13 @@ class Scene3D:
     torques: tuple[str, ...] = ()
     symbols: Mapping[str, sympy.Symbol] = field(default_factory=dict)
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    spin_of: SpinOf | None = None
+    rates: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown ω or α
+
+    @property
+    def shaft(self) -> Vec3:
+        """The axis the bearings' reactions are named across: the spin's, else the turn's."""
+        return self.spin_of.axis if self.spin_of is not None else self.spin.axis
 
 
 def is_3d(spec: Spec) -> bool:
@@ -123,8 +141,8 @@ def read_scene3d(spec: Spec) -> Scene3D:
             raise SpecError(
                 f"a '{stmt.kind}' line cannot go in a 3D scene",
                 Position(spec.file, stmt.line, stmt.column),
-                hint="a 3D scene takes body, axis, axes, inertia, rotates, bearing, torque "
-                "and gravity lines (docs/scene-mode.md, Rigid bodies in 3D)",
+                hint="a 3D scene takes body, axis, axes, inertia, rotates, spins, bearing, "
+                "torque and gravity lines (docs/scene-mode.md, Rigid bodies in 3D)",
             )
     if len(bodies) != 1:
         where = bodies[1] if bodies else (statements[0] if statements else None)
@@ -143,7 +161,26 @@ def read_scene3d(spec: Spec) -> Scene3D:
             Position(spec.file, where.line, where.column),
             hint="ω and α are along the axis by the right-hand rule",
         )
-    spin = _spin(spins[0], reader, spec)
+    rates: dict[sympy.Symbol, Dim] = {}
+    spin = _spin(spins[0], reader, spec, rates)
+    spin_of = None
+    own = [s for s in statements if s.kind == "spins"]
+    if own:
+        spin_of = _spin_of(own[0], body, reader, spec, rates)
+        if body.axes[2] != spin_of.axis and not _parallel(body.axes[2], spin_of.axis):
+            raise SpecError(
+                f"{body.name} spins about its own z axis, so 'axis {body.name}' must be the "
+                "spin's direction",
+                Position(spec.file, own[0].line, own[0].column),
+                hint=f"write 'axis {body.name}: ' with the spin's direction, or leave it out",
+            )
+        if sympy.simplify(body.principal[0] - body.principal[1]) != 0:
+            raise SpecError(
+                f"{body.name} must be symmetric about its spin axis (I_x = I_y) for its "
+                "inertia to stay constant in the precessing frame",
+                Position(spec.file, own[0].line, own[0].column),
+                hint="a spinning disk, wheel, rotor or cylinder",
+            )
     bearings = tuple(
         Bearing(
             s.name, _vector3(reader, s.vectors[0], "a bearing's position"), s.word, s.line, s.column
@@ -162,7 +199,9 @@ def read_scene3d(spec: Spec) -> Scene3D:
                 Position(spec.file, stmt.line, stmt.column),
                 hint=f"the torque acts on {body.name}",
             )
-    return Scene3D(spec.file, body, spin, bearings, gravity, torques, symbols, values)
+    return Scene3D(
+        spec.file, body, spin, bearings, gravity, torques, symbols, values, spin_of, rates
+    )
 
 
 def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:
@@ -229,6 +268,11 @@ def _body(
         )
     z_axis: Vec3 = (sympy.Integer(0), sympy.Integer(0), sympy.Integer(1))
     x_axis: Vec3 | None = None
+    spinning = [s for s in statements if s.kind == "spins" and s.body == stmt.name]
+    if spinning:  # the body's z is its spin axis unless said otherwise
+        z_axis = _direction3(
+            reader, spinning[0].vectors[0], Position(spec.file, stmt.line, stmt.column)
+        )
     for line in statements:
         if line.body != stmt.name or line.kind not in ("axis", "axes"):
             continue
@@ -254,9 +298,26 @@ def _body(
     return Body3D(stmt.name, m, G, tensor(moments, axes), moments, axes, shape)  # type: ignore[arg-type]
 
 
-def _spin(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Spin:
+def _spin(stmt: SceneStmt, reader: SceneReader, spec: Spec, rates: dict[sympy.Symbol, Dim]) -> Spin:
     where = Position(spec.file, stmt.line, stmt.column)
-    axis = _direction3(reader, stmt.vectors[0], where)
+    axis = _along_an_axis(_direction3(reader, stmt.vectors[0], where), where)
+    through = _vector3(reader, stmt.vectors[1], "a point of the axis")
+    omega, alpha = _rates(stmt, reader, rates)
+    return Spin(axis, through, omega, alpha, stmt.line)
+
+
+def _spin_of(
+    stmt: SceneStmt, body: Body3D, reader: SceneReader, spec: Spec, rates: dict[sympy.Symbol, Dim]
+) -> SpinOf:
+    where = Position(spec.file, stmt.line, stmt.column)
+    if stmt.body != body.name:
+        raise SpecError(f"there is no body '{stmt.body}'", where, hint=f"the body is {body.name}")
+    axis = _along_an_axis(_direction3(reader, stmt.vectors[0], where), where)
+    omega, alpha = _rates(stmt, reader, rates)
+    return SpinOf(axis, omega, alpha)
+
+
+def _along_an_axis(axis: Vec3, where: Position) -> Vec3:
     if sum(1 for c in axis if c != 0) != 1:
         raise SpecError(
             "the axis of rotation must lie along x, y or z (the bearings' reactions are "
@@ -264,15 +325,32 @@ def _spin(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Spin:
             where,
             hint="choose the scene axes with the shaft along one of them",
         )
-    through = _vector3(reader, stmt.vectors[1], "a point of the axis")
+    return axis
+
+
+def _rates(
+    stmt: SceneStmt, reader: SceneReader, rates: dict[sympy.Symbol, Dim]
+) -> tuple[sympy.Expr, sympy.Expr]:
+    """ω and α of a ``rotates`` or ``spins`` line: expressions of the givens, or a name
+    that is not a given (an unknown rate, found: a steady precession's Ω)."""
     assert stmt.value is not None
-    omega = reader.value(stmt.value, Dim(0, 0, -1), "an angular velocity")
-    alpha = (
-        reader.value(stmt.props[0].values[0], Dim(0, 0, -2), "an angular acceleration")
-        if stmt.props
-        else sympy.Integer(0)
-    )
-    return Spin(axis, through, omega, alpha, stmt.line)
+    expressions = [(stmt.value, Dim(0, 0, -1), "an angular velocity")]
+    if stmt.props:
+        expressions.append((stmt.props[0].values[0], Dim(0, 0, -2), "an angular acceleration"))
+    found = []
+    for expr, dim, what in expressions:
+        if isinstance(expr, Name) and expr.text not in reader.symbols and expr.text != "pi":
+            symbol = sympy.Symbol(expr.text, real=True)
+            rates[symbol] = dim
+            found.append(symbol)
+        else:
+            found.append(reader.value(expr, dim, what))
+    return found[0], found[1] if len(found) > 1 else sympy.Integer(0)
+
+
+def _parallel(a: Vec3, b: Vec3) -> bool:
+    cross = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    return all(sympy.simplify(c) == 0 for c in cross)
 
 
 def close_name(name: str, names: Sequence[str]) -> str:

@@ -1,8 +1,11 @@
 """Turn a 3D scene into a problem: ΣF = m a_G and ΣM_G = Ḣ_G about the fixed axis.
 
-With ω = ω u and α = α u about the fixed axis (unit u through O), r = r_G/O:
-a_G = α × r + ω × (ω × r), H_G = I_G ω, and since the body's axes turn with it
-(Ω = ω), Ḣ_G = (Ḣ_G)_xyz + Ω × H_G = I_G α + ω × H_G (Hibbeler 21.4). The bearings'
+With Ω = Ω u and α = α u about the fixed axis (unit u through O), r = r_G/O:
+a_G = α × r + Ω × (Ω × r). A body that ``spins`` about its own axis s relative to
+that frame (symmetric about s, so I_G is constant in the frame) has ω = Ω + ω_s s;
+else ω = Ω. H_G = I_G ω and Ḣ_G = (Ḣ_G)_xyz + Ω × H_G = I_G (α u + α_s s) + Ω × H_G
+(Hibbeler 21.4). A rate written as a name that is not a given is an unknown (the
+precession rate of a steady precession). The bearings'
 reactions are named ``A_x``, ``A_y``, ``A_z`` (a journal carries none along the axis); a
 ``torque`` acts about the axis. An equation with no unknown that holds identically
 (ΣM along the axis when α = 0 and no torque) is left out; one that does not hold is
@@ -36,6 +39,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import sympy
+from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.dimensions import DimensionReport
 from dynsolve.errors import DimensionError, Position, SpecError
@@ -104,12 +108,24 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         unknowns[symbol] = dim
         return symbol
 
-    along = next(i for i, c in enumerate(spin.axis) if c != 0)
+    asked = {
+        item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
+    }
+    for rate, dim in scene.rates.items():  # an unknown ω or α (a steady precession's Ω)
+        if rate.name not in asked:  # a typo for a given must not become an unknown
+            raise SpecError(
+                f"'{rate.name}' is not a given: a rate to solve for must be in find",
+                Position(spec.file, spin.line, 1),
+                hint=close_name(rate.name, list(taken))
+                or f"add '{rate.name}' to find, or declare it under given:",
+            )
+        unknown(rate.name, dim)
+    along = next(i for i, c in enumerate(scene.shaft) if c != 0)
     reactions: dict[str, tuple[Vec3, Vec3]] = {}
     for bearing in scene.bearings:
         force = tuple(
             unknown(f"{bearing.name}_{AXES[i]}", FORCE)
-            if i != along or bearing.kind == "thrust"
+            if i != along or bearing.kind in ("thrust", "ball")
             else sympy.Integer(0)
             for i in range(3)
         )
@@ -118,14 +134,21 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     for name in scene.torques:
         size = scene.symbols[name] if name in taken else unknown(name, MOMENT)
         torque += size
-    omega = tuple(spin.omega * c for c in spin.axis)
-    alpha = tuple(spin.alpha * c for c in spin.axis)
+    frame = tuple(spin.omega * c for c in spin.axis)  # Ω: the turning (precessing) frame
+    frame_alpha = tuple(spin.alpha * c for c in spin.axis)
+    omega, relative_alpha = frame, frame_alpha
+    if scene.spin_of is not None:  # ω = Ω + ω_s s; (dω/dt)_xyz = α u + α_s s
+        own = scene.spin_of
+        omega = tuple(w + own.omega * c for w, c in zip(frame, own.axis, strict=True))
+        relative_alpha = tuple(
+            a + own.alpha * c for a, c in zip(frame_alpha, own.axis, strict=True)
+        )
     r = tuple(body.G[i] - spin.through[i] for i in range(3))
-    w_r = cross(omega, r)
-    a_G = tuple(a + b for a, b in zip(cross(alpha, r), cross(omega, w_r), strict=True))
+    w_r = cross(frame, r)
+    a_G = tuple(a + b for a, b in zip(cross(frame_alpha, r), cross(frame, w_r), strict=True))
     H = tuple(body.I_G * sympy.Matrix(omega))
-    I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
-    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
+    I_alpha = tuple(body.I_G * sympy.Matrix(relative_alpha))
+    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(frame, H), strict=True))
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
         if scene.gravity
@@ -160,7 +183,7 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
     targets = tuple(
-        _target(item, spec, scene, unknowns, dims, omega, a_G, H_dot) for item in spec.finds
+        _target(item, spec, scene, unknowns, dims, omega, frame, a_G, H_dot) for item in spec.finds
     )
     check_answers_in_find(spec)
     # every reaction is solved: the second moment point checks them all
@@ -197,7 +220,17 @@ def _check_determined(
     """The reactions must be fixed by the equations (rank = number of unknowns) and the
     equations consistent (an extra one may repeat the others: G off the shaft)."""
     residuals = [e.lhs - e.rhs for e in equations]
-    A, b = sympy.linear_eq_to_matrix(residuals, list(unknowns))
+    try:
+        A, b = sympy.linear_eq_to_matrix(residuals, list(unknowns))
+    except NonlinearError:  # an unknown rate: the solver decides
+        if len(unknowns) > len(equations):
+            raise SpecError(
+                f"the scene is not determined: {len(unknowns)} unknowns for "
+                f"{len(equations)} equations",
+                where,
+                hint="give the rates (omega, alpha) you know as givens",
+            ) from None
+        return
     A, b = A.xreplace(dict(scene.values)), b.xreplace(dict(scene.values))
     rank = A.rank(simplify=True)
     named = ", ".join(s.name for s in unknowns)
@@ -250,6 +283,7 @@ def _target(
     unknowns: Mapping[sympy.Symbol, Dim],
     dims: Mapping[str, Dim],
     omega: tuple[sympy.Expr, ...],
+    frame: tuple[sympy.Expr, ...],
     a_G: tuple[sympy.Expr, ...],
     H_dot: tuple[sympy.Expr, ...],
 ) -> Target:
@@ -282,7 +316,7 @@ def _target(
         )
     if function == "T":
         I_w = body.I_G * sympy.Matrix(omega)
-        v_G = cross(omega, tuple(body.G[i] - scene.spin.through[i] for i in range(3)))
+        v_G = cross(frame, tuple(body.G[i] - scene.spin.through[i] for i in range(3)))
         energy = sum(w * h for w, h in zip(omega, I_w, strict=True)) / 2
         energy += body.mass * sum(v**2 for v in v_G) / 2
         unit, dim = _unit(item, ENERGY, spec, where)

@@ -1138,6 +1138,15 @@ class _Builder(Transformer_NonRecursive):
             "rotates", body, body=str(body), vectors=(axis, through), value=omega, props=props
         )
 
+    def spins_stmt(self, c: list[Any]) -> SceneStmt:
+        """``spins B: about (s), omega w_s [, alpha a_s]``: B spins about its own axis s
+        relative to the frame that ``rotates`` (precesses)."""
+        body, axis, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt("spins", body, body=str(body), vectors=(axis,), value=omega, props=props)
+
     def bearing_stmt(self, c: list[Any]) -> SceneStmt:
         name, at, kind = c
         return self._stmt("bearing", name, name=str(name), vectors=(at,), word=str(kind))
