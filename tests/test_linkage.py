@@ -587,3 +587,23 @@ def test_the_sheet_draws_the_linkage_at_the_instant():
     assert solution.linkage.grounds == (pytest.approx((0.0, 0.0, 0.0, 1.0)),)
     tex = render_latex(solution, "handout")
     assert "The linkage at the instant" in tex and "\\begin{picture}" in tex
+
+
+def test_the_other_assembly_is_reported_and_is_the_mirror_in_bd():
+    """A four-bar closes two ways, mirror images of C in the line BD (by hand: reflect
+    the open assembly's C in BD); both are found and the one not taken is reported."""
+    from dynsolve.linkage.model import read_linkage
+    from dynsolve.linkage.position import place
+    from dynsolve.spec.parser import parse_file
+
+    placed = place(read_linkage(parse_file(PROBLEMS / "four_bar_open.dyn")))
+    *_, (xC, yC) = four_bar_by_hand(0.25, 0.1, 0.25, 0.15, math.radians(60), 6.0)
+    B = (0.1 * math.cos(math.radians(60)), 0.1 * math.sin(math.radians(60)))
+    D = (0.25, 0.0)
+    ux, uy = D[0] - B[0], D[1] - B[1]
+    length = math.hypot(ux, uy)
+    ux, uy = ux / length, uy / length
+    along = (xC - B[0]) * ux + (yC - B[1]) * uy
+    mirror = (2 * (B[0] + along * ux) - xC, 2 * (B[1] + along * uy) - yC)
+    (other,) = placed.others
+    assert other["C"] == pytest.approx(mirror, rel=1e-9)

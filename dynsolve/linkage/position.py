@@ -38,6 +38,7 @@ from dynsolve.numbers import tidy
 
 DIGITS = 30  # the loop closure's working precision
 STARTS = 48  # starting points of the loop-closure root search
+MIRRORS = 60  # more starts, mirror images of each assembly found
 NEWTON_STEPS = 60  # damped Newton steps from each start
 SAME = 1e-7  # two assemblies closer than this (relative to the linkage's size) are one
 AGREE = 1e-9  # a given geometry may miss its bars' lengths by this fraction
@@ -375,6 +376,8 @@ def _solve_all(
             ):
                 continue
             found.append(values)
+            if len(starts) < STARTS + MIRRORS:  # the other assemblies are mirror images
+                starts += _mirrors(found_at, known)
     found.sort(key=lambda v: [round(float(c) / size, 6) for c in v])
 
     def snapped(value: mpmath.mpf) -> sympy.Float:  # on a guide through the origin: 0
@@ -386,6 +389,27 @@ def _solve_all(
         {p: (snapped(v[2 * i]), snapped(v[2 * i + 1])) for i, p in enumerate(unknown)}
         for v in found
     ]
+
+
+def _mirrors(solution: Any, known: Sequence[tuple[float, float]]) -> list[Any]:
+    """Starting points for the assemblies not yet found: the solution's unknown joints
+    reflected in each line through two placed joints (a four-bar's two assemblies are
+    mirror images in the line BD)."""
+    import numpy
+
+    starts = []
+    points = numpy.asarray(solution, dtype=float).reshape(-1, 2)
+    for a, b in itertools.combinations(known[:6], 2):
+        base, direction = numpy.array(a), numpy.array(b) - numpy.array(a)
+        length = float(numpy.hypot(*direction))
+        if length == 0:
+            continue
+        unit = direction / length
+        offsets = points - base
+        along = offsets @ unit
+        mirrored = base + 2 * numpy.outer(along, unit) - offsets
+        starts.append(mirrored.reshape(-1))
+    return starts
 
 
 def _newton(
