@@ -140,6 +140,31 @@ class Spring:
     line: int = 0
     column: int = 0
     wound: bool = False  # on a cord wrapped round the body: its end moves with the rim
+    tension_only: bool = False  # an elastic cord: no force while shorter than unstretched
+
+    def stretch(self, s: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+        """The stretch that acts: ``s`` itself, or for a tension-only spring max(s, 0)
+        (a slack elastic cord pushes nothing and stores no energy); ValueError when the
+        sign of ``s`` cannot be told.
+
+        >>> k, L0 = sympy.Integer(800), sympy.Integer(15)
+        >>> cord = Spring("S", "b", (0, 0), "", (0, 0), k, L0, tension_only=True)
+        >>> cord.stretch(sympy.Integer(-15), {}), cord.stretch(sympy.Integer(5), {})
+        (0, 5)
+        """
+        if not self.tension_only:
+            return s
+        from dynsolve.solver.roots import sign_of
+
+        try:
+            sign = sign_of(s, values)
+        except ValueError:
+            raise ValueError(
+                f"whether the elastic cord {self.name} is stretched (L > L0) cannot be told "
+                "before solving (it depends on symbolic givens or an unknown extent): give "
+                "them values, or use a plain spring"
+            ) from None
+        return s if sign > 0 else sympy.Integer(0)
 
 
 @dataclass(frozen=True)
@@ -692,6 +717,7 @@ def build_scene(
                 k = builder.value(stmt.props[0].values[0], Dim(0, 1, -2), "a spring stiffness")
                 free = builder.value(stmt.props[1].values[0], LENGTH, "an unstretched length")
                 wound = any(p.key == "wound" for p in stmt.props)
+                tension_only = any(p.key == "tension_only" for p in stmt.props)
                 springs.append(
                     Spring(
                         stmt.name,
@@ -704,6 +730,7 @@ def build_scene(
                         stmt.line,
                         stmt.column,
                         wound,
+                        tension_only,
                     )
                 )
         elif stmt.kind in ("force", "couple"):

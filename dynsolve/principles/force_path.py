@@ -51,6 +51,7 @@ def speed_by_integration(
     P = (G1[0] + lam * step[0], G1[1] + lam * step[1])
     forces: list[Vec] = []
     nearest: list[sympy.Expr] = []  # where the path passes closest to a spring's anchor
+    kinks: list[sympy.Expr] = []  # zero where an elastic cord goes taut or slack
     if scene.gravity is not None:
         weight = body.mass * symbols["g"]
         forces.append((weight * scene.gravity[0], weight * scene.gravity[1]))
@@ -62,6 +63,10 @@ def speed_by_integration(
         nearest.append(dot(anchor, step) / dot(step, step))
         current = sympy.sqrt(dot(to_end, to_end))
         pull = spring.k * (current - spring.unstretched) / current
+        if spring.tension_only:  # an elastic cord pulls only while stretched
+            pull = sympy.Piecewise((pull, current > spring.unstretched), (0, True))
+            taut = dot(to_end, to_end) - spring.unstretched**2  # zero where it tightens
+            kinks.append(taut)
         forces.append((pull * to_end[0], pull * to_end[1]))
     for load in scene.loads:
         if load.body == body_name and load.kind == "force":
@@ -89,6 +94,9 @@ def speed_by_integration(
     # the spring force turns where the path passes its anchor: split the integral there
     # so no node falls on that point
     inner = {real_value(n, values) for n in nearest} - {None}
+    for kink in kinks:  # a node where each elastic cord tightens: the force has a corner
+        polynomial = sympy.Poly((sympy.Integer(0) + kink).xreplace(dict(values)), lam)
+        inner |= {float(sympy.re(r)) for r in polynomial.nroots() if abs(sympy.im(r)) < 1e-12}
     nodes = [0.0, *sorted(n for n in inner if 0 < n < 1), 1.0]  # type: ignore[operator]
     try:
         work = float(mpmath.quad(force, nodes)) * s

@@ -22,7 +22,7 @@ import sympy
 from dynsolve.model.scene import Body, Scene, Support, Vec
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.names import pretty
-from dynsolve.numbers import tidy
+from dynsolve.numbers import real_value, tidy
 from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim
 
@@ -248,6 +248,7 @@ class _Writer:
         self.kinetic: dict[str, tuple[str, ...]] = {}
         self.derived: dict[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = {}
         self.several = len(scene.bodies) > 1
+        self.notes: list[tuple[str, str]] = []  # shown with the checks (a slack cord)
 
     # ---- names and symbols
     def unknown(self, name: str, dim: Dim) -> sympy.Symbol:
@@ -443,9 +444,22 @@ class _Writer:
 
         assert isinstance(spring, Spring)
         u, length = self._ends(spring.body, spring.point, spring.other, spring.other_point)
-        force = spring.k * (
-            length - spring.unstretched
-        )  # tension positive: pulls the ends together
+        stretch = spring.stretch(length - spring.unstretched, self.scene.values)
+        if not spring.tension_only and real_value(length, self.scene.values) == 0:
+            raise ValueError(
+                f"spring {spring.name} has both ends at one point, so its force has no "
+                "direction (an elastic cord, slack there? write ', tension only')"
+            )
+        if spring.tension_only and stretch == 0:
+            self.notes.append(
+                (
+                    f"elastic cord {spring.name}",
+                    f"slack: its length {sympy.sstr(length)} is not more than its unstretched "
+                    f"length {sympy.sstr(spring.unstretched)}, so it pulls nothing",
+                )
+            )
+            return  # no force (its direction may not even exist: ends together)
+        force = spring.k * stretch  # tension positive: pulls the ends together
         self.add_force(
             ForceTerm(
                 spring.name,
@@ -820,4 +834,5 @@ def formulate(
         reactions=writer.reactions,
         kinetic=writer.kinetic,
         derived=writer.derived,
+        notes=tuple(writer.notes),
     )

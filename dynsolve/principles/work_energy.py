@@ -172,6 +172,10 @@ class _Work:
             end = end or spring.other_point
             s1 = _length(spring.point, spring.other_point) - spring.unstretched
             s2 = _length(start, end) - spring.unstretched
+            if spring.tension_only:  # an elastic cord stores energy only while stretched
+                values = {**self.scene.values, **self.values}
+                s1 = spring.stretch(s1, values)
+                s2 = spring.stretch(s2, values)
             self.by_name(
                 spring.name,
                 -spring.k * (s2**2 - s1**2) / 2,

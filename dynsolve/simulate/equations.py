@@ -296,10 +296,20 @@ def _applied(
         d = (b[0] - a[0], b[1] - a[1])  # from the spring's start toward its other end
         length = sympy.sqrt(_dot(d, d))
         pull = spring.k * (length - spring.unstretched) / length
+        if spring.tension_only:  # no force (nor direction, at zero length) while slack
+            pull = sympy.Piecewise((pull, length > spring.unstretched), (0, True))
         sense = 1 if spring.body == body else -1
         fx += sense * pull * d[0]
         fy += sense * pull * d[1]
     return fx, fy
+
+
+def _acting(spring: object, s: sympy.Expr) -> sympy.Expr:
+    """The stretch that acts along the motion: for an elastic cord (tension only) none
+    while it is slack."""
+    if not getattr(spring, "tension_only", False):
+        return s
+    return sympy.Piecewise((s, s > 0), (0, True))
 
 
 def _size(name: str, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
@@ -348,7 +358,9 @@ def _potential(
         b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
         b = b or spring.other_point
         d = (b[0] - a[0], b[1] - a[1])
-        terms.append(spring.k * (sympy.sqrt(_dot(d, d)) - spring.unstretched) ** 2 / 2)
+        terms.append(
+            spring.k * _acting(spring, sympy.sqrt(_dot(d, d)) - spring.unstretched) ** 2 / 2
+        )
     for load in scene.loads:
         if load.kind == "couple":
             turn = link_turns.get(load.body)

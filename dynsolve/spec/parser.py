@@ -826,11 +826,15 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def spring_stmt(self, c: list[Any]) -> SceneStmt:
+        tension_only = isinstance(c[-1], Token) and c[-1].type == "TENSION"
+        c = c[:-1] if tension_only else c
         wound = isinstance(c[-1], Token) and c[-1].type == "WOUND"
         name, body, location, other, *rest = c[:-1] if wound else c
         other_location = rest[0] if len(rest) == 3 else None
         stiffness, unstretched = rest[-2], rest[-1]
         extra = (Prop("wound", line=self.line, column=self.offset + 1),) if wound else ()
+        if tension_only:  # an elastic cord: it pulls, never pushes
+            extra += (Prop("tension_only", line=self.line, column=self.offset + 1),)
         return self._stmt(
             "spring",
             name,
