@@ -126,6 +126,17 @@ def test_cli_solves_a_3d_scene():
     assert "3D scene mode" in result.output and "ΣM_G,z" in result.output
 
 
+def test_the_mode_stays_whole_under_a_long_path(tmp_path):
+    # regression (CI): a checkout at a longer path folded "3D scene mode" across two lines
+    folder = tmp_path / ("a_rather_long_folder_name_" * 3)
+    folder.mkdir()
+    spec = folder / "3d_seed_tilted_gear.dyn"
+    spec.write_text((PROBLEMS / "seed" / "3d_seed_tilted_gear.dyn").read_text())
+    result = CliRunner().invoke(app, ["solve", str(spec)])
+    assert result.exit_code == 0, result.output
+    assert "units SI · 3D scene mode" in result.output
+
+
 TILTED = """\
 given:
   m = 10 kg

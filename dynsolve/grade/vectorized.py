@@ -205,7 +205,12 @@ def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
 
         return [_Phase(build_problem(spec), _constraints)]
     from dynsolve.linkage.model import is_linkage
+    from dynsolve.rigid3d.model import is_3d
 
+    if is_3d(spec):
+        from dynsolve.rigid3d.problem import build_3d_problem
+
+        return [_Phase(build_3d_problem(spec), _constraints)]
     if is_linkage(spec):
         from dynsolve.linkage.problem import build_linkage_problem
 

@@ -88,7 +88,11 @@ def speed_by_integration(
     v1 = scene.velocities.get(body_name, (0, 0))
     v1_squared = real_value(dot(v1, v1), values)
     integrand = sympy.Integer(0) + F_t.xreplace(dict(values))
-    if m is None or s is None or v1_squared is None or integrand.free_symbols - {lam}:
+    if m is None or s is None or v1_squared is None:
+        return None
+    if s == 0:  # no travel, no work: the speed is the starting speed
+        return v1_squared**0.5
+    if F_t.has(sympy.nan) or integrand.free_symbols - {lam}:
         return None
     force = sympy.lambdify(lam, integrand, "mpmath")
     # the spring force turns where the path passes its anchor: split the integral there

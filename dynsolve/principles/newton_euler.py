@@ -446,9 +446,17 @@ class _Writer:
         u, length = self._ends(spring.body, spring.point, spring.other, spring.other_point)
         stretch = spring.stretch(length - spring.unstretched, self.scene.values)
         if not spring.tension_only and real_value(length, self.scene.values) == 0:
-            raise ValueError(
-                f"spring {spring.name} has both ends at one point, so its force has no "
-                "direction (an elastic cord, slack there? write ', tension only')"
+            # both ends at one point: the force k|L0| has no direction the scene fixes; an
+            # unknown angle leaves whatever depends on it undetermined rather than guessed
+            theta = self.unknown(f"theta_{spring.name}", Dim())
+            u = (sympy.cos(theta), sympy.sin(theta))
+            self.notes.append(
+                (
+                    f"spring {spring.name}",
+                    "both ends at one point: its force has no direction here, so nothing "
+                    "at this instant that depends on it can be found (an elastic cord, slack "
+                    "there? write ', tension only')",
+                )
             )
         if spring.tension_only and stretch == 0:
             self.notes.append(

@@ -91,12 +91,13 @@ def _heading(text: str) -> Text:
 
 
 def _title(solution: Solution) -> Panel:
-    """The title, source and facts inside the panel, where they fold (a panel's own title
-    line would be cut at the terminal's width)."""
+    """The title, source, file and facts inside the panel, where they fold (a panel's own
+    title line would be cut at the terminal's width)."""
     text = Text(solution.title, style="bold") + Text("\n") if solution.title else Text()
     if solution.source:
         text += Text(f"{solution.source}\n")
-    text += Text(f"{solution.file} · units {solution.system} · {solution.mode} mode")
+    text += Text(f"{solution.file}\n")  # a long path folds on its own line, not the facts
+    text += Text(f"units {solution.system} · {solution.mode} mode")
     text.overflow = "fold"
     return Panel(text)
 
