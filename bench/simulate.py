@@ -1,7 +1,8 @@
 """Simulation benchmark: dynsolve's integrator against a hand-written lambdify + solve_ivp script.
 
 For each system (a compound pendulum released from 60°; the seed's 40-lb disk rolling
-against a wound spring under a couple, from problems/seed/rwe_seed_disk40lb.dyn), the
+against a wound spring under a couple, from problems/seed/rwe_seed_disk40lb.dyn; a double
+pendulum of two rods, an open chain of bars in two coordinates), the
 equation of motion is built once by dynsolve from the scene and once by hand (the
 Lagrangian written out, lambdified with sympy), and both are integrated over 10 s with
 the same solve_ivp method and tolerances (atol = rtol/100). Each reports the error of q at
@@ -35,10 +36,13 @@ ABOUT = """dynsolve's integrator (`dynsolve/simulate/`: the equation of motion b
 lambdified, integrated with `solve_ivp`) against a hand-written script of the same system in
 the same run: its Lagrangian written out by hand, lambdified with sympy, integrated by
 `solve_ivp` with the same method, tolerances (atol = rtol/100) and coordinate, its energy
-drift computed the same way. Two systems over 10 s: a compound pendulum (2-kg, 1-m bar
-pinned at its end) released from 60°, and the seed's 40-lb disk rolling against a wound
-spring under a 15 ft·lb couple (`problems/seed/rwe_seed_disk40lb.dyn`, FPS). Error: |q(10 s)
-− q_ref| / |q_ref|, the reference being the hand script at DOP853, rtol 1e-13. Time: best of
+drift computed the same way. Three systems over 10 s: a compound pendulum (2-kg, 1-m bar
+pinned at its end) released from 60°, the seed's 40-lb disk rolling against a wound
+spring under a 15 ft·lb couple (`problems/seed/rwe_seed_disk40lb.dyn`, FPS), and a double
+pendulum of two uniform rods (2 kg, 1 m; an open chain of bars, two coordinates) released
+from rest with the upper rod 30° below the horizontal and the lower one horizontal. Error:
+|q(10 s) − q_ref| / |q_ref| (the first coordinate), the reference being the hand script at
+DOP853, rtol 1e-13. Time: best of
 the runs alternating dynsolve and the hand script, integration and drift only. Drift:
 max |Δ(T + V)| / max(T, range of V). Target: ratio ≤ 1.0, drift ≤ 1e-9 at rtol 1e-12."""
 
@@ -100,10 +104,46 @@ def hand_disk() -> Hand:
     return Hand(lambda t, y: [y[1], accel(y[0])], energy, [0.0, 0.0])
 
 
+DOUBLE = """\
+given:
+  m = 2 kg
+  L = 1 m
+  theta_1 = -30 deg
+  theta_2 = 0 deg
+scene:
+  point O: (0, 0)
+  bar OA: O to A, length L, angle theta_1, mass m
+  bar AB: A to B, length L, angle theta_2, mass m
+  gravity
+"""
+DOUBLE_START = (math.radians(-30), 0.0)
+
+
+def hand_double() -> Hand:
+    # two uniform rods (m = 2 kg, L = 1 m) pinned at O and end to end at A, θ_i from +x
+    # ccw, θ_i = θ_i0 + q_i: T = m L² [(2/3) ω₁² + (1/6) ω₂² + ½ ω₁ ω₂ cos(θ₁ − θ₂)],
+    # V = m g L [(3/2) sin θ₁ + ½ sin θ₂]; Lagrange: M q'' = f with
+    # M = m L² [4/3, ½ cos Δ; ½ cos Δ, 1/3], f = m L² [−½ sin Δ ω₂², ½ sin Δ ω₁²]
+    #     − m g L [(3/2) cos θ₁, ½ cos θ₂]; q'' by LU (sympy), lambdified
+    q1, q2, w1, w2 = sympy.symbols("q1 q2 w1 w2")
+    m, L, g = 2.0, 1.0, 9.81
+    t1, t2 = DOUBLE_START[0] + q1, DOUBLE_START[1] + q2
+    d = t1 - t2
+    M = m * L**2 * sympy.Matrix([[4 / 3, sympy.cos(d) / 2], [sympy.cos(d) / 2, 1 / 3]])
+    f = m * L**2 * sympy.Matrix([-sympy.sin(d) * w2**2 / 2, sympy.sin(d) * w1**2 / 2])
+    f -= m * g * L * sympy.Matrix([1.5 * sympy.cos(t1), 0.5 * sympy.cos(t2)])
+    accel = sympy.lambdify([q1, q2, w1, w2], [w1, w2, *M.LUsolve(f)], "math", cse=True)
+    T = m * L**2 * (2 * w1**2 / 3 + w2**2 / 6 + w1 * w2 * sympy.cos(d) / 2)
+    V = m * g * L * (1.5 * sympy.sin(t1) + 0.5 * sympy.sin(t2))
+    energy = sympy.lambdify([q1, q2, w1, w2], (T, V))
+    return Hand(lambda t, y: accel(*y), energy, [0.0, 0.0, 0.0, 0.0])
+
+
 def run_hand(hand: Hand, method: str, rtol: float) -> tuple[float, float, int]:
     """q at T_END, the energy drift and the number of right-hand side evaluations."""
     sol = solve_ivp(hand.rhs, (0.0, T_END), hand.y0, method=method, rtol=rtol, atol=rtol / 100)
-    T, V = hand.energy(sol.y[0], sol.y[1])
+    T, V = hand.energy(*sol.y)
+    T, V = np.broadcast_to(T, sol.t.shape), np.broadcast_to(V, sol.t.shape)
     E = T + V
     scale = max(float(np.max(T)), float(np.ptp(V)), 1e-300)  # as dynsolve's drift
     drift = float(np.max(np.abs(E - E[0]))) / scale
@@ -146,29 +186,24 @@ def main() -> None:
     show(lines, "| system | method | rtol | error dynsolve | error hand | evaluations dynsolve / "
          "hand | time dynsolve | time hand | ratio | drift dynsolve | drift hand |")  # fmt: skip
     show(lines, "|---|---|---|---|---|---|---|---|---|---|---|")
+    systems["double pendulum, two rods (chain)"] = (
+        parse_spec(DOUBLE, "double.dyn"),
+        hand_double(),
+    )
     for name, (spec, hand) in systems.items():
-        from dynsolve.model.scene import build_scene
-        from dynsolve.modes.equation_mode import givens_of
-
         start = time.perf_counter()
-        givens = givens_of(spec)
-        symbols = {g.name: g.symbol for g in givens}
-        values = {g.symbol: g.value for g in givens if g.value is not None}
-        scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
-        motion = motion_of(scene, symbols, values)
+        integrator = _ours(spec)
         build = time.perf_counter() - start
         reference, _, _ = run_hand(hand, "DOP853", 1e-13)
         size = max(abs(reference), 1e-300)
         for method in args.methods.split(","):
             for rtol in (float(r) for r in args.rtols.split(",")):
                 ours_time, run, hand_time, (q_hand, drift_hand, nfev) = paired(
-                    lambda m=method, r=rtol, f=motion: integrate(
-                        f, 0.0, 0.0, T_END, (), m, r, r / 100
-                    ),
+                    lambda m=method, r=rtol, f=integrator: f(m, r),
                     lambda m=method, r=rtol, h=hand: run_hand(h, m, r),
                     args.repeat,
                 )
-                error_ours = abs(float(run.q[-1]) - reference) / size
+                error_ours = abs(float(np.ravel(run.q[-1])[0]) - reference) / size
                 error_hand = abs(q_hand - reference) / size
                 show(
                     lines,
@@ -185,6 +220,28 @@ def main() -> None:
     if not args.no_write:
         command = " ".join(["python bench/simulate.py", *sys.argv[1:]])
         write_section(HEADING, "\n".join(lines), command)
+
+
+def _ours(spec: object) -> object:
+    """dynsolve's equation of motion of the spec, built once; a function (method, rtol)
+    that integrates it over T_END as ``dynsolve simulate`` does (every step kept)."""
+    from dynsolve.simulate.chain import chain_of, is_chain
+
+    if is_chain(spec):
+        from dynsolve.simulate.chain_run import integrate_chain
+
+        chain = chain_of(spec)
+        chain.right_hand_side()  # lambdified once, as the hand script is
+        return lambda m, r: integrate_chain(chain, T_END, m, r, r / 100, None)
+    from dynsolve.model.scene import build_scene
+    from dynsolve.modes.equation_mode import givens_of
+
+    givens = givens_of(spec)
+    symbols = {g.name: g.symbol for g in givens}
+    values = {g.symbol: g.value for g in givens if g.value is not None}
+    scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
+    motion = motion_of(scene, symbols, values)
+    return lambda m, r: integrate(motion, 0.0, 0.0, T_END, (), m, r, r / 100)
 
 
 def show(lines: list[str], line: str) -> None:

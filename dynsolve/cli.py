@@ -500,7 +500,10 @@ def simulate(
     file: Annotated[Path, typer.Argument(help="The .dyn spec with a scene.", show_default=False)],
     until: Annotated[
         str | None,
-        typer.Option(help="Stop at an event: max, min, 'theta(B) = 0 deg', 'x(B) = 0 m', …"),
+        typer.Option(
+            help="Stop at an event: max, min, 'theta(B) = 0 deg', 'x(B) = 0 m', … "
+            "(a chain: 'theta(BAR) = …', 'y(JOINT) = …')"
+        ),
     ] = None,
     t_end: Annotated[str, typer.Option("--t-end", help="The end time, e.g. '10 s'.")] = "10 s",
     method: Annotated[Method, typer.Option(help="solve_ivp's method.")] = Method.DOP853,
@@ -515,7 +518,8 @@ def simulate(
         Path | None, typer.Option(help="Plot q(t) and the energy: .png, .pdf or .svg.")
     ] = None,
 ) -> None:
-    """Integrate a scene's motion in time from its state (one degree of freedom).
+    """Integrate a scene's motion in time from its state (one degree of freedom, or an
+    open chain of bars in every bar's turn).
 
     Prints the events met (turning points, the --until event), the period of an
     oscillation beside the small-oscillation period, and the drift of T + V − U_f.

@@ -71,9 +71,11 @@ def free_bodies(
     acceleration: Level,
     g: sympy.Symbol,
     givens: set[str],
+    released: int = 0,
 ) -> FreeBodies:
     """Newton–Euler for every bar at the positions ``r``, with the motion of the two
-    levels; ``givens`` are the names whose magnitude is known."""
+    levels; ``givens`` are the names whose magnitude is known; ``released`` bars' α are
+    unknowns of the acceleration level that these equations decide."""
     forces: dict[str, list[tuple[Vec, str]]] = {b: [] for b in linkage.bars}  # (F, at)
     unknowns: dict[sympy.Symbol, Dim] = {}
     at_joint: dict[str, Vec] = {}
@@ -189,7 +191,7 @@ def free_bodies(
             equations.append(Equation(lhs, rhs, note, bar.line, note))
         note = f"ΣM_G = I_G α ({bar.name})"
         equations.append(Equation(moment, I_G * alpha, note, bar.line, note))
-    _check_count(linkage, unknowns, equations)
+    _check_count(linkage, unknowns, equations, released)
     return FreeBodies(tuple(equations), unknowns, at_joint, dims, normals)
 
 
@@ -225,14 +227,28 @@ def _slot(linkage: Linkage, r: Mapping[str, Vec], bar: str) -> Vec:
 
 
 def _check_count(
-    linkage: Linkage, unknowns: Mapping[sympy.Symbol, Dim], equations: list[Equation]
+    linkage: Linkage,
+    unknowns: Mapping[sympy.Symbol, Dim],
+    equations: list[Equation],
+    released: int = 0,
 ) -> None:
-    """As many unknown forces as equations (three per bar): else the forces are not
-    determined (a driving couple missing) or over-determined (a load given twice)."""
-    if len(unknowns) == len(equations):
+    """As many unknown forces as equations (three per bar), less one per ``released`` α:
+    else the forces are not determined (a driving couple missing) or over-determined (a
+    load given twice, or a driving load to find beside an α the loads decide)."""
+    if len(unknowns) + released == len(equations):
         return
     named = ", ".join(s.name for s in unknowns)
-    fewer = len(unknowns) < len(equations)
+    fewer = len(unknowns) + released < len(equations)
+    if released and not fewer:
+        raise SpecError(
+            f"the linkage's motion is left to its loads (no 'alpha' for "
+            f"{released} driven bar{'s' * (released > 1)}), but a load is also to be found: "
+            f"{len(unknowns)} unknown forces and couples ({named}) and {released} α for "
+            f"{len(equations)} equations",
+            linkage.where(next(iter(linkage.bars))),
+            hint="give the driven bar's α ('alpha AB: 0' for a constant ω) to find the load "
+            "that drives it, or give every load to find the α",
+        )
     what = (
         "cannot balance: a driving couple or force is missing"
         if fewer

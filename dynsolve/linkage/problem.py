@@ -94,6 +94,7 @@ class LinkageProblem:
     levels: Mapping[str, Level] = field(default_factory=dict)
     r: Mapping[str, Vec] = field(default_factory=dict)
     free: FreeBodies | None = None
+    released: tuple[str, ...] = ()  # bars whose α the loads decide (omega given, no alpha)
 
 
 def build_linkage_problem(spec: Spec) -> LinkageProblem:
@@ -123,19 +124,23 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
     asked = {item.ref.function if item.ref else item.name for item in spec.finds}
     levels = {"velocity": relative_motion(linkage, r, "velocity", slots=slots)}
     kinetics = has_kinetics(linkage)
+    released: tuple[str, ...] = ()
     if asked & set(ACCELERATIONS) or kinetics:
-        _needs_acceleration_drives(linkage)
+        released = _needs_acceleration_drives(linkage, kinetics)
         velocity = levels["velocity"]
         levels["acceleration"] = relative_motion(
-            linkage, r, "acceleration", velocity.rotation, slots, velocity.relative
-        )
+            linkage, r, "acceleration", velocity.rotation, slots, velocity.relative,
+            len(released),
+        )  # fmt: skip
     unknowns: dict[sympy.Symbol, Dim] = {}
     for level in levels.values():
         unknowns |= dict(level.unknowns)
     free = None
     if kinetics:
         g = next(g.symbol for g in givens if g.name == "g")
-        free = free_bodies(linkage, r, levels["velocity"], levels["acceleration"], g, taken)
+        free = free_bodies(
+            linkage, r, levels["velocity"], levels["acceleration"], g, taken, len(released)
+        )
         unknowns |= dict(free.unknowns)
     clash = sorted({s.name for s in unknowns} & taken)
     if clash:
@@ -189,6 +194,7 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
         levels=levels,
         r=r,
         free=free,
+        released=released,
     )
 
 
@@ -296,12 +302,18 @@ def _named_drives(linkage: Linkage, taken: set[str]) -> tuple[Linkage, list[Give
     return replace(linkage, drives=tuple(drives)), named
 
 
-def _needs_acceleration_drives(linkage: Linkage) -> None:
+def _needs_acceleration_drives(linkage: Linkage, kinetics: bool) -> tuple[str, ...]:
     """Accelerations asked: each velocity drive needs its acceleration (α of a driven
-    bar, a of a driven joint), stated even when zero."""
+    bar, a of a driven joint), stated even when zero; with masses or loads, a bar whose
+    ``omega`` is given without its ``alpha`` is *released*: its α is what the loads
+    make it (Newton–Euler decides it). The released bars, in order."""
     pairs = {"omega": "alpha", "velocity": "acceleration"}
+    released = []
     for drive in linkage.drives:
         if drive.kind in pairs and linkage.drive(pairs[drive.kind], drive.name) is None:
+            if kinetics and drive.kind == "omega":
+                released.append(drive.name)
+                continue
             example = (
                 f"'alpha {drive.name}: 0' if its ω is constant"
                 if drive.kind == "omega"
@@ -313,6 +325,7 @@ def _needs_acceleration_drives(linkage: Linkage) -> None:
                 Position(linkage.file, drive.line, drive.column),
                 hint=f"add {example}",
             )
+    return tuple(released)
 
 
 def _placement_notes(
@@ -508,8 +521,13 @@ def cross_checks(
     """Checks of a solved linkage by a second method: each asked instantaneous centre
     (every point's speed is ω times its distance from it), and for a loaded linkage the
     power equation (the loads' power equals the rate of change of the kinetic energy),
-    in which no pin or guide force appears."""
-    return _centre_checks(problem, values) + _power_check(problem, values)
+    in which no pin or guide force appears; where every bar's α is left to the loads
+    (a chain released), each α against Lagrange's equations of the open chain."""
+    return (
+        _centre_checks(problem, values)
+        + _power_check(problem, values)
+        + _lagrange_check(problem, values)
+    )
 
 
 def _centre_checks(
@@ -592,6 +610,11 @@ def _power_check(
     )
     if balance is None:
         return ()
+    rates = problem.levels["velocity"].rotation.values()
+    known = {**problem.system.knowns, **values}
+    if all(_full(sympy.Integer(0) + w, known) == 0 for w in rates):
+        detail = "every bar is at rest: the power equation reads 0 = 0 and checks nothing"
+        return (Check("power equation", True, detail),)
     supplied, stored = balance
     scale = max(abs(supplied), abs(stored), 1e-300)
     error = abs(supplied - stored) / scale
@@ -603,6 +626,42 @@ def _power_check(
         f"(relative difference {error:.1e})"
     )
     return (Check("power equation", error < 1e-9, detail),)
+
+
+def _lagrange_check(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Each released bar's α against q'' of Lagrange's equations of the open chain
+    (:mod:`dynsolve.simulate.chain`), built from the energies alone: no pin force, no
+    relative-acceleration equation in common with Newton–Euler."""
+    moving = [b for b in problem.linkage.bars if b not in problem.released]
+    if not problem.released or any(
+        not set(problem.linkage.bars[b].points) <= set(problem.linkage.fixed) for b in moving
+    ):
+        return ()
+    from dynsolve.simulate.chain import chain_of
+    from dynsolve.simulate.equations import NotSimulable
+
+    try:
+        chain = chain_of(problem.spec)
+    except (NotSimulable, SpecError) as exc:
+        return (Check("second method: Lagrange", True, f"not checked: {exc}"),)
+    rates = chain.rates(0.0, [0.0] * chain.size + list(chain.qd0))[chain.size :]
+    known = {**problem.system.knowns, **values}
+    worst, shown = 0.0, []
+    for bar, lagrange in zip(chain.bars, rates, strict=True):
+        alpha = (sympy.Integer(0) + problem.levels["acceleration"].rotation[bar]).xreplace(known)
+        if alpha.free_symbols:
+            return ()
+        newton = float(alpha)
+        scale = max(abs(newton), abs(lagrange), 1e-300)
+        worst = max(worst, abs(newton - lagrange) / scale if scale > 1e-300 else 0.0)
+        shown.append(f"α_{bar} {lagrange:.9g}")
+    detail = (
+        f"M(q) q'' = Q − Σ m J_Gᵀ J_G' q' from T and V of the chain: {', '.join(shown)} "
+        f"rad/s² (largest relative difference {worst:.1e})"
+    )
+    return (Check("second method: Lagrange", worst < 1e-9, detail),)
 
 
 def figure(problem: LinkageProblem) -> LinkageFigure | None:

@@ -71,11 +71,13 @@ def relative_motion(
     omega: Mapping[str, sympy.Expr] | None = None,
     slots: Mapping[str, Vec] | None = None,
     sliding: Mapping[str, sympy.Expr] | None = None,
+    released: int = 0,
 ) -> Level:
     """The equations of one level at the positions ``r``; ``slots`` maps each bar that a
     joint slides along to its direction (unit vector). The acceleration level needs the
     bars' ``omega`` and the joints' ``sliding`` speeds along their bars (from the velocity
-    level)."""
+    level); ``released`` bars have an α the loads decide (Newton–Euler supplies the
+    equations this level lacks for them)."""
     rotation_name, rotation_dim, rate_name, rate_dim, drive_kinds = LEVELS[level]
     unknowns: dict[sympy.Symbol, Dim] = {}
     rotation: dict[str, sympy.Expr] = {}
@@ -164,7 +166,7 @@ def relative_motion(
             )
     equations += _rolling(linkage, level, rotation, rate)
     equations += _meshing(linkage, level, r, rotation, rate)
-    _check_count(linkage, level, unknowns, equations)
+    _check_count(linkage, level, unknowns, equations, released)
     return Level(rotation, rate, along, unknowns, tuple(equations), relative)
 
 
@@ -235,14 +237,19 @@ def _along_guide(linkage: Linkage, drive: Drive, axis: Vec) -> sympy.Expr:
 
 
 def _check_count(
-    linkage: Linkage, level: str, unknowns: Mapping[sympy.Symbol, Dim], equations: list[Equation]
+    linkage: Linkage,
+    level: str,
+    unknowns: Mapping[sympy.Symbol, Dim],
+    equations: list[Equation],
+    released: int = 0,
 ) -> None:
-    """As many equations as unknowns: a degree of freedom per drive, no more, no fewer."""
-    if len(unknowns) == len(equations):
+    """As many equations as unknowns: a degree of freedom per drive (or per bar whose α
+    the loads decide, ``released``), no more, no fewer."""
+    if len(unknowns) == len(equations) + released:
         return
     kinds = LEVELS[level][4]
     drives = [d for d in linkage.drives if d.kind in kinds]
-    freedom = len(unknowns) - len(equations) + len(drives)
+    freedom = len(unknowns) - len(equations) + len(drives) - released
     named = ", ".join(pretty(s.name) for s in unknowns)
     if freedom <= 0:
         what = "is a rigid structure: it cannot move" if freedom <= 0 else ""
@@ -263,13 +270,17 @@ def _check_count(
     example = "'omega AB: w cw'" if level == "velocity" else "'alpha AB: 0' (ω constant)"
     raise SpecError(
         f"the linkage has {freedom} degree{'s' * (freedom != 1)} of freedom, but its "
-        f"{level}s are given by {len(drives)} drive{'s' * (len(drives) != 1)}: "
+        f"{_plural(level)} are given by {len(drives)} drive{'s' * (len(drives) != 1)}: "
         f"{len(unknowns)} unknowns ({named}) for {len(equations)} equations",
         linkage.where(next(iter(linkage.bars))),
         hint=f"give one drive per degree of freedom, e.g. {example}"
         if len(drives) < freedom
         else "drop a drive: the others already fix the motion",
     )
+
+
+def _plural(level: str) -> str:
+    return "velocities" if level == "velocity" else f"{level}s"
 
 
 def condition(level: Level, values: Mapping[sympy.Symbol, sympy.Expr], size: float) -> float | None:

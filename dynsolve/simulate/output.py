@@ -18,10 +18,11 @@ import io
 import json
 import math
 
+from dynsolve.simulate.chain_run import ChainHistory
 from dynsolve.simulate.run import History
 
 
-def summary(history: History) -> dict[str, object]:
+def summary(history: History | ChainHistory) -> dict[str, object]:
     """What was measured: the run's settings, events, period and energy drift."""
     run = history.run
     return {
@@ -44,7 +45,7 @@ def summary(history: History) -> dict[str, object]:
     }
 
 
-def history_csv(history: History) -> str:
+def history_csv(history: History | ChainHistory) -> str:
     """The time history, one row per sample, with a header of names and units."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
@@ -54,7 +55,7 @@ def history_csv(history: History) -> str:
     return buffer.getvalue()
 
 
-def history_json(history: History) -> str:
+def history_json(history: History | ChainHistory) -> str:
     """The summary and the time history (columns and rows), full precision."""
     data = summary(history) | {
         "columns": list(history.columns()),
@@ -63,7 +64,7 @@ def history_json(history: History) -> str:
     return json.dumps(data, indent=1, allow_nan=False)
 
 
-def history_plot(history: History, suffix: str = ".png") -> bytes:
+def history_plot(history: History | ChainHistory, suffix: str = ".png") -> bytes:
     """q(t) and the energy terms over time, as an image in the format of ``suffix``."""
     import matplotlib
 

@@ -29,6 +29,7 @@ import numpy as np
 from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import Scene, Travel, build_scene
 from dynsolve.modes.equation_mode import givens_of
+from dynsolve.simulate.chain_run import ChainHistory
 from dynsolve.simulate.crosscheck import start_rate, travel_motion
 from dynsolve.simulate.equations import (
     NotSimulable,
@@ -208,8 +209,10 @@ def simulate_spec(
     rtol: float = TIGHT_RTOL,
     atol: float = TIGHT_ATOL,
     samples: int = 501,
-) -> History:
-    """Integrate the spec's scene from its state; SpecError (with a hint) on bad input."""
+) -> History | ChainHistory:
+    """Integrate the spec's scene from its state; SpecError (with a hint) on bad input.
+    A linkage (``bar`` lines) is integrated as an open chain of bars, in every bar's turn
+    (:mod:`dynsolve.simulate.chain_run`)."""
     where = Position(spec.file, spec.scene[0].line if spec.scene else 1, 1)
     if not spec.scene:
         raise SpecError("nothing to simulate: the spec has no scene", where, hint="add 'scene:'")
@@ -217,6 +220,12 @@ def simulate_spec(
         raise SpecError("the end time must be positive", Position("--t-end", 1, 1), "e.g. 10s")
     if not 2 <= samples <= MAX_SAMPLES:
         raise SpecError(f"samples must be 2 … {MAX_SAMPLES}", Position("--samples", 1, 1), "")
+    from dynsolve.simulate.chain import is_chain
+
+    if is_chain(spec):
+        from dynsolve.simulate.chain_run import simulate_chain
+
+        return simulate_chain(spec, until, t_end, method, rtol, atol, samples)
     givens = givens_of(spec)
     symbols = {g.name: g.symbol for g in givens}
     values = {g.symbol: g.value for g in givens if g.value is not None}
