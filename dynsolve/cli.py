@@ -518,8 +518,7 @@ def simulate(
         Path | None, typer.Option(help="Plot q(t) and the energy: .png, .pdf or .svg.")
     ] = None,
 ) -> None:
-    """Integrate a scene's motion in time from its state (one degree of freedom, or an
-    open chain of bars in every bar's turn).
+    """Integrate a scene's motion in time from its state (one coordinate, or a chain of bars).
 
     Prints the events met (turning points, the --until event), the period of an
     oscillation beside the small-oscillation period, and the drift of T + V − U_f.

@@ -20,6 +20,7 @@ from pathlib import Path
 from dynsolve.errors import DynsolveError
 
 PDFLATEX_SECONDS = 60
+PACKAGES = "texlive-latex-base texlive-latex-recommended texlive-pictures texlive-science"
 
 
 class PdfError(DynsolveError):
@@ -32,8 +33,8 @@ def compile_pdf(latex: str) -> bytes:
     if pdflatex is None:
         raise PdfError(
             "cannot write a PDF: pdflatex is not installed",
-            hint="install TeX Live (Debian: apt-get install texlive-latex-base "
-            "texlive-latex-recommended), or write the .tex with -o sheet.tex",
+            hint=f"install TeX Live (Debian: apt-get install {PACKAGES}), or write the "
+            ".tex with -o sheet.tex",
         )
     with tempfile.TemporaryDirectory(prefix="dynsolve-pdf-") as folder:
         source = Path(folder) / "sheet.tex"
@@ -56,8 +57,11 @@ def compile_pdf(latex: str) -> bytes:
             if done.returncode != 0:
                 log = done.stdout.decode("utf-8", errors="replace")
                 first = next((line for line in log.splitlines() if line.startswith("!")), "")
+                missing = "not found" in log and (".sty" in first or "File `" in log)
                 raise PdfError(
                     f"pdflatex could not compile the sheet: {first or 'see its log'}",
-                    hint="write the .tex with -o sheet.tex and compile it yourself",
+                    hint=f"a LaTeX package is missing: install {PACKAGES} (TikZ, siunitx)"
+                    if missing
+                    else "write the .tex with -o sheet.tex and compile it yourself",
                 )
         return (Path(folder) / "sheet.pdf").read_bytes()

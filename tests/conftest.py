@@ -2,6 +2,7 @@
 
 import os
 import shutil
+import subprocess
 
 import pytest
 from hypothesis import settings
@@ -9,13 +10,25 @@ from hypothesis import settings
 
 @pytest.fixture
 def pdflatex() -> str:
-    """pdflatex's path; skipped when missing, unless CI is set (CI installs texlive)."""
+    """pdflatex's path, with TikZ and siunitx; skipped when missing, unless CI is set (CI
+    installs texlive-latex-recommended, texlive-pictures and texlive-science)."""
     path = shutil.which("pdflatex")
-    if path:
+    kpsewhich = shutil.which("kpsewhich")
+    packages = [
+        name
+        for name in ("tikz.sty", "siunitx.sty")
+        if not kpsewhich
+        or not subprocess.run([kpsewhich, name], capture_output=True, text=True).stdout.strip()
+    ]
+    if path and not packages:
         return path
+    missing = "pdflatex" if not path else ", ".join(packages)
     if os.environ.get("CI"):
-        pytest.fail("pdflatex is missing although CI is set: install texlive-latex-recommended")
-    pytest.skip("pdflatex is not installed")
+        pytest.fail(
+            f"{missing} missing although CI is set: install texlive-latex-recommended, "
+            "texlive-pictures and texlive-science"
+        )
+    pytest.skip(f"{missing} is not installed")
 
 
 # No per-example deadline: CI machines are shared and slower than a laptop; the

@@ -63,7 +63,9 @@ SCENE_LINES = (
     "axis B: (1, 0, 0)",
     "rotates B: about (0, 1, 0), through (0, 0, 0), omega w",
     "spins B: about (1, 0, 0), omega w",
+    "spins B: about (0, 0, 1), through (0, 0, 0), omega 0, alpha a_s",
     "bearing A: at (0, 0, r), ball",
+    "bearing B: at (0, 0, 0), pin",
     "torque M on B",
     "assume T >= 0",
 )

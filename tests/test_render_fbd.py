@@ -1,8 +1,7 @@
 """Scene mode in the renderers: free-body diagrams and assumptions in LaTeX, Markdown, text.
 
-The LaTeX diagrams are LaTeX ``picture`` environments made of ``\\qbezier`` curves; the
-geometry tests read the arrowheads back from them to check every arrow points the way
-its force does.
+The LaTeX diagrams are TikZ pictures, one command per line; the geometry tests read each
+arrow back from its ``\\draw`` line to check it points the way its force does.
 """
 
 from __future__ import annotations
@@ -164,56 +163,44 @@ Point = tuple[float, float]
 
 
 def pictures(tex: str) -> dict[str, list[str]]:
-    """Each body's picture, as its lines, by body name; ``\\qbezier`` without its dot count."""
+    """Each body's free-body diagram (its first TikZ picture), as its lines, by body name."""
     found = re.findall(
-        r"\\subsubsection\*\{(\S+) \([^)]*\)\}\n\\begin\{center\}\n(.*?)\\end\{picture\}",
+        r"\\subsubsection\*\{(\S+) \([^)]*\)\}\n\\begin\{center\}\n(.*?)\\end\{tikzpicture\}",
         tex,
         re.S,
     )
-    return {
-        name: re.sub(r"\\qbezier\[\d+\]", r"\\qbezier", body).splitlines() for name, body in found
-    }
+    return {name: body.splitlines() for name, body in found}
 
 
 def force_groups(lines: list[str]) -> list[tuple[bool, list[str]]]:
-    """The commands drawing each force, in order, and whether they are red."""
-    groups: list[tuple[bool, list[str]]] = []
-    current: list[str] | None = None
-    for line in lines:
-        if line in ("{\\linethickness{0.7pt}", "{\\color{red}\\linethickness{0.7pt}"):
-            current = []
-            groups.append(("red" in line, current))
-        elif line == "}":
-            current = None
-        elif current is not None:
-            current.append(line)
-    return groups
-
-
-def segments(commands: list[str]) -> list[tuple[Point, Point]]:
-    """The start and end of every ``\\qbezier``."""
-    out = []
-    for command in commands:
-        if command.startswith("\\qbezier"):
-            (x0, y0), _, (x1, y1) = PAIR.findall(command)
-            out.append(((float(x0), float(y0)), (float(x1), float(y1))))
-    return out
+    """The command drawing each force, in order, and whether it is red (unknown)."""
+    return [
+        ("unknown" in line.split("]")[0], [line])
+        for line in lines
+        if line.startswith(("\\draw[force", "\\draw[thick"))
+    ]
 
 
 def arrowhead(commands: list[str]) -> tuple[Point, Point]:
-    """The arrowhead's tip and unit direction: seven lines fan out from the tip."""
-    starts: dict[Point, list[Point]] = {}
-    for start, end in segments(commands):
-        starts.setdefault(start, []).append(end)
-    tip, ends = max(starts.items(), key=lambda item: len(item[1]))
-    assert len(ends) == 7, commands
-    base = (sum(e[0] for e in ends) / 7, sum(e[1] for e in ends) / 7)
-    length = math.dist(tip, base)
-    return tip, ((tip[0] - base[0]) / length, (tip[1] - base[1]) / length)
+    """The arrow's tip and unit direction: the end of its straight path, or of its arc."""
+    (line,) = commands
+    arc = re.search(rf"arc\[start angle=({NUMBER}),end angle=({NUMBER}),radius=({NUMBER})\]", line)
+    (x0, y0), *rest = PAIR.findall(line)
+    if arc:
+        start, end, radius = (float(v) for v in arc.groups())
+        a, b = math.radians(start), math.radians(end)
+        centre = (float(x0) - radius * math.cos(a), float(y0) - radius * math.sin(a))
+        tip = (centre[0] + radius * math.cos(b), centre[1] + radius * math.sin(b))
+        sense = 1.0 if end > start else -1.0
+        return tip, (-sense * math.sin(b), sense * math.cos(b))
+    x1, y1 = rest[0]
+    tail, tip = (float(x0), float(y0)), (float(x1), float(y1))
+    length = math.dist(tail, tip)
+    return tip, ((tip[0] - tail[0]) / length, (tip[1] - tail[1]) / length)
 
 
 def label(commands: list[str]) -> str:
-    labels = re.findall(r"\\makebox\(0,0\)\[[lrtb]+\]\{(.*)\}\}$", "\n".join(commands), re.M)
+    labels = re.findall(r"(?:node\[[^\]]*\]|\\node\[[^\]]*\] at \([^)]*\)) \{(.*?)\};", commands[0])
     assert len(labels) == 1, commands
     return labels[0]
 
@@ -229,7 +216,7 @@ def test_latex_sections_in_order() -> None:
         "crate (block)", "link (rod)", "ball (particle)", "Assumptions", "Equations",
         "Solution", "Answers", "Checks",
     ]  # fmt: skip
-    assert "\\usepackage{color}" in tex.split("\\begin{document}")[0]
+    assert "\\usepackage{tikz}" in tex.split("\\begin{document}")[0]
     assert tex.isascii()
 
 
@@ -284,8 +271,8 @@ def test_latex_arrows_point_the_right_way(body: FreeBody) -> None:
 
 def test_latex_unknown_forces_are_dashed() -> None:
     groups = force_groups(pictures(render_latex(scene_solution()))["drum"])
-    shafts = [len(segments(c)) - 7 for _, c in groups]  # seven lines make the head
-    assert shafts == [3, 1, 3, 3]  # T, O_x and O_y dashed; W_drum one line
+    assert [red for red, _ in groups] == [True, False, True, True]  # T, O_x, O_y unknown
+    assert "unknown/.style={dashed,red}" in render_latex(scene_solution())
 
 
 def test_latex_couple_is_a_ccw_arc_around_g() -> None:
@@ -293,8 +280,7 @@ def test_latex_couple_is_a_ccw_arc_around_g() -> None:
     tip, unit = arrowhead(commands)
     assert math.dist(tip, (-4.24, -4.24)) < 0.02  # the arc ends at 225 degrees, radius 6 mm
     assert math.dist(unit, (math.sqrt(0.5), -math.sqrt(0.5))) < 0.02  # heading counterclockwise
-    arc = segments(commands)[:6]
-    assert all(abs(math.dist(p, (0, 0)) - 6) < 0.02 for s in arc for p in s)
+    assert "radius=6]" in commands[0]
     clockwise = replace(LINK, forces=(replace(LINK.forces[0], direction="cw"),))
     (_, commands), *_ = force_groups(pictures(render_latex(scene_solution((clockwise,))))["link"])
     tip, unit = arrowhead(commands)
@@ -305,19 +291,35 @@ def test_latex_couple_is_a_ccw_arc_around_g() -> None:
 
 def test_latex_outlines() -> None:
     drawn = pictures(render_latex(scene_solution()))
-    drum = [s for s in segments(drawn["drum"][: drawn["drum"].index("\\put(0,0){\\circle*{1.2}}")])]
-    assert len(drum) == 8 and all(abs(math.dist(p, (0, 0)) - 17.5) < 0.02 for s in drum for p in s)
-    assert "\\linethickness{3pt}" in drawn["link"]
-    assert "\\qbezier(-17.5,0)(0,0)(17.5,0)" in drawn["link"]  # the rod, 35 mm along x
-    assert "\\qbezier(-17.5,-8.75)(0,-8.75)(17.5,-8.75)" in drawn["crate"]  # 1 m by 0.5 m
-    assert "\\put(0,0){\\circle*{2.5}}" in drawn["ball"]
-    assert all("\\put(-0.8,-0.8){\\makebox(0,0)[rt]{$G$}}" in lines for lines in drawn.values())
+    assert "\\draw[very thick] (0,0) circle[radius=17.5];" in drawn["drum"]  # 35 mm across
+    assert "\\draw[thin] (0,0) circle[radius=2.62];" in drawn["drum"]  # and its hub
+    assert "\\draw[line width=2.4pt,line cap=round] (-17.5,0) -- (17.5,0);" in drawn["link"]
+    assert "\\draw[very thick] (-17.5,-8.75) rectangle (17.5,8.75);" in drawn["crate"]  # 1 by 0.5
+    assert "\\fill (0,0) circle[radius=1.25];" in drawn["ball"]
+    centre = "\\fill (0,0) circle[radius=0.6] node[anchor=north east,inner sep=1pt] {$G$};"
+    assert all(centre in lines for lines in drawn.values())
 
 
-def test_latex_unknown_shape_is_a_small_square() -> None:
+def test_latex_unknown_shape_is_a_small_box_or_a_pinned_drum() -> None:
     odd = FreeBody("lump", "blob", (0.3,), "translation", (), (), "")
     (lines,) = pictures(render_latex(scene_solution((odd,)))).values()
-    assert "\\qbezier(-4,-4)(0,-4)(4,-4)" in lines
+    assert "\\draw[very thick,rounded corners=2mm] (-4,-4) rectangle (4,4);" in lines
+    # a body without a shape turning on a pin, pulled at its rim: a circle through the rim
+    drum = replace(DRUM, shape="body", size=())
+    (lines,) = pictures(render_latex(scene_solution((drum,)))).values()
+    assert "\\draw[very thick] (0,0) circle[radius=17.5];" in lines
+
+
+def test_latex_kinetic_diagram_beside_the_free_body() -> None:
+    tex = render_latex(scene_solution((LINK,)))
+    kinetic = tex[tex.index("\\quad$=$\\quad") :]
+    kinetic = kinetic[: kinetic.index("\\end{tikzpicture}")]
+    assert "\\draw[kinetic] (0,0) -- (10,0) node[anchor=180] {$m \\, a_{Gx}$};" in kinetic
+    assert "\\draw[kinetic] (0,0) -- (0,10) node[anchor=270] {$m \\, a_{Gy}$};" in kinetic
+    assert "arc[start angle=-45,end angle=225,radius=6]" in kinetic  # I_G alpha, ccw
+    # a particle's m a has no direction to draw: no kinetic diagram, the terms in words
+    tex = render_latex(scene_solution((BALL,)))
+    assert "\\quad$=$\\quad" not in tex and "Kinetic diagram:} $m \\, a$" in tex
 
 
 def test_equation_mode_output_is_unchanged() -> None:
@@ -491,14 +493,10 @@ COMMANDS = {
     "end",
     "medskip",
     "linewidth",
-    "setlength",
-    "unitlength",
-    "qbezier",
-    "put",
-    "makebox",
-    "circle",
-    "color",
-    "linethickness",
+    "draw",
+    "fill",
+    "node",
+    "quad",
     "item",
     "text",
     "mathrm",
@@ -509,12 +507,18 @@ COMMANDS = {
     "i",
     "j",
 }
-ENVIRONMENTS = {"minipage", "center", "picture", "itemize"}
+ENVIRONMENTS = {"minipage", "center", "tikzpicture", "itemize"}
+OPTIONS = r"\[[^\]]*\]"
+POINT = rf"\({NUMBER},{NUMBER}\)"
+LABEL = r"\{.*\}"
 PICTURE_LINE = re.compile(
-    rf"\\qbezier\[[1-9]\d*\](?:\({NUMBER},{NUMBER}\)){{3}}|\\put\({NUMBER},{NUMBER}\)\{{.*\}}"
-    rf"|\\begin\{{picture\}}\({NUMBER},{NUMBER}\)\({NUMBER},{NUMBER}\)|\\end\{{picture\}}\}}"
-    r"|\{\\setlength\{\\unitlength\}\{1mm\}%|\{(?:\\color\{red\})?\\linethickness\{0\.7pt\}"
-    r"|\\linethickness\{(?:0\.8|3)pt\}|\}"
+    rf"\\begin\{{tikzpicture\}}\[x=1mm,y=1mm,.*\]|\\end\{{tikzpicture\}}|\\quad\$=\$\\quad"
+    rf"|\\draw{OPTIONS} {POINT} circle\[radius={NUMBER}\](?: node{OPTIONS} {LABEL})?;"
+    rf"|\\fill {POINT} circle\[radius={NUMBER}\](?: node{OPTIONS} {LABEL})?;"
+    rf"|\\draw{OPTIONS} {POINT} rectangle {POINT};|\\draw{OPTIONS} {POINT} -- {POINT}"
+    rf"(?: node{OPTIONS} {LABEL})?;"
+    rf"|\\draw{OPTIONS} {POINT} arc\[start angle={NUMBER},end angle={NUMBER},radius={NUMBER}\];"
+    rf" \\node{OPTIONS} at {POINT} {LABEL};"
 )
 
 
@@ -543,14 +547,12 @@ def assert_safe_tex(part: str) -> None:
     assert set(re.findall(r"\\(?:begin|end)\{([^}]*)\}", part)) <= ENVIRONMENTS
     in_picture = False
     for line in part.splitlines():
-        in_picture = in_picture or line.startswith("{\\setlength{\\unitlength}")
+        in_picture = in_picture or line.startswith("\\begin{tikzpicture}")
         if in_picture:
             assert PICTURE_LINE.fullmatch(line), line
-            dots = re.match(r"\\qbezier\[(\d+)\]", line)
-            assert dots is None or 0 < int(dots.group(1)) < 2000, line  # solid, not huge
-            coordinates = re.sub(r"^\\qbezier\[\d+\]", "", line).split("{\\makebox")[0]
-            assert all(abs(float(n)) < 150 for n in re.findall(NUMBER, coordinates)), line
-        in_picture = in_picture and line != "\\end{picture}}"
+            geometry = re.sub(r"\{.*?\}|anchor=\d+|angle=-?\d+", "", line)  # lengths only
+            assert all(abs(float(n)) < 150 for n in re.findall(NUMBER, geometry)), line
+        in_picture = in_picture and line != "\\end{tikzpicture}"
 
 
 @settings(max_examples=150, deadline=None)
@@ -566,10 +568,9 @@ def test_any_scene_gives_safe_ascii_latex(scene: tuple[list[FreeBody], list[Assu
     for body in free_body:
         name = escape_latex(body.body) or "?"
         assert name in tex
-    assert len(re.findall(r"\\begin\{picture\}", tex)) == len(free_body)
-    for lines in drawn.values():
-        w, h = (float(n) for n in PAIR.findall(lines[1])[0])
-        assert 0 < w < 300 and 0 < h < 300
+    pictures_drawn = len(re.findall(r"\\begin\{tikzpicture\}", tex))
+    assert len(free_body) <= pictures_drawn <= 2 * len(free_body)  # and kinetic diagrams
+    assert len(drawn) <= len(free_body)
 
 
 @given(SCENES)
@@ -591,8 +592,6 @@ def test_any_scene_renders_in_markdown_and_text(
 @pytest.mark.latex
 def test_scene_compiles(tmp_path: Path, pdflatex: str) -> None:
     pdf = compile_pdf(render_latex(scene_solution()), tmp_path, pdflatex)
-    log = (tmp_path / "solution.log").read_text(errors="replace")
-    assert "size unavailable" not in log  # no picture command beyond the kernel's reach
     tool = shutil.which("pdftotext")
     if tool:
         text = subprocess.run([tool, str(pdf), "-"], capture_output=True, text=True, check=True)

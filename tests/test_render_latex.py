@@ -277,7 +277,7 @@ def test_document_content(tmp_path: Path, name: str) -> None:
 def test_drum_reads_like_a_solution(tmp_path: Path) -> None:
     tex = render_latex(solve_spec(tmp_path, "drum"))
     assert "Hibbeler 12e Example 17.11" in tex
-    assert r"$m_{d}$ & $60\,\mathrm{kg}$ & 60" in tex
+    assert r"$m_{d}$ & $\qty{60}{kg}$ & 60" in tex  # siunitx for every quantity
     assert r"I_{O} = m_{d} k_{O}^{2} \tag*{(line 12)}" in tex
     # the caption's symbols typeset as mathematics, the words around them escaped
     assert r"$\Sigma M_{O}$ = $I_{O}$ $\alpha$ (drum) \& 100\% of the torque" in tex
@@ -286,7 +286,7 @@ def test_drum_reads_like_a_solution(tmp_path: Path) -> None:
     # formula, then the givens put in (I_O = 3.75 kg·m², g = 9.81, m_b = 20 kg, r = 0.4 m), then T
     assert (
         r"T &= \frac{I_{O} g m_{b}}{I_{O} + m_{b} r^{2}} = "
-        r"\frac{3.75 \cdot 9.81 \cdot 20}{3.75 + 20 \cdot 0.4^{2}} = 106\,\mathrm{N}"
+        r"\frac{3.75 \cdot 9.81 \cdot 20}{3.75 + 20 \cdot 0.4^{2}} = \qty{106}{N}"
     ) in tex
     assert "11.3 rad/s${}^{2}$ $\\pm$ 0.5\\%" in tex  # the answer key, units prettified
     assert "All 6 checks passed." in tex

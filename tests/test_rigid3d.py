@@ -206,3 +206,67 @@ def test_a_misspelt_rate_is_not_taken_for_an_unknown():
             GYRO.format(rate="Omega", find="Omega, O_x").replace("omega w_s", "omega w_S"), "t.dyn"
         )
     assert "'w_S' is not a given" in str(error.value) and "w_s" in str(error.value)
+
+
+SHAFT = """\
+given:
+  m = 2 kg
+  L = 0.8 m
+  Omega = {Omega} rad/s
+  theta = {theta} deg
+  theta_dot = {theta_dot} rad/s
+scene:
+  body bar: mass m, rod L, at (L/2*sin(theta), -L/2*cos(theta), 0)
+  axis bar: (sin(theta), -cos(theta), 0)
+  rotates bar: about (0, 1, 0), through (0, 0, 0), omega Omega
+  spins bar: about (0, 0, 1), through (0, 0, 0), omega theta_dot, alpha theta_ddot
+  bearing B: at (0, 0, 0), pin
+  gravity
+find: theta_ddot, B_x, B_y, B_z
+"""
+
+
+def test_bar_on_shaft_scene_agrees_with_the_seed_equations():
+    # the seed's part (a): θ'' = Ω² sin θ cos θ − (3 g/(2 L)) sin θ = 6.391582 rad/s²,
+    # written by hand in problems/seed/3d_seed_bar_shaft.dyn (equation mode)
+    scene = answers(solve_file(PROBLEMS / "rigid3d" / "bar_on_shaft.dyn"))
+    seed = answers(solve_file(PROBLEMS / "seed" / "3d_seed_bar_shaft.dyn"))
+    assert scene["theta_ddot"].value == pytest.approx(seed["theta_ddot"].value, rel=1e-12)
+    assert scene["theta_ddot"].value == pytest.approx(6.391582, rel=1e-6)
+
+
+@settings(max_examples=6, deadline=None)
+@given(
+    Omega=st.integers(1, 12),
+    theta=st.integers(5, 85),
+    theta_dot=st.integers(-5, 5),
+)
+def test_bar_on_shaft_follows_lagrange_and_coriolis(Omega, theta, theta_dot):
+    # Lagrange with T = ½ I_B (θ'² + Ω² sin²θ), V = −m g (L/2) cos θ, I_B = m L²/3:
+    # θ'' = Ω² sin θ cos θ − (3 g/(2 L)) sin θ whatever θ' is. The pin's force is m a_G − W
+    # with a_G from the turning frame: centripetal −Ω² (L/2) sin θ along x, the relative
+    # motion θ'' (L/2)(cos, sin) − θ'² (L/2)(sin, −cos), and Coriolis
+    # 2 Ω j × θ' (L/2)(cos θ, sin θ, 0) = −Ω θ' L cos θ k.
+    solution = solve_text(SHAFT.format(Omega=Omega, theta=theta, theta_dot=theta_dot), "shaft.dyn")
+    found = answers(solution)
+    m, L, g = 2.0, 0.8, 9.81
+    t = math.radians(theta)
+    s, c = math.sin(t), math.cos(t)
+    alpha = Omega**2 * s * c - 3 * g / (2 * L) * s
+    assert found["theta_ddot"].value == pytest.approx(alpha, rel=1e-9, abs=1e-9)
+    a_x = -(Omega**2) * L / 2 * s + alpha * L / 2 * c - theta_dot**2 * L / 2 * s
+    a_y = alpha * L / 2 * s + theta_dot**2 * L / 2 * c
+    a_z = -Omega * theta_dot * L * c
+    assert found["B_x"].value == pytest.approx(m * a_x, rel=1e-9, abs=1e-9)
+    assert found["B_y"].value == pytest.approx(m * g + m * a_y, rel=1e-9, abs=1e-9)
+    assert found["B_z"].value == pytest.approx(m * a_z, rel=1e-9, abs=1e-9)
+    assert all(check.passed for check in solution.checks)
+
+
+def test_a_pin_carries_no_couple_about_its_own_axis():
+    # the hinge's couple unknowns are across its axis (z): M_Bx, M_By, never M_Bz
+    text = SHAFT.format(Omega=6, theta=30, theta_dot=0).replace(
+        "find: theta_ddot, B_x, B_y, B_z", "find: theta_ddot, M_Bz"
+    )
+    with pytest.raises(SpecError, match="M_Bz"):
+        solve_text(text, "shaft.dyn")

@@ -1,21 +1,21 @@
 """Render a :class:`~dynsolve.results.Solution` as a standalone LaTeX document for pdflatex.
 
-The document needs only Debian's ``texlive-latex-base`` and ``texlive-latex-recommended``
-(article, amsmath, amssymb, booktabs, geometry; ``color`` when there are free-body diagrams).
+The document needs Debian's ``texlive-latex-base``, ``texlive-latex-recommended`` (article,
+amsmath, amssymb, booktabs, geometry) and ``texlive-science`` (siunitx: every quantity is a
+``\\qty``); with free-body diagrams also ``texlive-pictures`` (TikZ, drawn by
+:mod:`dynsolve.render.fbd_tikz`). Any full TeX distribution (TeX Live, MiKTeX) has them all.
 It is pure ASCII and uses the default OT1 encoding, so the Computer Modern Type 1 fonts are
 used and no font has to be generated. Plain text goes through :func:`escape_latex`; the LaTeX
 fragments of the solution (``latex``, ``latex_name``, ``latex_value``, ``formula_latex``,
 ``value_latex``) go through :func:`safe_math`.
 
-Free-body diagrams (scene mode) are drawn with LaTeX's own ``picture`` environment: every
-line, arc and arrowhead is a ``\\qbezier`` curve, which the kernel draws at any slope.
-Neither TikZ/PGF nor ``pict2e`` is in those two Debian packages.
+The linkage figure (a scene of bars) is drawn with LaTeX's own ``picture`` environment
+(:mod:`dynsolve.render.linkage_figure`).
 """
 
 from __future__ import annotations
 
 import itertools
-import math
 import re
 import unicodedata
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -24,11 +24,7 @@ from pathlib import PurePath
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
-from dynsolve.render.picture import HEAD_MM as _HEAD_MM
-from dynsolve.render.picture import SQUARE_MM as _SQUARE_MM
-from dynsolve.render.picture import Picture as _Picture
-from dynsolve.render.picture import Point
-from dynsolve.render.picture import polar as _polar
+from dynsolve.render.fbd_tikz import free_body_tikz
 from dynsolve.results import (
     AnswerRow,
     Assumption,
@@ -50,13 +46,14 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage{amsmath}
 \usepackage{amssymb}
 \usepackage{booktabs}
+\usepackage{siunitx}
 \allowdisplaybreaks
 \renewcommand{\arraystretch}{1.25}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex}"""
 
-# Only documents with free-body diagrams load it (``color`` is in texlive-latex-base).
-DIAGRAM_PREAMBLE = r"\usepackage{color}"
+# Only documents with free-body diagrams load TikZ (Debian's texlive-pictures).
+DIAGRAM_PREAMBLE = r"\usepackage{tikz}\usetikzlibrary{arrows.meta}"
 
 # ---- escaping -------------------------------------------------------------------------
 
@@ -150,7 +147,7 @@ def escape_latex(text: str) -> str:
     return "".join(_text_group(kind, list(run)) for kind, run in _runs(pieces, _text_kind))
 
 
-def safe_math(fragment: str) -> str:
+def safe_math(fragment: str, siunitx: bool = True) -> str:
     """A LaTeX math fragment made pure ASCII and safe to put between math delimiters.
 
     Non-ASCII characters become math commands (or ``\\text{...}``), stray ``%``, ``#`` and
@@ -158,7 +155,15 @@ def safe_math(fragment: str) -> str:
 
     >>> print(safe_math("T r = I_{O} α·2 — % x"))
     T r = I_{O}  \\alpha \\cdot 2 \\text{---} \\% x
+
+    A number with its unit becomes siunitx's ``\\qty`` (the number's spacing, the unit
+    upright, a power of ten typeset by siunitx), unless ``siunitx`` is False (MathJax):
+
+    >>> print(safe_math(r"a = -1.23\\times 10^{-4}\\,\\mathrm{m/s^{2}}"))
+    a = \\qty{-1.23e-4}{m/s^{2}}
     """
+    if siunitx:
+        fragment = _QUANTITY.sub(_qty, fragment)
     fragment = _MATH_UNSAFE.sub(r"\\\1", fragment)
     pieces: list[Piece] = []
     for char in fragment:
@@ -167,6 +172,18 @@ def safe_math(fragment: str) -> str:
         else:
             pieces.extend(_char_pieces(char))
     return "".join(_math_group(kind, list(run)) for kind, run in _runs(pieces, _math_kind))
+
+
+_QUANTITY = re.compile(
+    r"(?<![\w.])(-?\d+(?:\.\d+)?)(?:\\times ?10\^\{(-?\d+)\})?\\,\\mathrm\{"
+    r"((?:[A-Za-z]+|/|\\cdot ?|\^\{-?\d+(?:/\d+)?\}| |\(|\))+)\}"
+)
+
+
+def _qty(match: re.Match[str]) -> str:
+    """``1.23\\times 10^{-4}\\,\\mathrm{N}`` as ``\\qty{1.23e-4}{N}`` (literal units)."""
+    number = match[1] + (f"e{match[2]}" if match[2] else "")
+    return f"\\qty{{{number}}}{{{match[3].strip()}}}"
 
 
 def _char_pieces(char: str, decompose: bool = True) -> list[Piece]:
@@ -263,10 +280,11 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
     ...                             "equations", (), (), (), (answer,), (), (), "solved"))
     >>> doc.splitlines()[0], doc.splitlines()[-1]
     ('\\\\documentclass[11pt]{article}', '\\\\end{document}')
-    >>> "\\\\section*{Drum \\\\& block}" in doc, "$106\\\\,\\\\mathrm{N}$" in doc
+    >>> "\\\\section*{Drum \\\\& block}" in doc, "$\\\\qty{106}{N}$" in doc
     (True, True)
 
-    In scene mode each body's free-body diagram is a ``picture`` (unknown forces in red):
+    In scene mode each body's free-body diagram is a TikZ picture (unknown forces dashed,
+    red), its kinetic diagram beside it:
 
     >>> from dynsolve.results import Assumption, ForceRow, FreeBody
     >>> pull = ForceRow("T", "tension", "A", 0.4, 0.0, "down", 0.0, -1.0, False, "")
@@ -274,7 +292,7 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
     >>> scene = Solution("d.dyn", "Drum", "", "SI", "scene", (), (), (), (), (), (), "solved",
     ...                  free_body=(drum,), assumptions=(Assumption("cord T taut", True, ""),))
     >>> tex = render_latex(scene)
-    >>> "\\\\begin{picture}" in tex, "{\\\\color{red}" in tex, "$I_{G} \\\\, \\\\alpha$" in tex
+    >>> "\\\\begin{tikzpicture}" in tex, "unknown,->" in tex, "$I_{G} \\\\, \\\\alpha$" in tex
     (True, True, True)
     >>> "\\\\item[$\\\\checkmark$] \\\\textbf{cord T taut} (holds)" in tex
     True
@@ -524,14 +542,16 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
 
 
 def answers_math(solution: Solution) -> str:
-    """The answers as one display-math block (what Jupyter shows for ``_repr_latex_``).
+    """The answers as one display-math block (what Jupyter shows for ``_repr_latex_``;
+    MathJax has no siunitx, so units stay ``\\mathrm``).
 
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
     >>> answers_math(Solution("t.dyn", "", "", "SI", "exact", (), (), (), (answer,), (), (), ""))
     '$$\\\\begin{aligned} T &= 106\\\\,\\\\mathrm{N} \\\\end{aligned}$$'
     """
     rows = [
-        f"{latex_name(a.name)} &= {safe_math(a.latex).strip() or escape_latex(a.shown)}"
+        f"{latex_name(a.name)} &= "
+        f"{safe_math(a.latex, siunitx=False).strip() or escape_latex(a.shown)}"
         for a in solution.answers
     ]
     return "$$\\begin{aligned} " + " \\\\ ".join(rows) + " \\end{aligned}$$" if rows else ""
@@ -571,12 +591,8 @@ def _check_text(check: Check) -> str:
 
 # ---- free-body diagrams (scene mode)
 
-_ROUND_SHAPES = frozenset({"disk", "ring", "cylinder", "sphere", "shell", "hollow"})
-_BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart), any size
-_ARROW_MM = 10.0  # every force arrow, whatever its magnitude
-_COUPLE_MM = 6.0  # the radius of a body's first couple arrow; the next ones 3 mm wider
-_LABEL_GAP_MM = 1.5
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_COMPONENT = re.compile(r"\(([A-Za-z][A-Za-z0-9_]*)\)_([A-Za-z0-9]+)")  # (a_G)_x
 
 
 def _linkage_section(solution: Solution) -> list[str]:
@@ -609,11 +625,13 @@ def _free_body(body: FreeBody) -> str:
         facts.append(f"\\textbf{{Kinetic diagram:}} {terms}.")
     if any(not f.known for f in body.forces):
         facts.append("{\\small Unknown forces are dashed and red; known forces solid.}")
+    if body.kinetic:
+        facts.append("{\\small The kinetic diagram (blue, right of =) shows the senses assumed.}")
     return "\n".join([
         r"\par\noindent\begin{minipage}{\linewidth}",
         f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
-        _picture(body),
+        free_body_tikz(body, _force_label, _kinetic_term),
         r"\end{center}",
         " \\\\\n".join(facts),
         r"\end{minipage}\par\medskip",
@@ -621,12 +639,26 @@ def _free_body(body: FreeBody) -> str:
 
 
 def _kinetic_term(term: str) -> str:
-    """``m a_Gx`` as ``$m\\,a_{Gx}$`` when every word is a name or Greek; else as text."""
+    """``m a_Gx`` as ``$m \\, a_{Gx}$`` and ``m (a_G)_x`` as ``$m \\, (a_{G})_{x}$`` when
+    every word is a name, a component of one, or Greek (with a power); else as text.
+
+    >>> print(_kinetic_term("m (a_G)_x"), _kinetic_term("m ω² r_G"))
+    $m \\, (a_{G})_{x}$ $m \\, \\omega^{2} \\, r_{G}$
+    """
     words = term.split()
-    if words and all(_IDENTIFIER.fullmatch(w) or _greek(w) for w in words):
-        parts = [latex_name(w) if _IDENTIFIER.fullmatch(w) else safe_math(w).strip() for w in words]
-        return "$" + r" \, ".join(parts) + "$"
-    return escape_latex(term)
+    parts = []
+    for word in words:
+        component = _COMPONENT.fullmatch(word)
+        if _IDENTIFIER.fullmatch(word):
+            parts.append(latex_name(word))
+        elif component:
+            parts.append(f"({latex_name(component[1])})_{{{component[2]}}}")
+        elif _greek(word.rstrip("²")):
+            power = "^{2}" if word.endswith("²") else ""
+            parts.append(safe_math(word.rstrip("²")).strip() + power)
+        else:
+            return escape_latex(term)
+    return "$" + r" \, ".join(parts) + "$" if parts else escape_latex(term)
 
 
 def _greek(word: str) -> bool:
@@ -638,181 +670,6 @@ def _force_label(force: ForceRow) -> str:
     if _IDENTIFIER.fullmatch(force.name):
         return _name(force.name)
     return escape_latex(force.name) or "?"
-
-
-def _finite(value: float) -> float:
-    return value if math.isfinite(value) else 0.0
-
-
-def _footprint(shape: str, size: Sequence[float]) -> Point | None:
-    """Half the width and height of the body's outline (metres), or None for a square."""
-    sizes = [abs(_finite(v)) for v in size]
-    first = sizes[0] if sizes else 0.0
-    shape = shape.strip().lower()
-    if shape == "particle":
-        return (0.0, 0.0)
-    if not first:
-        return None
-    if shape in _ROUND_SHAPES:
-        return (first, first)
-    if shape == "rod":
-        return (first / 2, 0.0)
-    if shape in ("block", "plate"):
-        height = sizes[1] if len(sizes) > 1 and sizes[1] else first
-        return (first / 2, height / 2)
-    return None
-
-
-def _label_width(force: ForceRow) -> float:
-    """A rough width of the force's label (mm), to size the picture."""
-    return min(2.0 + 1.8 * len(force.name), 30.0) + (7.0 if force.kind == "couple" else 0.0)
-
-
-def _picture(body: FreeBody) -> str:
-    """The free-body diagram: outline, G, and an arrow per force, scaled to ~35 mm."""
-    footprint = _footprint(body.shape, body.size)
-    points = [(_finite(f.x), _finite(f.y)) for f in body.forces]
-    half = max([*(footprint or (0.0, 0.0)), *(abs(c) for p in points for c in p)])
-
-    def at(point: Point) -> Point:
-        """A body point (metres from G) on the page (mm from G): never beyond 17.5 mm."""
-        if half <= 0:
-            return (0.0, 0.0)
-        return (point[0] / half * _BODY_MM / 2, point[1] / half * _BODY_MM / 2)
-
-    picture = _Picture()
-    _outline(picture, body.shape, footprint, at)
-    picture.put((0.0, 0.0), r"\circle*{1.2}")
-    picture.put((-0.8, -0.8), r"\makebox(0,0)[rt]{$G$}")
-    couples = 0
-    for force, point in zip(body.forces, points, strict=True):
-        arrow = _Picture()
-        if force.kind == "couple":
-            _couple(arrow, force, at(point), _COUPLE_MM + 3.0 * couples)
-            couples += 1
-        else:
-            unit = _unit(force.dx, force.dy)
-            room = _room(body.shape, at(footprint) if footprint else None, unit)
-            _arrow(arrow, force, point, at(point), unit, room)
-        colour = "" if force.known else r"\color{red}"
-        picture.commands += [f"{{{colour}\\linethickness{{0.7pt}}", *arrow.commands, "}"]
-        picture.cover((arrow.low[0], arrow.low[1]))
-        picture.cover((arrow.high[0], arrow.high[1]))
-    return picture.render()
-
-
-def _outline(
-    picture: _Picture, shape: str, footprint: Point | None, at: Callable[[Point], Point]
-) -> None:
-    """The body outline: circle, thick line, rectangle, dot, or a small square."""
-    shape = shape.strip().lower()
-    if footprint == (0.0, 0.0):
-        picture.put((0.0, 0.0), r"\circle*{2.5}")
-        return
-    if footprint is None:
-        hx = hy = _SQUARE_MM / 2
-    else:
-        hx, hy = at(footprint)
-    if shape in _ROUND_SHAPES and footprint is not None:
-        picture.set_thickness(0.8)
-        picture.arc((0.0, 0.0), hx, 0.0, 360.0, dashed=False)
-        return
-    if shape == "rod" and footprint is not None:
-        picture.set_thickness(3.0)
-        picture.line((-hx, 0.0), (hx, 0.0))
-        return
-    picture.set_thickness(0.8)
-    corners = [(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)]
-    for a, b in itertools.pairwise([*corners, corners[0]]):
-        picture.line(a, b)
-
-
-def _arrow(
-    picture: _Picture, force: ForceRow, point: Point, start: Point, unit: Point | None, room: float
-) -> None:
-    """A force arrow at its point: from it, or into it when it pushes on the body there.
-
-    A force whose direction points back toward G from a point off G (a normal force under
-    a body) is drawn ending at the point, outside the outline, as textbooks draw pushes.
-    An arrow from G is shortened to stay inside the outline (``room`` mm away), if it can.
-    """
-    label = _force_label(force)
-    if unit is None:  # no direction: a small circle at the point
-        picture.put(start, r"\circle{1.6}")
-        picture.label((start[0], start[1] + 1.2), (0.0, 1.0), label, _label_width(force))
-        return
-    length = _ARROW_MM
-    if point == (0.0, 0.0) and room > 0:
-        length = max(6.0, min(_ARROW_MM, 0.8 * room))
-    pushes = point != (0.0, 0.0) and point[0] * unit[0] + point[1] * unit[1] < 0
-    outward = (-unit[0], -unit[1]) if pushes else unit
-    far = (start[0] + length * outward[0], start[1] + length * outward[1])
-    tail, tip = (far, start) if pushes else (start, far)
-    shaft_end = (tip[0] - _HEAD_MM * unit[0], tip[1] - _HEAD_MM * unit[1])
-    if force.known:
-        picture.line(tail, shaft_end)
-    else:
-        picture.dashed(tail, shaft_end)
-    picture.arrowhead(tip, unit)
-    _arrow_label(picture, far, outward, point, label, _label_width(force))
-
-
-def _arrow_label(
-    picture: _Picture, far: Point, outward: Point, point: Point, text: str, width: float
-) -> None:
-    """The label beside the far end of a vertical or horizontal arrow, else beyond it.
-
-    Beside means on the side away from G, so that collinear arrows (a weight at G and a
-    normal force under the body) keep their labels apart.
-    """
-    back = (far[0] - 2.5 * outward[0], far[1] - 2.5 * outward[1])
-    if abs(outward[1]) >= 0.9:
-        side = (1.0, 0.0) if point[0] >= 0 else (-1.0, 0.0)
-    elif abs(outward[0]) >= 0.9:
-        side = (0.0, 1.0) if point[1] >= 0 else (0.0, -1.0)
-    else:
-        gap = (far[0] + _LABEL_GAP_MM * outward[0], far[1] + _LABEL_GAP_MM * outward[1])
-        picture.label(gap, outward, text, width)
-        return
-    picture.label((back[0] + 1.2 * side[0], back[1] + 1.2 * side[1]), side, text, width)
-
-
-def _unit(dx: float, dy: float) -> Point | None:
-    """The direction as a unit vector, or None when there is none."""
-    dx, dy = _finite(dx), _finite(dy)
-    largest = max(abs(dx), abs(dy))
-    if largest == 0:
-        return None
-    dx, dy = dx / largest, dy / largest  # no overflow in hypot
-    norm = math.hypot(dx, dy)
-    return (dx / norm, dy / norm)
-
-
-def _room(shape: str, half: Point | None, unit: Point | None) -> float:
-    """How far (mm) the outline is from G in direction ``unit``; 0 for a rod or a dot."""
-    if half is None or not half[0] or not half[1] or unit is None:
-        return 0.0
-    if shape.strip().lower() in _ROUND_SHAPES:
-        return half[0]
-    return min(h / abs(u) for h, u in zip(half, unit, strict=True) if u)
-
-
-def _couple(picture: _Picture, force: ForceRow, centre: Point, radius: float) -> None:
-    """A couple: a 270-degree arrow around its point, open at the bottom.
-
-    The gap lets a weight at G through; the label sits outside the arc, upper right for
-    ccw and upper left for cw.
-    """
-    clockwise = force.direction.strip().lower() in ("cw", "clockwise")
-    start, sweep = (225.0, -270.0) if clockwise else (-45.0, 270.0)
-    end = math.radians(start + sweep)
-    sense = (math.sin(end), -math.cos(end)) if clockwise else (-math.sin(end), math.cos(end))
-    picture.arc(centre, radius, start, sweep, dashed=not force.known)
-    picture.arrowhead(_polar(centre, radius, start + sweep), sense)
-    text = f"{_force_label(force)} ({'cw' if clockwise else 'ccw'})"
-    corner = 135.0 if clockwise else 45.0
-    radial = (math.cos(math.radians(corner)), math.sin(math.radians(corner)))
-    picture.label(_polar(centre, radius + 1.0, corner), radial, text, _label_width(force))
 
 
 # ---- assumptions

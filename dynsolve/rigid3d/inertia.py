@@ -63,7 +63,9 @@ def principal(
 def tensor(moments: Sequence[sympy.Expr], axes: tuple[Vec3, Vec3, Vec3]) -> sympy.Matrix:
     """I_G in scene axes: R diag(moments) Rᵀ, with R's columns the body's x, y, z axes."""
     R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
-    return R * sympy.diag(*moments) * R.T
+    I_G = R * sympy.diag(*moments) * R.T
+    # sin² + cos² = 1 where the axes are turned by an angle (9 small entries: cheap)
+    return I_G.applyfunc(lambda e: sympy.trigsimp(e) if e.has(sympy.sin, sympy.cos) else e)
 
 
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:

@@ -77,18 +77,21 @@ class Spin:
 
 @dataclass(frozen=True)
 class SpinOf:
-    """The body's spin about its own axis ``axis`` (its z, through G) relative to the
-    frame that turns with the ``rotates`` line (the precession)."""
+    """The body's turn about ``axis`` through ``through`` (G when not given: a rotor's
+    spin) relative to the frame that turns with the ``rotates`` line, which carries the
+    axis (the precession; a shaft carrying the pin of a bar)."""
 
     axis: Vec3
     omega: sympy.Expr
     alpha: sympy.Expr
+    through: Vec3 | None = None
 
 
 @dataclass(frozen=True)
 class Bearing:
     """A bearing on the shaft: a journal carries loads across the shaft, a thrust also
-    along it; a ball joint (``ball``), anywhere, carries loads every way."""
+    along it; a ball joint (``ball``), anywhere, carries loads every way; a ``pin``
+    (hinge) carries loads every way and couples across its axis (the shaft's)."""
 
     name: str
     at: Vec3
@@ -167,20 +170,6 @@ def read_scene3d(spec: Spec) -> Scene3D:
     own = [s for s in statements if s.kind == "spins"]
     if own:
         spin_of = _spin_of(own[0], body, reader, spec, rates)
-        if body.axes[2] != spin_of.axis and not _parallel(body.axes[2], spin_of.axis):
-            raise SpecError(
-                f"{body.name} spins about its own z axis, so 'axis {body.name}' must be the "
-                "spin's direction",
-                Position(spec.file, own[0].line, own[0].column),
-                hint=f"write 'axis {body.name}: ' with the spin's direction, or leave it out",
-            )
-        if sympy.simplify(body.principal[0] - body.principal[1]) != 0:
-            raise SpecError(
-                f"{body.name} must be symmetric about its spin axis (I_x = I_y) for its "
-                "inertia to stay constant in the precessing frame",
-                Position(spec.file, own[0].line, own[0].column),
-                hint="a spinning disk, wheel, rotor or cylinder",
-            )
     bearings = tuple(
         Bearing(
             s.name, _vector3(reader, s.vectors[0], "a bearing's position"), s.word, s.line, s.column
@@ -268,8 +257,10 @@ def _body(
         )
     z_axis: Vec3 = (sympy.Integer(0), sympy.Integer(0), sympy.Integer(1))
     x_axis: Vec3 | None = None
-    spinning = [s for s in statements if s.kind == "spins" and s.body == stmt.name]
-    if spinning:  # the body's z is its spin axis unless said otherwise
+    spinning = [
+        s for s in statements if s.kind == "spins" and s.body == stmt.name and len(s.vectors) == 1
+    ]
+    if spinning:  # a rotor's z is its spin axis unless said otherwise
         z_axis = _direction3(
             reader, spinning[0].vectors[0], Position(spec.file, stmt.line, stmt.column)
         )
@@ -313,8 +304,11 @@ def _spin_of(
     if stmt.body != body.name:
         raise SpecError(f"there is no body '{stmt.body}'", where, hint=f"the body is {body.name}")
     axis = _along_an_axis(_direction3(reader, stmt.vectors[0], where), where)
+    through = (
+        _vector3(reader, stmt.vectors[1], "a point of the axis") if len(stmt.vectors) > 1 else None
+    )
     omega, alpha = _rates(stmt, reader, rates)
-    return SpinOf(axis, omega, alpha)
+    return SpinOf(axis, omega, alpha, through)
 
 
 def _along_an_axis(axis: Vec3, where: Position) -> Vec3:
@@ -346,11 +340,6 @@ def _rates(
         else:
             found.append(reader.value(expr, dim, what))
     return found[0], found[1] if len(found) > 1 else sympy.Integer(0)
-
-
-def _parallel(a: Vec3, b: Vec3) -> bool:
-    cross = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-    return all(sympy.simplify(c) == 0 for c in cross)
 
 
 def close_name(name: str, names: Sequence[str]) -> str:

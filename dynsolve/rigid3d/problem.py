@@ -36,7 +36,7 @@ refused (a driving torque is missing). Finds: the reactions, a torque, ``T(B)``
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy
 from sympy.solvers.solveset import NonlinearError
@@ -77,6 +77,7 @@ class Problem3D:
     steps: tuple[Step, ...] = ()
     notes: tuple[tuple[str, str], ...] = ()
     mode: str = "3D scene"
+    couples: Mapping[str, Vec3] = field(default_factory=dict)  # a pin's couple across its axis
 
 
 def build_3d_problem(spec: Spec) -> Problem3D:
@@ -122,33 +123,28 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         unknown(rate.name, dim)
     along = next(i for i, c in enumerate(scene.shaft) if c != 0)
     reactions: dict[str, tuple[Vec3, Vec3]] = {}
+    couples: dict[str, Vec3] = {}
     for bearing in scene.bearings:
         force = tuple(
             unknown(f"{bearing.name}_{AXES[i]}", FORCE)
-            if i != along or bearing.kind in ("thrust", "ball")
+            if i != along or bearing.kind in ("thrust", "ball", "pin")
             else sympy.Integer(0)
             for i in range(3)
         )
         reactions[bearing.name] = (force, bearing.at)  # type: ignore[assignment]
+        if bearing.kind == "pin":  # a hinge: a couple across its axis, none about it
+            couples[bearing.name] = tuple(  # type: ignore[assignment]
+                unknown(f"M_{bearing.name}{AXES[i]}", MOMENT) if i != along else sympy.Integer(0)
+                for i in range(3)
+            )
     torque = sympy.Integer(0)
     for name in scene.torques:
         size = scene.symbols[name] if name in taken else unknown(name, MOMENT)
         torque += size
-    frame = tuple(spin.omega * c for c in spin.axis)  # Ω: the turning (precessing) frame
-    frame_alpha = tuple(spin.alpha * c for c in spin.axis)
-    omega, relative_alpha = frame, frame_alpha
-    if scene.spin_of is not None:  # ω = Ω + ω_s s; (dω/dt)_xyz = α u + α_s s
-        own = scene.spin_of
-        omega = tuple(w + own.omega * c for w, c in zip(frame, own.axis, strict=True))
-        relative_alpha = tuple(
-            a + own.alpha * c for a, c in zip(frame_alpha, own.axis, strict=True)
-        )
-    r = tuple(body.G[i] - spin.through[i] for i in range(3))
-    w_r = cross(frame, r)
-    a_G = tuple(a + b for a, b in zip(cross(frame_alpha, r), cross(frame, w_r), strict=True))
+    omega, alpha, v_G, a_G = motion(scene)
     H = tuple(body.I_G * sympy.Matrix(omega))
-    I_alpha = tuple(body.I_G * sympy.Matrix(relative_alpha))
-    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(frame, H), strict=True))
+    I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
+    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
         if scene.gravity
@@ -164,6 +160,8 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         arm = tuple(at[i] - body.G[i] for i in range(3))
         moment = [m + c for m, c in zip(moment, cross(arm, force), strict=True)]
     moment = [m + torque * c for m, c in zip(moment, spin.axis, strict=True)]
+    for couple in couples.values():
+        moment = [m + c for m, c in zip(moment, couple, strict=True)]
     for i, axis in enumerate(AXES):
         note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
         lhs, rhs = moment[i], H_dot[i]
@@ -183,7 +181,7 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
     targets = tuple(
-        _target(item, spec, scene, unknowns, dims, omega, frame, a_G, H_dot) for item in spec.finds
+        _target(item, spec, scene, unknowns, dims, omega, v_G, a_G, H_dot) for item in spec.finds
     )
     check_answers_in_find(spec)
     # every reaction is solved: the second moment point checks them all
@@ -207,7 +205,48 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         H_dot,  # type: ignore[arg-type]
         a_G,  # type: ignore[arg-type]
         notes=notes,
+        couples=couples,
     )
+
+
+def motion(scene: Scene3D) -> tuple[Vec3, Vec3, Vec3, Vec3]:
+    """ω, α (absolute), v_G and a_G of the scene's body.
+
+    The frame turns at Ω = Ω u about the ``rotates`` axis through O; the body turns
+    relative to it about s through P (a point the frame carries: G for a rotor's spin),
+    so ω = Ω u + ω_s s, α = Ω' u + α_s s + Ω u × ω_s s, v_P = Ω × r_P/O,
+    a_P = Ω' u × r_P/O + Ω × (Ω × r_P/O), and v_G = v_P + ω × r_G/P,
+    a_G = a_P + α × r_G/P + ω × (ω × r_G/P) (Hibbeler 20.4).
+
+    >>> from dynsolve.rigid3d.model import Body3D, Scene3D, Spin
+    >>> z, one = sympy.Integer(0), sympy.Integer(1)
+    >>> rod = Body3D("bar", one, (one, z, z), sympy.eye(3), (one,) * 3, ((one, z, z),) * 3, "")
+    >>> turn = Spin((z, one, z), (z, z, z), 2 * one, z)
+    >>> omega, alpha, v_G, a_G = motion(Scene3D("s.dyn", rod, turn, (), None))
+    >>> v_G, a_G  # G 1 m from the axis at 2 rad/s: 2 m/s, 4 m/s² toward the axis
+    ((0, 0, -2), (-4, 0, 0))
+    """
+    spin, body = scene.spin, scene.body
+    frame = tuple(spin.omega * c for c in spin.axis)
+    frame_alpha = tuple(spin.alpha * c for c in spin.axis)
+    own = scene.spin_of
+    P = spin.through if own is None else (own.through or body.G)
+    r_P = tuple(P[i] - spin.through[i] for i in range(3))
+    v_P = cross(frame, r_P)
+    a_P = tuple(a + b for a, b in zip(cross(frame_alpha, r_P), cross(frame, v_P), strict=True))
+    omega, alpha = frame, frame_alpha
+    if own is not None:
+        relative = tuple(own.omega * c for c in own.axis)
+        omega = tuple(w + c for w, c in zip(frame, relative, strict=True))
+        turning = cross(frame, relative)  # the frame turns the relative ω: Ω × ω_s s
+        alpha = tuple(
+            a + own.alpha * c + t for a, c, t in zip(frame_alpha, own.axis, turning, strict=True)
+        )
+    r = tuple(body.G[i] - P[i] for i in range(3))
+    w_r = cross(omega, r)
+    v_G = tuple(v + c for v, c in zip(v_P, w_r, strict=True))
+    a_G = tuple(a + b + c for a, b, c in zip(a_P, cross(alpha, r), cross(omega, w_r), strict=True))
+    return omega, alpha, v_G, a_G  # type: ignore[return-value]
 
 
 def _check_determined(
@@ -283,7 +322,7 @@ def _target(
     unknowns: Mapping[sympy.Symbol, Dim],
     dims: Mapping[str, Dim],
     omega: tuple[sympy.Expr, ...],
-    frame: tuple[sympy.Expr, ...],
+    v_G: tuple[sympy.Expr, ...],
     a_G: tuple[sympy.Expr, ...],
     H_dot: tuple[sympy.Expr, ...],
 ) -> Target:
@@ -316,7 +355,6 @@ def _target(
         )
     if function == "T":
         I_w = body.I_G * sympy.Matrix(omega)
-        v_G = cross(frame, tuple(body.G[i] - scene.spin.through[i] for i in range(3)))
         energy = sum(w * h for w, h in zip(omega, I_w, strict=True)) / 2
         energy += body.mass * sum(v**2 for v in v_G) / 2
         unit, dim = _unit(item, ENERGY, spec, where)
@@ -375,6 +413,8 @@ def moment_check(
         sympy.Integer(0),
     )
     total = [t + torques * c for t, c in zip(total, problem.scene.spin.axis, strict=True)]
+    for couple in problem.couples.values():
+        total = [t + c for t, c in zip(total, couple, strict=True)]
     r_G = tuple(body.G[i] - origin[i] for i in range(3))
     m_a = tuple(body.mass * a for a in problem.a_G)
     expected = [h + c for h, c in zip(problem.H_dot, cross(r_G, m_a), strict=True)]

@@ -1151,6 +1151,17 @@ class _Builder(Transformer_NonRecursive):
         )
         return self._stmt("spins", body, body=str(body), vectors=(axis,), value=omega, props=props)
 
+    def spins_through_stmt(self, c: list[Any]) -> SceneStmt:
+        """``spins B: about (s), through (P), omega w_s [, alpha a_s]``: B turns about an
+        axis s through P that the frame carries (a bar pinned to a turning shaft)."""
+        body, axis, through, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt(
+            "spins", body, body=str(body), vectors=(axis, through), value=omega, props=props
+        )
+
     def bearing_stmt(self, c: list[Any]) -> SceneStmt:
         name, at, kind = c
         return self._stmt("bearing", name, name=str(name), vectors=(at,), word=str(kind))

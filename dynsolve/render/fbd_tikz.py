@@ -1,0 +1,282 @@
+r"""Free-body and kinetic diagrams of a solution sheet as TikZ pictures, in millimetres.
+
+Each body is drawn by its outline (a disk, drum or wheel as a circle with its hub, a rod
+as a bar, a block or plate as a rectangle, a particle as a dot; a body given without a
+shape, by its radius of gyration, as a circle with a hub through its farthest force
+point, or a small box when every force acts at G), 35 mm across whatever its size, with
+G marked. Every force is an arrow 10 mm long at its point: from the point, or into it
+when it pushes on the body there (a normal force under a block), an arrow from G kept
+inside the outline; unknown forces dashed and red; couples as arcs around their point.
+Beside it, after "=", the kinetic diagram: the same outline with m (a_G)_x, m (a_G)_y and
+I_G α drawn in blue (their assumed senses: +x, +y, counterclockwise), as the textbook
+sets ΣF = m a_G beside its picture.
+
+Every command is one line, ``\draw[OPTIONS] (x,y) -- (x,y) node[...] {LABEL};`` for an
+arrow, so that a test can read the geometry back.
+
+>>> from dynsolve.results import ForceRow, FreeBody
+>>> weight = ForceRow("W", "weight", "G", 0.0, 0.0, "down", 0.0, -1.0, True, "")
+>>> ball = FreeBody("ball", "particle", (), "translation", (weight,), (), "")
+>>> print([line for line in free_body_tikz(ball, lambda f: f.name).splitlines()
+...        if "->" in line][0])
+\draw[force,->] (0,0) -- (0,-10) node[anchor=90] {W};
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+
+from dynsolve.render.picture import Point, num, polar
+from dynsolve.results import ForceRow, FreeBody
+
+ROUND_SHAPES = frozenset({"disk", "ring", "cylinder", "sphere", "shell", "hollow"})
+HUBBED = frozenset({"disk", "ring", "cylinder", "hollow"})  # wheels and drums: a hub
+BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart), any size
+ARROW_MM = 10.0  # every force arrow, whatever its magnitude
+COUPLE_MM = 6.0  # the radius of a body's first couple arc; the next ones 3 mm wider
+SQUARE_MM = 8.0  # the side of the box drawn for a body with nothing to size it
+STYLES = (
+    r"force/.style={thick,-{Stealth[length=2.4mm,width=1.8mm]}},"
+    r"unknown/.style={dashed,red},"
+    r"kinetic/.style={thick,blue,-{Stealth[length=2.4mm,width=1.8mm]}},"
+    r"baseline=(current bounding box.center)"  # "=" between the diagrams sits mid-height
+)
+
+
+def free_body_tikz(
+    body: FreeBody,
+    label: Callable[[ForceRow], str],
+    kinetic_label: Callable[[str], str] | None = None,
+) -> str:
+    """The body's free-body diagram, and its kinetic diagram beside it when it has terms
+    (``label`` typesets a force's name, ``kinetic_label`` a kinetic term)."""
+    footprint = footprint_of(body)
+    points = [(_finite(f.x), _finite(f.y)) for f in body.forces]
+    half = max([*(footprint or (0.0, 0.0)), *(abs(c) for p in points for c in p)])
+
+    def at(point: Point) -> Point:
+        """A body point (metres from G) on the page (mm from G): never beyond 17.5 mm."""
+        if half <= 0:
+            return (0.0, 0.0)
+        return (point[0] / half * BODY_MM / 2, point[1] / half * BODY_MM / 2)
+
+    outline = _outline(body, footprint, at)
+    lines = [f"\\begin{{tikzpicture}}[x=1mm,y=1mm,{STYLES}]", *outline, *_centre()]
+    couples = 0
+    for force, point in zip(body.forces, points, strict=True):
+        if force.kind == "couple":
+            lines.append(_couple(force, at(point), COUPLE_MM + 3.0 * couples, label(force)))
+            couples += 1
+            continue
+        unit = unit_of(force.dx, force.dy)
+        room = _room(body.shape, at(footprint) if footprint else None, unit)
+        lines.append(_arrow(force, point, at(point), unit, room, label(force)))
+    lines.append(r"\end{tikzpicture}")
+    picture = "\n".join(lines)
+    if kinetic_label is None or not body.kinetic:
+        return picture
+    kinetic = _kinetic(body, outline, at, kinetic_label)
+    return picture if kinetic is None else f"{picture}\n\\quad$=$\\quad\n{kinetic}"
+
+
+def footprint_of(body: FreeBody) -> Point | None:
+    """Half the width and height of the body's outline (metres), or None without one.
+
+    >>> from dynsolve.results import FreeBody
+    >>> footprint_of(FreeBody("crate", "block", (1.0, 0.5), "translation", (), (), ""))
+    (0.5, 0.25)
+    """
+    sizes = [abs(_finite(v)) for v in body.size]
+    first = sizes[0] if sizes else 0.0
+    shape = body.shape.strip().lower()
+    if shape == "particle":
+        return (0.0, 0.0)
+    if not first:
+        return None
+    if shape in ROUND_SHAPES:
+        return (first, first)
+    if shape == "rod":
+        return (first / 2, 0.0)
+    if shape in ("block", "plate"):
+        height = sizes[1] if len(sizes) > 1 and sizes[1] else first
+        return (first / 2, height / 2)
+    return None
+
+
+def unit_of(dx: float, dy: float) -> Point | None:
+    """The direction as a unit vector, or None when there is none.
+
+    >>> unit_of(3.0, 4.0), unit_of(0.0, 0.0)
+    ((0.6, 0.8), None)
+    """
+    dx, dy = _finite(dx), _finite(dy)
+    largest = max(abs(dx), abs(dy))
+    if largest == 0:
+        return None
+    dx, dy = dx / largest, dy / largest  # no overflow in hypot
+    norm = math.hypot(dx, dy)
+    return (dx / norm, dy / norm)
+
+
+def _finite(value: float) -> float:
+    return value if math.isfinite(value) else 0.0
+
+
+def _xy(point: Point) -> str:
+    return f"({num(point[0])},{num(point[1])})"
+
+
+def _outline(body: FreeBody, footprint: Point | None, at: Callable[[Point], Point]) -> list[str]:
+    """The body's outline: circle (with a hub), bar, rectangle, dot, or around its points."""
+    shape = body.shape.strip().lower()
+    if footprint == (0.0, 0.0):
+        return [r"\fill (0,0) circle[radius=1.25];"]
+    if footprint is not None:
+        hx, hy = at(footprint)
+        if shape in ROUND_SHAPES:
+            hub = f"\\draw[thin] (0,0) circle[radius={num(0.15 * hx)}];"
+            return [f"\\draw[very thick] (0,0) circle[radius={num(hx)}];"] + (
+                [hub] if shape in HUBBED else []
+            )
+        if shape == "rod":
+            return [f"\\draw[line width=2.4pt,line cap=round] ({num(-hx)},0) -- ({num(hx)},0);"]
+        return [f"\\draw[very thick] ({num(-hx)},{num(-hy)}) rectangle ({num(hx)},{num(hy)});"]
+    points = [at((_finite(f.x), _finite(f.y))) for f in body.forces if f.kind != "couple"]
+    reach = max((math.hypot(*p) for p in points), default=0.0)
+    if reach > SQUARE_MM / 2:  # a body given by its radius of gyration: a drum, a spool
+        return [
+            f"\\draw[very thick] (0,0) circle[radius={num(reach)}];",
+            f"\\draw[thin] (0,0) circle[radius={num(0.15 * reach)}];",
+        ]
+    hx = max([SQUARE_MM / 2, *(abs(p[0]) for p in points)])
+    hy = max([SQUARE_MM / 2, *(abs(p[1]) for p in points)])
+    return [
+        f"\\draw[very thick,rounded corners=2mm] ({num(-hx)},{num(-hy)}) rectangle "
+        f"({num(hx)},{num(hy)});"
+    ]
+
+
+def _centre() -> list[str]:
+    return [r"\fill (0,0) circle[radius=0.6] node[anchor=north east,inner sep=1pt] {$G$};"]
+
+
+def _anchor(direction: Point) -> str:
+    """The label's anchor for an arrow heading ``direction``: the node sits beyond its end."""
+    degrees = math.degrees(math.atan2(-direction[1], -direction[0])) % 360.0
+    return num(round(degrees))
+
+
+def _arrow(
+    force: ForceRow, point: Point, start: Point, unit: Point | None, room: float, text: str
+) -> str:
+    """A force arrow at its point: from it, or into it when it pushes on the body there.
+
+    A force whose direction points back toward G from a point off G (a normal force under
+    a body, a push on a face; not friction, which runs along the surface) is drawn ending
+    at the point, outside the outline, as textbooks draw pushes.
+    An arrow from G is shortened to stay inside the outline (``room`` mm away), if it can.
+    """
+    style = "force" if force.known else "force,unknown"
+    if unit is None:  # no direction: a small circle at the point
+        return (
+            f"\\draw[{style.replace('force', 'thick')}] {_xy(start)} circle[radius=0.8] "
+            f"node[anchor=south,inner sep=2pt] {{{text}}};"
+        )
+    length = ARROW_MM
+    if point == (0.0, 0.0) and room > 0:
+        length = max(6.0, min(ARROW_MM, 0.8 * room))
+    # a push: the force heads back toward G (a normal force, a push on a face); friction,
+    # along the surface, is drawn from its point
+    toward_G = point[0] * unit[0] + point[1] * unit[1] < 0
+    pushes = point != (0.0, 0.0) and toward_G and not force.kind.startswith("friction")
+    outward = (-unit[0], -unit[1]) if pushes else unit
+    far = (start[0] + length * outward[0], start[1] + length * outward[1])
+    tail, tip = (far, start) if pushes else (start, far)
+    place = "at start," if pushes else ""  # the label beyond the far end, either way
+    node = f"node[{place}anchor={_anchor(outward)}] {{{text}}}"
+    return f"\\draw[{style},->] {_xy(tail)} -- {_xy(tip)} {node};"
+
+
+def _room(shape: str, half: Point | None, unit: Point | None) -> float:
+    """How far (mm) the outline is from G in direction ``unit``; 0 for a rod or a dot."""
+    if half is None or not half[0] or not half[1] or unit is None:
+        return 0.0
+    if shape.strip().lower() in ROUND_SHAPES:
+        return half[0]
+    return min(h / abs(u) for h, u in zip(half, unit, strict=True) if u)
+
+
+def _couple(force: ForceRow, centre: Point, radius: float, text: str) -> str:
+    """A couple: a 270-degree arc around its point, open at the bottom (a weight at G
+    passes through the gap), its label outside, upper right (ccw) or upper left (cw)."""
+    clockwise = force.direction.strip().lower() in ("cw", "clockwise")
+    start, end = (225.0, -45.0) if clockwise else (-45.0, 225.0)
+    style = "force" if force.known else "force,unknown"
+    corner = 135.0 if clockwise else 45.0
+    label_at = polar(centre, radius + 1.0, corner)
+    sense = "cw" if clockwise else "ccw"
+    return (
+        f"\\draw[{style},->] {_xy(polar(centre, radius, start))} arc[start angle={num(start)},"
+        f"end angle={num(end)},radius={num(radius)}]; "
+        f"\\node[anchor={num(corner + 180)}] at {_xy(label_at)} {{{text} ({sense})}};"
+    )
+
+
+def _kinetic(
+    body: FreeBody,
+    outline: Sequence[str],
+    at: Callable[[Point], Point],
+    label: Callable[[str], str],
+) -> str | None:
+    """The kinetic diagram: the outline with each term it can place as a blue arrow
+    (m (a_G)_x along +x, m (a_G)_y along +y, I α counterclockwise, m ω² r_G toward the
+    pin, m α r_G across it); None when it can place none."""
+    arrows = []
+    pin = _pin(body, at)
+    for term in body.kinetic:
+        words = term.replace("(", " ").replace(")", " ").split()
+        key = "".join(words)
+        direction: Point | None = None
+        if key in ("ma_Gx", "ma_G_x"):
+            direction = (1.0, 0.0)
+        elif key in ("ma_Gy", "ma_G_y"):
+            direction = (0.0, 1.0)
+        elif key.endswith("α") and key.startswith("I_"):
+            arrows.append(
+                f"\\draw[kinetic] {_xy(polar((0.0, 0.0), COUPLE_MM, -45.0))} arc[start angle=-45,"
+                f"end angle=225,radius={num(COUPLE_MM)}]; "
+                f"\\node[anchor=225] at {_xy(polar((0.0, 0.0), COUPLE_MM + 1.0, 45.0))} "
+                f"{{{label(term)}}};"
+            )
+            continue
+        elif pin is not None and key in ("mω²r_G", "mαr_G"):
+            toward = unit_of(pin[0], pin[1])
+            if toward is None:
+                continue
+            direction = toward if key.startswith("mω") else (-toward[1], toward[0])
+        if direction is None:
+            continue
+        tip = (ARROW_MM * direction[0], ARROW_MM * direction[1])
+        arrows.append(
+            f"\\draw[kinetic] (0,0) -- {_xy(tip)} node[anchor={_anchor(direction)}] "
+            f"{{{label(term)}}};"
+        )
+    if not arrows:
+        return None
+    return "\n".join(
+        [f"\\begin{{tikzpicture}}[x=1mm,y=1mm,{STYLES}]", *outline, *_centre(), *arrows,
+         r"\end{tikzpicture}"]
+    )  # fmt: skip
+
+
+def _pin(body: FreeBody, at: Callable[[Point], Point]) -> Point | None:
+    """Where the body's pin is on the page (its motion says "rotation about O" and a force
+    acts at O), or None."""
+    if "rotation about " not in body.motion:
+        return None
+    name = body.motion.rsplit("rotation about ", 1)[1].strip().rstrip(".")
+    for force in body.forces:
+        if force.point == name:
+            return at((_finite(force.x), _finite(force.y)))
+    return None
