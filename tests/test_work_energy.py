@@ -176,3 +176,15 @@ def test_a_path_through_the_springs_anchor_does_not_break_the_second_method(tmp_
     assert solution.answers[0].value == pytest.approx(5.0, rel=1e-12)
     check = next(c for c in solution.checks if c.name.startswith("second method"))
     assert check.passed
+
+
+def test_a_rigid_body_between_two_states_gets_its_free_body_diagram_in_state_1():
+    # issue 12: work-and-energy sheets had no free-body diagram; the seed's disk rolled by a
+    # couple against a spring shows the forces whose work enters T1 + ΣU = T2 (the weight,
+    # the floor's N and F at C, the spring, the couple), and no kinetic diagram
+    solution = solve_file(Path(__file__).parent.parent / "problems/seed/rwe_seed_disk40lb.dyn")
+    (disk,) = solution.free_body
+    names = {f.name for f in disk.forces}
+    assert {"N_C", "F_C", "M"} <= names and any(f.kind == "weight" for f in disk.forces)
+    assert any(f.kind == "spring" for f in disk.forces)
+    assert disk.kinetic == () and "state 1" in disk.motion

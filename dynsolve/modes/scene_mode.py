@@ -1466,12 +1466,16 @@ def free_bodies(
     substitution = {**knowns, **values}
     system = problem.spec.system
     out: list[FreeBody] = []
-    if not problem.formulation.kinematics:  # an impact: no free-body diagrams to draw
+    formulation = problem.formulation
+    at_start = None if formulation.kinematics else _drawn_at_start(problem)
+    if at_start is not None:  # work and energy of a rigid body: its forces in state 1
+        formulation = at_start
+    if not formulation.kinematics:  # an impact: no free-body diagrams to draw
         return ()
     for name, body in problem.scene.bodies.items():
         rows = []
         G = body.G
-        for force in problem.formulation.forces[name]:
+        for force in formulation.forces[name]:
             x = real_value(force.point[0] - G[0], substitution) or 0.0
             y = real_value(force.point[1] - G[1], substitution) or 0.0
             dx = real_value(force.direction[0], knowns) or 0.0
@@ -1501,7 +1505,7 @@ def free_bodies(
                     value,
                 )
             )
-        for couple in problem.formulation.couples[name]:
+        for couple in formulation.couples[name]:
             moment = real_value(couple.moment, substitution)
             sense = "ccw" if (moment or 0) >= 0 else "cw"
             value = (
@@ -1513,13 +1517,15 @@ def free_bodies(
                 ForceRow(couple.name, "couple", "G", 0.0, 0.0, sense, 0.0, 0.0, couple.known, value)
             )
         sizes = tuple(real_value(s, knowns) or 0.0 for s in body.sizes)
-        kin = problem.formulation.kinematics[name]
+        kin = formulation.kinematics[name]
         motion = {
             "rotation": f"fixed-axis rotation about {kin.pin.name if kin.pin else 'O'}",
             "translation": "translation",
             "general": "general plane motion",
             "particle": "particle",
         }[kin.motion]
+        if at_start is not None:
+            motion += " (drawn in state 1: the forces whose work enters T1 + ΣU = T2)"
         out.append(
             FreeBody(
                 name,
@@ -1527,11 +1533,26 @@ def free_bodies(
                 sizes,
                 motion,
                 tuple(rows),
-                problem.formulation.kinetic.get(name, ()),
-                problem.formulation.moment_points.get(name, ""),
+                () if at_start is not None else formulation.kinetic.get(name, ()),
+                "" if at_start is not None else formulation.moment_points.get(name, ""),
             )
         )
     return tuple(out)
+
+
+def _drawn_at_start(problem: SceneProblem) -> Formulation | None:
+    """The forces of a rigid body's work-and-energy scene in state 1, for its free-body
+    diagram only (nothing of it is solved); None for anything else or a scene that has no
+    instant formulation."""
+    from dynsolve.principles.newton_euler import formulate
+
+    scene = problem.scene
+    if not scene.travels or scene.impacts or scene.pivots or len(scene.events) > 1:
+        return None
+    try:
+        return formulate(replace(scene, travels={}, events=()), problem.symbols)
+    except (ValueError, SpecError, KeyError):  # a mechanism formulate does not take
+        return None
 
 
 def direction_word(dx: float, dy: float) -> str:
