@@ -175,7 +175,7 @@ def test_until_a_bar_angle_and_a_joint_height():
 @pytest.mark.parametrize(
     ("change", "message"),
     [
-        (("  gravity", "  bar AO2: A to O2\n  point O2: (L, 0)\n  gravity"), "close a loop"),
+        (("  gravity", "  bar AO2: A to O2\n  point O2: (L, 0)\n  gravity"), "rigid there"),
         (("  gravity", "  alpha OA: 0\n  gravity"), "a simulation finds the motion"),
     ],
 )
@@ -206,3 +206,95 @@ def test_cli_simulates_a_chain_and_writes_every_bar(tmp_path: Path):
     assert rows[0][:5] == ["t [s]", "theta_OA [rad]", "theta_AB [rad]", "omega_OA [rad/s]",
                            "omega_AB [rad/s]"]  # fmt: skip
     assert len(rows) == 502 and plot.read_bytes()[:4] == b"\x89PNG"
+
+
+# ---- closed loops: one degree of freedom in the input bar's turn
+
+PARALLELOGRAM = """\
+given:
+  L = 1 m
+  m = 2 kg
+  tilt = {tilt} deg
+  cx = {cx} m
+  cy = {cy} m
+scene:
+  point A: (0, 0)
+  point D: (L, 0)
+  bar AB: A to B, length L, angle tilt, mass m
+  bar BC: B to C, length L, mass m
+  bar CD: C to D, length L, mass m
+  joint C: near (cx, cy)
+  gravity
+"""
+
+
+def test_a_hanging_parallelogram_swings_with_the_hand_derived_period():
+    # the coupler translates on a circle of radius L: T = ½ (2 m L²/3 + m L²) θ'²,
+    # V = −2 m g L cos θ, so ω² = 2 m g L / (5 m L²/3) = 6 g/(5 L) (hand derivation);
+    # from a small tilt a: θ − θ_0 = a (cos ω t − 1)
+    a = 0.01
+    text = PARALLELOGRAM.format(tilt=-90 + math.degrees(a), cx=1 + math.sin(a), cy=-math.cos(a))
+    history = simulate_spec(parse_spec(text, "p.dyn"), t_end=2.0, samples=21)
+    omega = math.sqrt(6 * G / 5)
+    for t, q in zip(history.run.t, history.run.q, strict=True):
+        assert q[0] == pytest.approx(a * (math.cos(omega * t) - 1), abs=2e-3 * a)
+    assert history.columns()[1:3] == ("theta_AB [rad]", "omega_AB [rad/s]")
+
+
+SLIDER_CRANK = """\
+given:
+  r = 0.1 m
+  l = 0.3 m
+  m = 1 kg
+  w_0 = 20 rad/s
+  phi = 30 deg
+scene:
+  point A: (0, 0)
+  bar AB: A to B, length r, angle phi, mass m
+  bar BC: B to C, length l, mass m
+  slider C: along right, through A
+  joint C: near (l, 0)
+  omega AB: w_0 ccw
+"""
+
+
+def test_a_coasting_slider_crank_keeps_its_energy_through_full_turns():
+    # no load, no friction: T = ½ M(q) q'² is constant while M(q) varies along the turn,
+    # so ω of the crank changes but the energy does not; it turns a full revolution
+    history = simulate_spec(
+        parse_spec(SLIDER_CRANK, "sc.dyn"), until="theta(AB) = 720 deg", t_end=5.0
+    )
+    assert history.stopped_by == "theta(AB) = 720 deg"
+    assert history.run.drift < 1e-8
+    speeds = history.run.qd[:, 0]
+    assert speeds.min() < 0.9 * speeds.max()  # M(q) varies: the crank's speed does
+    # at the same crank angle the speed repeats (one turn later)
+    assert history.run.qd[-1][0] == pytest.approx(20.0, rel=1e-6)
+
+
+def test_a_double_rocker_driven_past_its_limit_locks_and_says_so():
+    # AB = 1.8, BC = 1, CD = 1.5, AD = 2: s + l = 3 < p + q = 3.3 with the coupler
+    # shortest, a double rocker: AB cannot turn fully, and thrown hard it reaches a toggle
+    text = """\
+given:
+  w_0 = 30 rad/s
+  up = 60 deg
+  AD = 2 m
+  AB = 1.8 m
+  BC = 1 m
+  CD = 1.5 m
+  m = 1 kg
+  cx = 1.9 m
+  cy = 1.6 m
+scene:
+  point A: (0, 0)
+  point D: (AD, 0)
+  bar AB: A to B, length AB, angle up, mass m
+  bar BC: B to C, length BC, mass m
+  bar CD: C to D, length CD, mass m
+  joint C: near (cx, cy)
+  omega AB: w_0 ccw
+"""
+    with pytest.raises(SpecError, match=r"locks|cannot close") as caught:
+        simulate_spec(parse_spec(text, "rocker.dyn"), t_end=2.0)
+    assert "until" in caught.value.hint

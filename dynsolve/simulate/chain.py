@@ -151,8 +151,7 @@ def chain_of(spec: Spec) -> Chain:
     if placement.closure:
         raise NotSimulable(
             f"joints {', '.join(p for p, h in placement.how.items() if h == 'loop closure')} "
-            "close a loop: simulate integrates open chains of bars (each hanging from a fixed "
-            "point or a bar nearer the ground, every bar with a length and an angle)"
+            "close a loop: the linkage is not an open chain"
         )
     values = dict(linkage.values)
 
@@ -282,8 +281,9 @@ def _hanging_order(linkage: Linkage) -> list[tuple[str, str]]:
             held = [p for p in bar.points if p in placed]
             if len(held) > 1:
                 raise NotSimulable(
-                    f"bar {bar.name} joins {' and '.join(held)}, which are already placed: "
-                    "the bars close a loop, and simulate integrates open chains"
+                    f"bar {bar.name} joins {' and '.join(held)}, which the other bars already "
+                    "place: the chain is rigid there; simulate integrates open chains and "
+                    "loops closed by a joint the scene leaves free (a four-bar)"
                 )
             if held:
                 order.append((bar.name, held[0]))

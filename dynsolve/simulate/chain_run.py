@@ -31,6 +31,7 @@ from dynsolve.errors import Position, SpecError
 from dynsolve.simulate.chain import Chain, chain_of
 from dynsolve.simulate.equations import NotSimulable
 from dynsolve.simulate.integrator import METHODS, Run
+from dynsolve.simulate.loop import Loop
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
 
@@ -57,7 +58,7 @@ class ChainHistory:
     file: str
     title: str
     system: str
-    chain: Chain
+    chain: Chain | Loop
     motion: Coordinates
     run: Run  # q and qd: one row per sample, one column per bar
     stopped_by: str
@@ -97,16 +98,23 @@ def simulate_chain(
 ) -> ChainHistory:
     """Integrate the spec's chain of bars from its state (see the module's docstring)."""
     where = Position(spec.file, spec.scene[0].line if spec.scene else 1, 1)
+    from dynsolve.simulate.loop import is_loop, loop_of
+
     try:
-        chain = chain_of(spec)
+        chain = loop_of(spec) if is_loop(spec) else chain_of(spec)
     except NotSimulable as exc:
         raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
     event = _until_event(until, chain, spec.system) if until else None
     try:
         run = integrate_chain(chain, t_end, method, rtol, atol, samples, event)
     except ValueError as exc:
+        locked = "lock" in str(exc) or "cannot close" in str(exc)
         raise SpecError(
-            str(exc), Position("--method", 1, 1), hint="try --method Radau or a looser --rtol"
+            str(exc),
+            Position("--until" if locked else "--method", 1, 1),
+            hint="stop the run before it ('--until theta(BAR) = …' or a shorter --t-end)"
+            if locked
+            else "try --method Radau or a looser --rtol",
         ) from None
     coordinates = Coordinates(", ".join(f"turn of {b}" for b in chain.bars), "rad", chain.bars)
     return ChainHistory(
@@ -116,7 +124,7 @@ def simulate_chain(
 
 
 def integrate_chain(
-    chain: Chain,
+    chain: Chain | Loop,
     t_end: float,
     method: str = "DOP853",
     rtol: float = 1e-10,
@@ -164,7 +172,7 @@ def integrate_chain(
     )  # fmt: skip
 
 
-def _until_event(text: str, chain: Chain, system: str) -> tuple[str, object, int]:
+def _until_event(text: str, chain: Chain | Loop, system: str) -> tuple[str, object, int]:
     """The terminal event of an ``--until`` text: (its name, solve_ivp's condition, the
     column of the bar whose θ and ω the event reports)."""
     from dynsolve.simulate.run import parse_quantity
