@@ -576,7 +576,8 @@ def _simulation_text(history: object) -> str:
             f"  small-oscillation period 2π√(M/V'') about q* = {data['equilibrium']:.6g}: "
             f"{data['small_oscillation_period']:.9g} s"
         )
-    lines.append(f"  energy drift |Δ(T + V − U_f)|/scale: {data['energy_drift']:.2e}")
+    invariant = str(data["invariant"]).replace(" - ", " − ").replace("Omega", "Ω")
+    lines.append(f"  energy drift |Δ({invariant})|/scale: {data['energy_drift']:.2e}")
     return "\n".join(lines)
 
 

@@ -22,7 +22,9 @@ them), stops at an ``until`` event (``theta(BAR) = …``, ``omega(BAR) = …``, 
 
 from __future__ import annotations
 
+import math
 import re
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -32,6 +34,7 @@ from dynsolve.simulate.chain import Chain, chain_of
 from dynsolve.simulate.equations import NotSimulable
 from dynsolve.simulate.integrator import METHODS, Run
 from dynsolve.simulate.loop import Loop
+from dynsolve.simulate.spin3d import Spin3D
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
 
@@ -58,7 +61,7 @@ class ChainHistory:
     file: str
     title: str
     system: str
-    chain: Chain | Loop
+    chain: Chain | Loop | Spin3D
     motion: Coordinates
     run: Run  # q and qd: one row per sample, one column per bar
     stopped_by: str
@@ -67,16 +70,22 @@ class ChainHistory:
     small_period: None = None
     equilibrium: None = None
 
+    @property
+    def invariant(self) -> str:
+        """What the drift is measured on: T + V, or T − Ω·H_O + V in a turning frame."""
+        return "T - Omega.H_O + V" if isinstance(self.chain, Spin3D) else "T + V"
+
     def columns(self) -> tuple[str, ...]:
         """The history's column names, with units."""
         length = "ft" if self.system == "FPS" else "m"
         energy = "ft*lb" if self.system == "FPS" else "J"
+        kinetic = "T - Omega.H_O" if isinstance(self.chain, Spin3D) else "T"
         names = ["t [s]"]
         names += [f"theta_{b} [rad]" for b in self.chain.bars]
         names += [f"omega_{b} [rad/s]" for b in self.chain.bars]
         for p in self.chain.joints:
             names += [f"x_{p} [{length}]", f"y_{p} [{length}]"]
-        return (*names, f"T [{energy}]", f"V [{energy}]", f"U_friction [{energy}]")
+        return (*names, f"{kinetic} [{energy}]", f"V [{energy}]", f"U_friction [{energy}]")
 
     def rows(self) -> list[tuple[float, ...]]:
         """One row per time sample, in the order of :meth:`columns`."""
@@ -98,10 +107,16 @@ def simulate_chain(
 ) -> ChainHistory:
     """Integrate the spec's chain of bars from its state (see the module's docstring)."""
     where = Position(spec.file, spec.scene[0].line if spec.scene else 1, 1)
+    from dynsolve.rigid3d.model import is_3d
     from dynsolve.simulate.loop import is_loop, loop_of
 
     try:
-        chain = loop_of(spec) if is_loop(spec) else chain_of(spec)
+        if is_3d(spec):
+            from dynsolve.simulate.spin3d import spin_of
+
+            chain = spin_of(spec)
+        else:
+            chain = loop_of(spec) if is_loop(spec) else chain_of(spec)
     except NotSimulable as exc:
         raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
     event = _until_event(until, chain, spec.system) if until else None
@@ -124,7 +139,7 @@ def simulate_chain(
 
 
 def integrate_chain(
-    chain: Chain | Loop,
+    chain: Chain | Loop | Spin3D,
     t_end: float,
     method: str = "DOP853",
     rtol: float = 1e-10,
@@ -140,15 +155,19 @@ def integrate_chain(
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
     n = chain.size
+    y0 = [0.0] * n + list(chain.qd0)
+    conditions = None
+    if event:
+        conditions = [_not_at_start(event[1], chain.right_hand_side(), y0, 1e-7 * t_end)]
     solution = solve_ivp(
         chain.right_hand_side(),
         (0.0, t_end),
-        [0.0] * n + list(chain.qd0),
+        y0,
         method=method,
         rtol=rtol,
         atol=atol,
         t_eval=np.linspace(0.0, t_end, samples) if samples else None,
-        events=[event[1]] if event else None,
+        events=conditions,
     )
     if solution.status == -1:
         raise ValueError(f"the integration failed: {solution.message}")
@@ -172,7 +191,7 @@ def integrate_chain(
     )  # fmt: skip
 
 
-def _until_event(text: str, chain: Chain | Loop, system: str) -> tuple[str, object, int]:
+def _until_event(text: str, chain: Chain | Loop | Spin3D, system: str) -> tuple[str, object, int]:
     """The terminal event of an ``--until`` text: (its name, solve_ivp's condition, the
     column of the bar whose θ and ω the event reports)."""
     from dynsolve.simulate.run import parse_quantity
@@ -209,3 +228,29 @@ def _until_event(text: str, chain: Chain | Loop, system: str) -> tuple[str, obje
 
     condition.terminal = True  # type: ignore[attr-defined]
     return text.strip(), condition, column
+
+
+def _not_at_start(
+    condition: Callable[[float, np.ndarray], float],
+    rates: Callable[[float, Sequence[float]], list[float]],
+    y0: list[float],
+    h: float,
+) -> Callable[[float, np.ndarray], float]:
+    """The event's condition, except that the start is never an event: a condition that
+    is 0 there takes the sign it has just after (a bar released from rest is not at an
+    extreme of its swing), as :func:`dynsolve.simulate.integrator.integrate` does."""
+    start = condition(0.0, np.asarray(y0))
+    if start == 0:
+        first = rates(0.0, y0)
+        second = rates(0.0, [a + h * b for a, b in zip(y0, first, strict=True)])
+        ahead = [
+            a + h * b + 0.5 * h * h * (c - b) / h for a, b, c in zip(y0, first, second, strict=True)
+        ]
+        after = condition(h, np.asarray(ahead))
+        start = math.copysign(1e-300, after) if after != 0 else 1e-300
+
+    def wrapped(t: float, y: np.ndarray) -> float:
+        return start if t == 0 else condition(t, y)
+
+    wrapped.terminal = True  # type: ignore[attr-defined]
+    return wrapped

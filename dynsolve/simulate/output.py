@@ -41,6 +41,7 @@ def summary(history: History | ChainHistory) -> dict[str, object]:
         "small_oscillation_period": history.small_period,
         "equilibrium": history.equilibrium,
         "energy_drift": run.drift,
+        "invariant": getattr(history, "invariant", "T + V - U_f"),
         "evaluations": run.evaluations,
     }
 
@@ -80,10 +81,11 @@ def history_plot(history: History | ChainHistory, suffix: str = ".png") -> bytes
     for name, t, q, _ in history.events:
         top.plot([t], [q], "o", color="C3" if name not in ("max", "min") else "C1")
     top.set_title(f"{history.title}: {history.motion.coordinate}")
-    for index, label in ((-3, "T"), (-2, "V"), (-1, "U_friction")):
+    for index in (-3, -2, -1):  # T (or T − Ω·H_O in a turning frame), V, U_friction
+        label = columns[index].rsplit(" [", 1)[0]
         bottom.plot(run.t, [row[index] for row in rows], label=label)
     bottom.set_xlabel("t [s]")
-    bottom.set_ylabel(columns[-3].replace("T ", "energy "))
+    bottom.set_ylabel(f"energy [{columns[-3].rsplit('[', 1)[1]}")
     bottom.legend()
     buffer = io.BytesIO()
     figure.tight_layout()
