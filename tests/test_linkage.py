@@ -586,7 +586,7 @@ def test_the_sheet_draws_the_linkage_at_the_instant():
     assert joints["O"][:2] == pytest.approx((0.0, 0.5)) and not joints["O"][2]
     assert solution.linkage.grounds == (pytest.approx((0.0, 0.0, 0.0, 1.0)),)
     tex = render_latex(solution, "handout")
-    assert "The linkage at the instant" in tex and "\\begin{picture}" in tex
+    assert "The linkage at the instant" in tex and "\\begin{tikzpicture}" in tex
 
 
 def test_the_other_assembly_is_reported_and_is_the_mirror_in_bd():

@@ -27,9 +27,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 
-from dynsolve.render.picture import Point, num, polar
 from dynsolve.results import ForceRow, FreeBody
 
+Point = tuple[float, float]
 ROUND_SHAPES = frozenset({"disk", "ring", "cylinder", "sphere", "shell", "hollow"})
 HUBBED = frozenset({"disk", "ring", "cylinder", "hollow"})  # wheels and drums: a hub
 BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart), any size
@@ -102,6 +102,22 @@ def footprint_of(body: FreeBody) -> Point | None:
         height = sizes[1] if len(sizes) > 1 and sizes[1] else first
         return (first / 2, height / 2)
     return None
+
+
+def num(value: float) -> str:
+    """A coordinate in millimetres, to 0.01 mm, without trailing zeros.
+
+    >>> num(17.5), num(-0.001), num(2.0)
+    ('17.5', '0', '2')
+    """
+    text = f"{value:.2f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def polar(centre: Point, radius: float, degrees: float) -> Point:
+    """The point at ``radius`` from ``centre`` in the direction ``degrees`` (ccw from +x)."""
+    angle = math.radians(degrees)
+    return (centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle))
 
 
 def unit_of(dx: float, dy: float) -> Point | None:

@@ -9,7 +9,7 @@ used and no font has to be generated. Plain text goes through :func:`escape_late
 fragments of the solution (``latex``, ``latex_name``, ``latex_value``, ``formula_latex``,
 ``value_latex``) go through :func:`safe_math`.
 
-The linkage figure (a scene of bars) is drawn with LaTeX's own ``picture`` environment
+The linkage figure (a scene of bars) is a TikZ picture too
 (:mod:`dynsolve.render.linkage_figure`).
 """
 
@@ -52,7 +52,7 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex}"""
 
-# Only documents with free-body diagrams load TikZ (Debian's texlive-pictures).
+# Only documents with a diagram load TikZ (Debian's texlive-pictures).
 DIAGRAM_PREAMBLE = r"\usepackage{tikz}\usetikzlibrary{arrows.meta}"
 
 # ---- escaping -------------------------------------------------------------------------
@@ -316,7 +316,7 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "checks": lambda: [_checks_section(solution.checks)],
     }
     body = [section for name in plan if name in parts for section in parts[name]()]
-    drawn = solution.free_body and "free_body" in plan
+    drawn = (solution.free_body or solution.linkage is not None) and "free_body" in plan
     preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
