@@ -1,8 +1,9 @@
 """Fuzz the parser and the solve path with many inputs under a time and a memory limit.
 
 Inputs come from tests/fuzz_grammar.py (grammar-built specs and mutated bundled
-problems), each reproducible from its index and the seed. They run in a worker
-subprocess whose address space is capped with RLIMIT_AS; the parent kills and
+problems), each reproducible from its index and the seed; a fraction go through
+``dynsolve solve``, half as many through ``dynsolve simulate`` (0.2 s of motion).
+They run in a worker subprocess whose address space is capped with RLIMIT_AS; the parent kills and
 restarts the worker when an input passes the wall-clock limit or the worker dies.
 Crashes (any exception other than DynsolveError, or a CLI exit code other than
 0/1/2), hangs and memory-limit hits are counted and their inputs written to
@@ -36,7 +37,10 @@ CRASHES = HERE / "fuzz-crashes"
 def make_input(seed: int, index: int, solve_fraction: float, seeds: list[str]) -> tuple[str, str]:
     """The (stage, text) of input ``index``: stage is "parse" or "solve"."""
     rng = random.Random(seed * 1_000_003 + index)
-    stage = "solve" if rng.random() < solve_fraction else "parse"
+    draw = rng.random()
+    stage = "solve" if draw < solve_fraction else "parse"
+    if solve_fraction <= draw < 1.5 * solve_fraction:  # half as many through simulate
+        stage = "simulate"
     built = rng.random() < 0.5
     return stage, grammar_spec(rng) if built else mutated_problem(rng, seeds)
 
@@ -50,6 +54,8 @@ def run_one(stage: str, text: str, folder: Path) -> dict[str, str]:
         if stage == "parse":
             parse_spec(text, "fuzz.dyn")
             return {"outcome": "ok"}
+        if stage == "simulate":
+            return _solve_cli(text, folder, ["simulate", "--t-end", "0.2 s", "--samples", "11"])
         return _solve_cli(text, folder)
     except DynsolveError:
         return {"outcome": "clean-error"}
@@ -59,14 +65,19 @@ def run_one(stage: str, text: str, folder: Path) -> dict[str, str]:
         return {"outcome": "crash", "detail": traceback.format_exc()}
 
 
-def _solve_cli(text: str, folder: Path) -> dict[str, str]:
+def _solve_cli(text: str, folder: Path, command: list[str] | None = None) -> dict[str, str]:
+    """``dynsolve solve`` (or ``command``, e.g. simulate) on the text, classified."""
     from typer.testing import CliRunner
 
     from dynsolve.cli import app
 
     path = folder / "fuzz.dyn"
     path.write_text(text, encoding="utf-8")
-    result = CliRunner().invoke(app, ["solve", str(path), "--time-budget", "2"])
+    if command is None:
+        arguments = ["solve", str(path), "--time-budget", "2"]
+    else:
+        arguments = [command[0], str(path), *command[1:]]
+    result = CliRunner().invoke(app, arguments)
     error = result.exception
     if isinstance(error, MemoryError):
         return {"outcome": "memory"}

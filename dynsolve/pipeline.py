@@ -465,6 +465,11 @@ class _View:
         )
         written = f"= {formula}"
         latex = self.latex(info.formula)
+        if value is not None and not (sympy.Integer(0) + info.formula).free_symbols:
+            # a number found numerically (a joint by loop closure): shown with its unit
+            converted = convert(value, unit, self.system)
+            written = f"= {format_quantity(converted, unit, 6)}"
+            latex = latex_number(converted, 6) + (f"\\,{latex_unit(unit)}" if unit else "")
         return GivenRow(
             info.name, written, base, info.note, value is None, latex_name(info.name), latex
         )

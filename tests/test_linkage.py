@@ -607,3 +607,11 @@ def test_the_other_assembly_is_reported_and_is_the_mirror_in_bd():
     mirror = (2 * (B[0] + along * ux) - xC, 2 * (B[1] + along * uy) - yC)
     (other,) = placed.others
     assert other["C"] == pytest.approx(mirror, rel=1e-9)
+
+
+def test_a_joint_placed_by_loop_closure_is_listed_with_its_unit():
+    # x_C = x_B + sqrt(L_BC² − y_B²) = 0.0375 + sqrt(0.04 − 0.06495²) = 0.226659 m (hand);
+    # it was listed as a bare number in the givens (sheet issue 12)
+    solution = solve_file(PROBLEMS / "slider_crank_forces.dyn")
+    row = next(g for g in solution.givens if g.name == "x_C")
+    assert row.written == "= 0.226659 m" and "\\qty" not in row.latex_value

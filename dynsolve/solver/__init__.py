@@ -244,7 +244,4 @@ def _structure_messages(structure: Structure, system: EquationSystem) -> list[st
         count = structure.missing_equations
         plural = "s" if count != 1 else ""
         messages.append(f"{names} need {count} more independent equation{plural}")
-    if structure.unneeded:
-        labels = ", ".join(system.equations[i].label for i in structure.unneeded)
-        messages.append(f"not needed for the wanted unknowns: {labels}")
-    return messages
+    return messages  # equations not needed: the "model only what is asked" check says so
