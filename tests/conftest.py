@@ -1,5 +1,7 @@
 """Fixtures shared by the test modules."""
 
+import contextlib
+import linecache
 import os
 import shutil
 import subprocess
@@ -35,3 +37,18 @@ def pdflatex() -> str:
 # examples are bounded by their strategies instead.
 settings.register_profile("dynsolve", deadline=None)
 settings.load_profile("dynsolve")
+
+
+# sympy's lambdify puts each generated function's source in linecache and removes it with
+# a weakref finalizer when the function is collected; a collection that runs inside
+# linecache.checkcache's loop (doctest calls it before every example) then deletes a key
+# the loop is about to read: a KeyError that fails an unrelated doctest now and then.
+_checkcache = linecache.checkcache
+
+
+def _tolerant_checkcache(filename: str | None = None) -> None:
+    with contextlib.suppress(KeyError):  # an entry collected while the cache was checked
+        _checkcache(filename)
+
+
+linecache.checkcache = _tolerant_checkcache

@@ -121,3 +121,16 @@ def test_a_huge_power_in_an_exponential_stays_within_memory(mode):
     solution = solve_text(text, options=SolveOptions(mode=mode))
     (row,) = solution.answers
     assert row.value == pytest.approx(-0.5 - math.exp(-1.5), rel=1e-9)
+
+
+def test_a_division_by_zero_in_an_equation_fails_a_check_instead_of_crashing(tmp_path):
+    # fuzz seed 11, input 292: 'a = atan2(-a + 1e30, sin(cos(0.5)))/0' reached the numeric
+    # search with sympy's zoo in it, and lambdify could not print zoo for mpmath (KeyError)
+    spec = tmp_path / "zoo.dyn"
+    spec.write_text(
+        "given:\n  b = 1 m\nequations:\n  a = atan2(-a + 1e30*b/b, sin(cos(0.5)))/0\nfind: a\n",
+        encoding="utf-8",
+    )
+    result = CliRunner().invoke(app, ["solve", str(spec)])
+    assert result.exit_code == 1, result.output  # a failed check, not a traceback
+    assert "division by zero" in result.output

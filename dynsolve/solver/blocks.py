@@ -532,10 +532,22 @@ def solve_numerically(
     candidates = tuple(Candidate(dict(zip(unknowns, r, strict=True))) for r in roots)
     if candidates:
         note = f"{reason}; solved numerically"
+    elif _infinite(residuals):
+        note = f"{reason}; an equation holds an infinite value (a division by zero?): no root"
     else:
         starts = len(_starting_points(residuals, unknowns))
         note = f"{reason}; numeric search from {starts} starting points found no root"
     return BlockSolution(tuple(unknowns), "numeric", candidates, note=note, exhaustive=False)
+
+
+def _infinite(residuals: Sequence[sympy.Expr]) -> bool:
+    """Whether a residual holds ∞, complex ∞ or nan (``x/0`` written in a spec).
+
+    >>> x = sympy.Symbol("x")
+    >>> _infinite([x / sympy.Integer(0)]), _infinite([x - 1])
+    (True, False)
+    """
+    return any(as_expr(r).has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo) for r in residuals)
 
 
 def numeric_roots(
@@ -549,6 +561,8 @@ def numeric_roots(
     [-2.0, 2.0]
     """
     unknowns = list(unknowns)
+    if _infinite(residuals):  # zoo cannot be evaluated (nor printed for mpmath)
+        return []
     function = mpmath_function(unknowns, list(residuals))
     size = mpmath_function(unknowns, [_term_size(r) for r in residuals])
     matrix = sympy.Matrix(residuals).jacobian(unknowns)
