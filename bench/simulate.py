@@ -225,9 +225,10 @@ def main() -> None:
 def _ours(spec: object) -> object:
     """dynsolve's equation of motion of the spec, built once; a function (method, rtol)
     that integrates it over T_END as ``dynsolve simulate`` does (every step kept)."""
-    from dynsolve.simulate.chain import chain_of, is_chain
+    from dynsolve.linkage.model import is_linkage
+    from dynsolve.simulate.chain import chain_of
 
-    if is_chain(spec):
+    if is_linkage(spec):
         from dynsolve.simulate.chain_run import integrate_chain
 
         chain = chain_of(spec)

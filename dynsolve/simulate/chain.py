@@ -44,7 +44,7 @@ import sympy
 
 from dynsolve.linkage.kinetics import mass_centre
 from dynsolve.linkage.model import Linkage, read_linkage
-from dynsolve.linkage.position import place
+from dynsolve.linkage.position import Placement, place
 from dynsolve.simulate.equations import NotSimulable
 from dynsolve.spec.ast import Spec
 
@@ -131,35 +131,31 @@ class Chain:
         return np.array([np.broadcast_to(v, shape) for v in self._places(*q)], dtype=float)
 
 
-def is_chain(spec: Spec) -> bool:
-    """Whether the spec's scene is a linkage (``bar`` lines): simulated as a chain of bars.
-
-    >>> from dynsolve.spec.parser import parse_spec
-    >>> is_chain(parse_spec("scene:\\n  bar AB: A to B\\n"))
-    True
-    """
-    from dynsolve.linkage.model import is_linkage
-
-    return is_linkage(spec)
-
-
 def chain_of(spec: Spec) -> Chain:
     """The spec's chain of bars and its equations of motion; NotSimulable says why not."""
     linkage = read_linkage(spec)
-    _check_simulable(linkage)
-    placement = place(linkage)
+    return chain_from(linkage, place(linkage))
+
+
+def chain_from(linkage: Linkage, placement: Placement) -> Chain:
+    """The equations of motion of a linkage already placed (an open chain)."""
+    check_drives(linkage, "each bar's")
+    if linkage.sliders or linkage.wheels or linkage.meshes:
+        raise NotSimulable(
+            "simulate integrates open chains of pinned bars; sliders, rolling wheels and "
+            "gears in mesh are solved at an instant only"
+        )
+    for bar in linkage.bars.values():
+        if len(bar.points) < 2:
+            raise NotSimulable(f"bar {bar.name} has one point: simulate takes bars between joints")
     if placement.closure:
         raise NotSimulable(
             f"joints {', '.join(p for p, h in placement.how.items() if h == 'loop closure')} "
             "close a loop: the linkage is not an open chain"
         )
-    values = dict(linkage.values)
 
     def number(expr: object, what: str) -> sympy.Expr:
-        value = sympy.sympify(expr).xreplace(values)
-        if value.free_symbols:
-            names = ", ".join(sorted(str(s) for s in value.free_symbols))
-            raise NotSimulable(f"{what} needs a value for {names}: give it a number")
+        value = number_of(linkage, expr, what)
         return sympy.Float(sympy.N(value, 17), 17) if not value.is_Integer else value
 
     r0 = {p: (number(x, f"joint {p}"), number(y, f"joint {p}")) for p, (x, y) in
@@ -251,23 +247,32 @@ def _vector(place: _Place, q: Sequence[sympy.Symbol]) -> tuple[sympy.Expr, sympy
     return x, y
 
 
-def _check_simulable(linkage: Linkage) -> None:
-    """Refuse what an open chain of pinned bars cannot be: sliders, wheels, gears, given
-    accelerations, loads to be found."""
-    if linkage.sliders or linkage.wheels or linkage.meshes:
-        raise NotSimulable(
-            "simulate integrates open chains of pinned bars; sliders, rolling wheels and "
-            "gears in mesh are solved at an instant only"
-        )
+def check_drives(linkage: Linkage, whose: str) -> None:
+    """Only start rates may be given: a given α (or a joint's motion) is what a
+    simulation finds."""
     for drive in linkage.drives:
         if drive.kind != "omega":
             raise NotSimulable(
                 f"'{drive.kind} {drive.name}' is given, but a simulation finds the motion: "
-                "give only each bar's start rate with 'omega BAR: …'"
+                f"give only {whose} start rate with 'omega BAR: …'"
             )
-    for bar in linkage.bars.values():
-        if len(bar.points) < 2:
-            raise NotSimulable(f"bar {bar.name} has one point: simulate takes bars between joints")
+
+
+def number_of(linkage: Linkage, expr: object, what: str) -> sympy.Expr:
+    """``expr`` (a model expression, never spec text) with the givens' values put in; it
+    must be a number.
+
+    >>> from dynsolve.linkage.model import Linkage
+    >>> L = sympy.Symbol("L")
+    >>> empty = Linkage("p.dyn", {}, {}, {}, {}, {}, (), values={L: 2})
+    >>> number_of(empty, 3 * L, "a length")
+    6
+    """
+    value = (sympy.Integer(0) + expr).xreplace(dict(linkage.values))
+    if value.free_symbols:
+        names = ", ".join(sorted(str(s) for s in value.free_symbols))
+        raise NotSimulable(f"{what} needs a value for {names}: give it a number")
+    return value
 
 
 def _hanging_order(linkage: Linkage) -> list[tuple[str, str]]:

@@ -22,7 +22,6 @@ them), stops at an ``until`` event (``theta(BAR) = …``, ``omega(BAR) = …``, 
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -30,10 +29,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from dynsolve.errors import Position, SpecError
-from dynsolve.simulate.chain import Chain, chain_of
+from dynsolve.linkage.model import read_linkage
+from dynsolve.linkage.position import place
+from dynsolve.simulate.chain import Chain, chain_from
 from dynsolve.simulate.equations import NotSimulable
-from dynsolve.simulate.integrator import METHODS, Run
-from dynsolve.simulate.loop import Loop
+from dynsolve.simulate.integrator import METHODS, Run, value_at_start
+from dynsolve.simulate.loop import Loop, loop_from
 from dynsolve.simulate.spin3d import Spin3D
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
@@ -108,15 +109,17 @@ def simulate_chain(
     """Integrate the spec's chain of bars from its state (see the module's docstring)."""
     where = Position(spec.file, spec.scene[0].line if spec.scene else 1, 1)
     from dynsolve.rigid3d.model import is_3d
-    from dynsolve.simulate.loop import is_loop, loop_of
 
     try:
         if is_3d(spec):
             from dynsolve.simulate.spin3d import spin_of
 
             chain = spin_of(spec)
-        else:
-            chain = loop_of(spec) if is_loop(spec) else chain_of(spec)
+        else:  # read and placed once: loop closure decides which model it is
+            linkage = read_linkage(spec)
+            placement = place(linkage)
+            build = loop_from if placement.closure else chain_from
+            chain = build(linkage, placement)
     except NotSimulable as exc:
         raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
     event = _until_event(until, chain, spec.system) if until else None
@@ -236,18 +239,18 @@ def _not_at_start(
     y0: list[float],
     h: float,
 ) -> Callable[[float, np.ndarray], float]:
-    """The event's condition, except that the start is never an event: a condition that
-    is 0 there takes the sign it has just after (a bar released from rest is not at an
-    extreme of its swing), as :func:`dynsolve.simulate.integrator.integrate` does."""
-    start = condition(0.0, np.asarray(y0))
-    if start == 0:
-        first = rates(0.0, y0)
-        second = rates(0.0, [a + h * b for a, b in zip(y0, first, strict=True)])
-        ahead = [
-            a + h * b + 0.5 * h * h * (c - b) / h for a, b, c in zip(y0, first, second, strict=True)
-        ]
-        after = condition(h, np.asarray(ahead))
-        start = math.copysign(1e-300, after) if after != 0 else 1e-300
+    """The event's condition, except that the start is never an event (see
+    :func:`dynsolve.simulate.integrator.value_at_start`); "just after" is the state a
+    second-order step h ahead: q + h q' + ½ h² q'', q' + h q''."""
+    n = len(y0) // 2
+
+    def after() -> float:
+        q, qd, qdd = y0[:n], y0[n:], rates(0.0, y0)[n:]
+        ahead = [a + h * b + 0.5 * h * h * c for a, b, c in zip(q, qd, qdd, strict=True)]
+        ahead += [b + h * c for b, c in zip(qd, qdd, strict=True)]
+        return condition(h, np.asarray(ahead))
+
+    start = value_at_start(condition(0.0, np.asarray(y0)), after)
 
     def wrapped(t: float, y: np.ndarray) -> float:
         return start if t == 0 else condition(t, y)

@@ -55,6 +55,20 @@ class Run:
     last: tuple[float, float, float, float] | None = None  # (t, q, q', U_f) at a terminal event
 
 
+def value_at_start(start: float, after: Callable[[], float]) -> float:
+    """An event condition's value at the start, never 0: the start is never an event, so a
+    condition that is 0 there takes the sign it has just after (``after()``), e.g. a
+    pendulum released from rest is not at a maximum of its swing.
+
+    >>> value_at_start(0.0, lambda: -2.0) < 0, value_at_start(3.0, lambda: -2.0)
+    (True, 3.0)
+    """
+    if start != 0:
+        return start
+    later = after()
+    return math.copysign(1e-300, later) if later != 0 else 1e-300
+
+
 def integrate(
     motion: OneDof,
     q0: float,
@@ -89,10 +103,7 @@ def integrate(
     ahead = (q0 + h * qd0 + 0.5 * h * h * a0, qd0 + h * a0)
     wrapped = []
     for event in events:
-        start = event.function(q0, qd0)
-        if start == 0:
-            after = event.function(*ahead)
-            start = math.copysign(1e-300, after) if after != 0 else 1e-300
+        start = value_at_start(event.function(q0, qd0), lambda f=event.function: f(*ahead))
 
         def condition(
             t: float, y: np.ndarray, f: Callable = event.function, at_start: float = start

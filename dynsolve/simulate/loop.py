@@ -47,7 +47,8 @@ import sympy
 
 from dynsolve.linkage.kinetics import mass_centre
 from dynsolve.linkage.model import Linkage, read_linkage
-from dynsolve.linkage.position import place
+from dynsolve.linkage.position import Placement, place
+from dynsolve.simulate.chain import check_drives, number_of
 from dynsolve.simulate.equations import NotSimulable
 from dynsolve.spec.ast import Spec
 
@@ -240,34 +241,23 @@ class Loop:
 
     def positions(self, q: np.ndarray) -> np.ndarray:
         """x, y of each moving joint at each column of ``q`` (shape 1 × samples)."""
-        return np.array([self.joints_at([v]) for v in q[0]]).T.reshape(2 * len(self.joints), -1)
-
-
-def is_loop(spec: Spec) -> bool:
-    """Whether the spec's linkage is placed by loop closure (it has a closed loop)."""
-    return bool(place(read_linkage(spec)).closure)
+        return np.array([self.joints_at([v]) for v in q[0]]).T
 
 
 def loop_of(spec: Spec) -> Loop:
     """The spec's one-degree-of-freedom linkage with loops; NotSimulable says why not."""
     linkage = read_linkage(spec)
+    return loop_from(linkage, place(linkage))
+
+
+def loop_from(linkage: Linkage, placement: Placement) -> Loop:
+    """A linkage already placed by loop closure, ready to integrate in its input bar's turn."""
     if linkage.wheels or linkage.meshes:
         raise NotSimulable("rolling wheels and gears in mesh are solved at an instant only")
-    for drive in linkage.drives:
-        if drive.kind != "omega":
-            raise NotSimulable(
-                f"'{drive.kind} {drive.name}' is given, but a simulation finds the motion: "
-                "give only the input bar's start rate with 'omega BAR: …'"
-            )
-    placement = place(linkage)
-    values = dict(linkage.values)
+    check_drives(linkage, "the input bar's")
 
     def number(expr: object, what: str) -> float:
-        value = sympy.sympify(expr).xreplace(values)
-        if value.free_symbols:
-            names = ", ".join(sorted(str(s) for s in value.free_symbols))
-            raise NotSimulable(f"{what} needs a value for {names}: give it a number")
-        return float(value)
+        return float(number_of(linkage, expr, what))
 
     start = {
         p: np.array([number(c, f"joint {p}") for c in xy]) for p, xy in placement.positions.items()

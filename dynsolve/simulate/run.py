@@ -220,10 +220,10 @@ def simulate_spec(
         raise SpecError("the end time must be positive", Position("--t-end", 1, 1), "e.g. 10s")
     if not 2 <= samples <= MAX_SAMPLES:
         raise SpecError(f"samples must be 2 … {MAX_SAMPLES}", Position("--samples", 1, 1), "")
+    from dynsolve.linkage.model import is_linkage
     from dynsolve.rigid3d.model import is_3d
-    from dynsolve.simulate.chain import is_chain
 
-    if is_chain(spec) or is_3d(spec):
+    if is_linkage(spec) or is_3d(spec):
         from dynsolve.simulate.chain_run import simulate_chain
 
         return simulate_chain(spec, until, t_end, method, rtol, atol, samples)

@@ -113,7 +113,7 @@ def spin_of(spec: Spec) -> Spin3D:
             "the relative angular acceleration is what a simulation finds: write it as a name "
             "that is not a given ('alpha theta_ddot')"
         )
-    if sympy.sympify(scene.spin.alpha) != 0:
+    if sympy.Integer(0) + scene.spin.alpha != 0:
         raise NotSimulable("the frame must turn at a constant rate (its alpha 0) to be simulated")
     values = dict(problem.system.knowns)
     theta = _coordinate(scene, own.axis, own.through, values)
@@ -161,7 +161,7 @@ def _coordinate(
     each body axis e turns as de/dθ = s × e, tested at the givens' values and a second angle."""
     body = scene.body  # type: ignore[attr-defined]
     candidates = sorted(
-        {s for c in body.G for s in sympy.sympify(c).free_symbols if s in values}, key=str
+        {s for c in body.G for s in (sympy.Integer(0) + c).free_symbols if s in values}, key=str
     )
     for theta in candidates:
         if _turns(body, axis, through, theta, values):
@@ -185,8 +185,8 @@ def _turns(
         at = {**values, theta: values[theta] + shift}
         for vector, expected in pairs:
             for i in range(3):
-                d = float(sympy.diff(sympy.sympify(vector[i]), theta).xreplace(at))
-                e = float(sympy.sympify(expected[i]).xreplace(at))
+                d = float(sympy.diff(sympy.Integer(0) + vector[i], theta).xreplace(at))
+                e = float((sympy.Integer(0) + expected[i]).xreplace(at))
                 if not math.isclose(d, e, rel_tol=1e-9, abs_tol=1e-12):
                     return False
     return True
