@@ -49,7 +49,10 @@ class Stage:
         how = {
             "to": "to its position",
             "turns": "turns",
-            "for": "moves for an interval",
+            "for": "moves for "
+            + sympy.sstr(event.duration)
+            + (", until it rolls" if event.until == "rolls" else "")
+            + (", until it stops" if event.stops else ""),
             "until": f"moves until {event.until_name or 'contact'} {event.until}",
         }
         if event.kind == "by":
@@ -83,6 +86,25 @@ class StageRecord:
     start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
     approach: sympy.Expr | None = None  # an impact's (v_A − v_B)·n just before it
     scene: Scene | None = None  # a travel's moving part, from its start state (simulation)
+    slides: tuple[Slide, ...] = ()  # an interval's sliding contacts
+    normals: tuple[tuple[str, sympy.Expr], ...] = ()  # an interval's average normal forces
+    # an interval's end event: (what, its time, detail with {value})
+    events: tuple[tuple[str, sympy.Expr, str], ...] = ()
+    # an interval's T_k, each force's work and T_{k+1}, for the work–energy check
+    energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr] | None = None
+
+
+@dataclass(frozen=True)
+class Slide:
+    """A contact that slides through an interval: kinetic friction with ``sense`` (±1 along
+    the tangent) opposes the slip of the body's contact point, ``start`` at the interval's
+    start and ``end`` at its end (checked: the slip keeps its sign in between)."""
+
+    support: str
+    sense: int
+    start: sympy.Expr
+    end: sympy.Expr
+    guessed: bool = False  # the sense was not known before solving (assumed, then checked)
 
 
 def stages_of(events: tuple[Travel | Impact | Pivot, ...]) -> tuple[Stage, ...]:

@@ -93,7 +93,7 @@ def build_scene_problem(
         if staged:
             from dynsolve.principles.stage_chain import chain_formulation
 
-            formulation = chain_formulation(scene, symbols, given_values)
+            formulation = chain_formulation(scene, symbols, given_values, slipping)
             if _single_travel(scene, rigid):  # the state-1 reactions are asked too
                 formulation = _with_instant(formulation, formulate(scene, symbols, slipping))
         elif scene.impacts:
@@ -467,7 +467,29 @@ def cross_checks(
                 f"{how}: {other:.7g} (work–energy: {found:.7g}; relative difference {gap:.1e})",
             )
         )
-    return tuple(checks) + _moment_checks(problem, substitution)
+    return (
+        tuple(checks)
+        + _interval_checks(problem, substitution)
+        + _moment_checks(problem, substitution)
+    )
+
+
+def _interval_checks(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Work and energy over each interval that impulse and momentum solved."""
+    from dynsolve.principles.impulse_momentum import energy_check
+
+    formulation = problem.formulation
+    intervals = [("", formulation.interval_energy, 1)] + [
+        (f"stage {r.stage.number}", r.energy, r.stage.number) for r in formulation.stages
+    ]
+    checks = (
+        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state)
+        for what, energy, state in intervals
+        if energy is not None
+    )
+    return tuple(c for c in checks if c is not None)
 
 
 def _moment_checks(
@@ -1052,9 +1074,10 @@ def assess(
     slips: dict[str, int] = {}
     scene, formulation = problem.scene, problem.formulation
     if formulation.stages:
-        from dynsolve.principles.stage_chain import chain_assumptions
+        from dynsolve.principles.stage_chain import chain_assumptions, chain_slips
 
         chained = chain_assumptions(scene, formulation, substitution)
+        slips |= chain_slips(formulation, substitution)
         if not formulation.kinematics:
             return chained, slips
         checks += chained  # a single travel: its state 1 is checked as an instant too

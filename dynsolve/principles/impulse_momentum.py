@@ -27,9 +27,10 @@ from dataclasses import replace as replaced
 
 import sympy
 
-from dynsolve.model.scene import Scene, Vec
-from dynsolve.numbers import tidy
+from dynsolve.model.scene import Body, Scene, Vec
+from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, formulate, touches_at_rim
+from dynsolve.results import Check
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
@@ -76,8 +77,12 @@ def constant_forces(scene: Scene) -> str:
     return ""
 
 
-def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formulation:
-    """The impulse–momentum equations over the scene's ``travel … for Δt`` interval."""
+def impulse_formulation(
+    scene: Scene, symbols: Mapping[str, sympy.Expr], slipping: Mapping[str, int] | None = None
+) -> Formulation:
+    """The impulse–momentum equations over the scene's ``travel … for Δt`` interval.
+    ``slipping`` gives the sense of the kinetic friction at contacts that slide through it
+    (±1 along the tangent); the body's velocity at the end is in ``after``."""
     why = constant_forces(scene)
     if why:
         raise ValueError(
@@ -87,7 +92,7 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
     (travel,) = scene.travels.values()
     dt = travel.duration
     assert dt is not None
-    slipping: dict[str, int] = {}
+    slipping = dict(slipping or {})
     rolls = None
     if travel.until == "rolls":
         from dynsolve.principles.until import friction_sense, sliding_contact
@@ -96,24 +101,33 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
             scene = replaced(scene, omegas={**scene.omegas, travel.body: sympy.Integer(0)})
 
         rolls = sliding_contact(scene, travel)
-        slipping[rolls.name] = friction_sense(scene, travel, rolls)
+        if rolls.name not in slipping:
+            slipping[rolls.name] = friction_sense(scene, travel, rolls)
     motion = formulate(scene, symbols, slipping)
     replace: dict[sympy.Symbol, sympy.Expr] = {}
     unknowns: dict[sympy.Symbol, Dim] = {
         s: d for s, d in motion.unknowns.items() if not _is_acceleration(s, motion)
     }
+    kept = _zero_accelerations(motion)  # a contact kept: that velocity component stays
+    replace.update({symbol: sympy.Integer(0) for symbol in kept})
     speeds: dict[str, sympy.Expr] = {}
     spins: dict[str, sympy.Expr] = {}
     several = len(scene.bodies) > 1
     ends: dict[str, tuple[Vec, sympy.Expr]] = {}
     moved: dict[str, Vec] = {}
+    works: dict[str, sympy.Expr] = {}  # each force's work over the interval (a second method)
+    T_1, T_2 = sympy.Integer(0), sympy.Integer(0)
     for name, kin in motion.kinematics.items():
         v1 = scene.velocities.get(name, ZERO)
         tag = f"_{name}" if several else ""
         end: list[sympy.Expr] = []
         for i, axis in enumerate("xy"):
             symbol = kin.a_G[i]
-            if isinstance(symbol, sympy.Symbol) and symbol in motion.unknowns:
+            if (
+                isinstance(symbol, sympy.Symbol)
+                and symbol in motion.unknowns
+                and symbol not in kept
+            ):
                 v2 = (
                     sympy.Integer(0) if travel.stops else sympy.Symbol(f"v_2{axis}{tag}", real=True)
                 )
@@ -136,6 +150,12 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         ends[name] = (v_G[0], v_G[1]), spin
         # constant accelerations: Δr_G = (v_G1 + v_G2) Δt / 2
         moved[name] = (tidy((v1[0] + v_G[0]) * dt / 2), tidy((v1[1] + v_G[1]) * dt / 2))
+        body = scene.bodies[name]
+        on_body = _works(motion, body, (v1, kin.omega), ((v_G[0], v_G[1]), spin), dt, replace)
+        for force, work in on_body.items():  # a cord's pull on two bodies: the net work
+            works[force] = tidy(works.get(force, 0) + work)
+        T_1 += body.mass * (v1[0] ** 2 + v1[1] ** 2) / 2 + body.I_G * kin.omega**2 / 2
+        T_2 += body.mass * (v_G[0] ** 2 + v_G[1] ** 2) / 2 + body.I_G * spin**2 / 2
     equations = tuple(
         Equation(
             tidy((e.lhs * dt).xreplace(replace)),
@@ -145,6 +165,7 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
             _note(e, dt),
         )
         for e in motion.equations
+        if e not in kept.values()
     )
     notes = [
         (
@@ -153,6 +174,16 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
             "its average over the interval, its impulse that times Δt",
         )
     ]
+    if kept:
+        notes.append(
+            (
+                "contact kept",
+                "; ".join(
+                    f"{e.note}, so (v_G)_{_axis(symbol, motion)} is the same at both ends"
+                    for symbol, e in kept.items()
+                ),
+            )
+        )
     events: tuple[tuple[str, sympy.Expr, str], ...] = ()
     if rolls is not None:
         from dynsolve.principles.until import contact_slip
@@ -174,7 +205,7 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         notes.append(
             (
                 f"slides until it rolls at {rolls.name}",
-                f"kinetic friction F = μk N opposes the slip of {rolls.name} at state 1 "
+                f"kinetic friction F = μk N opposes the slip of {rolls.name} at the start "
                 f"for the whole interval (the slip falls linearly to zero at Δt = "
                 f"{sympy.sstr(dt)}); afterwards {travel.body} rolls",
             )
@@ -199,6 +230,93 @@ def impulse_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Form
         notes=tuple(notes),
         displacements=moved,
         events=events,
+        after={name: v_G for name, (v_G, _) in ends.items()},
+        interval_energy=(tidy(T_1), works, tidy(T_2)),
+    )
+
+
+def _works(
+    motion: Formulation,
+    body: Body,
+    start: tuple[Vec, sympy.Expr],
+    end: tuple[Vec, sympy.Expr],
+    dt: sympy.Expr,
+    replace: Mapping[sympy.Symbol, sympy.Expr],
+) -> dict[str, sympy.Expr]:
+    """The work of each force and couple on ``body`` over the interval.
+
+    The forces are constant and each acts at a point fixed relative to G (G itself, a
+    point of a translating body, or a round body's contact below G), whose velocity
+    v_P = v_G + ω k × r_P/G changes linearly in time: U = F·(v_P1 + v_P2) Δt/2, and a
+    couple's U = M (ω₁ + ω₂) Δt/2. Not used to solve: T₁ + ΣU = T₂ is checked with them.
+    """
+    (v1, w1), (v2, w2) = start, end
+    works = {}
+    for force in motion.forces.get(body.name, ()):
+        r = (force.point[0] - body.G[0], force.point[1] - body.G[1])
+        v_P1 = (v1[0] - w1 * r[1], v1[1] + w1 * r[0])
+        v_P2 = (v2[0] - w2 * r[1], v2[1] + w2 * r[0])
+        F = tuple((sympy.Integer(0) + c).xreplace(replace) for c in force.vector)
+        power = F[0] * (v_P1[0] + v_P2[0]) + F[1] * (v_P1[1] + v_P2[1])
+        works[force.name] = tidy(power * dt / 2)
+    for couple in motion.couples.get(body.name, ()):
+        works[couple.name] = tidy((sympy.Integer(0) + couple.moment) * (w1 + w2) * dt / 2)
+    return works
+
+
+def energy_check(
+    what: str,
+    energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    agreement: float,
+    state: int = 1,
+) -> Check | None:
+    """T_k + ΣU = T_{k+1} over an interval solved by impulse and momentum (from
+    ``state`` k), with the work of each force from the motion found (None where symbols
+    remain).
+
+    >>> import sympy
+    >>> m = sympy.Symbol("m")
+    >>> energy_check("stage 2", (m * 8, {"F_C": -m * 8}, 0), {m: 2}, 1e-6).passed
+    True
+    """
+    T_1, works, T_2 = energy
+    numbers = [real_value(e, values) for e in (T_1, *works.values(), T_2)]
+    if any(n is None for n in numbers):
+        return None
+    t_1, *u, t_2 = numbers
+    scale = max(abs(n) for n in numbers) or 1.0  # type: ignore[arg-type]
+    gap = abs(t_1 + sum(u) - t_2) / scale  # type: ignore[operator]
+    terms = ", ".join(f"U_{n} = {v:.6g}" for n, v in zip(works, u, strict=True))
+    return Check(
+        f"second method: work and energy ({what})" if what else "second method: work and energy",
+        gap <= agreement,
+        f"T{state} + ΣU = {t_1:.7g} + ({terms}) = {t_1 + sum(u):.7g}; "
+        f"T{state + 1} = {t_2:.7g}; "
+        f"relative difference {gap:.1e}",
+    )
+
+
+def _zero_accelerations(motion: Formulation) -> dict[sympy.Symbol, Equation]:
+    """The accelerations that a constraint sets to zero on its own (a contact kept: the
+    centre keeps its height), with that equation: over the interval the velocity component
+    does not change, so it is no unknown and the equation is not repeated."""
+    zero = {}
+    for equation in motion.equations:
+        residual = tidy(equation.lhs - equation.rhs)
+        if len(residual.free_symbols) != 1:
+            continue
+        (symbol,) = residual.free_symbols
+        linear = sympy.Poly(residual, symbol).degree() == 1 and residual.subs(symbol, 0) == 0
+        if linear and _is_acceleration(symbol, motion):
+            zero[symbol] = equation
+    return zero
+
+
+def _axis(symbol: sympy.Symbol, motion: Formulation) -> str:
+    """The axis ("x" or "y") of the acceleration component ``symbol``."""
+    return next(
+        "xy"[i] for kin in motion.kinematics.values() for i in range(2) if kin.a_G[i] == symbol
     )
 
 

@@ -122,6 +122,8 @@ class Formulation:
     constraints: tuple[Constraint, ...] = ()  # root branches the formulation chose
     # work and energy term by term: ("T1", T1), ("U_W = W·Δr_G (disk)", U), …, ("T2", T2)
     energy_terms: tuple[tuple[str, sympy.Expr], ...] = ()
+    # over an interval solved by impulse and momentum: (T1, each force's work, T2), checked
+    interval_energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr] | None = None
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

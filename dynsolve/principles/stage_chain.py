@@ -29,8 +29,8 @@ from dataclasses import dataclass, replace
 import sympy
 
 from dynsolve.model.scene import Impact, Link, Pivot, Scene, Support, Travel, Vec
-from dynsolve.model.stages import Stage, StageRecord, State, stages_of
-from dynsolve.numbers import tidy
+from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
+from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
 from dynsolve.results import Assumption
 from dynsolve.system import Equation
@@ -61,22 +61,26 @@ class _Step:
     scene: Scene  # the scene's geometry and supports at the end of the stage
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     relations: tuple[str, ...] = ()
+    relations_are: str = "kinematics"  # what the relations are, for their note's name
 
 
 def chain_formulation(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
     given_values: Mapping[sympy.Symbol, sympy.Expr],
+    senses: Mapping[str, int] | None = None,
 ) -> Formulation:
     """The equations of every stage of ``scene``, each starting where the last one ended.
     A load whose size is not given is an unknown of the travels that it works in (the
-    average resistance that stops a pile)."""
+    average resistance that stops a pile). ``senses`` holds the friction senses that an
+    earlier solve found for contacts sliding through an interval (``"C@3"``: at C in
+    stage 3), where the first guess was contradicted."""
     loads = {
         load.name: sympy.Symbol(load.name, positive=True)
         for load in scene.loads
         if load.name not in symbols
     }
-    chain = _Chain(scene, {**symbols, **loads}, given_values)
+    chain = _Chain(scene, {**symbols, **loads}, given_values, senses or {})
     states = [State(1, dict(chain.velocities), dict(chain.omegas))]
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}
@@ -92,11 +96,14 @@ def chain_formulation(
             equations.append(Equation(equation.lhs, equation.rhs, f"eq. {number}", number, note))
         unknowns.update(step.unknowns)
         chain.advance(step)
+        chain.presolve(step)
         states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         second += step.second
         if step.relations:
-            notes.append((f"kinematics in stage {stage.number}", "; ".join(step.relations)))
+            notes.append(
+                (f"{step.relations_are} in stage {stage.number}", "; ".join(step.relations))
+            )
     used = set().union(*(e.lhs.free_symbols | e.rhs.free_symbols for e in equations))
     for load in scene.loads:
         if loads.get(load.name) in used:
@@ -121,6 +128,7 @@ def chain_formulation(
         second=tuple(second),
         states=tuple(states),
         stages=tuple(records),
+        displacements=dict(chain.displacements),
     )
 
 
@@ -154,15 +162,19 @@ class _Chain:
         scene: Scene,
         symbols: Mapping[str, sympy.Expr],
         values: Mapping[sympy.Symbol, sympy.Expr],
+        senses: Mapping[str, int],
     ) -> None:
         self.scene = replace(scene, travels={}, impacts=(), pivots=(), events=())
-        self.symbols, self.values = symbols, values
+        self.symbols, self.values, self.senses = symbols, values, senses
+        self.known: dict[sympy.Symbol, sympy.Expr] = dict(values)  # givens, then each stage's
+        self.reaction_names: set[str] = set()  # average reactions named by earlier intervals
         self.velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
         self.omegas = {n: sympy.Integer(0) + scene.omegas.get(n, 0) for n in scene.bodies}
         self.unfollowed: set[str] = set()  # bodies whose geometry is no longer followed
         self.together: dict[str, frozenset[str]] = {n: frozenset((n,)) for n in scene.bodies}
         self.joined_notes: list[tuple[int, str]] = []
         self.places: dict[str, Vec] = {}  # G of a particle on a link, after a travel
+        self.displacements: dict[str, Vec] = {}  # Δr_G over each body's last interval
 
     def stage(self, stage: Stage) -> _Step:
         event = stage.event
@@ -189,11 +201,7 @@ class _Chain:
                 "yet; describe it as a scene of its own",
             )
         if event.kind == "for":
-            raise StageError(
-                stage,
-                f"{stage.title}: an interval ('travel … for') cannot be chained with other "
-                "stages yet; describe it as a scene of its own",
-            )
+            return self.interval(stage, event)
         return self.travel(stage, event)
 
     def advance(self, step: _Step) -> None:
@@ -201,6 +209,174 @@ class _Chain:
         self.velocities.update(step.velocities)
         self.omegas.update(step.omegas)
         self.scene = step.scene
+
+    def presolve(self, step: _Step) -> None:
+        """Solve one stage's equations for its own unknowns, from what the stages before
+        found: the motion at the start of the next stage, for the sense of a slide (a
+        guess when the stage has several roots or none; the full solve decides)."""
+        if not step.unknowns:
+            return
+        equations = [e.residual.xreplace(self.known) for e in step.equations]
+        if any(e.free_symbols - set(step.unknowns) for e in equations):
+            return  # it depends on a later stage (an unknown extent) or on loads
+        try:
+            roots = sympy.solve(equations, list(step.unknowns), dict=True)
+        except (NotImplementedError, ValueError):  # pragma: no cover - sympy's own limits
+            return
+        if len(roots) == 1 and set(roots[0]) == set(step.unknowns):
+            self.known.update({s: tidy(v) for s, v in roots[0].items()})
+
+    def interval(self, stage: Stage, travel: Travel) -> _Step:
+        """Impulse and momentum over an interval of constant forces (``for Δt``, with
+        ``stops`` or ``until rolls``), from the motion the last stage left. A rough contact
+        slides through it: its kinetic friction opposes the slip at the start, whose sign
+        is known from the stages before (or guessed, then checked and re-solved)."""
+        from dynsolve.principles.impulse_momentum import impulse_formulation
+        from dynsolve.principles.until import contact_slip
+
+        scene, body = self.scene, travel.body
+        riders = self.together[body] - {body}
+        part = {body} | riders
+        for name in scene.bodies:
+            v, w = self.velocities[name], self.omegas[name]
+            if name not in part and not _still(
+                tuple(c.xreplace(self.known) for c in v),  # type: ignore[arg-type]
+                (sympy.Integer(0) + w).xreplace(self.known),
+            ):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {name} is still moving (as the stages before leave it) "
+                    "but takes no part in the interval; an interval in a chain follows one "
+                    "body while the others are at rest",
+                )
+        joined = _joined(scene, body) - part
+        if joined:
+            raise StageError(
+                stage,
+                f"{stage.title}: {body} is joined to {', '.join(sorted(joined))}; an interval "
+                "in a chain follows one body (and what a plastic impact stuck to it)",
+            )
+        model = scene.bodies[body]
+        if riders:
+            mass = model.mass + sum(scene.bodies[n].mass for n in riders)
+            model = replace(model, mass=tidy(mass))
+        v_1, omega_1 = self.velocities[body], self.omegas[body]
+        supports = tuple(s for s in scene.supports if s.body == body)
+        slides, senses = [], {}
+        for support in supports:
+            if support.kind not in ("contact", "base") or support.smooth:
+                continue
+            slip = contact_slip(model, support, v_1, omega_1)
+            sense, guessed = self.friction_sense(stage, support, slip)
+            senses[support.name] = sense
+            slides.append((support, sense, slip, guessed))
+        sub = replace(
+            scene,
+            bodies={body: model},
+            supports=supports,
+            loads=tuple(load for load in scene.loads if load.body in part),
+            links=(),
+            springs=(),
+            cords=(),
+            velocities={body: v_1},
+            omegas={body: omega_1},
+            travels={body: travel},
+        )
+        try:
+            found = impulse_formulation(sub, self.symbols, senses)
+        except ValueError as exc:
+            raise StageError(stage, f"{stage.title}: {exc}") from None
+        k = stage.number
+        names: dict[sympy.Symbol, sympy.Symbol] = {}
+        for symbol in found.unknowns:
+            if symbol.name.startswith(("v_2", "omega_2")):
+                prefix, _, axis = symbol.name.partition("_2")
+                names[symbol] = sympy.Symbol(
+                    f"{prefix}_{k + 1}{axis}_{body}", **symbol.assumptions0
+                )
+        for reaction, (symbol, _) in found.reactions.items():
+            if reaction in self.reaction_names:  # a second interval on the same contact
+                names[symbol] = sympy.Symbol(f"{symbol.name}_{k}", **symbol.assumptions0)
+            self.reaction_names.add(reaction)
+        equations = tuple(
+            replace(e, lhs=e.lhs.xreplace(names), rhs=e.rhs.xreplace(names))
+            for e in found.equations
+        )
+        v_2 = tuple(tidy(c.xreplace(names)) for c in found.after[body])
+        omega_2 = tidy(found.spins[body].xreplace(names))
+        shift = tuple(tidy(c.xreplace(names)) for c in found.displacements[body])
+        self.displacements[body] = shift  # type: ignore[assignment]
+        assert found.interval_energy is not None
+        T_k, works, T_next = found.interval_energy
+        works = {n: tidy(u.xreplace(names)) for n, u in works.items()}
+        record = StageRecord(
+            stage,
+            tuple(sorted(part)),
+            works,
+            stops=travel.stops,
+            energy=(tidy(T_k.xreplace(names)), works, tidy(T_next.xreplace(names))),
+            slides=tuple(
+                Slide(s.name, sense, slip, contact_slip(model, s, v_2, omega_2), guessed)
+                for s, sense, slip, guessed in slides
+            ),
+            normals=tuple(
+                (f"N_{s.name}", found.reactions[f"N_{s.name}"][0].xreplace(names))
+                for s in supports
+                if f"N_{s.name}" in found.reactions and not s.two_sided
+            ),
+            events=found.events,
+        )
+        relations = tuple(text for _, text in found.notes[1:])
+        return _Step(
+            equations,
+            {names.get(s, s): d for s, d in found.unknowns.items()},
+            {n: v_2 for n in part},  # type: ignore[misc]
+            {body: omega_2, **{n: sympy.Integer(0) for n in riders}},
+            record,
+            self.shifted(part, shift),  # type: ignore[arg-type]
+            relations=relations,
+            relations_are="over the interval",
+        )
+
+    def friction_sense(self, stage: Stage, support: Support, slip: sympy.Expr) -> tuple[int, bool]:
+        """The sense of kinetic friction at a contact sliding through an interval, against
+        the slip at its start; whether it was guessed (the start not known before solving)."""
+        key = f"{support.name}@{stage.number}"
+        if key in self.senses:
+            return self.senses[key], False
+        value = real_value(slip, self.known)
+        start = tidy(slip.xreplace(self.known))
+        if value is None and start.is_positive is not None:
+            value = 1.0 if start.is_positive else (-1.0 if start.is_negative else None)
+        if value == 0:
+            raise StageError(
+                stage,
+                f"{stage.title}: {support.body} does not slide at {support.name} at the start "
+                "of the interval; static friction over an interval in a chain is not followed",
+            )
+        if value is not None:
+            return (-1 if value > 0 else 1), False
+        if stage.number == 1 and support.friction_sense is not None:
+            return support.friction_sense, False
+        return -1, True  # assumed sliding along the tangent; checked once solved
+
+    def shifted(self, part: set[str], shift: Vec) -> Scene:
+        """The scene after an interval: the bodies that moved, and their contacts, carried
+        by Δr_G (the contacts stay where they were on each body: the forces are constant)."""
+        scene = self.scene
+        bodies = dict(scene.bodies)
+        for name in part:
+            body = bodies[name]
+            bodies[name] = replace(
+                body,
+                G=_plus(body.G, shift),
+                origin=_plus(body.origin, shift),
+                points={n: _plus(p, shift) for n, p in body.points.items()},
+            )
+        supports = tuple(
+            replace(s, point=_plus(s.point, shift)) if s.body in part else s for s in scene.supports
+        )
+        return replace(scene, bodies=bodies, supports=supports)
 
     def impact(self, stage: Stage, impact: Impact) -> _Step:
         from dynsolve.principles.impact import impact_equations, velocity_after
@@ -507,11 +683,12 @@ def chain_assumptions(
 ) -> tuple[Assumption, ...]:
     """What following the stages assumes, checked against the solution: each travel gets
     to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated."""
-    from dynsolve.numbers import real_value
-
     checks: list[Assumption] = []
     for record in formulation.stages:
         event, k = record.stage.event, record.stage.number
+        if isinstance(event, Travel) and event.kind == "for":
+            checks += _interval_checks(record, values)
+            continue
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)
             if closing is not None:
@@ -594,3 +771,72 @@ def chain_assumptions(
                 )
             )
     return tuple(checks)
+
+
+def _interval_checks(
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """What an interval in a chain assumed: each contact pushes (average N ≥ 0), each
+    sliding contact slides through the whole interval in the sense its friction opposes,
+    and its end event comes after its start."""
+    k = record.stage.number
+    checks = []
+    for name, normal in record.normals:
+        N = real_value(normal, values)
+        if N is not None:
+            checks.append(
+                Assumption(
+                    f"contact in stage {k}",
+                    N >= 0,
+                    f"average {name} = {N:.4g} N" + (" ≥ 0" if N >= 0 else " < 0: it would pull"),
+                )
+            )
+    for slide in record.slides:
+        start, end = real_value(slide.start, values), real_value(slide.end, values)
+        if start is None or end is None:
+            continue
+        name = f"sliding at {slide.support} in stage {k}"
+        opposes = start * slide.sense < 0
+        if not opposes:
+            way = "along" if start > 0 else "against"
+            detail = (
+                f"the contact point's slip at state {k} is {start:.4g} m/s ({way} the tangent): "
+                + ("it does not slide" if start == 0 else "the friction assumed does not oppose it")
+            )
+            checks.append(Assumption(name, False, detail))
+            continue
+        scale = max(abs(start), abs(end)) or 1.0
+        keeps = end * start >= -1e-9 * scale
+        detail = (
+            f"slip {start:.4g} m/s at state {k}, {0.0 if abs(end) <= 1e-9 * scale else end:.4g} "
+            f"m/s at state {k + 1}: kinetic friction opposes it throughout"
+        )
+        if not keeps:
+            detail = (
+                f"slip {start:.4g} m/s at state {k} but {end:.4g} m/s at state {k + 1}: it stops "
+                "sliding before the interval ends (state the end with ', until rolls' or "
+                "', stops')"
+            )
+        checks.append(Assumption(name, keeps, detail))
+    for what, value, detail in record.events:
+        number = real_value(value, values)
+        if number is not None:
+            text = detail.format(value=number)
+            if number <= 0:
+                text += ": it would have to happen before the start, so it never happens"
+            checks.append(Assumption(f"{what} in stage {k}", number > 0, text))
+    return checks
+
+
+def chain_slips(
+    formulation: Formulation, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> dict[str, int]:
+    """The friction senses to re-solve with (``"C@3"``: at C in stage 3) where a slide's
+    sense was guessed and the solution slips the other way."""
+    slips = {}
+    for record in formulation.stages:
+        for slide in record.slides:
+            start = real_value(slide.start, values)
+            if slide.guessed and start is not None and start * slide.sense > 0:
+                slips[f"{slide.support}@{record.stage.number}"] = -slide.sense
+    return slips

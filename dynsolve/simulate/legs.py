@@ -83,7 +83,10 @@ def simulation_checks(
 
 def _why(travel: Travel) -> str:
     if travel.kind == "for":
-        return "a travel over an interval (impulse and momentum) is not simulated yet"
+        return (
+            "an interval of constant forces (impulse and momentum) is not integrated; "
+            "work and energy checks it instead"
+        )
     return "the moving part of the scene was not recorded"
 
 
