@@ -33,7 +33,7 @@ from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
 from dynsolve.results import Assumption
-from dynsolve.system import Equation
+from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -62,6 +62,8 @@ class _Step:
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     relations: tuple[str, ...] = ()
     relations_are: str = "kinematics"  # what the relations are, for their note's name
+    constraints: tuple[Constraint, ...] = ()  # root branches (an until event's first zero)
+    turn: tuple[str, sympy.Expr, sympy.Expr] | None = None  # (body, angle turned, rise of G)
 
 
 def chain_formulation(
@@ -87,6 +89,9 @@ def chain_formulation(
     records: list[StageRecord] = []
     notes: list[tuple[str, str]] = []
     second: list[tuple[sympy.Symbol, float, str, str]] = []
+    constraints: list[Constraint] = []
+    turns: dict[str, sympy.Expr] = {}
+    heights: dict[str, sympy.Expr] = {}
     for stage in stages_of(scene.events):
         step = chain.stage(stage)
         first = len(equations)
@@ -100,6 +105,9 @@ def chain_formulation(
         states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         second += step.second
+        constraints += step.constraints
+        if step.turn is not None:
+            body, turns[body], heights[body] = step.turn
         if step.relations:
             notes.append(
                 (f"{step.relations_are} in stage {stage.number}", "; ".join(step.relations))
@@ -123,6 +131,9 @@ def chain_formulation(
         speeds=_after_travels(
             records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)))
         ),
+        turns=turns,
+        heights=heights,
+        constraints=tuple(constraints),
         spins=_after_travels(records, states, lambda s, n: s.omegas[n]),
         notes=tuple(notes),
         second=tuple(second),
@@ -180,7 +191,8 @@ class _Chain:
         event = stage.event
         if isinstance(event, Impact):
             return self.impact(stage, event)
-        if event.body in self.unfollowed:
+        followed = event.body in self.places and getattr(event, "kind", "") == "until"
+        if event.body in self.unfollowed and not followed:  # a bob's place is followed
             raise StageError(
                 stage,
                 f"{stage.title}: where {event.body} is after an earlier stage is not followed "
@@ -195,11 +207,7 @@ class _Chain:
         if isinstance(event, Pivot):
             return self.pivot(stage, event)
         if event.kind == "until":
-            raise StageError(
-                stage,
-                f"{stage.title}: 'until {event.until}' cannot be chained with other stages "
-                "yet; describe it as a scene of its own",
-            )
+            return self.until(stage, event)
         if event.kind == "for":
             return self.interval(stage, event)
         return self.travel(stage, event)
@@ -223,6 +231,8 @@ class _Chain:
             roots = sympy.solve(equations, list(step.unknowns), dict=True)
         except (NotImplementedError, ValueError):  # pragma: no cover - sympy's own limits
             return
+        if len(roots) > 1:  # as the solve does: a rate entering only squared is taken ≥ 0
+            roots = [r for r in roots if all((0 + v).is_nonnegative for v in r.values())]
         if len(roots) == 1 and set(roots[0]) == set(step.unknowns):
             self.known.update({s: tidy(v) for s, v in roots[0].items()})
 
@@ -235,27 +245,8 @@ class _Chain:
         from dynsolve.principles.until import contact_slip
 
         scene, body = self.scene, travel.body
-        riders = self.together[body] - {body}
-        part = {body} | riders
-        for name in scene.bodies:
-            v, w = self.velocities[name], self.omegas[name]
-            if name not in part and not _still(
-                tuple(c.xreplace(self.known) for c in v),  # type: ignore[arg-type]
-                (sympy.Integer(0) + w).xreplace(self.known),
-            ):
-                raise StageError(
-                    stage,
-                    f"{stage.title}: {name} is still moving (as the stages before leave it) "
-                    "but takes no part in the interval; an interval in a chain follows one "
-                    "body while the others are at rest",
-                )
-        joined = _joined(scene, body) - part
-        if joined:
-            raise StageError(
-                stage,
-                f"{stage.title}: {body} is joined to {', '.join(sorted(joined))}; an interval "
-                "in a chain follows one body (and what a plastic impact stuck to it)",
-            )
+        part = self.lone_part(stage, travel, "an interval")
+        riders = part - {body}
         model = scene.bodies[body]
         if riders:
             mass = model.mass + sum(scene.bodies[n].mass for n in riders)
@@ -336,6 +327,100 @@ class _Chain:
             self.shifted(part, shift),  # type: ignore[arg-type]
             relations=relations,
             relations_are="over the interval",
+        )
+
+    def lone_part(self, stage: Stage, travel: Travel, what: str) -> set[str]:
+        """The body a stage follows alone, with what a plastic impact stuck to it; refused
+        when another body still moves (as the stages before leave it) or is joined to it."""
+        body = travel.body
+        part = {body} | self.together[body]
+        for name in self.scene.bodies:
+            v, w = self.velocities[name], self.omegas[name]
+            if name not in part and not _still(
+                tuple(c.xreplace(self.known) for c in v),  # type: ignore[arg-type]
+                (sympy.Integer(0) + w).xreplace(self.known),
+            ):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {name} is still moving (as the stages before leave it) "
+                    f"but takes no part in the stage; {what} in a chain follows one body while "
+                    "the others are at rest",
+                )
+        joined = _joined(self.scene, body) - part
+        if travel.kind == "until":  # the cord that goes slack is the particle's own
+            joined -= {link.other for link in self.scene.links if link.body == body}
+        if joined:
+            raise StageError(
+                stage,
+                f"{stage.title}: {body} is joined to {', '.join(sorted(joined))}; {what} "
+                "in a chain follows one body (and what a plastic impact stuck to it)",
+            )
+        return part
+
+    def until(self, stage: Stage, travel: Travel) -> _Step:
+        """A particle on a circle until its cord goes slack or it leaves its surface, from
+        the motion the stage before left: work and energy with ΣF_n = m v²/R where the
+        force is zero. The root's branch (the first zero after the start) is found from
+        the numbers the stages before give."""
+        from dynsolve.principles.until import UntilError, circle_until
+
+        scene, body = self.scene, travel.body
+        part = self.lone_part(stage, travel, f"'until {travel.until}'")
+        riders = part - {body}
+        model = scene.bodies[body]
+        if not model.particle:
+            raise StageError(stage, f"{stage.title}: 'until {travel.until}' is for a particle")
+        shift = (sympy.Integer(0),) * 2
+        if body in self.places:  # a bob that swung: its place, not its drawing
+            shift = (self.places[body][0] - model.G[0], self.places[body][1] - model.G[1])
+        mass = tidy(model.mass + sum(scene.bodies[n].mass for n in riders))
+        model = replace(
+            model,
+            mass=mass,
+            G=_plus(model.G, shift),
+            origin=_plus(model.origin, shift),
+            points={n: _plus(p, shift) for n, p in model.points.items()},
+        )
+        held = [s.name for s in scene.supports if s.body in part]
+        if held:
+            raise StageError(
+                stage,
+                f"{stage.title}: {body} moves on its cord or path only until the event; its "
+                f"support {', '.join(held)} would act too (leave it out of the scene)",
+            )
+        sub = replace(
+            scene,
+            bodies={body: model},
+            supports=(),
+            loads=tuple(replace(load, body=body) for load in scene.loads if load.body in part),
+            links=tuple(
+                replace(link, point=_plus(link.point, shift))
+                for link in scene.links
+                if link.body == body and not link.other
+            ),
+            springs=tuple(s for s in scene.springs if {s.body, s.other} & part),
+            cords=(),
+            velocities={body: self.velocities[body]},
+            omegas={},
+            travels={body: travel},
+            values=self.known,
+        )
+        try:
+            found = circle_until(sub, self.symbols, travel, stage.number + 1)
+        except UntilError as exc:
+            raise StageError(stage, f"{stage.title}: {exc}") from None
+        record = StageRecord(stage, tuple(sorted(part)), {}, events=found.events, scene=sub)
+        return _Step(
+            found.equations,
+            {found.speed: Dim(1, 0, -1), found.theta: Dim()},
+            {n: found.velocity for n in part},
+            {n: sympy.Integer(0) for n in part},
+            record,
+            scene,
+            relations=(found.note[1],),
+            relations_are=found.note[0],
+            constraints=(found.condition,),
+            turn=(body, found.theta, found.height),
         )
 
     def friction_sense(self, stage: Stage, support: Support, slip: sympy.Expr) -> tuple[int, bool]:
@@ -689,6 +774,9 @@ def chain_assumptions(
         if isinstance(event, Travel) and event.kind == "for":
             checks += _interval_checks(record, values)
             continue
+        if isinstance(event, Travel) and event.kind == "until":
+            checks += _event_checks(record, values, "")
+            continue
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)
             if closing is not None:
@@ -818,13 +906,22 @@ def _interval_checks(
                 "', stops')"
             )
         checks.append(Assumption(name, keeps, detail))
+    return checks + _event_checks(
+        record, values, ": it would have to happen before the start, so it never happens"
+    )
+
+
+def _event_checks(
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr], failed: str
+) -> list[Assumption]:
+    """Each of a stage's events holds (a positive value): an end event after the start,
+    a cord taut or a contact pushing where an until stage starts."""
+    checks = []
     for what, value, detail in record.events:
         number = real_value(value, values)
         if number is not None:
-            text = detail.format(value=number)
-            if number <= 0:
-                text += ": it would have to happen before the start, so it never happens"
-            checks.append(Assumption(f"{what} in stage {k}", number > 0, text))
+            text = detail.format(value=number) + (failed if number <= 0 else "")
+            checks.append(Assumption(f"{what} in stage {record.stage.number}", number > 0, text))
     return checks
 
 

@@ -99,6 +99,21 @@ class Circle:
     force: str  # the name of the tension or normal force that falls to zero
 
 
+@dataclass(frozen=True)
+class CircleUntil:
+    """A particle on a circle until its support lets go: the two equations, the unknown
+    speed and turned angle at the event, and what follows from them."""
+
+    equations: tuple[Equation, Equation]  # work and energy; ΣF_n = m v²/R with the force 0
+    speed: sympy.Symbol
+    theta: sympy.Symbol
+    height: sympy.Expr  # how far G rises (up positive) until the event
+    velocity: Vec  # v_G at the event
+    condition: Constraint  # θ's root branch: the first zero of the force after the start
+    events: tuple[tuple[str, sympy.Expr, str], ...]  # the support holds at the start
+    note: tuple[str, str]
+
+
 def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formulation:
     """Work–energy and ΣF_n = m v²/R for a particle on a circle until the tension of its
     cord, or the push of its surface, falls to zero: the angle turned and the speed there.
@@ -107,6 +122,29 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
     force after the start, in the sense of motion (a constraint on θ keeps that root).
     """
     (travel,) = scene.travels.values()
+    found = circle_until(scene, symbols, travel)
+    from dynsolve.principles.newton_euler import bare_formulation
+
+    name = travel.body
+    return bare_formulation(
+        scene.bodies,
+        equations=found.equations,
+        unknowns={found.speed: Dim(1, 0, -1), found.theta: Dim()},  # this order solves fastest
+        speeds={name: found.speed},
+        turns={name: found.theta},
+        heights={name: found.height},
+        constraints=(found.condition,),
+        events=found.events,
+        notes=(found.note,),
+    )
+
+
+def circle_until(
+    scene: Scene, symbols: Mapping[str, sympy.Expr], travel: Travel, state: int = 2
+) -> CircleUntil:
+    """The equations of ``travel`` (``until CORD slack`` or ``until contact lost``) of a
+    particle on a circle, from its velocity in ``scene`` (numbers for the root's branch
+    from ``scene.values``); the unknowns are named for the end ``state``."""
     name = travel.body
     body = scene.bodies[name]
     if not body.particle:
@@ -129,7 +167,8 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
     size = real_value(R * sympy.sqrt(dot(v1, v1)), values) or 0.0
     if abs(radial_speed) > 1e-9 * size:
         raise UntilError(
-            travel, f"{name}'s velocity at state 1 is not along its circle (it must be tangent)"
+            travel,
+            f"{name}'s velocity at state {state - 1} is not along its circle (it must be tangent)",
         )
     gravity = (g * scene.gravity[0], g * scene.gravity[1])
     spin = real_value(cross(r1, v1), values)
@@ -143,8 +182,8 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
         )
     s = 1 if spin > 0 else -1  # ccw +1
     phi1 = sympy.atan2(r1[1], r1[0])
-    theta = sympy.Symbol(f"theta_2_{name}", positive=True)
-    speed = sympy.Symbol(f"v_2_{name}", positive=True)
+    theta = sympy.Symbol(f"theta_{state}_{name}", positive=True)
+    speed = sympy.Symbol(f"v_{state}_{name}", positive=True)
     phi = phi1 + s * theta
     e = (sympy.cos(phi), sympy.sin(phi))
     p2 = (C0[0] + R * e[0], C0[1] + R * e[1])
@@ -156,7 +195,8 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
         m * speed**2 / 2,
         "eq. 1",
         1,
-        f"T1 + ΣU(1→2) = T2 ({name}: ½ m v₁² + W·Δr = ½ m v₂²; the {circle.force} does no "
+        f"T{state - 1} + ΣU({state - 1}→{state}) = T{state} ({name}: ½ m v₁² + W·Δr = ½ m v₂²; "
+        f"the {circle.force} does no "
         "work, being normal to the path)",
     )
     inward = (-e[0], -e[1])
@@ -165,7 +205,7 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
         m * speed**2 / R,
         "eq. 2",
         2,
-        f"ΣF_n = m v²/R toward {_point_text(C0)} at state 2 with {circle.force} = 0 "
+        f"ΣF_n = m v²/R toward {_point_text(C0)} at state {state} with {circle.force} = 0 "
         f"({circle.what} {'goes slack' if travel.until == 'slack' else 'is left'})",
     )
     first, bound = _first_zero(circle, m, g, gravity, v1, r1, s, values, travel)
@@ -178,7 +218,7 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
     what = "taut" if travel.until == "slack" else "in contact"
     events = (
         (
-            f"{circle.what} {what} at state 1",
+            f"{circle.what} {what} at the start",
             start_force,
             f"{circle.force} = {{value:.4g}} > 0 at the start",
         ),
@@ -190,18 +230,15 @@ def until_formulation(scene: Scene, symbols: Mapping[str, sympy.Expr]) -> Formul
         f"{math.degrees(first):.4g}°, before which the speed stays above zero; beyond it "
         f"{name} is a projectile",
     )
-    from dynsolve.principles.newton_euler import bare_formulation
-
-    return bare_formulation(
-        scene.bodies,
-        equations=(energy, radial),
-        unknowns={speed: Dim(1, 0, -1), theta: Dim()},  # this order solves fastest
-        speeds={name: speed},
-        turns={name: theta},
-        heights={name: tidy(dot(_unit(scene.gravity, -1), (p2[0] - p1[0], p2[1] - p1[1])))},
-        constraints=(condition,),
-        events=events,
-        notes=(note,),
+    return CircleUntil(
+        (energy, radial),
+        speed,
+        theta,
+        tidy(dot(_unit(scene.gravity, -1), (p2[0] - p1[0], p2[1] - p1[1]))),
+        (-s * speed * e[1], s * speed * e[0]),  # along the circle, in the sense of motion
+        condition,
+        events,
+        note,
     )
 
 
@@ -306,7 +343,7 @@ def _first_zero(
         if f_force(0.0) <= 0:
             raise UntilError(
                 travel,
-                f"{circle.force} is not positive at state 1: {circle.what} does not hold "
+                f"{circle.force} is not positive at the start: {circle.what} does not hold "
                 f"{travel.body} at the start",
             )
         steps = 4000
