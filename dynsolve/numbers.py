@@ -37,6 +37,21 @@ CANCEL_OPS = 0  # without a symbolic denominator, cancel only forms at most this
 
 
 @cacheit  # the model asks for the same forms again and again (a third are repeats)
+def float_functions(expr: sympy.Expr, digits: int = 30) -> sympy.Expr:
+    """``expr`` with each function of numbers alone (cos 37.1234°) as a float of
+    ``digits`` digits: sympy solving with an exact cos(pπ/q) of a large q builds its
+    minimal polynomial, of degree about q, without end. For numbers only (a solve that
+    decides a sense, a scene to integrate), never for a formula shown.
+
+    >>> x = sympy.Symbol("x")
+    >>> y = float_functions(x * sympy.cos(sympy.pi * sympy.Rational(371234, 1800000)))
+    >>> round(float(y.coeff(x)), 9)
+    0.797337508
+    """
+    numbers = {f: f.evalf(digits) for f in expr.atoms(sympy.Function) if f.is_number}
+    return expr.xreplace(numbers) if numbers else expr
+
+
 def tidy(expr: sympy.Expr | int) -> sympy.Expr:
     """``expr`` in its tidiest cheap canonical form; ``sympy.simplify`` only as a last resort.
 

@@ -326,7 +326,9 @@ def _resolved(assumption: Assumption) -> bool:
     or a cord found slack or a contact found lost, re-solved without it."""
     return (
         not assumption.holds
-        and assumption.name.startswith(("no slip", "sliding", "cord ", "contact at "))
+        and assumption.name.startswith(
+            ("no slip", "sliding", "cord ", "contact at ", "elastic cord ")
+        )
         and "re-solved" in assumption.detail
     )
 

@@ -141,11 +141,17 @@ class Spring:
     column: int = 0
     wound: bool = False  # on a cord wrapped round the body: its end moves with the rim
     tension_only: bool = False  # an elastic cord: no force while shorter than unstretched
+    # an elastic cord's state assumed where its stretch's sign is not known before solving
+    # (an unknown extent): taut (True) or slack; checked against the answer, and switched
+    taut: bool | None = None
 
-    def stretch(self, s: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    def stretch(
+        self, s: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], end: bool = False
+    ) -> sympy.Expr:
         """The stretch that acts: ``s`` itself, or for a tension-only spring max(s, 0)
         (a slack elastic cord pushes nothing and stores no energy); ValueError when the
-        sign of ``s`` cannot be told.
+        sign of ``s`` cannot be told, except at the ``end`` of a travel where the cord's
+        state is assumed (``taut``, checked once solved).
 
         >>> k, L0 = sympy.Integer(800), sympy.Integer(15)
         >>> cord = Spring("S", "b", (0, 0), "", (0, 0), k, L0, tension_only=True)
@@ -159,6 +165,12 @@ class Spring:
         try:
             sign = sign_of(s, values)
         except ValueError:
+            from dynsolve.numbers import real_value
+
+            if real_value(s, values) == 0:  # just taut: it pulls nothing either way
+                return sympy.Integer(0)
+            if end and self.taut is not None:  # assumed, and checked once solved
+                return s if self.taut else sympy.Integer(0)
             raise ValueError(
                 f"whether the elastic cord {self.name} is stretched (L > L0) cannot be told "
                 "before solving (it depends on symbolic givens or an unknown extent): give "

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
-from dynsolve.numbers import tidy
+from dynsolve.numbers import float_functions, tidy
 from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -251,6 +251,7 @@ def _solve_positions(
     equations: list[sympy.Expr],
     x: _Unknowns,
     tidy: Callable[[sympy.Expr], sympy.Expr] = tidy,
+    numeric: bool = False,
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
     and cosine and back; a rotation left free by them is refused (see ``state_change``)."""
@@ -259,6 +260,8 @@ def _solve_positions(
     unknowns = x.positions()
     for _ in range(4 * len(names) + 4):
         current = [sympy.expand(e.xreplace(known)) for e in equations]
+        if numeric:  # a scene to integrate: cos(37.1234°) as a float, not an algebraic number
+            current = [float_functions(e) for e in current]
         current = [e for e in current if e != 0]
         free = [v for v in unknowns if v not in known]
         if not current or not free:
@@ -431,7 +434,9 @@ def placements_of(
     """
     x = _Unknowns(scene)
     equations, _ = _position_constraints(scene, x)
-    known = _solve_positions(equations, x, tidy if simplify else sympy.Integer(0).__add__)
+    known = _solve_positions(
+        equations, x, tidy if simplify else sympy.Integer(0).__add__, numeric=not simplify
+    )
     missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
     missing += [n for n in x.links if x.phi[n] not in known]
     if missing:

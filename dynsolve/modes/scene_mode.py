@@ -26,7 +26,7 @@ from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
 from dynsolve.spec.ast import FindItem, Spec
-from dynsolve.system import EquationSystem
+from dynsolve.system import Constraint, EquationSystem
 from dynsolve.units import Dim, natural_unit
 
 IMPENDING = 1e-9  # |F| within this fraction of μs N counts as impending slip, not slip
@@ -78,6 +78,7 @@ def build_scene_problem(
         {g.symbol: g.value for g in givens if g.value is not None},
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
+    scene = _cord_states(scene, slipping or {})
     removed: dict[str, object] = {}
     if released:
         removed = {c.name: c for c in scene.cords if c.name in released}
@@ -93,7 +94,10 @@ def build_scene_problem(
         if staged:
             from dynsolve.principles.stage_chain import chain_formulation
 
-            formulation = chain_formulation(scene, symbols, given_values, slipping)
+            instants = _instants_asked(spec, scene)
+            if _single_travel(scene, rigid):  # state 1's reactions come with it
+                instants -= {1}
+            formulation = chain_formulation(scene, symbols, given_values, slipping, instants)
             if _single_travel(scene, rigid):  # the state-1 reactions are asked too
                 formulation = _with_instant(formulation, formulate(scene, symbols, slipping))
         elif scene.impacts:
@@ -230,7 +234,8 @@ def _with_instant(chain: Formulation, instant: Formulation) -> Formulation:
         couples=instant.couples,
         kinematics=instant.kinematics,
         moment_points=instant.moment_points,
-        reactions=instant.reactions,
+        reactions={**chain.reactions, **instant.reactions},
+        events=chain.events + instant.events,
         kinetic=instant.kinetic,
         derived={**instant.derived, **chain.derived},
         stages=stages,
@@ -264,7 +269,30 @@ def _staged(scene: Scene, spec: Spec) -> bool:
         len(events) > 1
         or ground
         or impacts
-        or bool(events and (asked & stage_functions or at_state))
+        or bool(events and (asked & stage_functions or at_state or _instants_asked(spec, scene)))
+    )
+
+
+# find functions that take a state number (or a body) and are not a reaction at a state
+_NOT_REACTIONS = frozenset(
+    {"T", "V", "work", "energy_lost", "impulse", "F_avg", "power", "speed", "omega2"}
+    | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
+    | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
+)
+
+
+def _instants_asked(spec: Spec, scene: Scene) -> frozenset[int]:
+    """The states whose reactions a find asks for: ``cord(2)``, ``N_C(3)`` (a name that
+    is not a find function, with a state number)."""
+    return frozenset(
+        int(item.ref.args[0])
+        for item in spec.finds
+        if item.ref is not None
+        and item.ref.function not in _NOT_REACTIONS
+        and item.ref.function not in scene.bodies
+        and len(item.ref.args) == 1
+        and item.ref.args[0].isdigit()
+        and scene.events
     )
 
 
@@ -402,6 +430,16 @@ def _states_only(scene: Scene) -> Formulation:
     return bare_formulation(scene.bodies)
 
 
+def _cord_states(scene: Scene, slipping: Mapping[str, int]) -> Scene:
+    """Each elastic cord assumed taut at the end of a travel whose extent is unknown, or
+    slack where a solve found it so (``slipping["taut:S"]`` = −1)."""
+    springs = tuple(
+        replace(s, taut=slipping.get(f"taut:{s.name}", 1) > 0) if s.tension_only else s
+        for s in scene.springs
+    )
+    return replace(scene, springs=springs)
+
+
 def _with_energy(
     formulation: Formulation,
     scene: Scene,
@@ -418,8 +456,10 @@ def _with_energy(
     notes = list(formulation.notes)
     second = list(formulation.second)
     terms = list(formulation.energy_terms)
+    cords = list(formulation.cords)
     for energy in energy_equations(_after_pivot(scene, formulation), symbols, given_values):
         terms += energy.terms
+        cords += energy.cords
         number = len(equations) + 1
         equation = energy.equation
         equations.append(
@@ -443,7 +483,17 @@ def _with_energy(
         notes=tuple(notes),
         second=tuple(second),
         energy_terms=tuple(terms),
+        cords=tuple(cords),
+        constraints=formulation.constraints
+        + tuple(_cord_branch(scene, name, s_2, taut) for name, s_2, taut in cords),
     )
+
+
+def _cord_branch(scene: Scene, name: str, s_2: sympy.Expr, taut: bool) -> Constraint:
+    """The root an assumed cord state keeps: stretched (s₂ > 0) or not (s₂ ≤ 0)."""
+    relation = sympy.Gt(s_2, 0) if taut else sympy.Le(s_2, 0)
+    line = next(s.line for s in scene.springs if s.name == name)
+    return Constraint(relation, f"{name} {'taut' if taut else 'slack'} at state 2 (assumed)", line)
 
 
 SECOND_METHOD_AGREEMENT = 1e-6  # relative
@@ -783,6 +833,16 @@ def _quantity(
         point = _point(args[1], scene, body, where)
         d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
         return target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
+    at_state = f"{function}({args[0]})" if len(args) == 1 and args[0].isdigit() else ""
+    if at_state == f"{function}(1)" and function in formulation.reactions:
+        at_state = function  # a single travel's state 1 is the scene's instant
+    if at_state in formulation.reactions:
+        reaction, axis = formulation.reactions[at_state]
+        if any(c.name == function for c in scene.cords) or any(
+            link.name == function for link in scene.links
+        ):
+            return target("signed", Dim(1, 1, -2), reaction)  # a tension (+) or a push (−)
+        return target("along", Dim(1, 1, -2), reaction, axis=axis)
     if args and not formulation.kinematics:
         raise SpecError(
             f"'{function}' is not a quantity of a scene between states or impacts",
@@ -1081,9 +1141,11 @@ def assess(
         if not formulation.kinematics:
             return chained, slips
         checks += chained  # a single travel: its state 1 is checked as an instant too
+    cords, switched = _cord_checks(formulation, substitution)
+    slips |= switched
     if scene.travels and not formulation.reactions:
         events = tuple(_event_checks(formulation, substitution))
-        return _between_states(problem, substitution) + events, slips
+        return _between_states(problem, substitution) + events + cords, slips
     checks += _event_checks(formulation, substitution)
     sliding_until = {
         s.name
@@ -1116,6 +1178,16 @@ def assess(
                     slips[support.name] = 0
         elif support.name in sliding_until:
             pass  # kinetic friction until it rolls: checked by the event's time
+        elif support.name in formulation.sliding:
+            slip = real_value(formulation.sliding[support.name], substitution)
+            checks.append(
+                Assumption(
+                    f"sliding at {support.name}",
+                    True,
+                    f"its contact point moves at {slip:.4g} m/s along the surface at the "
+                    "instant (the velocities given): kinetic friction μk N opposes it",
+                )
+            )
         elif friction_name in formulation.reactions and N is not None:
             check = _no_slip(support, formulation.reactions[friction_name][0], N, substitution)
             if check is not None:
@@ -1202,6 +1274,32 @@ def _accel(problem: SceneProblem, body: str, point: Vec) -> Vec:
     if kin is None:
         return (sympy.Integer(0), sympy.Integer(0))
     return point_acceleration(kin, problem.scene.bodies[body].G, point)
+
+
+def _cord_checks(
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """Each elastic cord's state assumed at the end of a travel, against the answer: a cord
+    assumed taut must be stretched there (s₂ > 0), one assumed slack must not be. Returns
+    the checks and the states to re-solve with (``"taut:S"``: +1 taut, −1 slack)."""
+    checks, switched = [], {}
+    for name, s_2, taut in formulation.cords:
+        s = real_value(s_2, substitution)
+        if s is None and taut and not s_2.free_symbols <= set(substitution):
+            detail = "no root keeps it stretched (s₂ > 0): it is slack there; re-solved so"
+            checks.append(Assumption(f"elastic cord {name} taut at state 2", False, detail))
+            switched[f"taut:{name}"] = -1
+            continue
+        if s is None:
+            continue
+        holds = s > 0 if taut else s <= 0
+        detail = f"stretch at state 2 s₂ = {s:.4g}" + (" > 0" if s > 0 else " ≤ 0")
+        if not holds:
+            detail += f": it is {'slack' if taut else 'stretched'} there; re-solved so"
+            switched[f"taut:{name}"] = -1 if taut else 1
+        state = "taut" if taut else "slack"
+        checks.append(Assumption(f"elastic cord {name} {state} at state 2", holds, detail))
+    return tuple(checks), switched
 
 
 def _event_checks(

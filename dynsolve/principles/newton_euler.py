@@ -110,6 +110,8 @@ class Formulation:
     speeds: Mapping[str, sympy.Expr] = field(default_factory=dict)  # |v_G| in state 2
     spins: Mapping[str, sympy.Expr] = field(default_factory=dict)  # ω in state 2 (ccw +)
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
+    # contacts whose point slips at the instant (given velocities): v_P·t, kinetic friction
+    sliding: Mapping[str, sympy.Expr] = field(default_factory=dict)
     # an unknown's value found by a second method: (unknown, value, how, what it measures)
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     states: tuple[State, ...] = ()  # the motion at each numbered state of a chain of stages
@@ -124,6 +126,8 @@ class Formulation:
     energy_terms: tuple[tuple[str, sympy.Expr], ...] = ()
     # over an interval solved by impulse and momentum: (T1, each force's work, T2), checked
     interval_energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr] | None = None
+    # elastic cords whose state at the travel's end was assumed: (name, stretch s₂, taut)
+    cords: tuple[tuple[str, sympy.Expr, bool], ...] = ()
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:
@@ -251,6 +255,7 @@ class _Writer:
         self.derived: dict[sympy.Symbol, tuple[sympy.Expr, Dim, str]] = {}
         self.several = len(scene.bodies) > 1
         self.notes: list[tuple[str, str]] = []  # shown with the checks (a slack cord)
+        self.sliding: dict[str, sympy.Expr] = {}  # contacts slipping at the instant: v_P·t
 
     # ---- names and symbols
     def unknown(self, name: str, dim: Dim) -> sympy.Symbol:
@@ -341,6 +346,17 @@ class _Writer:
     def point_acceleration(self, body: str, point: Vec) -> Vec:
         return point_acceleration(self.kinematics[body], self.scene.bodies[body].G, point)
 
+    def point_velocity(self, body: str, point: Vec) -> Vec:
+        """v_P = v_G + ω k × r_P/G at the instant (v_G = ω k × r_G/O about a pin when no
+        velocity is given; zero for a body at rest)."""
+        kin, G = self.kinematics[body], self.scene.bodies[body].G
+        v_G = self.scene.velocities.get(body)
+        if v_G is None:
+            r = _minus(G, kin.pin.point) if kin.pin is not None else (0, 0)
+            v_G = (kin.omega * _perp(r)[0], kin.omega * _perp(r)[1])
+        r = _minus(point, G)
+        return (tidy(v_G[0] + kin.omega * _perp(r)[0]), tidy(v_G[1] + kin.omega * _perp(r)[1]))
+
     # ---- loads and reactions
     def add_force(self, term: ForceTerm) -> None:
         self.forces[term.body].append(term)
@@ -429,6 +445,15 @@ class _Writer:
                     f"cord {cord.name} inextensible: equal accelerations along it",
                 )
             else:
+                across = cross(cord.direction, self.point_velocity(cord.body, cord.point))
+                value = real_value(across, self.scene.values)
+                if (value is not None and value != 0) or (value is None and tidy(across) != 0):
+                    raise ValueError(
+                        f"{cord.body} moves across the cord {cord.name}, which then swings "
+                        "about its fixed end: its length sets the acceleration along it "
+                        f"(v²/ℓ); write it as a link to that point ('link {cord.name}: "
+                        f"{cord.body} at … to O')"
+                    )
                 self.constraint(
                     dot(a_1, cord.direction),
                     sympy.Integer(0),
@@ -501,7 +526,7 @@ class _Writer:
         from dynsolve.model.scene import Link
 
         assert isinstance(link, Link)
-        u, _ = self._ends(link.body, link.point, link.other, link.other_point)
+        u, length = self._ends(link.body, link.point, link.other, link.other_point)
         force = self.unknown(link.name, FORCE)
         self.reactions[link.name] = (force, u)
         self.add_force(
@@ -531,17 +556,31 @@ class _Writer:
                 )
             )
             a_2 = self.point_acceleration(link.other, link.other_point)
-            self.constraint(
-                dot(a_2, u) - dot(a_1, u),
-                sympy.Integer(0),
-                f"link {link.name} rigid: no relative acceleration along it "
-                "(its ends at relative rest)",
-            )
+            v_2 = self.point_velocity(link.other, link.other_point)
         else:
-            self.constraint(
-                dot(a_1, u),
-                sympy.Integer(0),
-                f"link {link.name} to a fixed point: its end does not move along it (at rest)",
+            a_2 = v_2 = (sympy.Integer(0), sympy.Integer(0))
+        # |r| fixed: r·v = 0 and r·a + v·v = 0 (relative, r = ℓ u from P₁ toward P₂):
+        # (a₂ − a₁)·u = −|v₂ − v₁|²/ℓ, the centripetal part of the relative acceleration
+        v = _minus(v_2, self.point_velocity(link.body, link.point))
+        self._link_velocity(link.name, dot(v, u))
+        speed2 = tidy(dot(v, v))
+        self.constraint(
+            dot(a_2, u) - dot(a_1, u),
+            tidy(-speed2 / length),
+            f"link {link.name} rigid: along it, the relative acceleration of its ends is "
+            + ("zero (at relative rest)" if speed2 == 0 else "−v²/ℓ (toward each other)")
+            if link.other
+            else f"link {link.name} to a fixed point: its end's acceleration along it is "
+            + ("zero (at rest)" if speed2 == 0 else "v²/ℓ toward the fixed point"),
+        )
+
+    def _link_velocity(self, name: str, along: sympy.Expr) -> None:
+        """A rigid link's ends have no relative velocity along it: refuse one that has."""
+        value = real_value(along, self.scene.values)
+        if (value is not None and value != 0) or (value is None and tidy(along) != 0):
+            raise ValueError(
+                f"the velocities given stretch the link {name} (the relative velocity of "
+                "its ends has a part along it): a rigid link's ends move across it"
             )
 
     def _name_of(self, point: Vec, body: str) -> str:
@@ -692,7 +731,28 @@ class _Writer:
         (also where ``slipping`` holds 0: a declared slide that the answer contradicted)."""
         if support.name in self.slipping:
             return self.slipping[support.name] or None
-        return support.friction_sense
+        if support.friction_sense is not None:
+            return support.friction_sense
+        return self._slip_at(support)
+
+    def _slip_at(self, support: Support) -> int | None:
+        """Kinetic friction's sense where the contact point already slips at the instant
+        (its velocity along the surface, v_P·t ≠ 0: a block sliding at a given speed), or
+        None where it does not (static friction, checked against μs N)."""
+        slip = tidy(dot(self.point_velocity(support.body, support.point), support.tangent))
+        if slip == 0:
+            return None
+        value = real_value(slip, self.scene.values)
+        if value is None:
+            raise ValueError(
+                f"whether {support.body} slides at {support.name} depends on symbolic givens "
+                f"(its contact point moves at {sympy.sstr(slip)} along the surface); state it "
+                f"on the contact ('slides right'), or give the givens values"
+            )
+        if value == 0:
+            return None
+        self.sliding[support.name] = slip
+        return -1 if value > 0 else 1  # against the slip
 
     # ---- equations of motion
     def newton_euler(self, body: Body) -> None:
@@ -845,4 +905,5 @@ def formulate(
         kinetic=writer.kinetic,
         derived=writer.derived,
         notes=tuple(writer.notes),
+        sliding=dict(writer.sliding),
     )

@@ -30,7 +30,7 @@ import sympy
 
 from dynsolve.model.scene import Impact, Link, Pivot, Scene, Support, Travel, Vec
 from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import float_functions, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
 from dynsolve.results import Assumption
 from dynsolve.system import Constraint, Equation
@@ -71,12 +71,14 @@ def chain_formulation(
     symbols: Mapping[str, sympy.Expr],
     given_values: Mapping[sympy.Symbol, sympy.Expr],
     senses: Mapping[str, int] | None = None,
+    instants: frozenset[int] = frozenset(),
 ) -> Formulation:
     """The equations of every stage of ``scene``, each starting where the last one ended.
     A load whose size is not given is an unknown of the travels that it works in (the
     average resistance that stops a pile). ``senses`` holds the friction senses that an
     earlier solve found for contacts sliding through an interval (``"C@3"``: at C in
-    stage 3), where the first guess was contradicted."""
+    stage 3), where the first guess was contradicted. ``instants`` are the states whose
+    reactions are asked (``cord(2)``): Newton–Euler at that instant, from the motion there."""
     loads = {
         load.name: sympy.Symbol(load.name, positive=True)
         for load in scene.loads
@@ -92,7 +94,29 @@ def chain_formulation(
     constraints: list[Constraint] = []
     turns: dict[str, sympy.Expr] = {}
     heights: dict[str, sympy.Expr] = {}
-    for stage in stages_of(scene.events):
+    reactions: dict[str, tuple[sympy.Symbol, Vec]] = {}
+    events: list[tuple[str, sympy.Expr, str]] = []
+
+    def instant(k: int) -> None:
+        """Newton–Euler at state k, its unknowns named for the state (cord_2)."""
+        found = chain.instant(k, first_stage)
+        names = {s: chain.state_symbol(s, k) for s in found.unknowns}
+        for equation in found.equations:
+            number = len(equations) + 1
+            lhs, rhs = equation.lhs.xreplace(names), equation.rhs.xreplace(names)
+            note = f"state {k} (the instant): {equation.note}"
+            equations.append(Equation(lhs, rhs, f"eq. {number}", number, note))
+        unknowns.update({names[s]: d for s, d in found.unknowns.items()})
+        for name, (symbol, axis) in found.reactions.items():
+            reactions[f"{name}({k})"] = (names.get(symbol, symbol), axis)
+        for what, force in chain.one_sided(found, k):
+            events.append((what, force.xreplace(names), f"{{value:.4g}} > 0 at state {k}"))
+
+    stages = stages_of(scene.events)
+    first_stage = stages[0] if stages else None
+    if 1 in instants:
+        instant(1)
+    for stage in stages:
         step = chain.stage(stage)
         first = len(equations)
         for equation in step.equations:
@@ -104,6 +128,9 @@ def chain_formulation(
         chain.presolve(step)
         states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
+        if stage.number + 1 in instants:
+            first_stage = stage
+            instant(stage.number + 1)
         second += step.second
         constraints += step.constraints
         if step.turn is not None:
@@ -134,6 +161,8 @@ def chain_formulation(
         turns=turns,
         heights=heights,
         constraints=tuple(constraints),
+        reactions=reactions,
+        events=tuple(events),
         spins=_after_travels(records, states, lambda s, n: s.omegas[n]),
         notes=tuple(notes),
         second=tuple(second),
@@ -159,7 +188,8 @@ def _after(records: list[StageRecord], states: list[State]) -> dict[str, Vec]:
     """Each body's velocity just after the last impact it takes part in."""
     after: dict[str, Vec] = {}
     for record in records:
-        if isinstance(record.stage.event, Impact):
+        event = record.stage.event
+        if isinstance(event, Impact) or (isinstance(event, Pivot) and event.normal is not None):
             for body in record.bodies:
                 after[body] = states[record.stage.number].velocities[body]
     return after
@@ -176,6 +206,7 @@ class _Chain:
         senses: Mapping[str, int],
     ) -> None:
         self.scene = replace(scene, travels={}, impacts=(), pivots=(), events=())
+        self.start = self.scene  # the scene as written (links and springs stay drawn there)
         self.symbols, self.values, self.senses = symbols, values, senses
         self.known: dict[sympy.Symbol, sympy.Expr] = dict(values)  # givens, then each stage's
         self.reaction_names: set[str] = set()  # average reactions named by earlier intervals
@@ -199,11 +230,7 @@ class _Chain:
                 "(only a particle's position is); describe this part as a scene of its own",
             )
         if isinstance(event, Pivot) and event.normal is not None:
-            raise StageError(
-                stage,
-                f"{stage.title}: a rebound off a point (e > 0) cannot be chained with other "
-                "stages yet; describe it as a scene of its own",
-            )
+            return self.rebound(stage, event)
         if isinstance(event, Pivot):
             return self.pivot(stage, event)
         if event.kind == "until":
@@ -224,7 +251,7 @@ class _Chain:
         guess when the stage has several roots or none; the full solve decides)."""
         if not step.unknowns:
             return
-        equations = [e.residual.xreplace(self.known) for e in step.equations]
+        equations = [float_functions(e.residual.xreplace(self.known)) for e in step.equations]
         if any(e.free_symbols - set(step.unknowns) for e in equations):
             return  # it depends on a later stage (an unknown extent) or on loads
         try:
@@ -328,6 +355,95 @@ class _Chain:
             relations=relations,
             relations_are="over the interval",
         )
+
+    def instant(self, k: int, stage: Stage | None) -> Formulation:
+        """Newton–Euler for the scene at state k: each body where the stages leave it,
+        moving as they leave it (a plastic impact's bodies as one)."""
+        from dynsolve.principles.newton_euler import formulate
+
+        scene = self.scene
+        bodies, loads = dict(scene.bodies), list(scene.loads)
+        for name in self.unfollowed:
+            body = bodies[name]
+            if name not in self.places or not body.particle:
+                raise StageError(
+                    stage,  # type: ignore[arg-type]
+                    f"the reactions at state {k} need where {name} is there, which is not "
+                    "followed after a travel (only a particle's place is)",
+                )
+            shift = (self.places[name][0] - body.G[0], self.places[name][1] - body.G[1])
+            bodies[name] = replace(
+                body,
+                G=self.places[name],
+                origin=_plus(body.origin, shift),
+                points={n: _plus(p, shift) for n, p in body.points.items()},
+            )
+        for name, group in self.together.items():
+            riders = sorted(group - {name})
+            if len(group) > 1 and name == min(group):  # the group moves as its first body
+                mass = bodies[name].mass + sum(scene.bodies[n].mass for n in riders)
+                bodies[name] = replace(bodies[name], mass=tidy(mass))
+                for rider in riders:
+                    del bodies[rider]
+                loads = [replace(ld, body=name) if ld.body in riders else ld for ld in loads]
+
+        # links and springs are drawn in the scene as written: carry their ends with G
+        start = self.start.bodies
+        shifts = {n: (b.G[0] - start[n].G[0], b.G[1] - start[n].G[1]) for n, b in bodies.items()}
+
+        def carried(body: str, point: Vec | None) -> Vec | None:
+            return point if point is None or body not in shifts else _plus(point, shifts[body])
+
+        sub = replace(
+            scene,
+            bodies=bodies,
+            loads=tuple(loads),
+            links=tuple(
+                replace(
+                    link,
+                    point=carried(link.body, link.point),
+                    other_point=carried(link.other, link.other_point),
+                )
+                for link in scene.links
+            ),
+            springs=tuple(
+                replace(
+                    s, point=carried(s.body, s.point), other_point=carried(s.other, s.other_point)
+                )
+                for s in scene.springs
+            ),
+            velocities={
+                n: tuple(sympy.Integer(0) + c for c in v)
+                for n, v in self.velocities.items()
+                if n in bodies and not _still(v, 0)
+            },
+            omegas={n: w for n, w in self.omegas.items() if n in bodies and not _still(ZERO, w)},
+        )
+        try:
+            return formulate(sub, self.symbols)  # type: ignore[arg-type]
+        except ValueError as exc:
+            raise StageError(stage, f"at state {k}: {exc}") from None  # type: ignore[arg-type]
+
+    def state_symbol(self, symbol: sympy.Symbol, k: int) -> sympy.Symbol:
+        """An unknown of the instant at state k, named for it (cord → cord_2)."""
+        name = f"{symbol.name}_{k}"
+        while name in self.symbols:
+            name += "_"
+        return sympy.Symbol(name, **symbol.assumptions0)
+
+    def one_sided(self, found: Formulation, k: int) -> list[tuple[str, sympy.Expr]]:
+        """The forces of the instant at state k that can only pull or push (cords and
+        tension-only links are taut, contacts press): checked positive."""
+        checks = [
+            (f"cord {c.name} taut at state {k}", found.reactions[c.name][0])
+            for c in self.scene.cords
+            if c.name in found.reactions
+        ]
+        for support in self.scene.supports:
+            normal = found.reactions.get(f"N_{support.name}")
+            if normal is not None and not support.two_sided:
+                checks.append((f"contact at {support.name} kept at state {k}", normal[0]))
+        return checks
 
     def lone_part(self, stage: Stage, travel: Travel, what: str) -> set[str]:
         """The body a stage follows alone, with what a plastic impact stuck to it; refused
@@ -581,6 +697,51 @@ class _Chain:
             replace(scene, supports=supports),
         )
 
+    def rebound(self, stage: Stage, pivot: Pivot) -> _Step:
+        """A body striking a fixed point with restitution e, from the motion the stage
+        before left: linear and angular impulse and momentum with the impulse J at the
+        point, and e along the line; afterwards the body is free (not pinned)."""
+        from dynsolve.principles.impact import rebound_formulation
+
+        body, scene = pivot.body, self.scene
+        self.lone_part(stage, Travel(body, "rebound"), "a rebound off a point")
+        held = [s.name for s in scene.supports if s.body == body]
+        if held or any(body in (link.body, link.other) for link in scene.links):
+            raise StageError(
+                stage,
+                f"{stage.title}: {body} is held ({', '.join(held) or 'a link'}) and would take "
+                "part in the impulse; a rebound off a point is of a body in free flight",
+            )
+        struck = replace(
+            scene,
+            velocities={body: self.velocities[body]},
+            omegas={body: self.omegas[body]},
+            pivots=(pivot,),
+        )
+        found = rebound_formulation(struck)
+        k = stage.number
+        names = {}
+        for symbol in found.unknowns:
+            prefix, _, rest = symbol.name.partition("_2")
+            if symbol.name.startswith(("v_2", "omega_2")):
+                names[symbol] = sympy.Symbol(f"{prefix}_{k + 1}{rest}", **symbol.assumptions0)
+            elif symbol.name in self.reaction_names:  # the same point struck again
+                names[symbol] = sympy.Symbol(f"{symbol.name}_{k}", **symbol.assumptions0)
+            self.reaction_names.add(names.get(symbol, symbol).name)
+        equations = tuple(
+            replace(e, lhs=e.lhs.xreplace(names), rhs=e.rhs.xreplace(names))
+            for e in found.equations
+        )
+        v_2 = tuple(c.xreplace(names) for c in found.after[body])
+        return _Step(
+            equations,
+            {names.get(s, s): d for s, d in found.unknowns.items()},
+            {body: v_2},  # type: ignore[dict-item]
+            {body: found.after_omega[body].xreplace(names)},
+            StageRecord(stage, (body,), events=found.events),
+            scene,
+        )
+
     def travel(self, stage: Stage, travel: Travel) -> _Step:
         """Work and energy for the bodies the travel moves: those joined to its body, or
         moving with it since a plastic impact."""
@@ -597,7 +758,16 @@ class _Chain:
                     "give it its own stage or join it to the travelling body",
                 )
         links = tuple(link for link in scene.links if {link.body, link.other} & part)
-        lone = (len(part) - len(riders)) == 1 and scene.bodies[body].particle and not links
+        translates = (
+            scene.motions.get(body) == "translation"
+            and not any(s.body == body for s in scene.supports)
+            and _still(ZERO, self.omegas[body])
+        )  # a body in free flight that does not turn: it moves as its G does
+        lone = (
+            (len(part) - len(riders)) == 1
+            and (scene.bodies[body].particle or translates)
+            and not links
+        )
         if riders and not lone:
             raise StageError(
                 stage,
@@ -608,9 +778,18 @@ class _Chain:
         if lone and travel.kind in ("to", "by"):
             start_along = _check_straight(stage, travel, scene, self.velocities[body])
         sub = self.moving_part(part, riders, body, links)
+        if translates:  # its energy is that of its mass at G: ½ m v_G², W·Δr_G
+            sub = replace(sub, bodies={body: replace(sub.bodies[body], particle=True)})
         (energy,) = energy_equations(
             replace(sub, travels={body: travel}), self.symbols, self.values
         )
+        if energy.cords:
+            raise StageError(
+                stage,
+                f"{stage.title}: whether the elastic cord {energy.cords[0][0]} is stretched at "
+                "the stage's end is not known before solving; in a chain it is not followed "
+                "yet (give the extent, or describe this travel as a scene of its own)",
+            )
         names: dict[sympy.Symbol, sympy.Symbol] = {}
         if energy.rate is not None:
             prefix = "omega" if energy.rate.name.startswith("omega") else "v"
@@ -769,6 +948,13 @@ def chain_assumptions(
     """What following the stages assumes, checked against the solution: each travel gets
     to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated."""
     checks: list[Assumption] = []
+    for what, force, detail in formulation.events:  # one-sided forces at asked instants
+        value = real_value(force, values)
+        if value is not None:
+            text = detail.format(value=value)
+            if value <= 0:
+                text = text.replace(" > 0", " ≤ 0") + ": the assumption fails there"
+            checks.append(Assumption(what, value > 0, text))
     for record in formulation.stages:
         event, k = record.stage.event, record.stage.number
         if isinstance(event, Travel) and event.kind == "for":
@@ -800,6 +986,17 @@ def chain_assumptions(
                     True,
                     f"stated: smooth contact, restitution e = {sympy.sstr(event.e)} along the line "
                     "of impact; finite forces (weights, supports) give no impulse over it",
+                )
+            )
+            continue
+        if isinstance(event, Pivot) and event.normal is not None:
+            checks += _event_checks(record, values, ": it does not strike the point")
+            checks.append(
+                Assumption(
+                    f"impact at {event.name} in stage {k}",
+                    True,
+                    f"stated: smooth contact, restitution e = {sympy.sstr(event.e)} along the "
+                    "line; finite forces (the weight) give no impulse over it",
                 )
             )
             continue

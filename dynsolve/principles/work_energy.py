@@ -65,6 +65,8 @@ class Energy:
     works: Mapping[str, sympy.Expr] = field(default_factory=dict)  # U(1→2) per force's name
     # the equation's terms as the textbook lists them: ("T1", T1), each ("U_… = …", U), ("T2", T2)
     terms: tuple[tuple[str, sympy.Expr], ...] = ()
+    # elastic cords whose state at state 2 was assumed: (name, stretch s₂, taut assumed)
+    cords: tuple[tuple[str, sympy.Expr, bool], ...] = ()
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -115,6 +117,7 @@ class _Work:
         self.notes: list[str] = []
         self.idle: list[str] = []
         self.named: dict[str, sympy.Expr] = {}  # each force's work, by its name
+        self.cords: list[tuple[str, sympy.Expr, bool]] = []  # (cord, s₂, taut assumed)
 
     def by_name(self, name: str, term: sympy.Expr, note: str) -> None:
         """Add the work ``term`` of the force called ``name`` (0 when it does none)."""
@@ -174,8 +177,12 @@ class _Work:
             s2 = _length(start, end) - spring.unstretched
             if spring.tension_only:  # an elastic cord stores energy only while stretched
                 values = {**self.scene.values, **self.values}
+                try:
+                    spring.stretch(s2, values)
+                except ValueError:  # not known before solving: assumed (taut), then checked
+                    self.cords.append((spring.name, tidy(s2), bool(spring.taut)))
                 s1 = spring.stretch(s1, values)
-                s2 = spring.stretch(s2, values)
+                s2 = spring.stretch(s2, values, end=True)
             self.by_name(
                 spring.name,
                 -spring.k * (s2**2 - s1**2) / 2,
@@ -384,6 +391,7 @@ def _particle(
         {name: velocity},
         work.named,
         _terms(mass * dot(v1, v1) / 2, work, T2),
+        tuple(work.cords),
     )
 
 
@@ -432,6 +440,7 @@ def _mechanism(
         {n: (tidy(v[0]), tidy(v[1])) for n, v in v_G.items()},
         work.named,
         _terms(T1, work, T2),
+        tuple(work.cords),
     )
 
 
