@@ -5,7 +5,10 @@ the 3D table (or ``inertia B: I_x, I_y, I_z``) at a 3D position; ``axis B: (x, y
 (the body's z axis: a disk's or rod's axis) or ``axes B: (x-axis), (y-axis)``;
 ``rotates B: about (ux, uy, uz), through (x, y, z), omega EXPR [, alpha EXPR]`` (ω and α
 along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrust``;
-``torque M on B`` (about the axis); ``gravity`` (−y: y is up).
+``torque M on B`` (about the axis); ``gravity`` (−y: y is up). Between two states:
+``rolls B at (x, y, z)`` (B's point there is at rest: it rolls on a fixed gear) and
+``travel B: turns EXPR about (ux, uy, uz)`` (state 2: the turning frame has turned
+through EXPR; state 1 at rest, the rates those of state 2).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec('''
@@ -46,9 +49,23 @@ from dynsolve.units import Dim
 LENGTH, MASS = Dim.of("length"), Dim.of("mass")
 MOMENT_OF_INERTIA = Dim(2, 1, 0)
 LINES_3D = frozenset(
-    {"body", "axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "gravity"}
+    {
+        "body",
+        "axis",
+        "axes",
+        "inertia3",
+        "rotates",
+        "spins",
+        "bearing",
+        "torque",
+        "gravity",
+        "rolls3",
+        "travel3",
+    }
 )
-KINDS_3D = frozenset({"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque"})
+KINDS_3D = frozenset(
+    {"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "rolls3", "travel3"}
+)
 
 
 @dataclass(frozen=True)
@@ -101,6 +118,27 @@ class Bearing:
 
 
 @dataclass(frozen=True)
+class Rolling:
+    """A point of the body (scene coordinates) that rolls without slipping on a fixed
+    surface (a fixed gear's pitch circle): its velocity is zero."""
+
+    at: Vec3
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Travel3D:
+    """State 2 of a two-state 3D scene: the turning frame has turned through ``angle``
+    about ``axis`` (a unit vector along the ``rotates`` axis, either way)."""
+
+    angle: sympy.Expr
+    axis: Vec3
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Scene3D:
     """One body on a fixed axis with its bearings and loads."""
 
@@ -114,6 +152,8 @@ class Scene3D:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     spin_of: SpinOf | None = None
     rates: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown ω or α
+    rolling: tuple[Rolling, ...] = ()
+    travel: Travel3D | None = None
 
     @property
     def shaft(self) -> Vec3:
@@ -182,15 +222,66 @@ def read_scene3d(spec: Spec) -> Scene3D:
         gravity = (sympy.Integer(0), sympy.Integer(-1), sympy.Integer(0))
     torques = tuple(s.name for s in statements if s.kind == "torque")
     for stmt in statements:
-        if stmt.kind == "torque" and stmt.body != body.name:
+        if stmt.kind in ("torque", "rolls3", "travel3") and stmt.body != body.name:
             raise SpecError(
                 f"there is no body '{stmt.body}'",
                 Position(spec.file, stmt.line, stmt.column),
-                hint=f"the torque acts on {body.name}",
+                hint=f"the body is {body.name}" + _did_you_mean(stmt.body, [body.name]),
             )
-    return Scene3D(
-        spec.file, body, spin, bearings, gravity, torques, symbols, values, spin_of, rates
+    rolling = tuple(
+        Rolling(_vector3(reader, s.vectors[0], "a rolling contact's position"), s.line, s.column)
+        for s in statements
+        if s.kind == "rolls3"
     )
+    travel = _travel(statements, spin, reader, spec)
+    return Scene3D(
+        spec.file,
+        body,
+        spin,
+        bearings,
+        gravity,
+        torques,
+        symbols,
+        values,
+        spin_of,
+        rates,
+        rolling,
+        travel,
+    )
+
+
+def _did_you_mean(name: str, names: Sequence[str]) -> str:
+    hint = close_name(name, names)
+    return f" ({hint})" if hint else ""
+
+
+def _travel(
+    statements: Sequence[SceneStmt], spin: Spin, reader: SceneReader, spec: Spec
+) -> Travel3D | None:
+    """The scene's one ``travel B: turns EXPR about (u)`` line, its axis the turn's."""
+    travels = [s for s in statements if s.kind == "travel3"]
+    if not travels:
+        return None
+    stmt = travels[-1]
+    where = Position(spec.file, stmt.line, stmt.column)
+    if len(travels) > 1:
+        raise SpecError(
+            "a 3D scene has one travel line (one state 2)",
+            where,
+            hint="keep one 'travel B: turns EXPR about (ux, uy, uz)'",
+        )
+    assert stmt.value is not None
+    angle = reader.value(stmt.value, Dim(), "a turn (an angle: 2 rev, 90 deg)")
+    axis = _direction3(reader, stmt.vectors[0], where)
+    along = sympy.simplify(sum(a * b for a, b in zip(axis, spin.axis, strict=True)))
+    if along not in (1, -1):
+        raise SpecError(
+            "the travel turns the frame about its own axis: the direction must be the "
+            "'rotates' line's axis (or its opposite)",
+            where,
+            hint=f"write 'about ({', '.join(sympy.sstr(c) for c in spin.axis)})'",
+        )
+    return Travel3D(angle, axis, stmt.line, stmt.column)
 
 
 def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:

@@ -49,6 +49,7 @@ from dynsolve.modes.scene_mode import _row, _unit, _unused
 from dynsolve.numbers import tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check, EquationRow, Step
+from dynsolve.rigid3d.energy import EnergyTerms, build_energy_problem, fixed_point_check
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.spec.ast import FindItem, Spec
@@ -78,6 +79,7 @@ class Problem3D:
     notes: tuple[tuple[str, str], ...] = ()
     mode: str = "3D scene"
     couples: Mapping[str, Vec3] = field(default_factory=dict)  # a pin's couple across its axis
+    energy: EnergyTerms | None = None  # two states: T1, T2 and the work
 
 
 def build_3d_problem(spec: Spec) -> Problem3D:
@@ -121,6 +123,8 @@ def build_3d_problem(spec: Spec) -> Problem3D:
                 or f"add '{rate.name}' to find, or declare it under given:",
             )
         unknown(rate.name, dim)
+    if scene.travel is not None or scene.rolling:
+        return build_energy_problem(spec, scene, unknowns)
     along = next(i for i, c in enumerate(scene.shaft) if c != 0)
     reactions: dict[str, tuple[Vec3, Vec3]] = {}
     couples: dict[str, Vec3] = {}
@@ -388,7 +392,11 @@ def moment_check(
     problem: Problem3D, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Check, ...]:
     """A second moment point: about the first bearing, ΣM_O = Ḣ_G + r_G/O × m a_G, with the
-    solved reactions (an error in the moments about G shows here)."""
+    solved reactions (an error in the moments about G shows here). Between two states,
+    T2 about a fixed point instead (:func:`~dynsolve.rigid3d.energy.fixed_point_check`)."""
+    if problem.energy is not None:
+        known = {**problem.system.knowns, **values}
+        return fixed_point_check(problem.scene, problem.energy, known, problem.spec.system)
     if not problem.scene.bearings:
         return ()
     known = {**problem.system.knowns, **values}
