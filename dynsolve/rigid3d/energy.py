@@ -284,13 +284,13 @@ def _check_work(
 ) -> None:
     """From rest, state 2 is reached only if ΣU1-2 > 0 (T2 = T1 + ΣU ≥ 0, and T2 = 0
     would leave the body at rest)."""
-    if not terms.work:
+    U = terms.U.xreplace(dict(scene.values))
+    if not terms.work or U == 0:
         raise SpecError(
             "nothing does work between the two states: from rest the body stays at rest",
             at,
             hint=f"add the driving couple: 'torque M on {scene.body.name}'",
         )
-    U = terms.U.xreplace(dict(scene.values))
     if U.free_symbols:  # an unknown torque, or symbolic givens: the solve decides
         return
     value = float(sympy.N(U))
@@ -437,9 +437,12 @@ def _at_rest(
     """Whether a velocity is zero at the solution: exactly (symbolic), or against v_G's
     size to 1e-9 (numbers)."""
     found = [sympy.expand(ZERO + c).xreplace(values) for c in v]
-    if any(f.free_symbols for f in found):
+    if all(f == 0 for f in found):
+        return True
+    speeds = [(ZERO + c).xreplace(values) for c in v_G]
+    if any(f.free_symbols for f in (*found, *speeds)):
         return all(sympy.simplify(f) == 0 for f in found)
-    scale = max((abs(float(sympy.N((ZERO + c).xreplace(values)))) for c in v_G), default=0.0)
+    scale = max((abs(float(sympy.N(c))) for c in speeds), default=0.0)
     return all(abs(float(sympy.N(f))) <= 1e-9 * max(scale, 1e-300) for f in found)
 
 

@@ -185,7 +185,8 @@ def read_scene3d(spec: Spec) -> Scene3D:
                 f"a '{stmt.kind}' line cannot go in a 3D scene",
                 Position(spec.file, stmt.line, stmt.column),
                 hint="a 3D scene takes body, axis, axes, inertia, rotates, spins, bearing, "
-                "torque and gravity lines (docs/scene-mode.md, Rigid bodies in 3D)",
+                "torque, gravity, 'rolls B at (x, y, z)' and 'travel B: turns EXPR about "
+                "(ux, uy, uz)' lines (docs/scene-mode.md, Rigid bodies in 3D)",
             )
     if len(bodies) != 1:
         where = bodies[1] if bodies else (statements[0] if statements else None)

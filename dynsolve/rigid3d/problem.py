@@ -115,7 +115,13 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
     }
     for rate, dim in scene.rates.items():  # an unknown ω or α (a steady precession's Ω)
-        if rate.name not in asked:  # a typo for a given must not become an unknown
+        tied = (  # the spin that a rolling point ties to the frame's turn
+            bool(scene.rolling)
+            and scene.spin_of is not None
+            and rate == scene.spin_of.omega
+            and not close_name(rate.name, list(taken))
+        )
+        if rate.name not in asked and not tied:  # a typo for a given must not become one
             raise SpecError(
                 f"'{rate.name}' is not a given: a rate to solve for must be in find",
                 Position(spec.file, spin.line, 1),
