@@ -546,3 +546,112 @@ def test_the_frame_rate_between_states_must_be_asked_for():
     # only the spin that the rolling point fixes may stay out of find
     with pytest.raises(SpecError, match="'omega_CD' is not a given"):
         solve_text(gear(find="omega_spin"), "gear.dyn")
+
+
+# ---- the bar on a shaft, parts (b) and (c): an unknown angle of the position ----
+
+STEADY_BAR = """\
+given:
+  m = 2 kg
+  L = 0.8 m
+  Omega = {Omega} rad/s
+scene:
+  body bar: mass m, rod L, at (L/2*sin(theta_s), -L/2*cos(theta_s), 0)
+  axis bar: (sin(theta_s), -cos(theta_s), 0)
+  rotates bar: about (0, 1, 0), through (0, 0, 0), omega Omega
+  spins bar: about (0, 0, 1), through (0, 0, 0), omega 0, alpha 0
+  bearing B: at (0, 0, 0), pin
+  gravity
+  assume theta_s > 0
+  assume theta_s < pi/2
+find: {find}
+"""
+
+
+def steady_bar(find: str = "theta_s, B_x, B_y, Omega_min = onset(theta_s, Omega)", Omega=6) -> str:
+    return STEADY_BAR.format(find=find, Omega=Omega)
+
+
+def test_bar_steady_angle_and_least_speed_agree_with_the_seed_equations():
+    """By hand (problems/rigid3d/bar_on_shaft_steady.dyn's header): moments about the pin
+    with θ'' = θ' = 0, (m L²/3) Ω² sin θ cos θ = m g (L/2) sin θ, so cos θ_s = 3 g/(2 L Ω²)
+    = 0.5109375, θ_s = 59.2737°; B_x = −m Ω² (L/2) sin θ_s = −24.75699 N, B_y = m g; the
+    nonzero root leaves 0 where m L² Ω²/3 = m g L/2: Ω_min = √(3 g/(2 L)) = 4.288794 rad/s.
+    The seed's equation-mode spec (problems/seed/3d_seed_bar_shaft.dyn) gives the same."""
+    scene = solve_file(PROBLEMS / "rigid3d" / "bar_on_shaft_steady.dyn")
+    seed = answers(solve_file(PROBLEMS / "seed" / "3d_seed_bar_shaft.dyn"))
+    assert scene.mode == "3D scene" and scene.passed
+    found = answers(scene)
+    c = 3 * 9.81 / (2 * 0.8 * 36)
+    assert c == pytest.approx(0.5109375, rel=1e-12)
+    assert found["theta_s"].value == pytest.approx(math.degrees(math.acos(c)), rel=1e-12)
+    assert found["theta_s"].value == pytest.approx(seed["theta_s"].value, rel=1e-9)
+    assert found["Omega_min"].value == pytest.approx(math.sqrt(3 * 9.81 / 1.6), rel=1e-12)
+    assert found["Omega_min"].value == pytest.approx(seed["Omega_min"].value, rel=1e-9)
+    assert found["B_x"].value == pytest.approx(-2 * 36 * 0.4 * math.sqrt(1 - c * c), rel=1e-12)
+    assert found["B_y"].value == pytest.approx(2 * 9.81, rel=1e-12)
+    checks = {c.name: c for c in scene.checks}
+    assert checks["onset Omega_min"].passed and checks["second moment point: G"].passed
+
+
+def test_the_symbolic_steady_bar_gives_the_seed_formulas():
+    # θ_s = acos(3 g/(2 L Ω²)), Ω_min = √(3 g/(2 L)) (the seed list's symbolic answers)
+    solution = solve_file(PROBLEMS / "rigid3d" / "bar_on_shaft_steady-symbolic.dyn")
+    assert solution.passed
+    assert {k.name for k in solution.key if k.passed} == {"theta_s", "Omega_min"}
+    assert all(a.value is None for a in solution.answers)
+
+
+@settings(max_examples=6, deadline=None)
+@given(Omega=st.integers(5, 30))
+def test_the_steady_angle_follows_the_hand_formula(Omega):
+    # cos θ_s = 3 g/(2 L Ω²) for any Ω above Ω_min = 4.2888 rad/s (hand, as above)
+    found = answers(solve_text(steady_bar(find="theta_s, B_x", Omega=Omega), "s.dyn"))
+    c = 3 * 9.81 / (2 * 0.8 * Omega**2)
+    assert found["theta_s"].value == pytest.approx(math.acos(c), rel=1e-9)
+    assert found["B_x"].value == pytest.approx(-2 * Omega**2 * 0.4 * math.sqrt(1 - c * c))
+
+
+def test_below_the_least_speed_there_is_no_steady_angle():
+    # Ω = 4 < Ω_min: cos θ_s = 1.15 > 1; only θ_s = 0 is left, which the assume refuses
+    solution = solve_text(steady_bar(Omega=4), "s.dyn")
+    found = answers(solution)
+    assert found["theta_s"].value is None and not solution.passed
+    assert found["Omega_min"].value == pytest.approx(math.sqrt(3 * 9.81 / 1.6), rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("find", "message"),
+    [
+        ("theta_s, W = onset(theta_s)", "onset takes two names"),
+        ("theta_s, W = onset(Omega, Omega)", "'Omega' is not an unknown angle"),
+        ("theta_s, W = onset(theta_s, Omega_0)", "'Omega_0' is not a given"),
+        ("B_x", "'theta_s' in the scene is not a given"),  # an angle not asked: a typo
+    ],
+)
+def test_a_bad_onset_or_angle_gets_a_positioned_error(find, message):
+    with pytest.raises(SpecError) as error:
+        solve_text(steady_bar(find=find), "s.dyn")
+    assert message in str(error.value) and error.value.position is not None
+
+
+def test_an_assume_line_must_bound_an_unknown():
+    text = steady_bar().replace("assume theta_s < pi/2", "assume pi > 3")
+    with pytest.raises(SpecError, match="bounds an unknown angle") as error:
+        solve_text(text, "s.dyn")
+    assert error.value.position is not None and error.value.position.line == 13
+
+
+def test_onset_needs_a_scene_that_can_rest_at_zero_angle():
+    # G set off the line of the bar: at θ = 0 the weight has a moment about the pin
+    text = steady_bar().replace("at (L/2*sin(theta_s),", "at (L/2*sin(theta_s) + L/8,")
+    with pytest.raises(SpecError, match="is not a steady angle for every Omega"):
+        solve_text(text, "s.dyn")
+
+
+def test_onset_needs_a_load_that_moves_the_branch():
+    # without gravity the bar's only steady angles are 0 and 90° for every Ω > 0:
+    # ∂F/∂θ(0, Ω) = (m L²/3) Ω² vanishes at Ω = 0 only
+    text = steady_bar().replace("  gravity\n", "")
+    with pytest.raises(SpecError, match="no positive Omega"):
+        solve_text(text, "s.dyn")

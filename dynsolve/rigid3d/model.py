@@ -40,10 +40,13 @@ from dataclasses import dataclass, field
 import sympy
 
 from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.expressions import relation
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.rigid3d.inertia import Vec3, body_axes, principal, tensor, unit
 from dynsolve.spec.ast import Expr, Name, SceneStmt, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.system import Constraint
 from dynsolve.units import Dim
 
 LENGTH, MASS = Dim.of("length"), Dim.of("mass")
@@ -61,6 +64,7 @@ LINES_3D = frozenset(
         "gravity",
         "rolls3",
         "travel3",
+        "assume",
     }
 )
 KINDS_3D = frozenset(
@@ -154,6 +158,8 @@ class Scene3D:
     rates: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown ω or α
     rolling: tuple[Rolling, ...] = ()
     travel: Travel3D | None = None
+    angles: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown, in positions
+    assumptions: tuple[Constraint, ...] = ()  # 'assume' lines: which root of an angle
 
     @property
     def shaft(self) -> Vec3:
@@ -176,8 +182,10 @@ def read_scene3d(spec: Spec) -> Scene3D:
     givens = givens_of(spec)
     symbols = {g.name: g.symbol for g in givens}
     values = {g.symbol: g.value for g in givens if g.value is not None}
-    reader = scene_reader(spec, symbols, {g.name: g.dim for g in givens}, values)
     statements = tuple(spec.scene or ())
+    angles = _unknown_angles(spec, statements, symbols)
+    dims = {g.name: g.dim for g in givens} | {a.name: Dim() for a in angles}
+    reader = scene_reader(spec, {**symbols, **{a.name: a for a in angles}}, dims, values)
     bodies = [s for s in statements if s.kind == "body"]
     for stmt in statements:
         if stmt.kind not in LINES_3D:
@@ -235,6 +243,7 @@ def read_scene3d(spec: Spec) -> Scene3D:
         if s.kind == "rolls3"
     )
     travel = _travel(statements, spin, reader, spec)
+    assumptions = tuple(_assumption(s, reader, spec) for s in statements if s.kind == "assume")
     return Scene3D(
         spec.file,
         body,
@@ -248,7 +257,65 @@ def read_scene3d(spec: Spec) -> Scene3D:
         rates,
         rolling,
         travel,
+        angles,
+        assumptions,
     )
+
+
+POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins"})
+
+
+def _unknown_angles(
+    spec: Spec, statements: Sequence[SceneStmt], symbols: Mapping[str, sympy.Symbol]
+) -> dict[sympy.Symbol, Dim]:
+    """Names in the scene's positions and directions that are not givens but are asked
+    for in find: unknown angles of the position (a bar's steady angle on a turning
+    shaft). Any other name that is not a given stays an error (a typo)."""
+    asked = {
+        item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
+    }
+    found: dict[sympy.Symbol, Dim] = {}
+    for stmt in statements:
+        if stmt.kind not in POSITIONED:
+            continue
+        vectors = list(stmt.vectors)
+        vectors += [p.vector for p in stmt.props if p.key == "at3" and p.vector]
+        if stmt.kind in ("rotates", "spins"):
+            vectors = vectors[1:]  # a rate's name is the rate's, not an angle
+        for vector in vectors:
+            for component in vector:
+                for name in iter_names(component):
+                    text = name.text
+                    if text in symbols or text == "pi" or text not in asked:
+                        continue
+                    found[sympy.Symbol(text, real=True)] = Dim()
+    return found
+
+
+def _assumption(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Constraint:
+    """An ``assume`` line of a 3D scene: a range of an unknown angle (which root is meant:
+    ``assume theta_s > 0``, ``assume theta_s < pi/2``)."""
+    where = Position(spec.file, stmt.line, stmt.column)
+    lhs_text, rhs_text = stmt.vectors[0]
+    try:
+        lhs = reader.value(lhs_text, Dim(), "an assumed bound")
+        rhs = reader.value(rhs_text, Dim(), "an assumed bound")
+    except DimensionError as error:
+        raise DimensionError(
+            error.message, error.position, "an assume line of a 3D scene bounds an angle"
+        ) from None
+    try:
+        built = relation(stmt.word, lhs, rhs)
+    except TypeError:
+        raise SpecError("this assumption compares a value that is not real", where, "") from None
+    if built in (sympy.true, sympy.false) or not built.free_symbols:
+        raise SpecError(
+            "an assume line of a 3D scene bounds an unknown angle of the scene",
+            where,
+            hint="e.g. 'assume theta_s > 0' with theta_s in a position and in find",
+        )
+    text = f"assume {sympy.sstr(lhs)} {stmt.word} {sympy.sstr(rhs)}"
+    return Constraint(built, text, stmt.line)
 
 
 def _did_you_mean(name: str, names: Sequence[str]) -> str:
