@@ -280,8 +280,6 @@ def _unknown_angles(
             continue
         vectors = list(stmt.vectors)
         vectors += [p.vector for p in stmt.props if p.key == "at3" and p.vector]
-        if stmt.kind in ("rotates", "spins"):
-            vectors = vectors[1:]  # a rate's name is the rate's, not an angle
         for vector in vectors:
             for component in vector:
                 for name in iter_names(component):
