@@ -489,6 +489,11 @@ def test_the_weight_does_work_as_g_falls(axis, sign):
         (("omega omega_CD", "omega omega_CD, alpha M/(m_A*R_B^2)"), "an alpha has no place", 10),
         (("travel A:", "travel B:"), "there is no body 'B'", 15),
         (("rolls A at (R_B, -R_A, 0)", "rolls A at (R_B, -R_A)"), "cannot go in a 3D scene", 12),
+        (  # above and below G: each alone could be at rest, not both (Ω would be 0)
+            ("rolls A at (R_B, -R_A, 0)", "rolls A at (R_B, -R_A, 0)\n  rolls A at (R_B, R_A, 0)"),
+            "the rolling points together cannot stay at rest",
+            13,
+        ),
     ],
 )
 def test_a_bad_gear_scene_gets_a_positioned_error(change, message, line):
@@ -498,6 +503,12 @@ def test_a_bad_gear_scene_gets_a_positioned_error(change, message, line):
         solve_text(text, "gear.dyn")
     assert message in str(error.value)
     assert error.value.position is not None and error.value.position.line == line
+
+
+def test_an_unknown_angle_is_not_found_between_two_states():
+    text = gear(find="omega_CD, phi").replace("at (R_B, 0, 0)", "at (R_B*cos(phi), 0, 0)")
+    with pytest.raises(SpecError, match="cannot be found between two states"):
+        solve_text(text, "gear.dyn")
 
 
 def test_a_two_state_scene_refuses_instant_quantities():

@@ -99,6 +99,13 @@ def build_energy_problem(
             f"({', '.join(sympy.sstr(c) for c in scene.spin.axis)})' (state 1 at rest)",
         )
     at = Position(spec.file, travel.line, travel.column)
+    if scene.angles:
+        names = ", ".join(a.name for a in scene.angles)
+        raise SpecError(
+            f"an unknown angle of the position ({names}) cannot be found between two states",
+            at,
+            hint="give the position, or solve the instant (without the travel line)",
+        )
     _check_two_state_scene(scene, spec, at)
     body = scene.body
     givens = list(givens_of(spec))
@@ -108,11 +115,15 @@ def build_energy_problem(
             unknowns[sympy.Symbol(name, real=True)] = Dim(2, 1, -2)
     omega, _alpha, v_G, _a_G = motion(scene)
     equations: list[Equation] = []
+    every: list[sympy.Expr] = []
     for contact in scene.rolling:
         r = tuple(contact.at[i] - body.G[i] for i in range(3))
         v_H = tuple(v + c for v, c in zip(v_G, cross(omega, r), strict=True))
         point = ", ".join(_plain(c) for c in contact.at)
         _check_rolling(v_H, scene, spec, contact)
+        every.extend(v_H)
+        if len(every) > 3:  # each point can be at rest: all of them at once too?
+            _check_rolling(every, scene, spec, contact, "the rolling points together")
         for i, axis in enumerate(AXES):
             component = sympy.expand(v_H[i])
             if not set(unknowns) & component.free_symbols and (
@@ -249,7 +260,13 @@ def _check_two_state_scene(scene: Scene3D, spec: Spec, at: Position) -> None:
         )
 
 
-def _check_rolling(v_H: Sequence[sympy.Expr], scene: Scene3D, spec: Spec, contact: Rolling) -> None:
+def _check_rolling(
+    v_H: Sequence[sympy.Expr],
+    scene: Scene3D,
+    spec: Spec,
+    contact: Rolling,
+    what: str = "the rolling point",
+) -> None:
     """A rolling point must be able to stay at rest while the frame turns: with Ω = 1 the
     spin (if any) that keeps it at rest must exist; else it is not on the rim."""
     frame = scene.spin.omega
@@ -267,8 +284,8 @@ def _check_rolling(v_H: Sequence[sympy.Expr], scene: Scene3D, spec: Spec, contac
     ok = bool(solutions) if spin else all(sympy.simplify(e) == 0 for e in equations)
     if not ok:
         raise SpecError(
-            "the rolling point cannot stay at rest while the frame turns: it is not where "
-            "the body touches the fixed surface",
+            f"{what} cannot stay at rest while the frame turns (not where the body "
+            "touches the fixed surface)",
             Position(spec.file, contact.line, contact.column),
             hint="place it on the body's rim, where it meets the fixed gear (for a disk of "
             "radius r centred at G, at distance r from G in the disk's plane)",
