@@ -8,7 +8,9 @@ along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrus
 ``torque M on B`` (about the axis); ``gravity`` (−y: y is up). Between two states:
 ``rolls B at (x, y, z)`` (B's point there is at rest: it rolls on a fixed gear) and
 ``travel B: turns EXPR about (ux, uy, uz)`` (state 2: the turning frame has turned
-through EXPR; state 1 at rest, the rates those of state 2).
+through EXPR; state 1 at rest, the rates those of state 2). A name in a position that
+is not a given but is in find is an unknown angle (a steady angle), its root chosen by
+``assume`` lines (``assume theta_s > 0``).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec('''
