@@ -24,8 +24,15 @@ def answers(solution) -> dict:
     return {a.name: a for a in solution.answers}
 
 
-@pytest.mark.parametrize("example", ["3d_seed_tilted_gear", "3d_seed_plate_diagonal"])
-def test_scene_and_equation_mode_agree(example):
+@pytest.mark.parametrize(
+    ("example", "second_method"),
+    [
+        ("3d_seed_tilted_gear", "second moment point"),
+        ("3d_seed_plate_diagonal", "second moment point"),
+        ("3d_seed_gear_rolling", "T about the fixed point"),
+    ],
+)
+def test_scene_and_equation_mode_agree(example, second_method):
     scene = solve_file(PROBLEMS / "seed" / f"{example}.dyn")
     equations = solve_file(PROBLEMS / "equations" / f"{example}.dyn")
     assert scene.mode == "3D scene" and scene.passed
@@ -34,7 +41,7 @@ def test_scene_and_equation_mode_agree(example):
     for answer in scene.answers:
         other = by_name[answer.name]
         assert answer.value == pytest.approx(other.value, rel=1e-9, abs=1e-9), answer.name
-    assert any(c.name.startswith("second moment point") and c.passed for c in scene.checks)
+    assert any(c.name.startswith(second_method) and c.passed for c in scene.checks)
 
 
 ECCENTRIC = """\
@@ -356,3 +363,306 @@ def test_cli_simulates_the_bar_on_a_shaft_to_its_turning_point(tmp_path):
     assert result.exit_code == 0, result.output
     assert "stopped by 'omega(bar) = 0 rad/s'" in result.output
     assert "|Δ(T − Ω.H_O + V)|" in result.output and "t = 0 s" not in result.output
+
+
+# ---- two states: a gear rolling on a fixed gear (seed 002, problem 9.1) ----
+
+GEAR = """\
+given:
+  m_A = {m} kg
+  R_A = {R_A} m
+  R_B = {R_B} m
+  M = {M} N*m
+  n = {n} rev
+scene:
+  body A: mass m_A, disk R_A, at (R_B, 0, 0)
+  axis A: (1, 0, 0)
+  rotates A: about (0, 1, 0), through (0, 0, 0), omega omega_CD
+  spins A: about (-1, 0, 0), omega omega_spin
+  rolls A at (R_B, {below}R_A, 0)
+  torque M on A
+  gravity
+  travel A: turns n about (0, 1, 0)
+find: {find}
+"""
+
+
+def gear(find: str = "omega_CD, omega_spin, T = T(A), U = U(A)", **changes) -> str:
+    values = {"m": 4, "R_A": 0.1, "R_B": 0.3, "M": 5, "n": 2, "below": "-"} | changes
+    return GEAR.format(find=find, **values)
+
+
+def test_gear_rolling_on_a_fixed_gear_by_work_and_energy():
+    """By hand (problems/rigid3d/gear_rolling.dyn's header; the seed's 9.1 solution):
+    rolling at H gives ω_spin R_A = ω_CD R_B; T2 = ½ m v_G² + ½ ωᵀ I_G ω
+    = m (3 R_B²/4 + R_A²/8) ω_CD² = 0.275 ω_CD²; ΣU = M (2 rev) = 20π J, so
+    ω_CD = √(20π/0.275) = 15.11554 rad/s, ω_spin = 3 ω_CD, T2 = ΣU."""
+    solution = solve_file(PROBLEMS / "rigid3d" / "gear_rolling.dyn")
+    assert solution.mode == "3D scene" and solution.passed
+    found = answers(solution)
+    omega_CD = math.sqrt(4 * math.pi * 5 / (4 * (0.1**2 / 8 + 3 * 0.3**2 / 4)))
+    assert omega_CD == pytest.approx(15.11554, rel=1e-6)  # the seed list's value
+    assert found["omega_CD"].value == pytest.approx(omega_CD, rel=1e-12)
+    assert found["omega_spin"].value == pytest.approx(3 * omega_CD, rel=1e-12)
+    assert found["T"].value == pytest.approx(20 * math.pi, rel=1e-12)
+    assert found["U"].value == pytest.approx(20 * math.pi, rel=1e-12)
+    checks = {c.name: c for c in solution.checks}
+    # the seed's own form: about the fixed point C, I_xx = m R_A²/2, I_yy = m R_A²/4 + m R_B²
+    assert checks["T about the fixed point"].passed
+    assert "none: G keeps its height" in checks["work of the weight"].detail
+    assert "62.8 J" in checks["work of the couple M"].detail
+
+
+def test_the_symbolic_gear_scene_gives_the_seed_formula():
+    # ω_CD = √(4π M/(m_A (R_A²/8 + 3 R_B²/4))), ω_spin = (R_B/R_A) ω_CD (the seed's 9.10):
+    # the scene's key holds them, and the equation-mode spec prints the same formulas
+    scene = solve_file(PROBLEMS / "seed" / "3d_seed_gear_rolling-symbolic.dyn")
+    equations = solve_file(PROBLEMS / "equations" / "3d_seed_gear_rolling-symbolic.dyn")
+    assert scene.passed and equations.passed
+    assert {k.name for k in scene.key if k.passed} == {"omega_CD", "omega_spin"}
+    by_name = answers(equations)
+    for answer in scene.answers:
+        assert answer.value is None and answer.formula == by_name[answer.name].formula
+
+
+@settings(max_examples=8, deadline=None)
+@given(
+    R_A=st.integers(5, 40),
+    R_B=st.integers(10, 90),
+    M=st.integers(1, 50),
+    n=st.integers(1, 6),
+    below=st.booleans(),
+)
+def test_gear_rates_follow_the_hand_formula(R_A, R_B, M, n, below):
+    """Any sizes, torque and turn: ω_CD² = 2π n M/(m (3 R_B²/4 + R_A²/8)). A gear meshing
+    above its centre (H = (R_B, +R_A, 0): the fixed gear over it) spins the other way:
+    v_H = −ω_CD R_B k − ω_spin R_A k = 0, ω_spin = −(R_B/R_A) ω_CD; T2 is the same."""
+    r_A, r_B = R_A / 100, R_B / 100
+    text = gear(R_A=r_A, R_B=r_B, M=M, n=n, below="-" if below else "")
+    solution = solve_text(text, "gear.dyn")
+    assert solution.passed
+    found = answers(solution)
+    omega = math.sqrt(2 * math.pi * n * M / (4 * (3 * r_B**2 / 4 + r_A**2 / 8)))
+    assert found["omega_CD"].value == pytest.approx(omega, rel=1e-9)
+    spin = (r_B / r_A) * omega * (1 if below else -1)
+    assert found["omega_spin"].value == pytest.approx(spin, rel=1e-9)
+    assert found["T"].value == pytest.approx(2 * math.pi * n * M, rel=1e-9)
+
+
+ARM = """\
+given:
+  m = 2 kg
+  r = 0.1 m
+  L = 0.5 m
+  q = 90 deg
+scene:
+  body disk: mass m, disk r, at (L, 0, 0)
+  axis disk: (1, 0, 0)
+  rotates disk: about {axis}, through (0, 0, 0), omega w
+  gravity
+  travel disk: turns q about (0, 0, -1)
+find: w, U = U(disk)
+"""
+
+
+@pytest.mark.parametrize(("axis", "sign"), [("(0, 0, -1)", 1), ("(0, 0, 1)", -1)])
+def test_the_weight_does_work_as_g_falls(axis, sign):
+    """A disk on a massless arm of length L from a horizontal axle (z), released from rest
+    with the arm horizontal, swings down a quarter turn (about −z: clockwise). By hand:
+    U = m g L = 9.81 J; T2 = ½ m L² ω² + ½ (m r²/4) ω² (the disk's axis along the arm,
+    so about z it has its diametral moment), ω = √(2 g L/(L² + r²/4)); ω along the
+    rotates line's axis, which is −z (ω > 0) or +z (ω < 0: the travel's sense)."""
+    found = answers(solve_text(ARM.format(axis=axis), "arm.dyn"))
+    assert found["U"].value == pytest.approx(2 * 9.81 * 0.5, rel=1e-12)
+    omega = math.sqrt(2 * 9.81 * 0.5 / (0.5**2 + 0.1**2 / 4))
+    assert found["w"].value == pytest.approx(sign * omega, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("change", "message", "line"),
+    [
+        (("rolls A at (R_B, -R_A, 0)", "rolls A at (R_B, -R_A, R_A/2)"), "cannot stay at rest", 12),
+        (("  travel A: turns n about (0, 1, 0)\n", ""), "add a travel line", 12),
+        (("turns n about (0, 1, 0)", "turns n about (1, 0, 0)"), "the 'rotates' line's axis", 15),
+        (("M = 5 N*m", "M = -5 N*m"), "never gets there", 15),
+        (("  torque M on A\n", ""), "nothing does work", 14),
+        (("omega omega_CD", "omega omega_CD, alpha M/(m_A*R_B^2)"), "an alpha has no place", 10),
+        (("travel A:", "travel B:"), "there is no body 'B'", 15),
+        (("rolls A at (R_B, -R_A, 0)", "rolls A at (R_B, -R_A)"), "cannot go in a 3D scene", 12),
+        (  # above and below G: each alone could be at rest, not both (Ω would be 0)
+            ("rolls A at (R_B, -R_A, 0)", "rolls A at (R_B, -R_A, 0)\n  rolls A at (R_B, R_A, 0)"),
+            "the rolling points together cannot stay at rest",
+            13,
+        ),
+    ],
+)
+def test_a_bad_gear_scene_gets_a_positioned_error(change, message, line):
+    text = gear().replace(*change)
+    assert text != gear()
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "gear.dyn")
+    assert message in str(error.value)
+    assert error.value.position is not None and error.value.position.line == line
+
+
+def test_an_unknown_angle_is_not_found_between_two_states():
+    text = gear(find="omega_CD, phi").replace("at (R_B, 0, 0)", "at (R_B*cos(phi), 0, 0)")
+    with pytest.raises(SpecError, match="cannot be found between two states"):
+        solve_text(text, "gear.dyn")
+
+
+def test_a_two_state_scene_refuses_instant_quantities():
+    with pytest.raises(SpecError, match="between two states ask for the rates"):
+        solve_text(gear(find="omega_CD, H = Hdot_x(A)"), "gear.dyn")
+
+
+def test_a_spinning_body_must_be_symmetric_about_its_spin_axis():
+    # a plate's inertia changes as it spins about its normal (I_x ≠ I_y): T2 would depend
+    # on where the spin left it
+    text = (
+        gear()
+        .replace("disk R_A,", "plate R_A by R_B,")
+        .replace("axis A: (1, 0, 0)", "axes A: (0, 1, 0), (0, 0, 1)")
+    )
+    with pytest.raises(SpecError, match="symmetric about its spin axis"):
+        solve_text(text, "gear.dyn")
+
+
+def test_a_misspelt_rate_between_states_is_not_an_unknown():
+    # 'omega_CE' is not asked for and close to nothing given: the rolling point fixes it;
+    # 'R_b' (for R_B) in a rate would be a typo, and is refused
+    text = gear(find="omega_CD").replace("omega omega_spin", "omega R_b")
+    with pytest.raises(SpecError, match="'R_b' is not a given"):
+        solve_text(text, "gear.dyn")
+
+
+def test_cli_reports_a_bad_gear_scene_without_a_traceback(tmp_path):
+    spec = tmp_path / "gear.dyn"
+    spec.write_text(gear().replace("M = 5 N*m", "M = -5 N*m"))
+    result = CliRunner().invoke(app, ["solve", str(spec)])
+    assert result.exit_code != 0
+    assert "gear.dyn:15" in result.output and "Traceback" not in result.output
+
+
+def test_the_torque_for_a_given_final_rate():
+    # the same energy equation read the other way: M = m (3 R_B²/4 + R_A²/8) ω_CD²/(4π)
+    # = 0.275 (15.11554²)/(4π) = 5.000 N·m (by hand, as in the first gear test)
+    text = gear(find="M, omega_spin").replace("  M = 5 N*m\n", "  omega_CD = 15 rad/s\n")
+    found = answers(solve_text(text, "gear.dyn"))
+    assert found["M"].value == pytest.approx(0.275 * 15**2 / (4 * math.pi), rel=1e-12)
+    assert found["omega_spin"].value == pytest.approx(45, rel=1e-12)
+
+
+def test_the_frame_rate_between_states_must_be_asked_for():
+    # only the spin that the rolling point fixes may stay out of find
+    with pytest.raises(SpecError, match="'omega_CD' is not a given"):
+        solve_text(gear(find="omega_spin"), "gear.dyn")
+
+
+# ---- the bar on a shaft, parts (b) and (c): an unknown angle of the position ----
+
+STEADY_BAR = """\
+given:
+  m = 2 kg
+  L = 0.8 m
+  Omega = {Omega} rad/s
+scene:
+  body bar: mass m, rod L, at (L/2*sin(theta_s), -L/2*cos(theta_s), 0)
+  axis bar: (sin(theta_s), -cos(theta_s), 0)
+  rotates bar: about (0, 1, 0), through (0, 0, 0), omega Omega
+  spins bar: about (0, 0, 1), through (0, 0, 0), omega 0, alpha 0
+  bearing B: at (0, 0, 0), pin
+  gravity
+  assume theta_s > 0
+  assume theta_s < pi/2
+find: {find}
+"""
+
+
+def steady_bar(find: str = "theta_s, B_x, B_y, Omega_min = onset(theta_s, Omega)", Omega=6) -> str:
+    return STEADY_BAR.format(find=find, Omega=Omega)
+
+
+def test_bar_steady_angle_and_least_speed_agree_with_the_seed_equations():
+    """By hand (problems/rigid3d/bar_on_shaft_steady.dyn's header): moments about the pin
+    with θ'' = θ' = 0, (m L²/3) Ω² sin θ cos θ = m g (L/2) sin θ, so cos θ_s = 3 g/(2 L Ω²)
+    = 0.5109375, θ_s = 59.2737°; B_x = −m Ω² (L/2) sin θ_s = −24.75699 N, B_y = m g; the
+    nonzero root leaves 0 where m L² Ω²/3 = m g L/2: Ω_min = √(3 g/(2 L)) = 4.288794 rad/s.
+    The seed's equation-mode spec (problems/seed/3d_seed_bar_shaft.dyn) gives the same."""
+    scene = solve_file(PROBLEMS / "rigid3d" / "bar_on_shaft_steady.dyn")
+    seed = answers(solve_file(PROBLEMS / "seed" / "3d_seed_bar_shaft.dyn"))
+    assert scene.mode == "3D scene" and scene.passed
+    found = answers(scene)
+    c = 3 * 9.81 / (2 * 0.8 * 36)
+    assert c == pytest.approx(0.5109375, rel=1e-12)
+    assert found["theta_s"].value == pytest.approx(math.degrees(math.acos(c)), rel=1e-12)
+    assert found["theta_s"].value == pytest.approx(seed["theta_s"].value, rel=1e-9)
+    assert found["Omega_min"].value == pytest.approx(math.sqrt(3 * 9.81 / 1.6), rel=1e-12)
+    assert found["Omega_min"].value == pytest.approx(seed["Omega_min"].value, rel=1e-9)
+    assert found["B_x"].value == pytest.approx(-2 * 36 * 0.4 * math.sqrt(1 - c * c), rel=1e-12)
+    assert found["B_y"].value == pytest.approx(2 * 9.81, rel=1e-12)
+    checks = {c.name: c for c in scene.checks}
+    assert checks["onset Omega_min"].passed and checks["second moment point: G"].passed
+
+
+def test_the_symbolic_steady_bar_gives_the_seed_formulas():
+    # θ_s = acos(3 g/(2 L Ω²)), Ω_min = √(3 g/(2 L)) (the seed list's symbolic answers)
+    solution = solve_file(PROBLEMS / "rigid3d" / "bar_on_shaft_steady-symbolic.dyn")
+    assert solution.passed
+    assert {k.name for k in solution.key if k.passed} == {"theta_s", "Omega_min"}
+    assert all(a.value is None for a in solution.answers)
+
+
+@settings(max_examples=6, deadline=None)
+@given(Omega=st.integers(5, 30))
+def test_the_steady_angle_follows_the_hand_formula(Omega):
+    # cos θ_s = 3 g/(2 L Ω²) for any Ω above Ω_min = 4.2888 rad/s (hand, as above)
+    found = answers(solve_text(steady_bar(find="theta_s, B_x", Omega=Omega), "s.dyn"))
+    c = 3 * 9.81 / (2 * 0.8 * Omega**2)
+    assert found["theta_s"].value == pytest.approx(math.acos(c), rel=1e-9)
+    assert found["B_x"].value == pytest.approx(-2 * Omega**2 * 0.4 * math.sqrt(1 - c * c))
+
+
+def test_below_the_least_speed_there_is_no_steady_angle():
+    # Ω = 4 < Ω_min: cos θ_s = 1.15 > 1; only θ_s = 0 is left, which the assume refuses
+    solution = solve_text(steady_bar(Omega=4), "s.dyn")
+    found = answers(solution)
+    assert found["theta_s"].value is None and not solution.passed
+    assert found["Omega_min"].value == pytest.approx(math.sqrt(3 * 9.81 / 1.6), rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("find", "message"),
+    [
+        ("theta_s, W = onset(theta_s)", "onset takes two names"),
+        ("theta_s, W = onset(Omega, Omega)", "'Omega' is not an unknown angle"),
+        ("theta_s, W = onset(theta_s, Omega_0)", "'Omega_0' is not a given"),
+        ("B_x", "'theta_s' in the scene is not a given"),  # an angle not asked: a typo
+    ],
+)
+def test_a_bad_onset_or_angle_gets_a_positioned_error(find, message):
+    with pytest.raises(SpecError) as error:
+        solve_text(steady_bar(find=find), "s.dyn")
+    assert message in str(error.value) and error.value.position is not None
+
+
+def test_an_assume_line_must_bound_an_unknown():
+    text = steady_bar().replace("assume theta_s < pi/2", "assume pi > 3")
+    with pytest.raises(SpecError, match="bounds an unknown angle") as error:
+        solve_text(text, "s.dyn")
+    assert error.value.position is not None and error.value.position.line == 13
+
+
+def test_onset_needs_a_scene_that_can_rest_at_zero_angle():
+    # G set off the line of the bar: at θ = 0 the weight has a moment about the pin
+    text = steady_bar().replace("at (L/2*sin(theta_s),", "at (L/2*sin(theta_s) + L/8,")
+    with pytest.raises(SpecError, match="is not a steady angle for every Omega"):
+        solve_text(text, "s.dyn")
+
+
+def test_onset_needs_a_load_that_moves_the_branch():
+    # without gravity the bar's only steady angles are 0 and 90° for every Ω > 0:
+    # ∂F/∂θ(0, Ω) = (m L²/3) Ω² vanishes at Ω = 0 only
+    text = steady_bar().replace("  gravity\n", "")
+    with pytest.raises(SpecError, match="no positive Omega"):
+        solve_text(text, "s.dyn")

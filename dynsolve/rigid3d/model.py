@@ -5,7 +5,12 @@ the 3D table (or ``inertia B: I_x, I_y, I_z``) at a 3D position; ``axis B: (x, y
 (the body's z axis: a disk's or rod's axis) or ``axes B: (x-axis), (y-axis)``;
 ``rotates B: about (ux, uy, uz), through (x, y, z), omega EXPR [, alpha EXPR]`` (ω and α
 along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrust``;
-``torque M on B`` (about the axis); ``gravity`` (−y: y is up).
+``torque M on B`` (about the axis); ``gravity`` (−y: y is up). Between two states:
+``rolls B at (x, y, z)`` (B's point there is at rest: it rolls on a fixed gear) and
+``travel B: turns EXPR about (ux, uy, uz)`` (state 2: the turning frame has turned
+through EXPR; state 1 at rest, the rates those of state 2). A name in a position that
+is not a given but is in find is an unknown angle (a steady angle), its root chosen by
+``assume`` lines (``assume theta_s > 0``).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> spec = parse_spec('''
@@ -37,18 +42,36 @@ from dataclasses import dataclass, field
 import sympy
 
 from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.expressions import relation
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.rigid3d.inertia import Vec3, body_axes, principal, tensor, unit
 from dynsolve.spec.ast import Expr, Name, SceneStmt, Spec
+from dynsolve.spec.parser import iter_names
+from dynsolve.system import Constraint
 from dynsolve.units import Dim
 
 LENGTH, MASS = Dim.of("length"), Dim.of("mass")
 MOMENT_OF_INERTIA = Dim(2, 1, 0)
 LINES_3D = frozenset(
-    {"body", "axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "gravity"}
+    {
+        "body",
+        "axis",
+        "axes",
+        "inertia3",
+        "rotates",
+        "spins",
+        "bearing",
+        "torque",
+        "gravity",
+        "rolls3",
+        "travel3",
+        "assume",
+    }
 )
-KINDS_3D = frozenset({"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque"})
+KINDS_3D = frozenset(
+    {"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "rolls3", "travel3"}
+)
 
 
 @dataclass(frozen=True)
@@ -101,6 +124,27 @@ class Bearing:
 
 
 @dataclass(frozen=True)
+class Rolling:
+    """A point of the body (scene coordinates) that rolls without slipping on a fixed
+    surface (a fixed gear's pitch circle): its velocity is zero."""
+
+    at: Vec3
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
+class Travel3D:
+    """State 2 of a two-state 3D scene: the turning frame has turned through ``angle``
+    about ``axis`` (a unit vector along the ``rotates`` axis, either way)."""
+
+    angle: sympy.Expr
+    axis: Vec3
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Scene3D:
     """One body on a fixed axis with its bearings and loads."""
 
@@ -114,6 +158,10 @@ class Scene3D:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     spin_of: SpinOf | None = None
     rates: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown ω or α
+    rolling: tuple[Rolling, ...] = ()
+    travel: Travel3D | None = None
+    angles: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown, in positions
+    assumptions: tuple[Constraint, ...] = ()  # 'assume' lines: which root of an angle
 
     @property
     def shaft(self) -> Vec3:
@@ -136,8 +184,10 @@ def read_scene3d(spec: Spec) -> Scene3D:
     givens = givens_of(spec)
     symbols = {g.name: g.symbol for g in givens}
     values = {g.symbol: g.value for g in givens if g.value is not None}
-    reader = scene_reader(spec, symbols, {g.name: g.dim for g in givens}, values)
     statements = tuple(spec.scene or ())
+    angles = _unknown_angles(spec, statements, symbols)
+    dims = {g.name: g.dim for g in givens} | {a.name: Dim() for a in angles}
+    reader = scene_reader(spec, {**symbols, **{a.name: a for a in angles}}, dims, values)
     bodies = [s for s in statements if s.kind == "body"]
     for stmt in statements:
         if stmt.kind not in LINES_3D:
@@ -145,7 +195,8 @@ def read_scene3d(spec: Spec) -> Scene3D:
                 f"a '{stmt.kind}' line cannot go in a 3D scene",
                 Position(spec.file, stmt.line, stmt.column),
                 hint="a 3D scene takes body, axis, axes, inertia, rotates, spins, bearing, "
-                "torque and gravity lines (docs/scene-mode.md, Rigid bodies in 3D)",
+                "torque, gravity, 'rolls B at (x, y, z)' and 'travel B: turns EXPR about "
+                "(ux, uy, uz)' lines (docs/scene-mode.md, Rigid bodies in 3D)",
             )
     if len(bodies) != 1:
         where = bodies[1] if bodies else (statements[0] if statements else None)
@@ -182,15 +233,123 @@ def read_scene3d(spec: Spec) -> Scene3D:
         gravity = (sympy.Integer(0), sympy.Integer(-1), sympy.Integer(0))
     torques = tuple(s.name for s in statements if s.kind == "torque")
     for stmt in statements:
-        if stmt.kind == "torque" and stmt.body != body.name:
+        if stmt.kind in ("torque", "rolls3", "travel3") and stmt.body != body.name:
             raise SpecError(
                 f"there is no body '{stmt.body}'",
                 Position(spec.file, stmt.line, stmt.column),
-                hint=f"the torque acts on {body.name}",
+                hint=f"the body is {body.name}" + _did_you_mean(stmt.body, [body.name]),
             )
-    return Scene3D(
-        spec.file, body, spin, bearings, gravity, torques, symbols, values, spin_of, rates
+    rolling = tuple(
+        Rolling(_vector3(reader, s.vectors[0], "a rolling contact's position"), s.line, s.column)
+        for s in statements
+        if s.kind == "rolls3"
     )
+    travel = _travel(statements, spin, reader, spec)
+    assumptions = tuple(_assumption(s, reader, spec) for s in statements if s.kind == "assume")
+    return Scene3D(
+        spec.file,
+        body,
+        spin,
+        bearings,
+        gravity,
+        torques,
+        symbols,
+        values,
+        spin_of,
+        rates,
+        rolling,
+        travel,
+        angles,
+        assumptions,
+    )
+
+
+POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins"})
+
+
+def _unknown_angles(
+    spec: Spec, statements: Sequence[SceneStmt], symbols: Mapping[str, sympy.Symbol]
+) -> dict[sympy.Symbol, Dim]:
+    """Names in the scene's positions and directions that are not givens but are asked
+    for in find: unknown angles of the position (a bar's steady angle on a turning
+    shaft). Any other name that is not a given stays an error (a typo)."""
+    asked = {
+        item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
+    }
+    found: dict[sympy.Symbol, Dim] = {}
+    for stmt in statements:
+        if stmt.kind not in POSITIONED:
+            continue
+        vectors = list(stmt.vectors)
+        vectors += [p.vector for p in stmt.props if p.key == "at3" and p.vector]
+        for vector in vectors:
+            for component in vector:
+                for name in iter_names(component):
+                    text = name.text
+                    if text in symbols or text == "pi" or text not in asked:
+                        continue
+                    found[sympy.Symbol(text, real=True)] = Dim()
+    return found
+
+
+def _assumption(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Constraint:
+    """An ``assume`` line of a 3D scene: a range of an unknown angle (which root is meant:
+    ``assume theta_s > 0``, ``assume theta_s < pi/2``)."""
+    where = Position(spec.file, stmt.line, stmt.column)
+    lhs_text, rhs_text = stmt.vectors[0]
+    try:
+        lhs = reader.value(lhs_text, Dim(), "an assumed bound")
+        rhs = reader.value(rhs_text, Dim(), "an assumed bound")
+    except DimensionError as error:
+        raise DimensionError(
+            error.message, error.position, "an assume line of a 3D scene bounds an angle"
+        ) from None
+    try:
+        built = relation(stmt.word, lhs, rhs)
+    except TypeError:
+        raise SpecError("this assumption compares a value that is not real", where, "") from None
+    if built in (sympy.true, sympy.false) or not built.free_symbols:
+        raise SpecError(
+            "an assume line of a 3D scene bounds an unknown angle of the scene",
+            where,
+            hint="e.g. 'assume theta_s > 0' with theta_s in a position and in find",
+        )
+    text = f"assume {sympy.sstr(lhs)} {stmt.word} {sympy.sstr(rhs)}"
+    return Constraint(built, text, stmt.line)
+
+
+def _did_you_mean(name: str, names: Sequence[str]) -> str:
+    hint = close_name(name, names)
+    return f" ({hint})" if hint else ""
+
+
+def _travel(
+    statements: Sequence[SceneStmt], spin: Spin, reader: SceneReader, spec: Spec
+) -> Travel3D | None:
+    """The scene's one ``travel B: turns EXPR about (u)`` line, its axis the turn's."""
+    travels = [s for s in statements if s.kind == "travel3"]
+    if not travels:
+        return None
+    stmt = travels[-1]
+    where = Position(spec.file, stmt.line, stmt.column)
+    if len(travels) > 1:
+        raise SpecError(
+            "a 3D scene has one travel line (one state 2)",
+            where,
+            hint="keep one 'travel B: turns EXPR about (ux, uy, uz)'",
+        )
+    assert stmt.value is not None
+    angle = reader.value(stmt.value, Dim(), "a turn (an angle: 2 rev, 90 deg)")
+    axis = _direction3(reader, stmt.vectors[0], where)
+    along = sympy.simplify(sum(a * b for a, b in zip(axis, spin.axis, strict=True)))
+    if along not in (1, -1):
+        raise SpecError(
+            "the travel turns the frame about its own axis: the direction must be the "
+            "'rotates' line's axis (or its opposite)",
+            where,
+            hint=f"write 'about ({', '.join(sympy.sstr(c) for c in spin.axis)})'",
+        )
+    return Travel3D(angle, axis, stmt.line, stmt.column)
 
 
 def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:

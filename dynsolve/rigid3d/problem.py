@@ -49,8 +49,10 @@ from dynsolve.modes.scene_mode import _row, _unit, _unused
 from dynsolve.numbers import tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check, EquationRow, Step
+from dynsolve.rigid3d.energy import EnergyTerms, build_energy_problem, fixed_point_check
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
+from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -78,6 +80,9 @@ class Problem3D:
     notes: tuple[tuple[str, str], ...] = ()
     mode: str = "3D scene"
     couples: Mapping[str, Vec3] = field(default_factory=dict)  # a pin's couple across its axis
+    energy: EnergyTerms | None = None  # two states: T1, T2 and the work
+    moment_point: str = "G"  # where ΣM was written: G, or the one bearing
+    onsets: tuple[Onset, ...] = ()  # onset(angle, load) finds
 
 
 def build_3d_problem(spec: Spec) -> Problem3D:
@@ -113,7 +118,13 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
     }
     for rate, dim in scene.rates.items():  # an unknown ω or α (a steady precession's Ω)
-        if rate.name not in asked:  # a typo for a given must not become an unknown
+        tied = (  # the spin that a rolling point ties to the frame's turn
+            bool(scene.rolling)
+            and scene.spin_of is not None
+            and rate == scene.spin_of.omega
+            and not close_name(rate.name, list(taken))
+        )
+        if rate.name not in asked and not tied:  # a typo for a given must not become one
             raise SpecError(
                 f"'{rate.name}' is not a given: a rate to solve for must be in find",
                 Position(spec.file, spin.line, 1),
@@ -121,6 +132,10 @@ def build_3d_problem(spec: Spec) -> Problem3D:
                 or f"add '{rate.name}' to find, or declare it under given:",
             )
         unknown(rate.name, dim)
+    for angle, dim in scene.angles.items():  # an unknown angle of the position
+        unknown(angle.name, dim)
+    if scene.travel is not None or scene.rolling:
+        return build_energy_problem(spec, scene, unknowns)
     along = next(i for i, c in enumerate(scene.shaft) if c != 0)
     reactions: dict[str, tuple[Vec3, Vec3]] = {}
     couples: dict[str, Vec3] = {}
@@ -155,16 +170,27 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
         note = f"ΣF_{axis} = m (a_G)_{axis}"
         equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
+    # about G; about the one bearing when an angle of the position is unknown, so that its
+    # reactions drop out of the moments and the angle comes from one equation
+    pivot = scene.bearings[0] if scene.angles and len(scene.bearings) == 1 else None
+    point = pivot.at if pivot is not None else body.G
+    label = pivot.name if pivot is not None else "G"
+    r_G = tuple(body.G[i] - point[i] for i in range(3))
     moment = [sympy.Integer(0)] * 3
     for force, at in reactions.values():
-        arm = tuple(at[i] - body.G[i] for i in range(3))
+        arm = tuple(at[i] - point[i] for i in range(3))
         moment = [m + c for m, c in zip(moment, cross(arm, force), strict=True)]
+    moment = [m + c for m, c in zip(moment, cross(r_G, weight), strict=True)]
     moment = [m + torque * c for m, c in zip(moment, spin.axis, strict=True)]
     for couple in couples.values():
         moment = [m + c for m, c in zip(moment, couple, strict=True)]
+    m_a_moment = cross(r_G, tuple(body.mass * a for a in a_G))
     for i, axis in enumerate(AXES):
-        note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
-        lhs, rhs = moment[i], H_dot[i]
+        if pivot is None:
+            note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
+        else:
+            note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
+        lhs, rhs = moment[i], sympy.expand(H_dot[i] + m_a_moment[i])
         if not (set(unknowns) & (lhs - rhs).free_symbols):
             if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
                 continue  # holds whatever the reactions: nothing to solve for
@@ -176,16 +202,58 @@ def build_3d_problem(spec: Spec) -> Problem3D:
                 f"{body.name}' (M unknown) or check α",
             )
         equations.append(Equation(lhs, rhs, note, spin.line, note))
+    if scene.angles:  # sin 2θ from I_G's entries as 2 sin θ cos θ: one factor sin θ to solve
+        equations = [
+            Equation(
+                sympy.expand_trig(e.lhs),
+                sympy.expand(sympy.expand_trig(e.rhs)),
+                e.label,
+                e.line,
+                e.note,
+            )
+            for e in equations
+        ]
     _check_determined(equations, unknowns, scene, body.name, where)
     symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
-    targets = tuple(
-        _target(item, spec, scene, unknowns, dims, omega, v_G, a_G, H_dot) for item in spec.finds
-    )
+    onsets: list[Onset] = []
+    targets_found: list[Target] = []
+    for item in spec.finds:
+        if item.ref is not None and item.ref.function == "onset":
+            at = Position(spec.file, item.line, item.column)
+            onset = build_onset(
+                item.name,
+                item.ref.args,
+                tuple(scene.angles),
+                {g.name: g.symbol for g in givens},
+                knowns,
+                equations,
+                tuple(unknowns),
+                at,
+            )
+            onsets.append(onset)
+            unit, dim = _unit(item, dims[onset.load.name], spec, at)
+            targets_found.append(
+                Target(
+                    item.name,
+                    sympy.Symbol(item.name),
+                    dim,
+                    unit,
+                    item.unit is not None,
+                    False,
+                    "signed",
+                    onset.value,
+                )
+            )
+            continue
+        targets_found.append(_target(item, spec, scene, unknowns, dims, omega, v_G, a_G, H_dot))
+    targets = tuple(targets_found)
     check_answers_in_find(spec)
     # every reaction is solved: the second moment point checks them all
-    system = EquationSystem(tuple(equations), tuple(unknowns), knowns, wanted=tuple(unknowns))
+    system = EquationSystem(
+        tuple(equations), tuple(unknowns), knowns, scene.assumptions, wanted=tuple(unknowns)
+    )
     symbol_dims = {symbols[n]: d for n, d in dims.items() if n in symbols}
     try:
         rows = tuple(_row(e, symbol_dims, spec) for e in equations)
@@ -206,6 +274,8 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         a_G,  # type: ignore[arg-type]
         notes=notes,
         couples=couples,
+        moment_point=label,
+        onsets=tuple(onsets),
     )
 
 
@@ -388,13 +458,27 @@ def moment_check(
     problem: Problem3D, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Check, ...]:
     """A second moment point: about the first bearing, ΣM_O = Ḣ_G + r_G/O × m a_G, with the
-    solved reactions (an error in the moments about G shows here)."""
-    if not problem.scene.bearings:
-        return ()
+    solved reactions (an error in the moments about G shows here). Between two states,
+    T2 about a fixed point instead (:func:`~dynsolve.rigid3d.energy.fixed_point_check`)."""
+    if problem.energy is not None:
+        known = {**problem.system.knowns, **values}
+        return fixed_point_check(problem.scene, problem.energy, known, problem.spec.system)
     known = {**problem.system.knowns, **values}
+    onsets = tuple(c for o in problem.onsets for c in onset_check(o, problem.system.knowns))
+    if not problem.scene.bearings:
+        return onsets
+    return _second_point(problem, known) + onsets
+
+
+def _second_point(
+    problem: Problem3D, known: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """ΣM about a second point (the first bearing, or G), with the solved reactions."""
     body = problem.scene.body
     first = problem.scene.bearings[0]
-    origin = first.at
+    origin, label = first.at, first.name
+    if problem.moment_point != "G":  # the equations were about the bearing: check about G
+        origin, label = body.G, "G"
     total = [sympy.Integer(0)] * 3
     weight = (
         tuple(body.mass * problem.scene.symbols["g"] * c for c in problem.scene.gravity)
@@ -429,8 +513,7 @@ def moment_check(
     error = worst / scale if scale else 0.0
     unit = natural_unit(MOMENT, problem.spec.system)
     shown = format_quantity(convert(scale, unit, problem.spec.system), unit)
-    detail = (
-        f"about bearing {first.name}: ΣM_{first.name} = Ḣ_G + r_G/{first.name} × m a_G "
-        f"(largest component {shown}; relative difference {error:.1e})"
-    )
-    return (Check(f"second moment point: bearing {first.name}", error < 1e-9, detail),)
+    where = f"bearing {label}" if label != "G" else "G"
+    law = f"ΣM_{label} = Ḣ_G + r_G/{label} × m a_G" if label != "G" else "ΣM_G = Ḣ_G"
+    detail = f"about {where}: {law} (largest component {shown}; relative difference {error:.1e})"
+    return (Check(f"second moment point: {where}", error < 1e-9, detail),)

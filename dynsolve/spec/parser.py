@@ -798,6 +798,12 @@ class _Builder(Transformer_NonRecursive):
         props = props[0] if props else ()
         return self._stmt("rolls", body, body=str(body), location=location, props=props)
 
+    def rolls3_stmt(self, c: list[Any]) -> SceneStmt:
+        """``rolls B at (x, y, z)``: in a 3D scene, the point of B there rolls without
+        slipping on a fixed surface (a fixed gear): its velocity is zero."""
+        body, at = c
+        return self._stmt("rolls3", body, body=str(body), vectors=(at,))
+
     def base_stmt(self, c: list[Any]) -> SceneStmt:
         name, body, start, end, *props = c
         props = props[0] if props else ()
@@ -974,6 +980,12 @@ class _Builder(Transformer_NonRecursive):
         (body, angle, sense), stops = self._stops(c)
         self._sense(sense)
         return self._stmt("travel", body, body=str(body), value=angle, word=str(sense), props=stops)
+
+    def travel_turns3_stmt(self, c: list[Any]) -> SceneStmt:
+        """``travel B: turns EXPR about (ux, uy, uz)``: in a 3D scene, state 2 is reached
+        when the frame that ``rotates`` has turned through EXPR about u (right-hand)."""
+        body, angle, axis = c
+        return self._stmt("travel3", body, body=str(body), value=angle, vectors=(axis,))
 
     def prop_guide(self, c: list[Any]) -> Prop:
         return self._prop("guide", c)
