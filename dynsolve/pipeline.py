@@ -307,8 +307,10 @@ def solve_problem(
         assumptions=assumptions,
         givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
         equations=view.equation_rows(),
-        steps=problem.steps
-        or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+        steps=_with_definitions(
+            problem.steps or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+            view,
+        ),
         answers=answers,
         checks=checks,
         key=key,
@@ -316,6 +318,48 @@ def solve_problem(
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
     )
+
+
+def _orthonormal(
+    x: sympy.Expr,
+    y: sympy.Expr,
+    unknowns: list[sympy.Symbol],
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """True when (x, y) = Σ u e_u with the unknowns u along perpendicular unit vectors e_u
+    (numbers once the givens are put in), so |(x, y)|² = Σ u²."""
+    if not (x.is_polynomial(*unknowns) and y.is_polynomial(*unknowns)):
+        return False
+    columns = []
+    for u in unknowns:
+        cx, cy = real_value(x.diff(u).xreplace(knowns)), real_value(y.diff(u).xreplace(knowns))
+        if cx is None or cy is None:
+            return False
+        columns.append((cx, cy))
+    zero = {u: sympy.Integer(0) for u in unknowns}
+    rests = [real_value((sympy.Integer(0) + c.xreplace(zero)).xreplace(knowns)) for c in (x, y)]
+    if rests != [0.0, 0.0]:
+        return False
+    return all(
+        abs(a[0] * b[0] + a[1] * b[1] - (1.0 if i == j else 0.0)) < 1e-12
+        for i, a in enumerate(columns)
+        for j, b in enumerate(columns)
+    )
+
+
+def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
+    """The solve steps, then one step per answer read from the solved unknowns by a formula
+    (ω = v_G/r, O = √(O_n² + O_t²), a_max = v² a/b²), so that no answer appears without
+    its derivation."""
+    extra = []
+    for target in view.problem.targets:
+        result = view.definition(target)
+        if result is not None:
+            heading = f"{pretty(target.name)} from the values found"
+            index = len(steps) + len(extra) + 1
+            step = Step(index, (), (target.name,), "substituted", (result,), (), "", heading)
+            extra.append(step)
+    return steps + tuple(extra)
 
 
 RESOLVES = 3  # re-solves of a scene whose friction assumption failed
@@ -380,9 +424,13 @@ class _View:
 
     # ---- helpers
     def used(self, given: GivenInfo) -> bool:
-        return given.given is not None or any(
-            given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
-            for e in self.problem.system.equations
+        return (
+            given.given is not None
+            or given.shown
+            or any(
+                given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
+                for e in self.problem.system.equations
+            )
         )
 
     def unit_of(self, name: str) -> str:
@@ -465,6 +513,10 @@ class _View:
         )
         written = f"= {formula}"
         latex = self.latex(info.formula)
+        numbers = self.substituted(info.formula)
+        if numbers is not None:  # the table formula, then its numbers (a hand calculation)
+            written += f" = {numbers[0]}"
+            latex += f" = {numbers[1]}"
         if value is not None and not (sympy.Integer(0) + info.formula).free_symbols:
             # a number found numerically (a joint by loop closure): shown with its unit
             converted = convert(value, unit, self.system)
@@ -650,6 +702,52 @@ class _View:
             exact, latex = self.text(tidied), self.latex(tidied)
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
+
+    def definition(self, target: Target) -> Formula | None:
+        """An answer's own derivation line when it is not a solved unknown or a given
+        itself: its formula in the problem's symbols, the numbers put in, its value."""
+        if target.trial or target.kind in ("steepest", "threshold"):
+            return None
+        if target.vector is not None:
+            formula = self.magnitude(target.vector)
+        elif target.expr is not None:
+            formula = sympy.Integer(0) + target.expr
+        else:
+            return None
+        if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
+            return None
+        value = self.computed(target.name)
+        if value is None or self.number(value) is None:
+            return None
+        if target.kind != "signed":
+            value = abs(value)
+        value_text, value_latex, _ = self.shown(target.name, value)
+        numbers = self.substituted(formula)
+        return Formula(
+            name=target.name,
+            formula=self.text(formula),
+            formula_latex=self.latex(formula),
+            value=value_text,
+            value_latex=value_latex,
+            substituted=numbers[0] if numbers else "",
+            substituted_latex=numbers[1] if numbers else "",
+        )
+
+    def magnitude(self, vector: tuple[sympy.Expr, sympy.Expr]) -> sympy.Expr | None:
+        """|v| of a vector answer in the unknowns it is made of: √(O_n² + O_t²) when its
+        components are those unknowns along perpendicular unit axes, else √(x² + y²);
+        None when one unknown alone gives it (its step already shows it)."""
+        x, y = (sympy.Integer(0) + c for c in vector)
+        unknowns = sorted(
+            (x.free_symbols | y.free_symbols) & set(self.problem.system.unknowns), key=str
+        )
+        values = {**self.knowns, **self.outcome.values}
+        nonzero = [u for u in unknowns if self.number(values.get(u, u)) not in (None, 0.0)]
+        if len(nonzero) < 2:
+            return None
+        if _orthonormal(x, y, unknowns, self.knowns):
+            return sympy.sqrt(sympy.Add(*(u**2 for u in unknowns)))
+        return sympy.sqrt(x**2 + y**2)
 
     def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
         """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the

@@ -58,6 +58,7 @@ class Step:
     results: tuple[Formula, ...]
     discarded: tuple[str, ...]  # "ω = -3.00 rad/s: violates omega >= 0 (line 9)"
     note: str
+    heading: str = ""  # replaces "Equation (line n) gives X" for a step not from equations
 
 
 @dataclass(frozen=True)

@@ -46,6 +46,8 @@ class GivenInfo:
     given: Given | None  # None for the default g and for derived quantities
     note: str = ""  # for a derived quantity (r_G, I_O): what it is
     formula: sympy.Expr | None = None  # for a derived quantity: in terms of the givens
+    shown: bool = False  # a modelling step the textbook prints (I_G = m k_G²) though no
+    # equation names it (the equations use its formula)
 
 
 @dataclass(frozen=True)

@@ -133,6 +133,7 @@ def build_scene_problem(
     symbols.update({s.name: s for s in formulation.derived})
     dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
     dims |= {s.name: d for s, (_, d, _) in formulation.derived.items()}
+    givens = givens + _inertia_rows(scene, formulation, symbols, given_values)
     givens = givens + [
         GivenInfo(
             s.name,
@@ -331,6 +332,45 @@ def _targets(
     for target in defined.values():
         ordered.append(replace(target, unit=natural_unit(target.dim, spec.system, "E")))
     return tuple(ordered)
+
+
+INERTIA = Dim(2, 1, 0)
+
+
+def _inertia_rows(
+    scene: Scene,
+    formulation: Formulation,
+    symbols: dict[str, sympy.Symbol],
+    given_values: Mapping[sympy.Symbol, sympy.Expr],
+) -> list[GivenInfo]:
+    """Each turning body's I_G from its table formula or radius of gyration, listed with the
+    givens as the textbook computes it first (I_G = m k_G² = 8(0.35)² = 0.980 kg·m²), even
+    where the equations carry the formula itself: a body that only translates, a particle,
+    a composite (its I_O row shows the sum) and an I_G given by name have no row."""
+    turning = [
+        body
+        for body in scene.bodies.values()
+        if not body.particle
+        and body.shape != "composite"
+        and not (sympy.Integer(0) + body.I_G).is_Symbol
+        and not _is_zero_expr(body.I_G)
+        and getattr(formulation.kinematics.get(body.name), "motion", "") != "translation"
+    ]
+    rows = []
+    for body in turning:
+        name = "I_G" if len(turning) == 1 else f"I_G_{body.name}"
+        if name in symbols:
+            continue
+        symbol = sympy.Symbol(name, positive=True)
+        value = body.I_G.xreplace(given_values) if given_values else body.I_G
+        note = f"I about G of {body.name}: {body.inertia_note or 'given'}"
+        rows.append(GivenInfo(name, symbol, value, INERTIA, None, note, body.I_G, shown=True))
+    return rows
+
+
+def _is_zero_expr(expr: sympy.Expr) -> bool:
+    """True for an expression that is exactly zero (a particle's I_G)."""
+    return bool((sympy.Integer(0) + expr).is_zero)
 
 
 def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, str]:

@@ -499,7 +499,9 @@ def _solution_section(steps: Sequence[Step]) -> str:
 
 def _step(step: Step) -> str:
     names = and_list([_name(n) for n in step.unknowns])
-    lead = f"\\paragraph{{Step {step.index}.}} {lines_phrase(step.lines, '--')} {names}"
+    lead = f"\\paragraph{{Step {step.index}.}} " + (
+        escape_latex(step.heading) if step.heading else f"{lines_phrase(step.lines, '--')} {names}"
+    )
     lines = [f"{lead} ({escape_latex(step.method)}):"]
     if step.results:
         rows = " \\\\\n".join(_result(r) for r in step.results)

@@ -234,7 +234,9 @@ def _solution_section(steps: Sequence[Step]) -> str:
 
 def _step(step: Step) -> str:
     names = and_list([_name(n) for n in step.unknowns])
-    lead = f"**Step {step.index}.** {lines_phrase(step.lines)} {names}"
+    lead = f"**Step {step.index}.** " + (
+        escape_markdown(step.heading) if step.heading else f"{lines_phrase(step.lines)} {names}"
+    )
     blocks = [f"{lead} ({escape_markdown(step.method)}):"]
     blocks += [_display(_result(r)) for r in step.results]
     if step.discarded:

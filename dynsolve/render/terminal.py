@@ -160,7 +160,8 @@ def _trial(trial: Trial) -> RenderableType:
 
 def _step(step: Step) -> RenderableType:
     unknowns = and_list([pretty(u) for u in step.unknowns])
-    head = Text(f"{step.index}. {lines_phrase(step.lines)} {unknowns} ({step.method})")
+    lead = step.heading or f"{lines_phrase(step.lines)} {unknowns}"
+    head = Text(f"{step.index}. {lead} ({step.method})")
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
