@@ -213,6 +213,11 @@ def _energy_terms(
     values = {**problem.system.knowns, **outcome.values}
     unit = natural_unit(ENERGY, problem.spec.system)
     rows = []
+    works = [expr for label, expr in terms if label.startswith("U")]
+    if len(works) > 1:  # the textbook's U(1→2) = U_S + U_M = −5 + 9.375 = 4.375, before T2
+        total = ("U_12 = ΣU(1→2), the work of all the forces", sympy.Add(*works))
+        last = max(i for i, (label, _) in enumerate(terms) if label.startswith("U"))
+        terms = (*terms[: last + 1], total, *terms[last + 1 :])
     for label, expr in terms:
         name, _, meaning = label.partition(" = ")
         meaning = meaning or _ENERGY_MEANINGS.get(name, "")
@@ -353,12 +358,17 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
     its derivation."""
     extra = []
     for target in view.problem.targets:
-        result = view.definition(target)
-        if result is not None:
-            heading = f"{pretty(target.name)} from the values found"
+        if target.parts:
+            results, note = view.composite_lines(target), "one line per part: I_G + m d²"
+            heading = f"{pretty(target.name)} of the parts (composite body)"
+            method = "table + parallel axis"
+        else:
+            result = view.definition(target)
+            results, note = ((result,) if result is not None else ()), ""
+            heading, method = f"{pretty(target.name)} from the values found", "substituted"
+        if results:
             index = len(steps) + len(extra) + 1
-            step = Step(index, (), (target.name,), "substituted", (result,), (), "", heading)
-            extra.append(step)
+            extra.append(Step(index, (), (target.name,), method, results, (), note, heading))
     return steps + tuple(extra)
 
 
@@ -732,6 +742,71 @@ class _View:
             substituted=numbers[0] if numbers else "",
             substituted_latex=numbers[1] if numbers else "",
         )
+
+    def composite_lines(self, target: Target) -> tuple[Formula, ...]:
+        """A composite's I about a point as the textbook sums it: each part's mass, its
+        I_G + m d² (a hole's negated) with the numbers put in, then the sum."""
+        rows, totals = [], []
+        mass_unit = natural_unit(Dim(0, 1), self.system)
+        inertia_unit = natural_unit(Dim(2, 1), self.system)
+        for k, term in enumerate(target.parts, start=1):
+            numeric = replace(
+                term,
+                mass=term.mass.xreplace(self.knowns),
+                distance=term.distance.xreplace(self.knowns),
+                values=tuple((s, v.xreplace(self.knowns)) for s, v in term.values),
+            )
+            mass = self.number(numeric.mass)
+            total = self.number(term.total.xreplace(self.knowns))
+            if mass is None or total is None:
+                return ()
+            numbers = self.substituted(term.mass)
+            rows.append(
+                Formula(
+                    f"m_{k}",
+                    self.text(term.mass),
+                    self.latex(term.mass),
+                    *self.quantity(mass, mass_unit),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+            pieces = [numeric.inertia_shown(), numeric.transfer_shown()]
+            text = " + ".join(sympy.sstr(p).replace("**", "^") for p in pieces)
+            latex = " + ".join(sympy.latex(p) for p in pieces)
+            sign = "-" if term.sign < 0 else ""
+            rows.append(
+                Formula(
+                    f"{target.name}_{k}",
+                    f"{sign}(I_G + m*d^2)" if sign else "I_G + m*d^2",
+                    f"{sign}(I_G + m d^2)" if sign else "I_G + m d^2",
+                    *self.quantity(total, inertia_unit),
+                    f"{sign}({text})" if sign else text,
+                    f"{sign}\\left({latex}\\right)" if sign else latex,
+                )
+            )
+            totals.append(total)
+        value = sum(totals)
+        names = [f"{target.name}_{k}" for k in range(1, len(totals) + 1)]
+        sums = sig(totals[0], 4) + "".join(
+            f" {'-' if t < 0 else '+'} {sig(abs(t), 4)}" for t in totals[1:]
+        )
+        rows.append(
+            Formula(
+                target.name,
+                " + ".join(pretty(n) for n in names),
+                " + ".join(latex_name(n) for n in names),
+                *self.quantity(value, inertia_unit),
+                sums,
+                sums,
+            )
+        )
+        return tuple(rows)
+
+    def quantity(self, value: float, unit: str) -> tuple[str, str]:
+        """(text, latex) of a value in base units shown in ``unit``."""
+        converted = convert(value, unit, self.system)
+        return format_quantity(converted, unit), f"{latex_number(converted)}\\,{latex_unit(unit)}"
 
     def magnitude(self, vector: tuple[sympy.Expr, sympy.Expr]) -> sympy.Expr | None:
         """|v| of a vector answer in the unknowns it is made of: √(O_n² + O_t²) when its

@@ -24,6 +24,7 @@ from dynsolve.dimensions import DimensionReport, EquationCheck, check_dimensions
 from dynsolve.errors import DimensionError, DynsolveError, Position, SpecError, with_others
 from dynsolve.expressions import relation, to_sympy
 from dynsolve.format import pretty_unit
+from dynsolve.model.inertia import Term
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
 from dynsolve.results import EquationRow, Step
 from dynsolve.spec.ast import EquationStmt, FindItem, Given, Spec
@@ -73,6 +74,7 @@ class Target:
     axis: tuple[sympy.Expr, sympy.Expr] | None = None
     vector: tuple[sympy.Expr, sympy.Expr] | None = None
     trial: bool = False
+    parts: tuple[Term, ...] = ()  # a composite's I about a point, one line per part
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ import sympy
 from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
-from dynsolve.model.inertia import parallel_axis
+from dynsolve.model.inertia import composite, parallel_axis
 from dynsolve.model.scene import Path, Scene, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
@@ -822,7 +822,11 @@ def _quantity(
             return target("magnitude", Dim(2, 1), model.I_G)
         point = _point(args[1], scene, body, where)
         d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
-        return target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
+        found = target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
+        if model.parts:  # the textbook's sum: each part's I_G + m d² about the point
+            relative = (point[0] - model.origin[0], point[1] - model.origin[1])
+            found = replace(found, parts=composite(model.parts).terms(relative))
+        return found
     if args and not formulation.kinematics:
         raise SpecError(
             f"'{function}' is not a quantity of a scene between states or impacts",
