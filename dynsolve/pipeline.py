@@ -729,9 +729,7 @@ class _View:
         value = self.computed(target.name)
         if value is None or self.number(value) is None:
             return None
-        if target.kind != "signed":
-            value = abs(value)
-        value_text, value_latex, _ = self.shown(target.name, value)
+        value_text, value_latex, _ = self.shown(target.name, value)  # signed, as its formula
         numbers = self.substituted(formula)
         return Formula(
             name=target.name,
