@@ -151,7 +151,13 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         checks = linkage_checks(linkage, solved.values)
         solution = solve_problem(linkage, options, solved, second_methods=checks)
         return replace(solution, linkage=figure(linkage))
-    from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
+    from dynsolve.modes.scene_mode import (
+        assess,
+        build_scene_problem,
+        cross_checks,
+        free_bodies,
+        second_moment_rows,
+    )
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -192,9 +198,17 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
     )
-    shown = tuple(_trial(*each, outcome, options) for each in trials)
+    shown = tuple(
+        replace(
+            _trial(*each, outcome, options),
+            second_moments=second_moment_rows(each[0]),  # type: ignore[arg-type]
+        )
+        for each in trials
+    )
     energy = _energy_terms(problem, outcome, options)
-    return replace(solution, trials=shown, energy=energy) if shown or energy else solution
+    return replace(
+        solution, trials=shown, energy=energy, second_moments=second_moment_rows(problem)
+    )
 
 
 ENERGY = Dim(2, 1, -2)

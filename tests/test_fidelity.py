@@ -8,20 +8,21 @@ Every expected equation and value below is taken from the lecture notes in
 How a governing equation of the notes is found in the derivation
 ------------------------------------------------------------------
 The derivation is read back from its JSON output (:func:`dynsolve.render.json.render_json`):
-the equation table, every step's ``name = formula`` line, every work–energy term
-``T2 = formula`` and, for a trial, its own equations and steps. Each printed equation is
-parsed with dynsolve's safe spec parser (never ``eval`` or ``sympify``), the givens' numbers of
-the problem statement are put in, and a derived quantity (I_O, r_G, I_G) is replaced by the
-formula its row prints. A printed equation that fixes one unknown to a number
-(``a_Gy = 0``) is put into the others, as the notes do inline. What is left is a residual in
-the unknowns only.
+the equation table, the moment equation about a second point (printed as a check), each
+step that states a relation (``ω = v_2_disk/r``; a solve step only restates a consequence),
+every work–energy term ``T2 = formula`` and, for a trial, its own equations. Each printed
+equation is parsed with dynsolve's safe spec parser (never ``eval`` or ``sympify``); the
+problem statement's numbers are put in, and a derived quantity (I_O, r_G) is replaced by the
+formula its row prints. An equation of the table that defines one unknown by the givens
+alone (``a_Gy = 0``, ``I_B = m*L^2/3``) may be put into the others, as the notes do inline.
+What is left is a residual in the unknowns only.
 
 The notes' equation is written here as a sympy expression in dynsolve's unknowns, with each
 example's sign map stated (the notes often take α clockwise positive). It matches a printed
-residual when the two are *proportional*: as polynomials in the unknowns their coefficient
-vectors are parallel within ``NOTE_ROUNDING`` (the notes print 3–4 figures). Being
-proportional to one printed equation is much stronger than holding at the solved values: the
-equation ``α = 16.7`` holds at the answer but is parallel to no printed equation.
+residual when the two are *proportional*: as polynomials in the unknowns, each coefficient
+of one is the same multiple of the other's, within ``NOTE_ROUNDING`` (the notes print 3–4
+figures). That is much stronger than holding at the solved values: the pendulum's
+``O_t = 51.8 N`` holds at the answer but is proportional to no printed equation.
 
 How a value of the notes is found
 ---------------------------------
@@ -571,18 +572,6 @@ MISSING: dict[tuple[str, str], str] = {
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("gpm_seed_incline_threshold", "values"): "β_max = atan(μ_s(1 + m R²/I_G)) = 31.0° is "
     "printed only as an answer, with no derivation line",
-    ("fa_hib_flywheel", "equations"): "the notes' Method I moment equation about G, "
-    "O_t(0.15) = 0.81 α, is not printed: dynsolve writes ΣM_O = I_O α and uses G only in the "
-    "'second moment point' check line, with numbers and no equation",
-    ("gpm_seed_spool", "equations"): "the notes' Method I moment equation about G, "
-    "100(0.2) − T(0.5) = 0.98 α, is not printed: dynsolve writes only Method II (about A) "
-    "and uses G in the 'second moment point' check line",
-    ("gpm_seed_pole_slip", "trial_equations"): "the trial's moment equation is printed about "
-    "A (−P h_P = I_G α − L a_Gx m/2), not about G as the notes write it, "
-    "F_A(1.5) − 400(1) = 75 α",
-    ("tr_hib_car", "equations"): "the notes' Section I moment equation about G, "
-    "−N_A(1.25) − 0.25 N_B(0.3) + N_B(0.75) = 0, is not printed: dynsolve writes only "
-    "Section II (about A) and uses G in the 'second moment point' check line",
     ("rwe_seed_wheel10rev", "equations"): "the rolling relation v_O = r ω = 0.4 ω is not "
     "printed as a line: it appears only in the 'kinematics between the states' check "
     "(Δs_G = r Δθ), and T2 is written in ω directly",
@@ -627,6 +616,7 @@ def printed_equations(data: dict, trial: bool = False) -> list[tuple[str, str]]:
     """(where, 'lhs = rhs') of every equation the derivation (or its first trial) prints."""
     source = data["trials"][0] if trial else data
     found = [(f"equation {e['line']}", e["text"]) for e in source["equations"]]
+    found += [(f"second moment point {e['line']}", e["text"]) for e in source["second_moments"]]
     if not trial:  # a solve step is a consequence; a step from a definition is a relation
         for step in source["steps"]:
             for result in step["results"]:

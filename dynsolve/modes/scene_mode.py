@@ -557,6 +557,45 @@ def _moment_checks(
     return tuple(checks)
 
 
+def second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
+    """The textbook's other moment equation of each rigid body, printed in the unknowns as
+    a check: about G where the equations took moments about a pin or a contact (the
+    spool's Method I, the car's Section I, the flywheel's ΣM_G = I_G α). Not part of the
+    solved system; the 'second moment point' check verifies it with the solved values."""
+    from dynsolve.principles.moment_check import moment_equation
+    from dynsolve.system import Equation
+
+    formulation = problem.formulation
+    dims = {problem.symbols[n]: d for n, d in problem.dims.dims.items() if n in problem.symbols}
+    line = max((row.line for row in problem.rows), default=0)
+    rows = []
+    for name, kinematics in formulation.kinematics.items():
+        body = problem.scene.bodies.get(name)
+        used = formulation.moment_points.get(name, "")
+        if body is None or kinematics.motion == "particle" or not used or used.startswith("G"):
+            continue
+        pin = kinematics.pin
+        if pin is not None and all(
+            tidy(a - b) == 0 for a, b in zip(pin.point, body.G, strict=True)
+        ):
+            continue  # a pin at G: the equations already took moments about G
+        applied, kinetic = moment_equation(
+            body,
+            formulation.forces.get(name, ()),
+            formulation.couples.get(name, ()),
+            kinematics,
+            body.G,
+        )
+        principle = (
+            "ΣM_G = 0 (translation)" if kinematics.motion == "translation" else ("ΣM_G = I_G α")
+        )
+        line += 1
+        note = f"{principle} ({name}): a second moment point, a check, not used in the solve"
+        equation = Equation(tidy(applied), tidy(kinetic), f"ΣM_G ({name})", line, note)
+        rows.append(_row(equation, dims, problem.spec))
+    return tuple(rows)
+
+
 def _after_pivot(scene: Scene, formulation: Formulation) -> Scene:
     """The scene just after an eccentric impact: pinned at the struck point, turning at ω₁."""
     if not scene.pivots:
