@@ -225,16 +225,21 @@ def _energy_terms(
         return ()
     view = _View(problem, outcome, {}, options)
     values = {**problem.system.knowns, **outcome.values}
-    unit = natural_unit(ENERGY, problem.spec.system)
+    energy_unit = natural_unit(ENERGY, problem.spec.system)
+    speed_unit = natural_unit(SPEED, problem.spec.system)
     rows = []
     works = [expr for label, expr in terms if label.startswith("U")]
     if len(works) > 1:  # the textbook's U(1→2) = U_S + U_M = −5 + 9.375 = 4.375, before T2
         total = ("U_12 = ΣU(1→2), the work of all the forces", sympy.Add(*works))
         last = max(i for i, (label, _) in enumerate(terms) if label.startswith("U"))
         terms = (*terms[: last + 1], total, *terms[last + 1 :])
+    speeds = _kinematic_relations(problem)
+    if speeds:  # the notes' "kinematic relation: v_O = r ω = 0.4 ω", just before T2
+        terms = (*terms[:-1], *speeds, terms[-1])
     for label, expr in terms:
         name, _, meaning = label.partition(" = ")
         meaning = meaning or _ENERGY_MEANINGS.get(name, "")
+        unit = speed_unit if name.startswith("v_G") else energy_unit
         number = real_value(expr, values)
         shown = format_quantity(number, unit) if number is not None else ""
         symbolic = bool((sympy.Integer(0) + expr).free_symbols)
@@ -249,6 +254,23 @@ def _energy_terms(
             )
         )
     return tuple(rows)
+
+
+SPEED = Dim(1, 0, -1)
+
+
+def _kinematic_relations(problem: SceneProblem) -> tuple[tuple[str, sympy.Expr], ...]:
+    """The speed of each body's G in state 2 where the travel's kinematics gives it from
+    another unknown (a wheel's v_G = r ω, a platform's v_G = l ω_AB), as (label, v_G)."""
+    speeds = problem.formulation.speeds
+    found = []
+    for body, speed in speeds.items():
+        speed = sympy.Integer(0) + speed
+        if speed.is_Symbol or not speed.free_symbols & set(problem.system.unknowns):
+            continue
+        name = "v_G" if len(speeds) == 1 else f"v_G_{body}"
+        found.append((f"{name} = speed of G of {body} in state 2 (kinematic relation)", speed))
+    return tuple(found)
 
 
 def _trial(

@@ -402,6 +402,7 @@ NOTES: dict[str, Notes] = {
             S("g"): R(322, 10),
         },
         {
+            "the platform translates with a speed of 4ω": S("v_G") - 4 * S("omega_2_AB"),
             "T2 = 0.5(200/32.2)(4ω)² = 49.69 ω²": S("T2") - 49.69 * S("omega_2_AB") ** 2,
             "T1 + U1-2 = T2: 0 + 249.7 = 49.69 ω²": 249.7 - 49.69 * S("omega_2_AB") ** 2,
         },
@@ -414,7 +415,8 @@ NOTES: dict[str, Notes] = {
         ),
     ),
     # seed 000_7d19090924ac08d7.txt, Ch. 18 EXAMPLE (50-kg wheel, 50 N, 10 revolutions).
-    # The wheel rolls to the right: dynsolve's ω_2_wheel is its clockwise |ω|.
+    # The wheel rolls to the right: dynsolve's ω_2_wheel is its clockwise |ω|, its v_G the
+    # notes' v_O.
     "rwe_seed_wheel10rev": Notes(
         "seed 000, Ch. 18 EXAMPLE (50-kg wheel)",
         {
@@ -426,7 +428,7 @@ NOTES: dict[str, Notes] = {
             S("n"): 20 * pi,
         },
         {
-            "kinematic relation: v_O = r ω = 0.4 ω": S("v_O") - 0.4 * S("omega_2_wheel"),
+            "kinematic relation: v_O = r ω = 0.4 ω": S("v_G") - 0.4 * S("omega_2_wheel"),
             "T2 = 0.5(50)(0.4ω)² + 0.5(50)(0.3)²ω² = 6.25 ω²": S("T2")
             - 6.25 * S("omega_2_wheel") ** 2,
             "T1 + U1-2 = T2: 0 + 1088 = 6.25 ω²": 1088 - 6.25 * S("omega_2_wheel") ** 2,
@@ -572,9 +574,6 @@ MISSING: dict[tuple[str, str], str] = {
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("gpm_seed_incline_threshold", "values"): "β_max = atan(μ_s(1 + m R²/I_G)) = 31.0° is "
     "printed only as an answer, with no derivation line",
-    ("rwe_seed_wheel10rev", "equations"): "the rolling relation v_O = r ω = 0.4 ω is not "
-    "printed as a line: it appears only in the 'kinematics between the states' check "
-    "(Δs_G = r Δθ), and T2 is written in ω directly",
     ("ci_seed_cube_lip", "values"): "I_B = I_C + M(√2 a)² = (8/3) M a² = 1.33 kg·m² is not "
     "printed: the impact equation carries 8 M a²/3 inline, with no parallel-axis line",
     ("curv_seed_ellipse", "values"): "the curvature's extremes κ_max = a/b² (x → a) and "
