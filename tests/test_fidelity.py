@@ -574,8 +574,6 @@ MISSING: dict[tuple[str, str], str] = {
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("gpm_seed_incline_threshold", "values"): "β_max = atan(μ_s(1 + m R²/I_G)) = 31.0° is "
     "printed only as an answer, with no derivation line",
-    ("ci_seed_cube_lip", "values"): "I_B = I_C + M(√2 a)² = (8/3) M a² = 1.33 kg·m² is not "
-    "printed: the impact equation carries 8 M a²/3 inline, with no parallel-axis line",
     ("curv_seed_ellipse", "values"): "the curvature's extremes κ_max = a/b² (x → a) and "
     "κ_min = b/a² are not printed as lines: a_max = a v²/b² appears with no κ step",
     ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "

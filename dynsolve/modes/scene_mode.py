@@ -365,6 +365,20 @@ def _inertia_rows(
         value = body.I_G.xreplace(given_values) if given_values else body.I_G
         note = f"I about G of {body.name}: {body.inertia_note or 'given'}"
         rows.append(GivenInfo(name, symbol, value, INERTIA, None, note, body.I_G, shown=True))
+    for pivot in scene.pivots:  # a body struck at a point turns about it: I_P = I_G + m d²
+        body = scene.bodies[pivot.body]
+        name = f"I_{pivot.name}" if len(scene.pivots) == 1 else f"I_{pivot.name}_{body.name}"
+        d2 = tidy((body.G[0] - pivot.point[0]) ** 2 + (body.G[1] - pivot.point[1]) ** 2)
+        if body.particle or name in symbols or _is_zero_expr(d2):
+            continue
+        formula = tidy(body.I_G + body.mass * d2)
+        value = formula.xreplace(given_values) if given_values else formula
+        note = (
+            f"I about {pivot.name} of {body.name}: I_G + m d² (parallel-axis theorem), "
+            f"d² = {sympy.sstr(d2).replace('**', '^')}"
+        )
+        symbol = sympy.Symbol(name, positive=True)
+        rows.append(GivenInfo(name, symbol, value, INERTIA, None, note, formula, shown=True))
     return rows
 
 
