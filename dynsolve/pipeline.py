@@ -400,7 +400,7 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
             method = "table + parallel axis"
         else:
             result = view.definition(target)
-            results, note = ((result,) if result is not None else ()), ""
+            results, note = ((*view.stated(target), result) if result is not None else ()), ""
             heading, method = f"{pretty(target.name)} from the values found", "substituted"
         if results:
             index = len(steps) + len(extra) + 1
@@ -776,6 +776,27 @@ class _View:
             substituted=numbers[0] if numbers else "",
             substituted_latex=numbers[1] if numbers else "",
         )
+
+    def stated(self, target: Target) -> tuple[Formula, ...]:
+        """The quantities an answer's derivation states before it (the curvature κ_max
+        before a_max = v² κ_max): formula, numbers and value."""
+        rows = []
+        for name, expr, dim in target.before:
+            number = self.number(expr.xreplace(self.knowns))
+            if number is None:
+                continue
+            numbers = self.substituted(expr)
+            rows.append(
+                Formula(
+                    name,
+                    self.text(expr),
+                    self.latex(expr),
+                    *self.quantity(number, natural_unit(dim, self.system)),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+        return tuple(rows)
 
     def composite_lines(self, target: Target) -> tuple[Formula, ...]:
         """A composite's I about a point as the textbook sums it: each part's mass, its

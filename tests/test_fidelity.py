@@ -481,7 +481,8 @@ NOTES: dict[str, Notes] = {
             "a_min = κ_min v² = (b/a²) v²": S("a_min") - R(100, 150**2) * 400,
         },
         (
-            Value(("kappa_max", "K_max"), 150 / 100**2, "1/m"),  # κ_max = a/b²
+            Value(("kappa_max", "K_max"), 150 / 100**2, "m⁻¹"),  # κ_max = a/b²
+            Value(("kappa_min",), 100 / 150**2, "m⁻¹"),  # κ_min = b/a² (at y = ±b)
             Value(("a_max",), 6.0, "m/s²"),
         ),
     ),
@@ -574,8 +575,6 @@ MISSING: dict[tuple[str, str], str] = {
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("gpm_seed_incline_threshold", "values"): "β_max = atan(μ_s(1 + m R²/I_G)) = 31.0° is "
     "printed only as an answer, with no derivation line",
-    ("curv_seed_ellipse", "values"): "the curvature's extremes κ_max = a/b² (x → a) and "
-    "κ_min = b/a² are not printed as lines: a_max = a v²/b² appears with no κ step",
     ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "
     "an expanded ΣM_G,z with C_y and D_y, and the bearing force only as the step D_y = …; "
     "the notes' F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) is not among the equations",

@@ -75,6 +75,8 @@ class Target:
     vector: tuple[sympy.Expr, sympy.Expr] | None = None
     trial: bool = False
     parts: tuple[Term, ...] = ()  # a composite's I about a point, one line per part
+    # quantities its derivation states first, (name, value, dimension): κ_max before a_max
+    before: tuple[tuple[str, sympy.Expr, Dim], ...] = ()
 
 
 @dataclass(frozen=True)

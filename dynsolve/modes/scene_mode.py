@@ -844,7 +844,8 @@ def _quantity(
             )
         extreme = _path_extremes(scene, args[0], where)
         chosen = extreme.maximum if function == "a_max" else extreme.minimum
-        return target("magnitude", Dim(1, 0, -2), chosen.a)
+        kappa = (f"kappa_{function[2:]}", chosen.kappa, Dim(-1, 0, 0))  # a = v² κ
+        return target("magnitude", Dim(1, 0, -2), chosen.a, before=(kappa,))
     if function == "omega_after" and len(args) == 1:
         if args[0] not in formulation.after_omega:
             raise SpecError(
