@@ -398,6 +398,10 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
             results, note = view.composite_lines(target), "one line per part: I_G + m d²"
             heading = f"{pretty(target.name)} of the parts (composite body)"
             method = "table + parallel axis"
+        elif target.kind == "steepest":
+            results = view.steepest_formulas(target) if not target.trial else ()
+            note = "at the steepest slope friction reaches its limit: |F| = μs N"
+            heading, method = f"{pretty(target.name)}, the steepest slope without slip", "limit"
         else:
             result = view.definition(target)
             results, note = ((*view.stated(target), result) if result is not None else ()), ""
@@ -624,13 +628,15 @@ class _View:
             note=block.note,
         )
 
-    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+    def substituted(
+        self, formula: sympy.Expr, extra: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> tuple[str, str] | None:
         """(text, latex) of ``formula`` with every symbol replaced by its number in base
-        units, unevaluated, as a hand calculation writes it; None where a symbol has no
-        number (a symbolic problem) or the formula is a bare symbol."""
+        units (``extra`` adds values), unevaluated, as a hand calculation writes it; None
+        where a symbol has no number (a symbolic problem) or the formula is a bare symbol."""
         if isinstance(formula, sympy.Symbol):
             return None
-        values = {**self.knowns, **self.outcome.values}
+        values = {**self.knowns, **self.outcome.values, **(extra or {})}
         names: dict[sympy.Symbol, str] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
@@ -776,6 +782,55 @@ class _View:
             substituted=numbers[0] if numbers else "",
             substituted_latex=numbers[1] if numbers else "",
         )
+
+    def steepest_formulas(self, target: Target) -> tuple[Formula, ...]:
+        """The steepest slope without slip as the seed notes derive it: the friction and
+        normal force needed on a slope β, then |F| = μs N, tan β_max = μs (1 + m R²/I)."""
+        from dynsolve.modes.scene_mode import steepest_lines
+
+        assert target.expr is not None
+        contact = target.expr.name
+        angle = self.computed(target.name)
+        found = steepest_lines(self.problem, contact, self.outcome.values, self.options)  # type: ignore[arg-type]
+        if found is None or angle is None or self.number(angle) is None:
+            return ()
+        F, N, tangent, phi = found
+        beta = sympy.Symbol(pretty(target.name))  # the angle's own name in the formulas
+        at = {beta: angle}
+        names = {**self.latex_symbols, beta: latex_name(target.name)}
+        force_unit = natural_unit(Dim(1, 1, -2), self.system)
+        rows = []
+        for name, expr in ((f"F_{contact}", F), (f"N_{contact}", N)):
+            shown = expr.xreplace({phi: beta})
+            number = self.number(shown.xreplace({**self.knowns, **at}))
+            numbers = self.substituted(shown, at)
+            if number is None:
+                return ()
+            rows.append(
+                Formula(
+                    name,
+                    self.text(shown),
+                    sympy.latex(shown, symbol_names=names),
+                    *self.quantity(number, force_unit),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+        formula = sympy.atan(tangent)
+        numbers = self.substituted(formula)
+        value_text, value_latex, _ = self.shown(target.name, angle)
+        rows.append(
+            Formula(
+                target.name,
+                self.text(formula),
+                self.latex(formula),
+                value_text,
+                value_latex,
+                numbers[0] if numbers else "",
+                numbers[1] if numbers else "",
+            )
+        )
+        return tuple(rows)
 
     def stated(self, target: Target) -> tuple[Formula, ...]:
         """The quantities an answer's derivation states before it (the curvature κ_max

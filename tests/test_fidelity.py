@@ -573,8 +573,6 @@ MISSING: dict[tuple[str, str], str] = {
     "tan_β/sqrt(tan_β^2 + 1)), not along and normal to the incline: the notes' "
     "F_N = m g cos β and F_f − m g sin β = −m R α are each a combination of two printed "
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
-    ("gpm_seed_incline_threshold", "values"): "β_max = atan(μ_s(1 + m R²/I_G)) = 31.0° is "
-    "printed only as an answer, with no derivation line",
     ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "
     "an expanded ΣM_G,z with C_y and D_y, and the bearing force only as the step D_y = …; "
     "the notes' F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) is not among the equations",

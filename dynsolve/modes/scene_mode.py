@@ -993,15 +993,49 @@ def steepest(
     it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
     friction at its limit, |F| = μs N, in the sense it has in the solution ``values``.
     """
+    found = _steepest_limit(problem, contact, values, options, problem.system.knowns)
+    if found is None:
+        return None
+    F, N, sense, mu_s, phi = found
+    condition = tidy((F - sense * mu_s * N).xreplace(problem.system.knowns))
+    return _angle_root(condition, phi)
+
+
+def steepest_lines(
+    problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
+) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Symbol] | None:
+    """The steepest slope's derivation in the givens' symbols: the friction F(φ) and the
+    normal force N(φ) the body needs on a slope φ, and tan φ where |F| = μs N (the seed's
+    tan β = μs(1 + m R²/I)); None where |F| = μs N is not a sin/cos balance."""
+    found = _steepest_limit(problem, contact, values, options, {})
+    if found is None:
+        return None
+    F, N, sense, mu_s, phi = found
+    condition = sympy.expand(F - sense * mu_s * N)
+    a, b = condition.coeff(sympy.sin(phi)), condition.coeff(sympy.cos(phi))
+    if sympy.expand(condition - a * sympy.sin(phi) - b * sympy.cos(phi)) != 0 or a == 0:
+        return None
+    return tidy(F), tidy(N), tidy(sympy.factor(-b / a)), phi
+
+
+def _steepest_limit(
+    problem: SceneProblem,
+    contact: str,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    options: object,
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+) -> tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol] | None:
+    """F and N at ``contact`` with gravity tilted by φ, solved with ``knowns`` put in;
+    friction's sense and μs: |F| = μs N at the steepest slope."""
     from dynsolve.solver import solve_system
 
     scene, formulation = problem.scene, problem.formulation
     support = next(s for s in scene.supports if s.name == contact)
     assert scene.gravity is not None and support.mu_s is not None
-    knowns = problem.system.knowns
+    all_knowns = problem.system.knowns
     up = (-scene.gravity[0], -scene.gravity[1])
-    side = real_value(dot(up, support.tangent), knowns) or 0.0
-    friction = real_value(formulation.reactions[f"F_{contact}"][0], {**knowns, **values})
+    side = real_value(dot(up, support.tangent), all_knowns) or 0.0
+    friction = real_value(formulation.reactions[f"F_{contact}"][0], {**all_knowns, **values})
     if friction is None:
         return None
     phi = sympy.Symbol("phi_steepest", positive=True)
@@ -1022,8 +1056,7 @@ def steepest(
     solved = solve_system(system, quiet).values
     if F not in solved or N not in solved:
         return None
-    condition = tidy((solved[F] - sense * support.mu_s * solved[N]).xreplace(knowns))
-    return _angle_root(condition, phi)
+    return solved[F], solved[N], sense, support.mu_s, phi
 
 
 def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
