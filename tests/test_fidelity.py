@@ -808,3 +808,27 @@ def test_the_pole_remarks_that_alpha_reverses() -> None:
     # 245.25(1.5) − 400(1) = 75 α gives α = −0.428: the sense reverses
     remarks = " ".join(derivation("gpm_seed_pole_slip")["trials"][0]["remarks"])
     assert "α" in remarks and "0.667" in remarks and "0.428" in remarks
+
+
+def test_the_new_derivation_lines_are_in_every_output() -> None:
+    # the lines the notes print reach the terminal, Markdown and LaTeX as well as JSON:
+    # seed 003, Example 17.3 (I_O = 1.473 − 0.276 = 1.20 kg·m², part by part), seed 003,
+    # Example 17.13 (Method I about G: 100(0.2) − T(0.5) = 0.98 α), seed 000, pendulum
+    # (O = √(O_n² + O_t²) = 299 N)
+    from dynsolve.render.latex import render_latex
+    from dynsolve.render.markdown import render_markdown
+    from dynsolve.render.terminal import render_text
+
+    plate = solve_file(SEED / "moi_hib_plate_hole.dyn")
+    spool = solve_file(SEED / "gpm_seed_spool.dyn")
+    pendulum = solve_file(SEED / "fa_seed_pendulum.dyn")
+    text = render_text(plate) + render_text(spool) + render_text(pendulum)
+    assert "I_O_1 = I_G + m*d^2" in text and "1.473 - 0.2761" in text
+    assert "A second moment point" in text and "P*r_i - T*r_o" in text
+    assert "O = sqrt(O_n^2 + O_t^2)" in text
+    markdown = render_markdown(plate) + render_markdown(spool) + render_markdown(pendulum)
+    assert "I_{O,1}" in markdown and "## A second moment point" in markdown
+    assert "\\sqrt{O_{n}^{2} + O_{t}^{2}}" in markdown
+    latex = render_latex(plate) + render_latex(spool) + render_latex(pendulum)
+    assert "I_{O,1}" in latex and "A second moment point" in latex
+    assert "\\sqrt{O_{n}^{2} + O_{t}^{2}}" in latex

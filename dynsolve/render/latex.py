@@ -515,7 +515,7 @@ def _solution_section(steps: Sequence[Step]) -> str:
 def _step(step: Step) -> str:
     names = and_list([_name(n) for n in step.unknowns])
     lead = f"\\paragraph{{Step {step.index}.}} " + (
-        escape_latex(step.heading) if step.heading else f"{lines_phrase(step.lines, '--')} {names}"
+        caption_latex(step.heading) if step.heading else f"{lines_phrase(step.lines, '--')} {names}"
     )
     lines = [f"{lead} ({escape_latex(step.method)}):"]
     if step.results:
