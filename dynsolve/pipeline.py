@@ -151,7 +151,13 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         checks = linkage_checks(linkage, solved.values)
         solution = solve_problem(linkage, options, solved, second_methods=checks)
         return replace(solution, linkage=figure(linkage))
-    from dynsolve.modes.scene_mode import assess, build_scene_problem, cross_checks, free_bodies
+    from dynsolve.modes.scene_mode import (
+        assess,
+        build_scene_problem,
+        cross_checks,
+        free_bodies,
+        second_moment_rows,
+    )
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
@@ -192,9 +198,17 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
     )
-    shown = tuple(_trial(*each, outcome, options) for each in trials)
+    shown = tuple(
+        replace(
+            _trial(*each, outcome, options),
+            second_moments=second_moment_rows(each[0]),  # type: ignore[arg-type]
+        )
+        for each in trials
+    )
     energy = _energy_terms(problem, outcome, options)
-    return replace(solution, trials=shown, energy=energy) if shown or energy else solution
+    return replace(
+        solution, trials=shown, energy=energy, second_moments=second_moment_rows(problem)
+    )
 
 
 ENERGY = Dim(2, 1, -2)
@@ -211,11 +225,21 @@ def _energy_terms(
         return ()
     view = _View(problem, outcome, {}, options)
     values = {**problem.system.knowns, **outcome.values}
-    unit = natural_unit(ENERGY, problem.spec.system)
+    energy_unit = natural_unit(ENERGY, problem.spec.system)
+    speed_unit = natural_unit(SPEED, problem.spec.system)
     rows = []
+    works = [expr for label, expr in terms if label.startswith("U")]
+    if len(works) > 1:  # the textbook's U(1→2) = U_S + U_M = −5 + 9.375 = 4.375, before T2
+        total = ("U_12 = ΣU(1→2), the work of all the forces", sympy.Add(*works))
+        last = max(i for i, (label, _) in enumerate(terms) if label.startswith("U"))
+        terms = (*terms[: last + 1], total, *terms[last + 1 :])
+    speeds = _kinematic_relations(problem)
+    if speeds:  # the notes' "kinematic relation: v_O = r ω = 0.4 ω", just before T2
+        terms = (*terms[:-1], *speeds, terms[-1])
     for label, expr in terms:
         name, _, meaning = label.partition(" = ")
         meaning = meaning or _ENERGY_MEANINGS.get(name, "")
+        unit = speed_unit if name.startswith("v_G") else energy_unit
         number = real_value(expr, values)
         shown = format_quantity(number, unit) if number is not None else ""
         symbolic = bool((sympy.Integer(0) + expr).free_symbols)
@@ -230,6 +254,23 @@ def _energy_terms(
             )
         )
     return tuple(rows)
+
+
+SPEED = Dim(1, 0, -1)
+
+
+def _kinematic_relations(problem: SceneProblem) -> tuple[tuple[str, sympy.Expr], ...]:
+    """The speed of each body's G in state 2 where the travel's kinematics gives it from
+    another unknown (a wheel's v_G = r ω, a platform's v_G = l ω_AB), as (label, v_G)."""
+    speeds = problem.formulation.speeds
+    found = []
+    for body, speed in speeds.items():
+        speed = sympy.Integer(0) + speed
+        if speed.is_Symbol or not speed.free_symbols & set(problem.system.unknowns):
+            continue
+        name = "v_G" if len(speeds) == 1 else f"v_G_{body}"
+        found.append((f"{name} = speed of G of {body} in state 2 (kinematic relation)", speed))
+    return tuple(found)
 
 
 def _trial(
@@ -307,8 +348,10 @@ def solve_problem(
         assumptions=assumptions,
         givens=tuple(view.given_row(g) for g in problem.givens if view.used(g)),
         equations=view.equation_rows(),
-        steps=problem.steps
-        or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+        steps=_with_definitions(
+            problem.steps or tuple(view.step(i, b) for i, b in enumerate(outcome.blocks, start=1)),
+            view,
+        ),
         answers=answers,
         checks=checks,
         key=key,
@@ -316,6 +359,57 @@ def solve_problem(
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
     )
+
+
+def _orthonormal(
+    x: sympy.Expr,
+    y: sympy.Expr,
+    unknowns: list[sympy.Symbol],
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """True when (x, y) = Σ u e_u with the unknowns u along perpendicular unit vectors e_u
+    (numbers once the givens are put in), so |(x, y)|² = Σ u²."""
+    if not (x.is_polynomial(*unknowns) and y.is_polynomial(*unknowns)):
+        return False
+    columns = []
+    for u in unknowns:
+        cx, cy = real_value(x.diff(u).xreplace(knowns)), real_value(y.diff(u).xreplace(knowns))
+        if cx is None or cy is None:
+            return False
+        columns.append((cx, cy))
+    zero = {u: sympy.Integer(0) for u in unknowns}
+    rests = [real_value((sympy.Integer(0) + c.xreplace(zero)).xreplace(knowns)) for c in (x, y)]
+    if rests != [0.0, 0.0]:
+        return False
+    return all(
+        abs(a[0] * b[0] + a[1] * b[1] - (1.0 if i == j else 0.0)) < 1e-12
+        for i, a in enumerate(columns)
+        for j, b in enumerate(columns)
+    )
+
+
+def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
+    """The solve steps, then one step per answer read from the solved unknowns by a formula
+    (ω = v_G/r, O = √(O_n² + O_t²), a_max = v² a/b²), so that no answer appears without
+    its derivation."""
+    extra = []
+    for target in view.problem.targets:
+        if target.parts:
+            results, note = view.composite_lines(target), "one line per part: I_G + m d²"
+            heading = f"{pretty(target.name)} of the parts (composite body)"
+            method = "table + parallel axis"
+        elif target.kind == "steepest":
+            results = view.steepest_formulas(target) if not target.trial else ()
+            note = "at the steepest slope friction reaches its limit: |F| = μs N"
+            heading, method = f"{pretty(target.name)}, the steepest slope without slip", "limit"
+        else:
+            result = view.definition(target)
+            results, note = ((*view.stated(target), result) if result is not None else ()), ""
+            heading, method = f"{pretty(target.name)} from the values found", "substituted"
+        if results:
+            index = len(steps) + len(extra) + 1
+            extra.append(Step(index, (), (target.name,), method, results, (), note, heading))
+    return steps + tuple(extra)
 
 
 RESOLVES = 3  # re-solves of a scene whose friction assumption failed
@@ -382,9 +476,13 @@ class _View:
 
     # ---- helpers
     def used(self, given: GivenInfo) -> bool:
-        return given.given is not None or any(
-            given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
-            for e in self.problem.system.equations
+        return (
+            given.given is not None
+            or given.shown
+            or any(
+                given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
+                for e in self.problem.system.equations
+            )
         )
 
     def unit_of(self, name: str) -> str:
@@ -467,6 +565,10 @@ class _View:
         )
         written = f"= {formula}"
         latex = self.latex(info.formula)
+        numbers = self.substituted(info.formula)
+        if numbers is not None:  # the table formula, then its numbers (a hand calculation)
+            written += f" = {numbers[0]}"
+            latex += f" = {numbers[1]}"
         if value is not None and not (sympy.Integer(0) + info.formula).free_symbols:
             # a number found numerically (a joint by loop closure): shown with its unit
             converted = convert(value, unit, self.system)
@@ -528,13 +630,15 @@ class _View:
             note=block.note,
         )
 
-    def substituted(self, formula: sympy.Expr) -> tuple[str, str] | None:
+    def substituted(
+        self, formula: sympy.Expr, extra: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> tuple[str, str] | None:
         """(text, latex) of ``formula`` with every symbol replaced by its number in base
-        units, unevaluated, as a hand calculation writes it; None where a symbol has no
-        number (a symbolic problem) or the formula is a bare symbol."""
+        units (``extra`` adds values), unevaluated, as a hand calculation writes it; None
+        where a symbol has no number (a symbolic problem) or the formula is a bare symbol."""
         if isinstance(formula, sympy.Symbol):
             return None
-        values = {**self.knowns, **self.outcome.values}
+        values = {**self.knowns, **self.outcome.values, **(extra or {})}
         names: dict[sympy.Symbol, str] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
@@ -652,6 +756,185 @@ class _View:
             exact, latex = self.text(tidied), self.latex(tidied)
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
+
+    def definition(self, target: Target) -> Formula | None:
+        """An answer's own derivation line when it is not a solved unknown or a given
+        itself: its formula in the problem's symbols, the numbers put in, its value."""
+        if target.trial or target.kind in ("steepest", "threshold"):
+            return None
+        if target.vector is not None:
+            formula = self.magnitude(target.vector)
+        elif target.expr is not None:
+            formula = sympy.Integer(0) + target.expr
+        else:
+            return None
+        if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
+            return None
+        value = self.computed(target.name)
+        if value is None or self.number(value) is None:
+            return None
+        value_text, value_latex, _ = self.shown(target.name, value)  # signed, as its formula
+        numbers = self.substituted(formula)
+        return Formula(
+            name=target.name,
+            formula=self.text(formula),
+            formula_latex=self.latex(formula),
+            value=value_text,
+            value_latex=value_latex,
+            substituted=numbers[0] if numbers else "",
+            substituted_latex=numbers[1] if numbers else "",
+        )
+
+    def steepest_formulas(self, target: Target) -> tuple[Formula, ...]:
+        """The steepest slope without slip as the seed notes derive it: the friction and
+        normal force needed on a slope β, then |F| = μs N, tan β_max = μs (1 + m R²/I)."""
+        from dynsolve.modes.scene_mode import steepest_lines
+
+        assert target.expr is not None
+        contact = target.expr.name
+        angle = self.computed(target.name)
+        found = steepest_lines(self.problem, contact, self.outcome.values, self.options)  # type: ignore[arg-type]
+        if found is None or angle is None or self.number(angle) is None:
+            return ()
+        F, N, tangent, phi = found
+        beta = sympy.Symbol(pretty(target.name))  # the angle's own name in the formulas
+        at = {beta: angle}
+        names = {**self.latex_symbols, beta: latex_name(target.name)}
+        force_unit = natural_unit(Dim(1, 1, -2), self.system)
+        rows = []
+        for name, expr in ((f"F_{contact}", F), (f"N_{contact}", N)):
+            shown = expr.xreplace({phi: beta})
+            number = self.number(shown.xreplace({**self.knowns, **at}))
+            numbers = self.substituted(shown, at)
+            if number is None:
+                return ()
+            rows.append(
+                Formula(
+                    name,
+                    self.text(shown),
+                    sympy.latex(shown, symbol_names=names),
+                    *self.quantity(number, force_unit),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+        formula = sympy.atan(tangent)
+        numbers = self.substituted(formula)
+        value_text, value_latex, _ = self.shown(target.name, angle)
+        rows.append(
+            Formula(
+                target.name,
+                self.text(formula),
+                self.latex(formula),
+                value_text,
+                value_latex,
+                numbers[0] if numbers else "",
+                numbers[1] if numbers else "",
+            )
+        )
+        return tuple(rows)
+
+    def stated(self, target: Target) -> tuple[Formula, ...]:
+        """The quantities an answer's derivation states before it (the curvature κ_max
+        before a_max = v² κ_max): formula, numbers and value."""
+        rows = []
+        for name, expr, dim in target.before:
+            number = self.number(expr.xreplace(self.knowns))
+            if number is None:
+                continue
+            numbers = self.substituted(expr)
+            rows.append(
+                Formula(
+                    name,
+                    self.text(expr),
+                    self.latex(expr),
+                    *self.quantity(number, natural_unit(dim, self.system)),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+        return tuple(rows)
+
+    def composite_lines(self, target: Target) -> tuple[Formula, ...]:
+        """A composite's I about a point as the textbook sums it: each part's mass, its
+        I_G + m d² (a hole's negated) with the numbers put in, then the sum."""
+        rows, totals = [], []
+        mass_unit = natural_unit(Dim(0, 1), self.system)
+        inertia_unit = natural_unit(Dim(2, 1), self.system)
+        for k, term in enumerate(target.parts, start=1):
+            numeric = replace(
+                term,
+                mass=term.mass.xreplace(self.knowns),
+                distance=term.distance.xreplace(self.knowns),
+                values=tuple((s, v.xreplace(self.knowns)) for s, v in term.values),
+            )
+            mass = self.number(numeric.mass)
+            total = self.number(term.total.xreplace(self.knowns))
+            if mass is None or total is None:
+                return ()
+            numbers = self.substituted(term.mass)
+            rows.append(
+                Formula(
+                    f"m_{k}",
+                    self.text(term.mass),
+                    self.latex(term.mass),
+                    *self.quantity(mass, mass_unit),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+            pieces = [numeric.inertia_shown(), numeric.transfer_shown()]
+            text = " + ".join(sympy.sstr(p).replace("**", "^") for p in pieces)
+            latex = " + ".join(sympy.latex(p) for p in pieces)
+            sign = "-" if term.sign < 0 else ""
+            rows.append(
+                Formula(
+                    f"{target.name}_{k}",
+                    f"{sign}(I_G + m*d^2)" if sign else "I_G + m*d^2",
+                    f"{sign}(I_G + m d^2)" if sign else "I_G + m d^2",
+                    *self.quantity(total, inertia_unit),
+                    f"{sign}({text})" if sign else text,
+                    f"{sign}\\left({latex}\\right)" if sign else latex,
+                )
+            )
+            totals.append(total)
+        value = sum(totals)
+        names = [f"{target.name}_{k}" for k in range(1, len(totals) + 1)]
+        sums = sig(totals[0], 4) + "".join(
+            f" {'-' if t < 0 else '+'} {sig(abs(t), 4)}" for t in totals[1:]
+        )
+        rows.append(
+            Formula(
+                target.name,
+                " + ".join(pretty(n) for n in names),
+                " + ".join(latex_name(n) for n in names),
+                *self.quantity(value, inertia_unit),
+                sums,
+                sums,
+            )
+        )
+        return tuple(rows)
+
+    def quantity(self, value: float, unit: str) -> tuple[str, str]:
+        """(text, latex) of a value in base units shown in ``unit``."""
+        converted = convert(value, unit, self.system)
+        return format_quantity(converted, unit), f"{latex_number(converted)}\\,{latex_unit(unit)}"
+
+    def magnitude(self, vector: tuple[sympy.Expr, sympy.Expr]) -> sympy.Expr | None:
+        """|v| of a vector answer in the unknowns it is made of: √(O_n² + O_t²) when its
+        components are those unknowns along perpendicular unit axes, else √(x² + y²);
+        None when one unknown alone gives it (its step already shows it)."""
+        x, y = (sympy.Integer(0) + c for c in vector)
+        unknowns = sorted(
+            (x.free_symbols | y.free_symbols) & set(self.problem.system.unknowns), key=str
+        )
+        values = {**self.knowns, **self.outcome.values}
+        nonzero = [u for u in unknowns if self.number(values.get(u, u)) not in (None, 0.0)]
+        if len(nonzero) < 2:
+            return None
+        if _orthonormal(x, y, unknowns, self.knowns):
+            return sympy.sqrt(sympy.Add(*(u**2 for u in unknowns)))
+        return sympy.sqrt(x**2 + y**2)
 
     def sensed(self, target: Target, value: sympy.Expr) -> tuple[sympy.Expr, str]:
         """A symbolic rotation as its magnitude and sense (cw/ccw), when the sign of the

@@ -58,6 +58,7 @@ class Step:
     results: tuple[Formula, ...]
     discarded: tuple[str, ...]  # "ω = -3.00 rad/s: violates omega >= 0 (line 9)"
     note: str
+    heading: str = ""  # replaces "Equation (line n) gives X" for a step not from equations
 
 
 @dataclass(frozen=True)
@@ -141,6 +142,7 @@ class Trial:
     steps: tuple[Step, ...]
     verdict: str  # "|F| = 300 > μs N = 294.3; re-solved with F = μk N opposing the slip"
     remarks: tuple[str, ...] = ()  # "α changes sense: 0.667 rad/s² in the trial, -0.428 after"
+    second_moments: tuple[EquationRow, ...] = ()  # ΣM_G when the trial's moments were about A
 
 
 @dataclass(frozen=True)
@@ -189,6 +191,8 @@ class Solution:
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
     linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
+    # the other moment equation (about G where the solve took moments about A), as a check
+    second_moments: tuple[EquationRow, ...] = ()
 
     @property
     def passed(self) -> bool:

@@ -71,6 +71,7 @@ class Body:
     inertia_note: str  # how I_G was found (shape formula, gyration, composite lines)
     line: int
     column: int
+    parts: tuple[Part, ...] = ()  # a composite's parts and holes, placed from ``origin``
 
     @property
     def radius(self) -> sympy.Expr | None:
@@ -619,6 +620,7 @@ class _Builder:
                 note,
                 body.line,
                 body.column,
+                tuple(p for _, p in parts),
             )
         for body_name, parts in self.parts.items():
             stmt = parts[0][0]

@@ -24,6 +24,7 @@ from dynsolve.dimensions import DimensionReport, EquationCheck, check_dimensions
 from dynsolve.errors import DimensionError, DynsolveError, Position, SpecError, with_others
 from dynsolve.expressions import relation, to_sympy
 from dynsolve.format import pretty_unit
+from dynsolve.model.inertia import Term
 from dynsolve.quantities import resolve_dimension, resolve_quantity, resolve_unit
 from dynsolve.results import EquationRow, Step
 from dynsolve.spec.ast import EquationStmt, FindItem, Given, Spec
@@ -46,6 +47,8 @@ class GivenInfo:
     given: Given | None  # None for the default g and for derived quantities
     note: str = ""  # for a derived quantity (r_G, I_O): what it is
     formula: sympy.Expr | None = None  # for a derived quantity: in terms of the givens
+    shown: bool = False  # a modelling step the textbook prints (I_G = m k_G²) though no
+    # equation names it (the equations use its formula)
 
 
 @dataclass(frozen=True)
@@ -71,6 +74,9 @@ class Target:
     axis: tuple[sympy.Expr, sympy.Expr] | None = None
     vector: tuple[sympy.Expr, sympy.Expr] | None = None
     trial: bool = False
+    parts: tuple[Term, ...] = ()  # a composite's I about a point, one line per part
+    # quantities its derivation states first, (name, value, dimension): κ_max before a_max
+    before: tuple[tuple[str, sympy.Expr, Dim], ...] = ()
 
 
 @dataclass(frozen=True)

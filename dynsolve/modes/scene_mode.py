@@ -17,7 +17,7 @@ import sympy
 from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
-from dynsolve.model.inertia import parallel_axis
+from dynsolve.model.inertia import composite, parallel_axis
 from dynsolve.model.scene import Path, Scene, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
@@ -137,6 +137,7 @@ def build_scene_problem(
     symbols.update({s.name: s for s in formulation.derived})
     dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
     dims |= {s.name: d for s, (_, d, _) in formulation.derived.items()}
+    givens = givens + _inertia_rows(scene, formulation, symbols, given_values)
     givens = givens + [
         GivenInfo(
             s.name,
@@ -361,6 +362,59 @@ def _targets(
     return tuple(ordered)
 
 
+INERTIA = Dim(2, 1, 0)
+
+
+def _inertia_rows(
+    scene: Scene,
+    formulation: Formulation,
+    symbols: dict[str, sympy.Symbol],
+    given_values: Mapping[sympy.Symbol, sympy.Expr],
+) -> list[GivenInfo]:
+    """Each turning body's I_G from its table formula or radius of gyration, listed with the
+    givens as the textbook computes it first (I_G = m k_G² = 8(0.35)² = 0.980 kg·m²), even
+    where the equations carry the formula itself: a body that only translates, a particle,
+    a composite (its I_O row shows the sum) and an I_G given by name have no row."""
+    turning = [
+        body
+        for body in scene.bodies.values()
+        if not body.particle
+        and body.shape != "composite"
+        and not (sympy.Integer(0) + body.I_G).is_Symbol
+        and not _is_zero_expr(body.I_G)
+        and getattr(formulation.kinematics.get(body.name), "motion", "") != "translation"
+    ]
+    rows = []
+    for body in turning:
+        name = "I_G" if len(turning) == 1 else f"I_G_{body.name}"
+        if name in symbols:
+            continue
+        symbol = sympy.Symbol(name, positive=True)
+        value = body.I_G.xreplace(given_values) if given_values else body.I_G
+        note = f"I about G of {body.name}: {body.inertia_note or 'given'}"
+        rows.append(GivenInfo(name, symbol, value, INERTIA, None, note, body.I_G, shown=True))
+    for pivot in scene.pivots:  # a body struck at a point turns about it: I_P = I_G + m d²
+        body = scene.bodies[pivot.body]
+        name = f"I_{pivot.name}" if len(scene.pivots) == 1 else f"I_{pivot.name}_{body.name}"
+        d2 = tidy((body.G[0] - pivot.point[0]) ** 2 + (body.G[1] - pivot.point[1]) ** 2)
+        if body.particle or name in symbols or _is_zero_expr(d2):
+            continue
+        formula = tidy(body.I_G + body.mass * d2)
+        value = formula.xreplace(given_values) if given_values else formula
+        note = (
+            f"I about {pivot.name} of {body.name}: I_G + m d² (parallel-axis theorem), "
+            f"d² = {sympy.sstr(d2).replace('**', '^')}"
+        )
+        symbol = sympy.Symbol(name, positive=True)
+        rows.append(GivenInfo(name, symbol, value, INERTIA, None, note, formula, shown=True))
+    return rows
+
+
+def _is_zero_expr(expr: sympy.Expr) -> bool:
+    """True for an expression that is exactly zero (a particle's I_G)."""
+    return bool((sympy.Integer(0) + expr).is_zero)
+
+
 def _inertia_note(target: Target, item: FindItem, scene: Scene) -> tuple[str, str]:
     """How an asked-for inertia was found: the body's own I_G, then the parallel axis."""
     assert item.ref is not None
@@ -565,6 +619,45 @@ def _moment_checks(
         if check is not None:
             checks.append(check)
     return tuple(checks)
+
+
+def second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
+    """The textbook's other moment equation of each rigid body, printed in the unknowns as
+    a check: about G where the equations took moments about a pin or a contact (the
+    spool's Method I, the car's Section I, the flywheel's ΣM_G = I_G α). Not part of the
+    solved system; the 'second moment point' check verifies it with the solved values."""
+    from dynsolve.principles.moment_check import moment_equation
+    from dynsolve.system import Equation
+
+    formulation = problem.formulation
+    dims = {problem.symbols[n]: d for n, d in problem.dims.dims.items() if n in problem.symbols}
+    line = max((row.line for row in problem.rows), default=0)
+    rows = []
+    for name, kinematics in formulation.kinematics.items():
+        body = problem.scene.bodies.get(name)
+        used = formulation.moment_points.get(name, "")
+        if body is None or kinematics.motion == "particle" or not used or used.startswith("G"):
+            continue
+        pin = kinematics.pin
+        if pin is not None and all(
+            tidy(a - b) == 0 for a, b in zip(pin.point, body.G, strict=True)
+        ):
+            continue  # a pin at G: the equations already took moments about G
+        applied, kinetic = moment_equation(
+            body,
+            formulation.forces.get(name, ()),
+            formulation.couples.get(name, ()),
+            kinematics,
+            body.G,
+        )
+        principle = (
+            "ΣM_G = 0 (translation)" if kinematics.motion == "translation" else ("ΣM_G = I_G α")
+        )
+        line += 1
+        note = f"{principle} ({name}): a second moment point, a check, not used in the solve"
+        equation = Equation(tidy(applied), tidy(kinetic), f"ΣM_G ({name})", line, note)
+        rows.append(_row(equation, dims, problem.spec))
+    return tuple(rows)
 
 
 def _after_pivot(scene: Scene, formulation: Formulation) -> Scene:
@@ -801,7 +894,8 @@ def _quantity(
             )
         extreme = _path_extremes(scene, args[0], where)
         chosen = extreme.maximum if function == "a_max" else extreme.minimum
-        return target("magnitude", Dim(1, 0, -2), chosen.a)
+        kappa = (f"kappa_{function[2:]}", chosen.kappa, Dim(-1, 0, 0))  # a = v² κ
+        return target("magnitude", Dim(1, 0, -2), chosen.a, before=(kappa,))
     if function == "omega_after" and len(args) == 1:
         if args[0] not in formulation.after_omega:
             raise SpecError(
@@ -832,7 +926,11 @@ def _quantity(
             return target("magnitude", Dim(2, 1), model.I_G)
         point = _point(args[1], scene, body, where)
         d2 = (model.G[0] - point[0]) ** 2 + (model.G[1] - point[1]) ** 2
-        return target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
+        found = target("magnitude", Dim(2, 1), parallel_axis(model.I_G, model.mass, sympy.sqrt(d2)))
+        if model.parts:  # the textbook's sum: each part's I_G + m d² about the point
+            relative = (point[0] - model.origin[0], point[1] - model.origin[1])
+            found = replace(found, parts=composite(model.parts).terms(relative))
+        return found
     at_state = f"{function}({args[0]})" if len(args) == 1 and args[0].isdigit() else ""
     if at_state == f"{function}(1)" and function in formulation.reactions:
         at_state = function  # a single travel's state 1 is the scene's instant
@@ -955,15 +1053,49 @@ def steepest(
     it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
     friction at its limit, |F| = μs N, in the sense it has in the solution ``values``.
     """
+    found = _steepest_limit(problem, contact, values, options, problem.system.knowns)
+    if found is None:
+        return None
+    F, N, sense, mu_s, phi = found
+    condition = tidy((F - sense * mu_s * N).xreplace(problem.system.knowns))
+    return _angle_root(condition, phi)
+
+
+def steepest_lines(
+    problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
+) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Symbol] | None:
+    """The steepest slope's derivation in the givens' symbols: the friction F(φ) and the
+    normal force N(φ) the body needs on a slope φ, and tan φ where |F| = μs N (the seed's
+    tan β = μs(1 + m R²/I)); None where |F| = μs N is not a sin/cos balance."""
+    found = _steepest_limit(problem, contact, values, options, {})
+    if found is None:
+        return None
+    F, N, sense, mu_s, phi = found
+    condition = sympy.expand(F - sense * mu_s * N)
+    a, b = condition.coeff(sympy.sin(phi)), condition.coeff(sympy.cos(phi))
+    if sympy.expand(condition - a * sympy.sin(phi) - b * sympy.cos(phi)) != 0 or a == 0:
+        return None
+    return tidy(F), tidy(N), tidy(sympy.factor(-b / a)), phi
+
+
+def _steepest_limit(
+    problem: SceneProblem,
+    contact: str,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    options: object,
+    knowns: Mapping[sympy.Symbol, sympy.Expr],
+) -> tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol] | None:
+    """F and N at ``contact`` with gravity tilted by φ, solved with ``knowns`` put in;
+    friction's sense and μs: |F| = μs N at the steepest slope."""
     from dynsolve.solver import solve_system
 
     scene, formulation = problem.scene, problem.formulation
     support = next(s for s in scene.supports if s.name == contact)
     assert scene.gravity is not None and support.mu_s is not None
-    knowns = problem.system.knowns
+    all_knowns = problem.system.knowns
     up = (-scene.gravity[0], -scene.gravity[1])
-    side = real_value(dot(up, support.tangent), knowns) or 0.0
-    friction = real_value(formulation.reactions[f"F_{contact}"][0], {**knowns, **values})
+    side = real_value(dot(up, support.tangent), all_knowns) or 0.0
+    friction = real_value(formulation.reactions[f"F_{contact}"][0], {**all_knowns, **values})
     if friction is None:
         return None
     phi = sympy.Symbol("phi_steepest", positive=True)
@@ -984,8 +1116,7 @@ def steepest(
     solved = solve_system(system, quiet).values
     if F not in solved or N not in solved:
         return None
-    condition = tidy((solved[F] - sense * support.mu_s * solved[N]).xreplace(knowns))
-    return _angle_root(condition, phi)
+    return solved[F], solved[N], sense, support.mu_s, phi
 
 
 def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:

@@ -78,6 +78,34 @@ def balance(
     return Check(f"second moment point: {name}", passed, detail)
 
 
+def moment_equation(
+    body: Body,
+    forces: Sequence[ForceTerm],
+    couples: Sequence[CoupleTerm],
+    kinematics: Kinematics,
+    P: Vec,
+) -> tuple[sympy.Expr, sympy.Expr]:
+    """ΣM_P of the forces and couples, and the kinetic diagram's moment about P,
+    I_G α + r_G/P × m a_G, both in the unknowns: the equation Method II writes.
+
+    >>> from dynsolve.model.scene import Body
+    >>> from dynsolve.principles.newton_euler import ForceTerm, Kinematics
+    >>> m, g, L, alpha = sympy.symbols("m g L alpha")
+    >>> rod = Body("rod", m, m * L**2 / 12, (L / 2, 0), (L / 2, 0), "rod", (L,), {}, False,
+    ...            "", 0, 0)
+    >>> weight = ForceTerm("W", "weight", "rod", (L / 2, 0), "G", (0, -1), m * g, True)
+    >>> kin = Kinematics("rotation", alpha, (0, alpha * L / 2), 0)
+    >>> moment_equation(rod, [weight], [], kin, (0, 0))
+    (-L*g*m/2, L**2*alpha*m/3)
+    """
+    arms = [tidy(cross((f.point[0] - P[0], f.point[1] - P[1]), f.direction)) for f in forces]
+    applied = sympy.Add(*(f.magnitude * arm for f, arm in zip(forces, arms, strict=True)))
+    applied += sympy.Add(*(c.moment for c in couples))
+    r = (body.G[0] - P[0], body.G[1] - P[1])
+    kinetic = body.I_G * kinematics.alpha + body.mass * cross(r, kinematics.a_G)
+    return applied, kinetic
+
+
 def _gap(
     body: Body,
     forces: Sequence[ForceTerm],

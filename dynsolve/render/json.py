@@ -51,6 +51,7 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         "warnings": list(solution.warnings),
         "trials": [asdict(trial) for trial in solution.trials],
         "energy": [asdict(term) for term in solution.energy],
+        "second_moments": [asdict(row) for row in solution.second_moments],
         "schema": SCHEMA_VERSION,
     }
 

@@ -309,7 +309,10 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "free_body": lambda: _free_body_section(solution.free_body) + _linkage_section(solution),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
-        "equations": lambda: [_equations_section(solution.equations)],
+        "equations": lambda: [
+            _equations_section(solution.equations),
+            *_second_moments_section(solution.second_moments),
+        ],
         "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
@@ -416,6 +419,14 @@ def _equations_section(equations: Sequence[EquationRow]) -> str:
     return "\n\n".join(["\\subsection*{Equations}", *(_equation(e) for e in equations)])
 
 
+def _second_moments_section(rows: Sequence[EquationRow]) -> list[str]:
+    """The other moment point's equation (a check, not used to solve); nothing without one."""
+    if not rows:
+        return []
+    title = "\\subsection*{A second moment point (a check, not used to solve)}"
+    return ["\n\n".join([title, *(_equation(e) for e in rows)])]
+
+
 _SUBSCRIPTED = re.compile(
     r"\(([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+)\)_([A-Za-z0-9]+)"  # (a_G)_x
     r"|([ΣΔ]?)([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+(?:/[A-Za-z0-9]+)?)([²³]?)"  # ΣF_x, r_G/A, r_G²
@@ -488,7 +499,11 @@ def _trial_section(trial: Trial) -> str:
     title = f"\\subsection*{{Trial: {escape_latex(trial.assumption)} (assumed, then checked)}}"
     verdict = f"\\textbf{{Check:}} $\\times$ {escape_latex(trial.verdict)}"
     remarks = [f"\\textit{{Remark:}} {escape_latex(r)}" for r in trial.remarks]
-    return "\n\n".join([title, equations, steps, verdict, *remarks])
+    moments = [
+        m.replace("\\subsection*", "\\subsubsection*", 1)
+        for m in _second_moments_section(trial.second_moments)
+    ]
+    return "\n\n".join([title, equations, steps, *moments, verdict, *remarks])
 
 
 def _solution_section(steps: Sequence[Step]) -> str:
@@ -499,7 +514,9 @@ def _solution_section(steps: Sequence[Step]) -> str:
 
 def _step(step: Step) -> str:
     names = and_list([_name(n) for n in step.unknowns])
-    lead = f"\\paragraph{{Step {step.index}.}} {lines_phrase(step.lines, '--')} {names}"
+    lead = f"\\paragraph{{Step {step.index}.}} " + (
+        caption_latex(step.heading) if step.heading else f"{lines_phrase(step.lines, '--')} {names}"
+    )
     lines = [f"{lead} ({escape_latex(step.method)}):"]
     if step.results:
         rows = " \\\\\n".join(_result(r) for r in step.results)

@@ -94,7 +94,10 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
         "free_body": lambda: _free_body_section(solution.free_body),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
-        "equations": lambda: [_equations_section(solution.equations)],
+        "equations": lambda: [
+            _equations_section(solution.equations),
+            *_second_moments_section(solution.second_moments),
+        ],
         "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
         "answers": lambda: [_answers_section(solution.answers, key)],
@@ -180,6 +183,14 @@ def _equations_section(equations: Sequence[EquationRow]) -> str:
     return "## Equations\n\n" + _table(header, ["--:", ":--", ":--", ":--"], rows)
 
 
+def _second_moments_section(rows: Sequence[EquationRow]) -> list[str]:
+    """The other moment point's equation (a check, not used to solve); nothing without one."""
+    if not rows:
+        return []
+    title = "## A second moment point (a check, not used to solve)"
+    return [_equations_section(rows).replace("## Equations", title, 1)]
+
+
 def _equation_cells(row: EquationRow) -> list[str]:
     note = escape_markdown(row.note)
     if row.constraint:
@@ -205,7 +216,8 @@ def _trial_section(trial: Trial) -> str:
     verdict = f"**Check:** ✗ {escape_markdown(trial.verdict)}"
     remarks = [f"*Remark:* {escape_markdown(r)}" for r in trial.remarks]
     title = f"## Trial: {escape_markdown(trial.assumption)} (assumed, then checked)"
-    return "\n\n".join([title, equations, steps, verdict, *remarks])
+    moments = [m.replace("## ", "### ", 1) for m in _second_moments_section(trial.second_moments)]
+    return "\n\n".join([title, equations, steps, *moments, verdict, *remarks])
 
 
 def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
@@ -234,7 +246,9 @@ def _solution_section(steps: Sequence[Step]) -> str:
 
 def _step(step: Step) -> str:
     names = and_list([_name(n) for n in step.unknowns])
-    lead = f"**Step {step.index}.** {lines_phrase(step.lines)} {names}"
+    lead = f"**Step {step.index}.** " + (
+        escape_markdown(step.heading) if step.heading else f"{lines_phrase(step.lines)} {names}"
+    )
     blocks = [f"{lead} ({escape_markdown(step.method)}):"]
     blocks += [_display(_result(r)) for r in step.results]
     if step.discarded:

@@ -67,6 +67,9 @@ def solution_renderable(solution: Solution) -> RenderableType:
     for trial in solution.trials:
         parts += [_heading(f"Trial: {trial.assumption} (assumed, then checked)"), _trial(trial)]
     parts += [_heading("Equations (units checked)"), _equations(solution)]
+    if solution.second_moments:
+        heading = _heading("A second moment point (a check, not used to solve)")
+        parts += [heading, _equation_table(solution.second_moments)]
     if solution.energy:
         parts += [_heading("Work and energy, term by term"), _energy(solution)]
     if solution.steps:
@@ -153,6 +156,9 @@ def _trial(trial: Trial) -> RenderableType:
     """A rejected trial: its equations, its solve, the failed check and the remarks."""
     rows: list[RenderableType] = [_equation_table(trial.equations)]
     rows += [_step(s) for s in trial.steps]
+    if trial.second_moments:
+        rows.append(Text("a second moment point (a check):", style="dim"))
+        rows.append(_equation_table(trial.second_moments))
     rows.append(Text(f"✗ {trial.verdict}", style="bold red"))
     rows += [Text(f"remark: {r}", style="yellow") for r in trial.remarks]
     return Group(*rows)
@@ -160,7 +166,8 @@ def _trial(trial: Trial) -> RenderableType:
 
 def _step(step: Step) -> RenderableType:
     unknowns = and_list([pretty(u) for u in step.unknowns])
-    head = Text(f"{step.index}. {lines_phrase(step.lines)} {unknowns} ({step.method})")
+    lead = step.heading or f"{lines_phrase(step.lines)} {unknowns}"
+    head = Text(f"{step.index}. {lead} ({step.method})")
     rows: list[RenderableType] = [head]
     for result in step.results:
         formula = f" = {result.formula.replace('**', '^')}" if result.formula else ""
