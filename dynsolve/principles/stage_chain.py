@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import sympy
 
-from dynsolve.model.scene import Impact, Link, Pivot, Scene, Support, Travel, Vec
+from dynsolve.model.scene import Body, Impact, Link, Pivot, Scene, Support, Travel, Vec
 from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
 from dynsolve.numbers import float_functions, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
@@ -372,12 +372,7 @@ class _Chain:
                     "followed after a travel (only a particle's place is)",
                 )
             shift = (self.places[name][0] - body.G[0], self.places[name][1] - body.G[1])
-            bodies[name] = replace(
-                body,
-                G=self.places[name],
-                origin=_plus(body.origin, shift),
-                points={n: _plus(p, shift) for n, p in body.points.items()},
-            )
+            bodies[name] = _carried(body, shift)
         for name, group in self.together.items():
             riders = sorted(group - {name})
             if len(group) > 1 and name == min(group):  # the group moves as its first body
@@ -490,13 +485,7 @@ class _Chain:
         if body in self.places:  # a bob that swung: its place, not its drawing
             shift = (self.places[body][0] - model.G[0], self.places[body][1] - model.G[1])
         mass = tidy(model.mass + sum(scene.bodies[n].mass for n in riders))
-        model = replace(
-            model,
-            mass=mass,
-            G=_plus(model.G, shift),
-            origin=_plus(model.origin, shift),
-            points={n: _plus(p, shift) for n, p in model.points.items()},
-        )
+        model = replace(_carried(model, shift), mass=mass)
         held = [s.name for s in scene.supports if s.body in part]
         if held:
             raise StageError(
@@ -567,13 +556,7 @@ class _Chain:
         scene = self.scene
         bodies = dict(scene.bodies)
         for name in part:
-            body = bodies[name]
-            bodies[name] = replace(
-                body,
-                G=_plus(body.G, shift),
-                origin=_plus(body.origin, shift),
-                points={n: _plus(p, shift) for n, p in body.points.items()},
-            )
+            bodies[name] = _carried(bodies[name], shift)
         supports = tuple(
             replace(s, point=_plus(s.point, shift)) if s.body in part else s for s in scene.supports
         )
@@ -883,13 +866,7 @@ class _Chain:
         assert shift is not None
         bodies = dict(scene.bodies)
         for name in part:
-            body = bodies[name]
-            bodies[name] = replace(
-                body,
-                G=_plus(body.G, shift),
-                origin=_plus(body.origin, shift),
-                points={n: _plus(p, shift) for n, p in body.points.items()},
-            )
+            bodies[name] = _carried(bodies[name], shift)
         return replace(scene, bodies=bodies)
 
 
@@ -936,6 +913,16 @@ def _joined(scene: Scene, body: str) -> set[str]:
                 part |= {a, b}
                 grown = True
     return {name for name in part if name in scene.bodies}
+
+
+def _carried(body: Body, shift: Vec) -> Body:
+    """``body`` moved by ``shift`` without turning: its G, origin and named points."""
+    return replace(
+        body,
+        G=_plus(body.G, shift),
+        origin=_plus(body.origin, shift),
+        points={n: _plus(p, shift) for n, p in body.points.items()},
+    )
 
 
 def _plus(a: Vec, b: Vec) -> Vec:
