@@ -271,7 +271,14 @@ def _solve_linear(
     given: Mapping[sympy.Symbol, sympy.Expr],
     options: SolveOptions,
 ) -> BlockSolution:
-    """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown."""
+    """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown.
+
+    Numeric mode solves a block whose entries are all numbers once the knowns are put in
+    in floating point (:func:`solve_linear_in_floats`), without formulas."""
+    if options.mode == "numeric":
+        floats = solve_linear_in_floats(matrix.xreplace(given), rhs.xreplace(given), unknowns)
+        if floats is not None:
+            return floats
     if options.show_formulas and len(unknowns) <= FORMULA_MAX_UNKNOWNS:
         formulas, _ = _within_budget(
             lambda: _unique_linear_solution(matrix, rhs, unknowns), options.time_budget
@@ -325,6 +332,88 @@ def _solve_linear_values(
         free=free,
         missing_equations=len(parameters),
     )
+
+
+FLOAT_LINEAR_UNKNOWNS = 40  # bigger numeric blocks are solved exactly (mpmath LU is O(n³))
+FLOAT_LINEAR_NOTE = "numeric mode: the numbers put in, solved in floating point"
+
+
+def solve_linear_in_floats(
+    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...]
+) -> BlockSolution | None:
+    """Numeric mode's linear solve: ``matrix * unknowns = rhs`` with numbers only, in
+    floating point with :data:`GUARD_DIGITS` beyond the ones kept; None (solve it exactly)
+    when an entry is a letter or not real, the block is large, or the matrix is singular
+    or so ill-conditioned that the guard digits would not cover what it loses.
+
+    The matrix is equilibrated (rows, then columns, scaled to a largest entry of 1), so
+    unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
+    value is below the working precision next to the terms it is the sum of is exactly 0
+    (a sum that cancels exactly, as exact arithmetic would find).
+
+    >>> x, y = sympy.symbols("x y")
+    >>> found = solve_linear_in_floats(
+    ...     sympy.Matrix([[1, 1], [1, -1]]), sympy.Matrix([sympy.sqrt(2), sympy.sqrt(2)]), (x, y)
+    ... )
+    >>> found.candidates[0].values
+    {x: 1.41421356237310, y: 0}
+    >>> solve_linear_in_floats(sympy.Matrix([[1, 2], [2, 4]]), sympy.Matrix([1, 2]), (x, y))
+    """
+    n = len(unknowns)
+    if n > FLOAT_LINEAR_UNKNOWNS or matrix.shape != (n, n) or matrix.free_symbols:
+        return None
+    if rhs.free_symbols:
+        return None
+    digits = numeric_digits() + GUARD_DIGITS
+    with mpmath.workdps(digits):
+        try:
+            A = [[_mp_real(matrix[i, j], digits) for j in range(n)] for i in range(n)]
+            b = [_mp_real(rhs[i], digits) for i in range(n)]
+        except (TypeError, ValueError):
+            return None  # a complex or non-finite entry: the exact path says what it is
+        rows = [max(abs(a) for a in row) or mpmath.mpf(1) for row in A]
+        A = [[a / rows[i] for a in A[i]] for i in range(n)]
+        b = [b[i] / rows[i] for i in range(n)]
+        columns = [max(abs(A[i][j]) for i in range(n)) or mpmath.mpf(1) for j in range(n)]
+        scaled = mpmath.matrix([[A[i][j] / columns[j] for j in range(n)] for i in range(n)])
+        try:
+            inverse = mpmath.inverse(scaled)
+        except ZeroDivisionError:
+            return None
+        if mpmath.mnorm(scaled, 1) * mpmath.mnorm(inverse, 1) > mpmath.mpf(10) ** (
+            GUARD_DIGITS - 5
+        ):
+            return None  # (nearly) singular: dependent or contradictory equations, exactly
+        tiny = mpmath.mpf(10) ** (3 - digits)
+        values: dict[sympy.Symbol, sympy.Expr] = {}
+        for j, unknown in enumerate(unknowns):
+            terms = [inverse[j, i] * b[i] for i in range(n)]
+            total = mpmath.fsum(terms)
+            if abs(total) <= tiny * mpmath.fsum(abs(t) for t in terms):
+                values[unknown] = sympy.Integer(0)
+            else:
+                values[unknown] = sympy.Float(total / columns[j], numeric_digits())
+    candidate = Candidate(values)
+    return BlockSolution(unknowns, "linear", (candidate,), note=FLOAT_LINEAR_NOTE)
+
+
+def _mp_real(entry: sympy.Expr, digits: int) -> mpmath.mpf:
+    """A real sympy number as an mpmath number at ``digits`` (ValueError if not real/finite)."""
+    if entry.is_Integer:
+        return mpmath.mpf(int(entry))
+    if entry.is_Rational:
+        return mpmath.mpf(int(entry.p)) / int(entry.q)
+    if entry.is_Float and mpmath.isfinite(mpmath.mpf(entry._mpf_)):
+        return mpmath.mpf(entry._mpf_)
+    number = sympy.N(entry, digits, maxn=MAX_DIGITS)
+    if not number.is_Float:
+        if number.is_zero:
+            return mpmath.mpf(0)
+        raise ValueError(f"not a real number: {entry}")
+    value = mpmath.mpf(number._mpf_)
+    if not mpmath.isfinite(value):
+        raise ValueError(f"not a finite number: {entry}")
+    return value
 
 
 def _in_mode(
