@@ -496,6 +496,22 @@ def _polynomial_roots(
             return None
     exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
     attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None)
+    if attempt is None or not attempt.candidates:
+        # sympy keeps only the roots its assumptions allow (t_s positive): without them,
+        # every root, as a numeric search would find them, for the root choice to judge
+        plain = {u: sympy.Dummy(u.name) for u in unknowns}
+        back = {d: u for u, d in plain.items()}
+        residuals_plain = [r.xreplace(plain) for r in exact]
+        attempt, _ = _symbolic_candidates(
+            residuals_plain, tuple(plain.values()), options.time_budget, None
+        )
+        if attempt is not None:
+            attempt = replace(
+                attempt,
+                candidates=tuple(
+                    Candidate({back[d]: v for d, v in c.values.items()}) for c in attempt.candidates
+                ),
+            )
     if attempt is None or not attempt.candidates or attempt.free:
         return None
     candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
