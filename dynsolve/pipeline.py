@@ -646,7 +646,8 @@ class _View:
             direction = sense or direction
         exact = sympy.sstr(value)
         if number is None:
-            tidied = _tidy(value)
+            # numeric mode shows the formula as solved: its tidying is display only
+            tidied = value if self.options.mode == "numeric" else _tidy(value)
             exact, latex = self.text(tidied), self.latex(tidied)
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)

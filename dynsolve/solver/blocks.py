@@ -494,6 +494,12 @@ def _polynomial_roots(
             return None
         if sympy.Poly(numerator, *unknowns).total_degree() > POLYNOMIAL_DEGREE:
             return None
+    if len(unknowns) == 1:
+        roots = _univariate_roots(residuals[0], unknowns[0])
+        if roots is not None:
+            note = "numeric mode: a polynomial, every root (mpmath.polyroots), in floating point"
+            candidates = tuple(Candidate({unknowns[0]: _to_sympy(r)}) for r in roots)
+            return BlockSolution(unknowns, "numeric", candidates, note=note)
     exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
     attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None)
     if attempt is None or not attempt.candidates:
@@ -517,6 +523,41 @@ def _polynomial_roots(
     candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
     note = "numeric mode: a polynomial block, every root (sympy), in floating point"
     return BlockSolution(unknowns, "numeric", candidates, note=note)
+
+
+def _univariate_roots(residual: sympy.Expr, unknown: sympy.Symbol) -> list[mpmath.mpf] | None:
+    """Every root of a polynomial in one unknown with number coefficients, by
+    ``mpmath.polyroots`` with :data:`GUARD_DIGITS` beyond the ones kept; None (let sympy
+    solve it exactly) when a coefficient is not a real number, the search does not
+    converge, a root is repeated (where the digits a float search keeps are halved) or
+    the unknown is in a denominator.
+
+    >>> w = sympy.Symbol("w")
+    >>> [mpmath.nstr(r, 6) for r in _univariate_roots(2 * w**2 - 8, w)]
+    ['-2.0', '2.0']
+    >>> _univariate_roots((w - 1) ** 2, w) is None
+    True
+    """
+    numerator, denominator = sympy.fraction(sympy.together(residual))
+    if unknown in denominator.free_symbols:
+        return None
+    digits = numeric_digits() + GUARD_DIGITS
+    try:
+        coefficients = sympy.Poly(numerator, unknown).all_coeffs()
+        if len(coefficients) < 2:
+            return None
+        with mpmath.workdps(digits):
+            numbers = [_mp_real(c, digits) for c in coefficients]
+            if numbers[0] == 0:
+                return None
+            roots = mpmath.polyroots(numbers, maxsteps=100, extraprec=2 * digits)
+            for i, a in enumerate(roots):
+                for b in roots[i + 1 :]:
+                    if abs(a - b) <= mpmath.mpf(10) ** -8 * max(abs(a), abs(b)):
+                        return None
+            return list(roots)
+    except (sympy.PolynomialError, ValueError, TypeError, ArithmeticError, mpmath.NoConvergence):
+        return None
 
 
 def _solve_symbolically(
