@@ -419,9 +419,19 @@ def _mp_real(entry: sympy.Expr, digits: int) -> mpmath.mpf:
 def _in_mode(
     values: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions
 ) -> dict[sympy.Symbol, sympy.Expr]:
-    """Exact values as they are; in numeric mode, floating point ones."""
+    """Exact values as they are; in numeric mode, floating point numbers, while a value that
+    still holds a letter (a symbolic given) stays the exact formula: floats in a formula
+    only make it harder to read and to compare with a key (never exactly 0).
+
+    >>> g, v, w = sympy.symbols("g v w")
+    >>> _in_mode({v: sympy.sqrt(2), w: sympy.sqrt(2) * g}, SolveOptions(mode="numeric"))
+    {v: 1.41421356237310, w: sqrt(2)*g}
+    """
     if options.mode == "numeric":
-        return {u: v.evalf(numeric_digits(), maxn=MAX_DIGITS) for u, v in values.items()}
+        return {
+            u: v if v.free_symbols else v.evalf(numeric_digits(), maxn=MAX_DIGITS)
+            for u, v in values.items()
+        }
     return dict(values)
 
 
