@@ -136,9 +136,10 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
     invert = not _values_at_times_only(spec, givens, kind)
-    if kind == "a(v)" and invert:
-        # an a(v) law inverted with the numbers in meets exp(c*log(n)) = n**c with c ~ 1e6
-        # at large scales, and sympy expands the power; with letters it stays a formula
+    if kind in ("a(v)", "a(x)") and invert:
+        # an a(v) or a(x) law inverted with the numbers in can cost sympy seconds at
+        # extreme scales (exp(c*log(n)) = n**c expanded with c ~ 1e6; the roots of
+        # v_0**2 - k*x**2 with v_0 = 6e-9); with letters its formulas do not change
         numbers_first = False
     if numbers_first:
         rhs = rhs.xreplace(values)

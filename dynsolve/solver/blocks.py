@@ -465,6 +465,8 @@ def _solve_nonlinear(
     names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
         every_root = _polynomial_roots(substituted, unknowns, options)
+        if every_root is None and given:
+            every_root = _briefly_symbolic(residuals, unknowns, given, options)
         return every_root or solve_numerically(substituted, unknowns, "numeric mode")
     solution, reason = _solve_symbolically(residuals, substituted, unknowns, given, options)
     if solution is not None and options.mode == "numeric":
@@ -476,6 +478,28 @@ def _solve_nonlinear(
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
     return solve_numerically(substituted, unknowns, reason)
+
+
+BRIEF_BUDGET = 0.25  # seconds numeric mode gives sympy on a block before its root search
+
+
+def _briefly_symbolic(
+    residuals: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions,
+) -> BlockSolution | None:
+    """Numeric mode's short symbolic attempt at a transcendental block, with the knowns as
+    letters as exact mode solves it (the numbers of a problem scaled by 1e-9 slow sympy
+    down; the letters do not), its roots in floating point; None when sympy does not
+    finish within :data:`BRIEF_BUDGET` (then the root search runs)."""
+    seconds = min(BRIEF_BUDGET, options.time_budget)
+    attempt, _ = _symbolic_candidates(residuals, unknowns, seconds, given)
+    if attempt is None or not attempt.candidates or attempt.free:
+        return None
+    candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
+    note = "numeric mode: solved by sympy with the knowns as letters, in floating point"
+    return BlockSolution(unknowns, "numeric", candidates, note=note)
 
 
 POLYNOMIAL_DEGREE = 4  # numeric mode solves polynomial blocks up to this degree exactly
