@@ -53,14 +53,17 @@ def compare(
     symbols: Mapping[str, sympy.Symbol],
     knowns: Mapping[sympy.Symbol, sympy.Expr],
     known_dims: Mapping[str, Dim],
+    confirm: bool = True,
 ) -> Verdict:
     """Judge ``computed`` (in base units; None when not determined) against ``answer``.
 
     ``knowns`` holds the givens' values and the solved unknowns; ``known_dims`` the
     dimension of every name a formula key may use (givens and solved unknowns).
+    ``confirm=False`` (numeric mode) judges formula keys by the numeric comparison at
+    random points alone, without the symbolic confirmation.
     """
     if answer.formula is not None:
-        return _compare_formula(answer, computed, dim, spec, symbols, knowns, known_dims)
+        return _compare_formula(answer, computed, dim, spec, symbols, knowns, known_dims, confirm)
     expected, shown, mismatch = _expected(answer, dim, spec)
     if mismatch is not None:
         return mismatch
@@ -185,6 +188,7 @@ def _compare_formula(
     symbols: Mapping[str, sympy.Symbol],
     knowns: Mapping[sympy.Symbol, sympy.Expr],
     known_dims: Mapping[str, Dim],
+    confirm: bool = True,
 ) -> Verdict:
     assert answer.formula is not None
     for name in iter_names(answer.formula):
@@ -212,7 +216,7 @@ def _compare_formula(
         return Verdict(False, shown, "not determined by the equations")
     computed = computed.xreplace(dict(knowns))
     if computed.free_symbols:
-        return _equivalent(expected, computed, shown)
+        return _equivalent(expected, computed, shown, confirm)
     value = real_value(computed)
     target = real_value(expected.subs(knowns))
     if value is None or target is None:
@@ -221,10 +225,13 @@ def _compare_formula(
     return Verdict(passed, shown, f"formula gives {target:.6g}, computed {value:.6g} (base units)")
 
 
-def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdict:
+def _equivalent(
+    expected: sympy.Expr, computed: sympy.Expr, shown: str, confirm: bool = True
+) -> Verdict:
     """Two formulas compared numerically first, at random points (relative tolerance
     ``EQUIVALENCE_RTOL``), and only then confirmed symbolically, cheaply (``tidy`` of the
-    difference; ``simplify`` for a small difference free of floating-point numbers)."""
+    difference; ``simplify`` for a small difference free of floating-point numbers);
+    without ``confirm`` (numeric mode) the numeric comparison is the verdict."""
     difference = expected - computed
     if difference == 0:
         return Verdict(True, shown, "equivalent (exactly)")
@@ -238,7 +245,7 @@ def _equivalent(expected: sympy.Expr, computed: sympy.Expr, shown: str) -> Verdi
             return Verdict(False, shown, "the formula has no finite value (a division by zero?)")
         if b is None or abs(a - b) > EQUIVALENCE_RTOL * max(abs(a), abs(b), 1e-300):
             return Verdict(False, shown, f"not equivalent: computed {computed}")
-    if _zero_symbolically(difference):
+    if confirm and _zero_symbolically(difference):
         return Verdict(True, shown, "equivalent (exactly)")
     return Verdict(
         True,

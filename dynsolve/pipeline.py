@@ -108,15 +108,28 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
     try:
         with step("building the equations"):
             if spec.kinematics:
-                from dynsolve.modes.kinematics_mode import build_kinematics_problem
-
-                return solve_problem(build_kinematics_problem(spec), options or SolveOptions())
+                options = options or SolveOptions()
+                return solve_problem(_kinematics_problem(spec, options), options)
             if spec.scene:
                 return solve_scene(spec, options or SolveOptions())
             return solve_problem(build_problem(spec), options or SolveOptions())
     except OutOfRange as error:  # raised where the file is not known
         columns = {s.line: s.column for s in (*spec.equations, *spec.kinematics)}
         raise error.located(spec.file, columns) from None
+
+
+def _kinematics_problem(spec: Spec, options: SolveOptions) -> SolvableProblem:
+    """One-line kinematics: in numeric mode with the numbers put in first, and, should
+    that fail (a relation sympy inverts with letters but not with numbers), as in exact mode."""
+    from dynsolve.errors import SpecError
+    from dynsolve.modes.kinematics_mode import build_kinematics_problem
+
+    if options.mode == "numeric":
+        try:
+            return build_kinematics_problem(spec, numbers_first=True)
+        except SpecError:
+            pass
+    return build_kinematics_problem(spec)
 
 
 def _simulation_checks(
@@ -752,7 +765,8 @@ class _View:
             direction = sense or direction
         exact = sympy.sstr(value)
         if number is None:
-            tidied = _tidy(value)
+            # numeric mode shows the formula as solved: its tidying is display only
+            tidied = value if self.options.mode == "numeric" else _tidy(value)
             exact, latex = self.text(tidied), self.latex(tidied)
             text = exact + self.base_units_note()
         return AnswerRow(target.name, number, target.unit, text, exact, latex, direction)
@@ -999,6 +1013,7 @@ class _View:
                     self.problem.symbols,
                     solved,
                     known_dims,
+                    confirm=self.options.mode != "numeric",
                 )
             out.append(
                 KeyComparison(

@@ -79,9 +79,14 @@ class KinematicsProblem:
     mode: str = "kinematics"
 
 
-def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
+def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> KinematicsProblem:
     """Check the given relation's units, integrate it, and resolve the find list
     (plane motion, with two relations, is handed to :mod:`dynsolve.modes.plane_kinematics`).
+
+    ``numbers_first`` (numeric mode): the givens' values are put into the relation and the
+    initial conditions once its units are checked, so the motion is integrated, inverted
+    and searched for events with numbers (the steps show v(t) = 3*t^2 - 12*t + 9 rather
+    than v(t) = c_1 - 2*c_2*t + 3*c_3*t^2); givens without a value stay letters.
 
     >>> from dynsolve.spec.parser import parse_spec
     >>> text = "given:\\n  c = 2 m/s\\nkinematics:\\n  x = c*t\\n  y = c*t\\nfind: v_t = v(t)"
@@ -131,13 +136,23 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
     invert = not _values_at_times_only(spec, givens, kind)
+    if kind in ("a(v)", "a(x)") and invert:
+        # an a(v) or a(x) law inverted with the numbers in can cost sympy seconds at
+        # extreme scales (exp(c*log(n)) = n**c expanded with c ~ 1e6; the roots of
+        # v_0**2 - k*x**2 with v_0 = 6e-9); with letters its formulas do not change
+        numbers_first = False
+    if numbers_first:
+        rhs = rhs.xreplace(values)
+        initial = {n: sympy.Integer(0) + e.xreplace(values) for n, e in initial.items()}
     motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"], invert)
     if kind in ("x(t)", "v(t)"):  # the start is the law's own
         initial |= {n: _tidy(motion.formulas[f"{n}(t)"].subs(T, initial["t"])) for n in "xv"}
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
     given_dims = {g.name: g.dim for g in givens}
     numeric: list[Step] = []
-    context = _Context(motion, all_symbols, given_dims, spec, values, initial, numeric, {})
+    context = _Context(
+        motion, all_symbols, given_dims, spec, values, initial, numeric, {}, numbers_first
+    )
     defined_names = {line.lhs.text for line in spec.defines}  # type: ignore[union-attr]
     for item in spec.finds:
         if item.name in defined_names and item.ref is None:
@@ -157,7 +172,7 @@ def build_kinematics_problem(spec: Spec) -> KinematicsProblem:
     notes = _check_usage(spec, givens, symbols, kind)
     dims = DimensionReport({**known_dims, **{t.name: t.dim for t in targets}}, (), frozenset())
     row = relation_row(statement, report.checks[0].dim, spec)
-    steps = _steps(motion, values, all_symbols)
+    steps = _steps(motion, values, all_symbols, numbers_first)
     steps += tuple(replace(step, index=len(steps) + i) for i, step in enumerate(numeric, 1))
     system = EquationSystem(equations=(), unknowns=(), knowns=values)
     return KinematicsProblem(
@@ -200,6 +215,7 @@ class _Context:
     initial: Mapping[str, sympy.Expr]
     numeric: list[Step]
     earlier: dict[str, Target]
+    numbers_first: bool = False  # numeric mode: a formula that is a number is not shown
 
     def lookup(self) -> dict[str, sympy.Expr]:
         """Every name a find may be evaluated at: givens, t_0/x_0/v_0 and earlier finds."""
@@ -488,8 +504,10 @@ def _event_target(item: FindItem, context: _Context) -> Target:
         results += (Formula("t", sympy.sstr(event.time), sympy.latex(event.time),
                             shown(event.time), shown(event.time)),)  # fmt: skip
     text = sympy.sstr(event.expr).replace("**", "^")
-    results += (Formula(item.name, text, sympy.latex(event.expr), shown(event.expr),
-                        shown(event.expr)),)  # fmt: skip
+    latex = sympy.latex(event.expr)
+    if context.numbers_first and not event.expr.free_symbols:
+        text = latex = ""  # the number itself: "t_a = 1", not "t_a = 1 = 1"
+    results += (Formula(item.name, text, latex, shown(event.expr), shown(event.expr)),)
     method = "root choice" if function in ("t_at", "x_at") else "extreme"
     if function == "distance":
         method = "integration"
@@ -755,7 +773,10 @@ def relation_row(statement: EquationStmt, dim: Dim, spec: Spec, note: str = "") 
 
 
 def _steps(
-    motion: Motion, values: Mapping[sympy.Symbol, sympy.Expr], symbols: Mapping[str, sympy.Symbol]
+    motion: Motion,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    symbols: Mapping[str, sympy.Symbol],
+    numbers_first: bool = False,
 ) -> tuple[Step, ...]:
     pretty_names = {s: sympy.Symbol(pretty(n)) for n, s in symbols.items()}
     latex_names = {s: latex_name(n) for n, s in symbols.items()}
@@ -767,6 +788,8 @@ def _steps(
         with_numbers = formula.xreplace(dict(values))
         shown = sympy.sstr(sympy.N(with_numbers, 4)).replace("**", "^")
         result = Formula(name, text, latex, shown, sympy.latex(sympy.N(with_numbers, 4)))
+        if numbers_first and with_numbers == formula:  # the numbers are in already
+            result = Formula(name, "", "", text, latex)
         steps.append(
             Step(index, (), (name,), "integration" if "∫" in how else "algebra", (result,), (), how)
         )

@@ -1078,7 +1078,7 @@ def _interval_checks(
             checks.append(Assumption(name, False, detail))
             continue
         scale = max(abs(start), abs(end)) or 1.0
-        keeps = end * start >= -1e-9 * scale
+        keeps = end * (1 if start > 0 else -1) >= -1e-9 * scale  # relative: a speed vs speeds
         detail = (
             f"slip {start:.4g} m/s at state {k}, {0.0 if abs(end) <= 1e-9 * scale else end:.4g} "
             f"m/s at state {k + 1}: kinetic friction opposes it throughout"

@@ -271,7 +271,14 @@ def _solve_linear(
     given: Mapping[sympy.Symbol, sympy.Expr],
     options: SolveOptions,
 ) -> BlockSolution:
-    """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown."""
+    """Solve ``matrix * unknowns = rhs`` exactly; formulas first when they are shown.
+
+    Numeric mode solves a block whose entries are all numbers once the knowns are put in
+    in floating point (:func:`solve_linear_in_floats`), without formulas."""
+    if options.mode == "numeric":
+        floats = solve_linear_in_floats(matrix.xreplace(given), rhs.xreplace(given), unknowns)
+        if floats is not None:
+            return floats
     if options.show_formulas and len(unknowns) <= FORMULA_MAX_UNKNOWNS:
         formulas, _ = _within_budget(
             lambda: _unique_linear_solution(matrix, rhs, unknowns), options.time_budget
@@ -327,12 +334,104 @@ def _solve_linear_values(
     )
 
 
+FLOAT_LINEAR_UNKNOWNS = 40  # bigger numeric blocks are solved exactly (mpmath LU is O(n³))
+FLOAT_LINEAR_NOTE = "numeric mode: the numbers put in, solved in floating point"
+
+
+def solve_linear_in_floats(
+    matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...]
+) -> BlockSolution | None:
+    """Numeric mode's linear solve: ``matrix * unknowns = rhs`` with numbers only, in
+    floating point with :data:`GUARD_DIGITS` beyond the ones kept; None (solve it exactly)
+    when an entry is a letter or not real, the block is large, or the matrix is singular
+    or so ill-conditioned that the guard digits would not cover what it loses.
+
+    The matrix is equilibrated (rows, then columns, scaled to a largest entry of 1), so
+    unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
+    value is below the working precision next to the terms it is the sum of is exactly 0
+    (a sum that cancels exactly, as exact arithmetic would find).
+
+    >>> x, y = sympy.symbols("x y")
+    >>> found = solve_linear_in_floats(
+    ...     sympy.Matrix([[1, 1], [1, -1]]), sympy.Matrix([sympy.sqrt(2), sympy.sqrt(2)]), (x, y)
+    ... )
+    >>> found.candidates[0].values
+    {x: 1.41421356237310, y: 0}
+    >>> solve_linear_in_floats(sympy.Matrix([[1, 2], [2, 4]]), sympy.Matrix([1, 2]), (x, y))
+    """
+    n = len(unknowns)
+    if n > FLOAT_LINEAR_UNKNOWNS or matrix.shape != (n, n) or matrix.free_symbols:
+        return None
+    if rhs.free_symbols:
+        return None
+    digits = numeric_digits() + GUARD_DIGITS
+    with mpmath.workdps(digits):
+        try:
+            A = [[_mp_real(matrix[i, j], digits) for j in range(n)] for i in range(n)]
+            b = [_mp_real(rhs[i], digits) for i in range(n)]
+        except (TypeError, ValueError):
+            return None  # a complex or non-finite entry: the exact path says what it is
+        rows = [max(abs(a) for a in row) or mpmath.mpf(1) for row in A]
+        A = [[a / rows[i] for a in A[i]] for i in range(n)]
+        b = [b[i] / rows[i] for i in range(n)]
+        columns = [max(abs(A[i][j]) for i in range(n)) or mpmath.mpf(1) for j in range(n)]
+        scaled = mpmath.matrix([[A[i][j] / columns[j] for j in range(n)] for i in range(n)])
+        try:
+            inverse = mpmath.inverse(scaled)
+        except ZeroDivisionError:
+            return None
+        if mpmath.mnorm(scaled, 1) * mpmath.mnorm(inverse, 1) > mpmath.mpf(10) ** (
+            GUARD_DIGITS - 5
+        ):
+            return None  # (nearly) singular: dependent or contradictory equations, exactly
+        tiny = mpmath.mpf(10) ** (3 - digits)
+        values: dict[sympy.Symbol, sympy.Expr] = {}
+        for j, unknown in enumerate(unknowns):
+            terms = [inverse[j, i] * b[i] for i in range(n)]
+            total = mpmath.fsum(terms)
+            if abs(total) <= tiny * mpmath.fsum(abs(t) for t in terms):
+                values[unknown] = sympy.Integer(0)
+            else:
+                values[unknown] = sympy.Float(total / columns[j], numeric_digits())
+    candidate = Candidate(values)
+    return BlockSolution(unknowns, "linear", (candidate,), note=FLOAT_LINEAR_NOTE)
+
+
+def _mp_real(entry: sympy.Expr, digits: int) -> mpmath.mpf:
+    """A real sympy number as an mpmath number at ``digits`` (ValueError if not real/finite)."""
+    if entry.is_Integer:
+        return mpmath.mpf(int(entry))
+    if entry.is_Rational:
+        return mpmath.mpf(int(entry.p)) / int(entry.q)
+    if entry.is_Float and mpmath.isfinite(mpmath.mpf(entry._mpf_)):
+        return mpmath.mpf(entry._mpf_)
+    number = sympy.N(entry, digits, maxn=MAX_DIGITS)
+    if not number.is_Float:
+        if number.is_zero:
+            return mpmath.mpf(0)
+        raise ValueError(f"not a real number: {entry}")
+    value = mpmath.mpf(number._mpf_)
+    if not mpmath.isfinite(value):
+        raise ValueError(f"not a finite number: {entry}")
+    return value
+
+
 def _in_mode(
     values: Mapping[sympy.Symbol, sympy.Expr], options: SolveOptions
 ) -> dict[sympy.Symbol, sympy.Expr]:
-    """Exact values as they are; in numeric mode, floating point ones."""
+    """Exact values as they are; in numeric mode, floating point numbers, while a value that
+    still holds a letter (a symbolic given) stays the exact formula: floats in a formula
+    only make it harder to read and to compare with a key (never exactly 0).
+
+    >>> g, v, w = sympy.symbols("g v w")
+    >>> _in_mode({v: sympy.sqrt(2), w: sympy.sqrt(2) * g}, SolveOptions(mode="numeric"))
+    {v: 1.41421356237310, w: sqrt(2)*g}
+    """
     if options.mode == "numeric":
-        return {u: v.evalf(numeric_digits(), maxn=MAX_DIGITS) for u, v in values.items()}
+        return {
+            u: v if v.free_symbols else v.evalf(numeric_digits(), maxn=MAX_DIGITS)
+            for u, v in values.items()
+        }
     return dict(values)
 
 
@@ -366,6 +465,8 @@ def _solve_nonlinear(
     names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
         every_root = _polynomial_roots(substituted, unknowns, options)
+        if every_root is None and given:
+            every_root = _briefly_symbolic(residuals, unknowns, given, options)
         return every_root or solve_numerically(substituted, unknowns, "numeric mode")
     solution, reason = _solve_symbolically(residuals, substituted, unknowns, given, options)
     if solution is not None and options.mode == "numeric":
@@ -377,6 +478,28 @@ def _solve_nonlinear(
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
     return solve_numerically(substituted, unknowns, reason)
+
+
+BRIEF_BUDGET = 0.25  # seconds numeric mode gives sympy on a block before its root search
+
+
+def _briefly_symbolic(
+    residuals: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+    options: SolveOptions,
+) -> BlockSolution | None:
+    """Numeric mode's short symbolic attempt at a transcendental block, with the knowns as
+    letters as exact mode solves it (the numbers of a problem scaled by 1e-9 slow sympy
+    down; the letters do not), its roots in floating point; None when sympy does not
+    finish within :data:`BRIEF_BUDGET` (then the root search runs)."""
+    seconds = min(BRIEF_BUDGET, options.time_budget)
+    attempt, _ = _symbolic_candidates(residuals, unknowns, seconds, given)
+    if attempt is None or not attempt.candidates or attempt.free:
+        return None
+    candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
+    note = "numeric mode: solved by sympy with the knowns as letters, in floating point"
+    return BlockSolution(unknowns, "numeric", candidates, note=note)
 
 
 POLYNOMIAL_DEGREE = 4  # numeric mode solves polynomial blocks up to this degree exactly
@@ -405,13 +528,70 @@ def _polynomial_roots(
             return None
         if sympy.Poly(numerator, *unknowns).total_degree() > POLYNOMIAL_DEGREE:
             return None
+    if len(unknowns) == 1:
+        roots = _univariate_roots(residuals[0], unknowns[0])
+        if roots is not None:
+            note = "numeric mode: a polynomial, every root (mpmath.polyroots), in floating point"
+            candidates = tuple(Candidate({unknowns[0]: _to_sympy(r)}) for r in roots)
+            return BlockSolution(unknowns, "numeric", candidates, note=note)
     exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
     attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None)
+    if attempt is None or not attempt.candidates:
+        # sympy keeps only the roots its assumptions allow (t_s positive): without them,
+        # every root, as a numeric search would find them, for the root choice to judge
+        plain = {u: sympy.Dummy(u.name) for u in unknowns}
+        back = {d: u for u, d in plain.items()}
+        residuals_plain = [r.xreplace(plain) for r in exact]
+        attempt, _ = _symbolic_candidates(
+            residuals_plain, tuple(plain.values()), options.time_budget, None
+        )
+        if attempt is not None:
+            attempt = replace(
+                attempt,
+                candidates=tuple(
+                    Candidate({back[d]: v for d, v in c.values.items()}) for c in attempt.candidates
+                ),
+            )
     if attempt is None or not attempt.candidates or attempt.free:
         return None
     candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
     note = "numeric mode: a polynomial block, every root (sympy), in floating point"
     return BlockSolution(unknowns, "numeric", candidates, note=note)
+
+
+def _univariate_roots(residual: sympy.Expr, unknown: sympy.Symbol) -> list[mpmath.mpf] | None:
+    """Every root of a polynomial in one unknown with number coefficients, by
+    ``mpmath.polyroots`` with :data:`GUARD_DIGITS` beyond the ones kept; None (let sympy
+    solve it exactly) when a coefficient is not a real number, the search does not
+    converge, a root is repeated (where the digits a float search keeps are halved) or
+    the unknown is in a denominator.
+
+    >>> w = sympy.Symbol("w")
+    >>> [mpmath.nstr(r, 6) for r in _univariate_roots(2 * w**2 - 8, w)]
+    ['-2.0', '2.0']
+    >>> _univariate_roots((w - 1) ** 2, w) is None
+    True
+    """
+    numerator, denominator = sympy.fraction(sympy.together(residual))
+    if unknown in denominator.free_symbols:
+        return None
+    digits = numeric_digits() + GUARD_DIGITS
+    try:
+        coefficients = sympy.Poly(numerator, unknown).all_coeffs()
+        if len(coefficients) < 2:
+            return None
+        with mpmath.workdps(digits):
+            numbers = [_mp_real(c, digits) for c in coefficients]
+            if numbers[0] == 0:
+                return None
+            roots = mpmath.polyroots(numbers, maxsteps=100, extraprec=2 * digits)
+            for i, a in enumerate(roots):
+                for b in roots[i + 1 :]:
+                    if abs(a - b) <= mpmath.mpf(10) ** -8 * max(abs(a), abs(b)):
+                        return None
+            return list(roots)
+    except (sympy.PolynomialError, ValueError, TypeError, ArithmeticError, mpmath.NoConvergence):
+        return None
 
 
 def _solve_symbolically(
