@@ -573,6 +573,12 @@ MISSING: dict[tuple[str, str], str] = {
     "tan_β/sqrt(tan_β^2 + 1)), not along and normal to the incline: the notes' "
     "F_N = m g cos β and F_f − m g sin β = −m R α are each a combination of two printed "
     "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
+    ("3d_seed_gear_rolling", "equations"): "the seed is a 3D scene now: its work and energy "
+    "is one line M n = ½ m v_G² + ½ ωᵀ I_G ω in the rates (about G), where the notes write "
+    "T2 about the fixed point C with I_xx = m r_A²/2 and I_zz = m r_A²/4 + m r_B² and W = 4πM "
+    "as their own steps (the fixed-point T2 is only a second-method check)",
+    ("3d_seed_gear_rolling", "values"): "the 3D scene prints no I_xx, I_zz (about C) or U_12 "
+    "step: its work and energy is not yet shown term by term (T1, each U, T2)",
     ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "
     "an expanded ΣM_G,z with C_y and D_y, and the bearing force only as the step D_y = …; "
     "the notes' F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) is not among the equations",
