@@ -39,6 +39,7 @@ from dynsolve.results import (
     FreeBody,
     GivenRow,
     KeyComparison,
+    Remark,
     Solution,
     Step,
     Trial,
@@ -371,6 +372,48 @@ def solve_problem(
         status=outcome.status,
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
+        remarks=_remarks(problem, outcome, options),
+    )
+
+
+MASS = Dim(0, 1, 0)
+
+
+def _remarks(
+    problem: SolvableProblem, outcome: Outcome, options: SolveOptions
+) -> tuple[Remark, ...]:
+    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve."""
+    from dynsolve.remarks import cancelled_masses
+
+    if options.mode != "exact" or outcome.status != "solved":
+        return ()
+    formulas: dict[sympy.Symbol, sympy.Expr] = {}
+    for block in outcome.blocks:
+        if block.method != "numeric":
+            formulas.update(block.formulas)
+    derived = {g.symbol: g.formula for g in problem.givens if g.formula is not None}
+    used = set().union(
+        *(e.lhs.free_symbols | e.rhs.free_symbols for e in problem.system.equations),
+        *(f.free_symbols for f in derived.values()),
+    )
+    masses = {
+        g.symbol: g.name
+        for g in problem.givens
+        if g.dim == MASS and g.given is not None and g.symbol in used
+    }
+    if not masses:
+        return ()
+    answers = {}
+    for target in problem.targets:
+        if target.trial or target.is_given:
+            continue
+        if target.vector is not None:
+            answers[target.name] = target.vector[0] ** 2 + target.vector[1] ** 2
+        elif target.expr is not None:
+            answers[target.name] = target.expr
+    givens = {g.symbol for g in problem.givens if g.given is not None} - set(masses)
+    return cancelled_masses(
+        answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns)
     )
 
 

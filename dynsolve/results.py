@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from dynsolve.names import pretty
+
 
 @dataclass(frozen=True)
 class GivenRow:
@@ -158,6 +160,32 @@ class EnergyTerm:
 
 
 @dataclass(frozen=True)
+class Remark:
+    """What the answers tell: these answers do not depend on these masses (they cancel).
+
+    >>> Remark(("v_2", "theta"), ("m",)).text
+    'v_2 and θ do not depend on m: the mass cancels'
+    """
+
+    answers: tuple[str, ...]  # names as written in find
+    masses: tuple[str, ...]
+
+    @property
+    def text(self) -> str:
+        """The remark in words, names as the terminal prints them."""
+        return self.words([pretty(n) for n in self.answers], [pretty(n) for n in self.masses])
+
+    def words(self, answers: list[str], masses: list[str]) -> str:
+        """The remark with the names already typeset (``$v_{2}$`` for LaTeX)."""
+        subject = (
+            answers[0] if len(answers) == 1 else ", ".join(answers[:-1]) + " and " + answers[-1]
+        )
+        verb = "does" if len(answers) == 1 else "do"
+        plural = "masses cancel" if len(masses) > 1 else "mass cancels"
+        return f"{subject} {verb} not depend on {' or '.join(masses)}: the {plural}"
+
+
+@dataclass(frozen=True)
 class LinkageFigure:
     """A linkage at the instant, as data for a drawing (positions in metres)."""
 
@@ -191,6 +219,7 @@ class Solution:
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
     linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
+    remarks: tuple[Remark, ...] = ()  # what the answers tell: a mass that cancels
     # the other moment equation (about G where the solve took moments about A), as a check
     second_moments: tuple[EquationRow, ...] = ()
 

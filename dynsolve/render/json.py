@@ -49,6 +49,7 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
         "assumptions": [asdict(a) for a in solution.assumptions],
         "messages": list(solution.messages),
         "warnings": list(solution.warnings),
+        "remarks": [r.text for r in solution.remarks],
         "trials": [asdict(trial) for trial in solution.trials],
         "energy": [asdict(term) for term in solution.energy],
         "second_moments": [asdict(row) for row in solution.second_moments],

@@ -36,6 +36,7 @@ from dynsolve.results import (
     FreeBody,
     GivenRow,
     KeyComparison,
+    Remark,
     Solution,
     Step,
     Trial,
@@ -315,7 +316,10 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         ],
         "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
-        "answers": lambda: [_answers_section(solution.answers, key)],
+        "answers": lambda: (
+            [_answers_section(solution.answers, key)]
+            + [f"\\textit{{Remark:}} {_remark(r)}\n" for r in solution.remarks]
+        ),
         "checks": lambda: [_checks_section(solution.checks)],
     }
     body = [section for name in plan if name in parts for section in parts[name]()]
@@ -556,6 +560,16 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
     rows = [_answer_cells(a, expected.get(a.name), bool(expected)) for a in answers]
     spec = "@{}ll" + ("lc" if expected else "") + "@{}"
     return "\\subsection*{Answers}\n" + _table(spec, header, rows)
+
+
+def _remark(remark: Remark) -> str:
+    """A remark with its names typeset as mathematics.
+
+    >>> _remark(Remark(("v_2",), ("m_A",)))
+    '$v_{2}$ does not depend on $m_{A}$: the mass cancels'
+    """
+    answers = [f"${latex_name(n)}$" for n in remark.answers]
+    return remark.words(answers, [f"${latex_name(n)}$" for n in remark.masses])
 
 
 def answers_math(solution: Solution) -> str:

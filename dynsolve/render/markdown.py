@@ -100,7 +100,11 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
         ],
         "energy": lambda: _energy_section(solution.energy),
         "steps": lambda: [_solution_section(solution.steps)],
-        "answers": lambda: [_answers_section(solution.answers, key)],
+        "answers": lambda: (
+            [_answers_section(solution.answers, key)]
+            + ["\n".join(f"- *Remark:* {escape_markdown(r.text)}" for r in solution.remarks)]
+            * bool(solution.remarks)
+        ),
         "checks": lambda: [_checks_section(solution.checks)],
     }
     sections = [section for name in plan if name in parts for section in parts[name]()]

@@ -75,6 +75,7 @@ def solution_renderable(solution: Solution) -> RenderableType:
     if solution.steps:
         parts += [_heading("Solve order"), *(_step(s) for s in solution.steps)]
     parts += [_heading("Answers"), _answers(solution)]
+    parts += [Text(f"remark: {r.text}", style="green") for r in solution.remarks]
     if solution.assumptions:
         parts += [_heading("Assumptions"), _assumptions(solution.assumptions)]
     parts += [_heading("Checks"), _checks(solution.checks)]
