@@ -35,6 +35,7 @@ class Leg:
     travel: Travel
     speeds: Mapping[str, sympy.Expr]  # |v_G| at the end, per body
     spins: Mapping[str, sympy.Expr]  # ω at the end (ccw positive), per body
+    turn: sympy.Expr | None = None  # an until event's angle turned round its circle
 
 
 def simulation_checks(
@@ -63,6 +64,7 @@ def simulation_checks(
                     event,
                     {n: sympy.sqrt(v[0] ** 2 + v[1] ** 2) for n, v in end.velocities.items()},
                     dict(end.omegas),
+                    formulation.turns.get(event.body) if event.kind == "until" else None,
                 )
             )
     elif len(scene.travels) == 1:
@@ -70,7 +72,8 @@ def simulation_checks(
         if travel.kind == "for":
             notes.append(Check("simulation", True, "not simulated: " + _why(travel)))
         else:
-            legs.append(Leg("", scene, travel, formulation.speeds, formulation.spins))
+            turn = formulation.turns.get(travel.body)
+            legs.append(Leg("", scene, travel, formulation.speeds, formulation.spins, turn))
     symbolic = sorted(g.name for g in problem.givens if g.value is None and g.given is not None)
     if symbolic:  # nothing to integrate: said once per travel, without building anything
         why = f"not simulated: symbolic givens ({', '.join(symbolic)}) have no values"
@@ -98,6 +101,11 @@ def _checked(
 ) -> Check:
     """The leg integrated and compared, or the note why not (without importing scipy)."""
     name = f"simulation: {leg.label}" if leg.label else "simulation"
+    if leg.travel.kind == "until" and leg.turn is not None:  # a particle on a circle
+        from dynsolve.simulate.circle import circle_check
+
+        answers = (leg.turn, leg.speeds[leg.travel.body])
+        return circle_check(name, leg.scene, leg.travel, answers, symbols, values)
     if leg.travel.kind not in SIMULATED_KINDS:
         return Check(name, True, f"not simulated: a travel '{leg.travel.kind}' is not simulated")
     from dynsolve.simulate.crosscheck import simulate_leg
