@@ -78,6 +78,7 @@ class _Target:
     colours: str | None
     layout: str = "full"  # LaTeX and Markdown: full, handout or key
     plot: str = ""  # the --plot file's suffix (.png, .svg, .pdf), "" for none
+    figure: str = ""  # a LaTeX sheet's motion plot: the file name it includes, "" for none
 
 
 @dataclass(frozen=True)
@@ -87,6 +88,7 @@ class _Done:
     text: str
     exit_code: int
     plot: bytes | None = None
+    figure: bytes | None = None  # the sheet's motion plot (PDF), written beside it
 
 
 @dataclass(frozen=True)
@@ -254,7 +256,8 @@ def solve(
     # to a terminal in text, rich renders for the terminal's width and colours (in the worker)
     rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
     suffix = plot.suffix.lower() if plot is not None else ""
-    target = _Target(rendered, output is None, width, terminal, colours, layout, suffix)
+    figure = _sheet_figure(output, chosen, layout)
+    target = _Target(rendered, output is None, width, terminal, colours, layout, suffix, figure)
     job = (source, mode.value, budget, target, cells)
     outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
@@ -264,12 +267,32 @@ def solve(
         stdout.file.write(outcome.text)
         stdout.file.flush()
     elif chosen == OutputFormat.pdf:
-        _write_pdf(output, outcome.text)
+        _write_pdf(output, outcome.text, {figure: outcome.figure} if outcome.figure else None)
     else:
+        if outcome.figure is not None:  # the sheet's motion plot, beside it
+            _write_output(output.parent / figure, outcome.figure)
         _write_output(output, outcome.text)
     if plot is not None and outcome.plot is not None:
         _write_output(plot, outcome.plot)
     raise typer.Exit(outcome.exit_code)
+
+
+def _sheet_figure(output: Path | None, chosen: OutputFormat, layout: str) -> str:
+    """The file name of the motion plot a LaTeX or PDF sheet includes (beside a .tex as
+    STEM-motion.pdf), for a kinematics spec; "" where there is no sheet file to go with.
+
+    >>> _sheet_figure(Path("out/sheet.tex"), OutputFormat.latex, "full")
+    'sheet-motion.pdf'
+    >>> _sheet_figure(None, OutputFormat.latex, "full")
+    ''
+    >>> _sheet_figure(Path("a.tex"), OutputFormat.latex, "key")
+    ''
+    """
+    if output is None or layout == "key":
+        return ""
+    if chosen == OutputFormat.latex:
+        return f"{output.stem}-motion.pdf"
+    return "motion.pdf" if chosen == OutputFormat.pdf else ""
 
 
 def _check_plot_path(plot: Path, file: str) -> None:
@@ -753,12 +776,30 @@ def solve_and_render(
             solution = solve_file(value, _options(mode, budget))
         else:
             solution = solve_text(value, STDIN_NAME, _options(mode, budget))
+        sheet_figure = _sheet_plot(source, variant) if target.figure else None
+        if sheet_figure is not None:
+            from dataclasses import replace
+
+            solution = replace(solution, figure=target.figure)
         with step("rendering the output"):
             text = _render(solution, target)
         figure = _figure(source, variant, target.plot) if target.plot else None
     except DynsolveError as error:
         return _Refused(_reports(error, source))
-    return _Done(text, ExitCode.OK if solution.passed else ExitCode.FAILED, figure)
+    code = ExitCode.OK if solution.passed else ExitCode.FAILED
+    return _Done(text, code, figure, sheet_figure)
+
+
+def _sheet_plot(
+    source: tuple[str, str], variant: tuple[str, dict[str, str]] | None
+) -> bytes | None:
+    """A kinematics spec's motion plot for its sheet (PDF), or None where there is none."""
+    from dynsolve.errors import DynsolveError
+
+    try:
+        return _figure(source, variant, ".pdf")
+    except DynsolveError:  # not a kinematics spec, or nothing to draw: a sheet without
+        return None
 
 
 def _figure(
@@ -933,12 +974,12 @@ def _write_output(output: Path, text: str | bytes) -> None:
     stderr.print(f"wrote {output}", markup=False)
 
 
-def _write_pdf(output: Path, latex: str) -> None:
+def _write_pdf(output: Path, latex: str, files: dict[str, bytes] | None = None) -> None:
     from dynsolve.errors import DynsolveError
     from dynsolve.pdf import compile_pdf
 
     try:
-        pdf = compile_pdf(latex)
+        pdf = compile_pdf(latex, files)
     except DynsolveError as error:
         _fail_with(error)
     _write_output(output, pdf)

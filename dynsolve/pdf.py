@@ -15,6 +15,7 @@ from __future__ import annotations
 import shutil
 import subprocess
 import tempfile
+from collections.abc import Mapping
 from pathlib import Path
 
 from dynsolve.errors import DynsolveError
@@ -27,8 +28,9 @@ class PdfError(DynsolveError):
     """pdflatex is missing or could not compile the sheet."""
 
 
-def compile_pdf(latex: str) -> bytes:
-    """The PDF of the LaTeX document ``latex`` (two passes, for references)."""
+def compile_pdf(latex: str, files: Mapping[str, bytes] | None = None) -> bytes:
+    """The PDF of the LaTeX document ``latex`` (two passes, for references); ``files`` are
+    written beside it first (a figure it includes, by its bare name)."""
     pdflatex = shutil.which("pdflatex")
     if pdflatex is None:
         raise PdfError(
@@ -39,6 +41,8 @@ def compile_pdf(latex: str) -> bytes:
     with tempfile.TemporaryDirectory(prefix="dynsolve-pdf-") as folder:
         source = Path(folder) / "sheet.tex"
         source.write_text(latex, encoding="utf-8")
+        for name, data in (files or {}).items():
+            (Path(folder) / Path(name).name).write_bytes(data)
         command = [pdflatex, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error"]
         for _ in range(2):
             try:

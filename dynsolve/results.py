@@ -220,6 +220,7 @@ class Solution:
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
     linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
     remarks: tuple[Remark, ...] = ()  # what the answers tell: a mass that cancels
+    figure: str = ""  # a LaTeX sheet's motion plot: its file, beside the sheet ("" for none)
     # the other moment equation (about G where the solve took moments about A), as a check
     second_moments: tuple[EquationRow, ...] = ()
 

@@ -67,3 +67,39 @@ def test_the_pdf_pages_are_not_blank(tmp_path: Path, layout: str) -> None:
     pixels = page.read_bytes().split(b"\n", 3)[3]  # P5 header: magic, size, maxval
     dark = sum(1 for value in pixels if value < 128)
     assert dark > 0.005 * len(pixels)  # text and rules, not an empty page
+
+
+# ---- the motion plot in the sheet (issue 12 part 6: "the same figure in the LaTeX sheet")
+CAR = ROOT / "problems" / "kinematics" / "car_braking.dyn"
+
+
+def test_a_kinematics_sheet_includes_its_motion_plot_written_beside_it(tmp_path: Path) -> None:
+    tex = tmp_path / "car.tex"
+    result = CliRunner().invoke(app, ["solve", str(CAR), "-o", str(tex)])
+    assert result.exit_code == 0, result.output
+    figure = tmp_path / "car-motion.pdf"
+    assert figure.read_bytes().startswith(b"%PDF")
+    sheet = tex.read_text()
+    assert "\\usepackage{graphicx}" in sheet
+    assert "\\includegraphics[width=0.85\\linewidth]{car-motion.pdf}" in sheet
+
+
+def test_a_scene_sheet_or_the_key_has_no_motion_plot(tmp_path: Path) -> None:
+    for spec, layout, name in ((CRATE, [], "crate.tex"), (CAR, ["--key"], "key.tex")):
+        CliRunner().invoke(app, ["solve", str(spec), "-o", str(tmp_path / name), *layout])
+        assert "includegraphics" not in (tmp_path / name).read_text()
+    assert not list(tmp_path.glob("*-motion.pdf"))
+
+
+@pytest.mark.latex
+def test_a_kinematics_pdf_compiles_with_its_plot(tmp_path: Path) -> None:
+    if shutil.which("pdflatex") is None or shutil.which("pdftotext") is None:
+        pytest.skip("pdflatex or pdftotext (poppler-utils) is not installed")
+    pdf = tmp_path / "car.pdf"
+    result = CliRunner().invoke(app, ["solve", str(CAR), "-o", str(pdf)])
+    assert result.exit_code == 0, result.output
+    text = subprocess.run(
+        ["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True, timeout=60
+    ).stdout
+    assert "Figure 1: The motion" in text
+    assert not list(tmp_path.glob("*-motion.pdf"))  # compiled in, not left beside it

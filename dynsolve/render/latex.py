@@ -319,12 +319,15 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "answers": lambda: (
             [_answers_section(solution.answers, key)]
             + [f"\\textit{{Remark:}} {_remark(r)}\n" for r in solution.remarks]
+            + [_figure_section(solution.figure)] * bool(solution.figure and "steps" in plan)
         ),
         "checks": lambda: [_checks_section(solution.checks)],
     }
     body = [section for name in plan if name in parts for section in parts[name]()]
     drawn = (solution.free_body or solution.linkage is not None) and "free_body" in plan
     preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
+    if solution.figure and "steps" in plan:
+        preamble += "\n\\usepackage{graphicx}"
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
@@ -560,6 +563,20 @@ def _answers_section(answers: Sequence[AnswerRow], key: Sequence[KeyComparison])
     rows = [_answer_cells(a, expected.get(a.name), bool(expected)) for a in answers]
     spec = "@{}ll" + ("lc" if expected else "") + "@{}"
     return "\\subsection*{Answers}\n" + _table(spec, header, rows)
+
+
+def _figure_section(figure: str) -> str:
+    """The motion plot (``dynsolve solve --plot``'s figure) as a float in the sheet.
+
+    >>> print(_figure_section("sheet-motion.pdf").splitlines()[2])
+    \\includegraphics[width=0.85\\linewidth]{sheet-motion.pdf}
+    """
+    return (
+        "\\begin{figure}[ht]\n\\centering\n"
+        f"\\includegraphics[width=0.85\\linewidth]{{{figure}}}\n"
+        "\\caption{The motion: the laws against time (or the path), with their units.}\n"
+        "\\end{figure}"
+    )
 
 
 def _remark(remark: Remark) -> str:
