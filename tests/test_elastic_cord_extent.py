@@ -12,7 +12,6 @@ from pathlib import Path
 
 import pytest
 
-from dynsolve.errors import SpecError
 from dynsolve.pipeline import solve_file
 
 G = 9.81
@@ -72,16 +71,59 @@ def test_the_bundled_bungee_falls_to_its_hand_derived_lowest_point():
     assert got["F_max"] == pytest.approx(4804.02, rel=1e-6)
 
 
-def test_an_unknown_cord_state_in_a_chain_is_refused_not_assumed(tmp_path):
-    # the taut/slack switch is not followed through stages yet: refused with the reason,
-    # while the stage before (a fall to exactly L_0, the cord just taut) is decided
+def test_the_bundled_two_stage_bungee_stops_where_the_one_travel_jump_does():
+    # hand (problems/stages/bungee_two_stages.dyn): v_2 = √(2 g L_0) = 17.15517 m/s, then
+    # 400 d² − 686.7 d − 10300.5 = 0 → d = 6.005030 m: 21.00503 m in all, as in one travel
+    path = Path(__file__).parent.parent / "problems" / "stages" / "bungee_two_stages.dyn"
+    solution = solve_file(path)
+    assert all(c.passed for c in solution.checks)
+    got = {a.name: a.value for a in solution.answers}
+    assert got["d"] + 15 == pytest.approx(21.00503, rel=1e-6)
+    assert any(a.name == "elastic cord S taut at state 3" and a.holds for a in solution.assumptions)
+
+
+CHAIN = """\
+given:
+  m = 70 kg
+  k = 800 N/m
+  L_0 = 15 m
+  h = {h}
+scene:
+  point O: (0, 0)
+  body jumper: particle, mass m, at (0, 0)
+  spring S: jumper at G to O, k k, unstretched L_0, tension only
+  gravity
+  travel jumper: by L_0, down
+  travel jumper: by h, down
+find: v = speed(jumper)
+"""
+
+
+def test_two_travels_in_a_row_keep_their_speeds_apart(tmp_path):
+    # regression: the second travel's own rate and the first one's answer were both named
+    # v_2_jumper, so T2 + ΣU = T3 read m v_3²/2 on both sides ("the equations conflict").
+    # hand: 5 m past L_0, v² = 2 g (20) − (k/m) 5² = 392.4 − 285.714 → v = 10.32888 m/s
     path = tmp_path / "chain.dyn"
-    path.write_text(
-        "given:\n  m = 70 kg\n  k = 800 N/m\n  L_0 = 15 m\nscene:\n  point O: (0, 0)\n"
-        "  body jumper: particle, mass m, at (0, 0)\n"
-        "  spring S: jumper at G to O, k k, unstretched L_0, tension only\n  gravity\n"
-        "  travel jumper: by L_0, down\n  travel jumper: by d, down, stops\nfind: d [m]\n"
+    path.write_text(CHAIN.format(h="5 m"))
+    solution = solve_file(path)
+    assert all(c.passed for c in solution.checks)
+    (v,) = solution.answers
+    assert v.value == pytest.approx(10.32888, rel=1e-6)
+
+
+def test_a_spring_on_a_particle_moves_with_it_through_the_stages(tmp_path):
+    # regression: after a lone particle's travel the spring's end stayed where it was
+    # drawn, so the stretch of the next stage was measured from the wrong place. Hand: the
+    # jumper ends 2 m past L_0 both ways: one travel of 17 m, or 15 m then 2 m
+    one = tmp_path / "one.dyn"
+    one.write_text(
+        CHAIN.format(h="2 m")
+        .replace("  travel jumper: by L_0, down\n", "")
+        .replace("travel jumper: by h, down", "travel jumper: by L_0 + h, down")
     )
-    with pytest.raises(SpecError, match=r"stage 2 .*not followed yet") as error:
-        solve_file(path)
-    assert error.value.position.line == 11
+    two = tmp_path / "two.dyn"
+    two.write_text(CHAIN.format(h="2 m"))
+    v_one = solve_file(one).answers[0].value
+    v_two = solve_file(two).answers[0].value
+    assert v_two == pytest.approx(v_one, rel=1e-12)
+    assert v_one == pytest.approx((2 * 9.81 * 17 - (800 / 70) * 4) ** 0.5, rel=1e-9)

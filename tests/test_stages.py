@@ -235,7 +235,7 @@ def test_the_bundled_stage_problems_meet_their_hand_derived_keys():
         solution = solve_file(path)
         failed = [c for c in solution.checks if not c.passed]
         assert not failed, (path.name, failed)
-    assert len(list(PROBLEMS.glob("*.dyn"))) == 11
+    assert len(list(PROBLEMS.glob("*.dyn"))) == 12
 
 
 # ---- bad input

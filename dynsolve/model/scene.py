@@ -21,6 +21,7 @@ import difflib
 from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import sympy
 
@@ -28,6 +29,9 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+
+if TYPE_CHECKING:
+    from dynsolve.system import Constraint
 from dynsolve.numbers import real_value, tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
@@ -178,6 +182,29 @@ class Spring:
                 "them values, or use a plain spring"
             ) from None
         return s if sign > 0 else sympy.Integer(0)
+
+
+@dataclass(frozen=True)
+class CordState:
+    """An elastic cord's state at the end of a travel where the sign of its stretch is not
+    known before solving (an unknown extent): assumed (``taut``), kept as the root's
+    branch, and checked against the answer (then switched)."""
+
+    name: str
+    stretch: sympy.Expr  # s at the end, L − L0 (as if taut)
+    taut: bool
+    state: int = 2  # the state at the travel's end
+    line: int = 0  # the spring's line
+
+    def branch(self) -> Constraint:
+        """The root the assumed state keeps: stretched (s > 0) or not (s ≤ 0)."""
+        from dynsolve.system import Constraint
+
+        relation = sympy.Gt(self.stretch, 0) if self.taut else sympy.Le(self.stretch, 0)
+        state = "taut" if self.taut else "slack"
+        return Constraint(
+            relation, f"{self.name} {state} at state {self.state} (assumed)", self.line
+        )
 
 
 @dataclass(frozen=True)

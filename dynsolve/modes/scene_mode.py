@@ -26,7 +26,7 @@ from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
 from dynsolve.spec.ast import FindItem, Spec
-from dynsolve.system import Constraint, EquationSystem
+from dynsolve.system import EquationSystem
 from dynsolve.units import Dim, natural_unit
 
 IMPENDING = 1e-9  # |F| within this fraction of μs N counts as impending slip, not slip
@@ -538,16 +538,8 @@ def _with_energy(
         second=tuple(second),
         energy_terms=tuple(terms),
         cords=tuple(cords),
-        constraints=formulation.constraints
-        + tuple(_cord_branch(scene, name, s_2, taut) for name, s_2, taut in cords),
+        constraints=formulation.constraints + tuple(c.branch() for c in cords),
     )
-
-
-def _cord_branch(scene: Scene, name: str, s_2: sympy.Expr, taut: bool) -> Constraint:
-    """The root an assumed cord state keeps: stretched (s₂ > 0) or not (s₂ ≤ 0)."""
-    relation = sympy.Gt(s_2, 0) if taut else sympy.Le(s_2, 0)
-    line = next(s.line for s in scene.springs if s.name == name)
-    return Constraint(relation, f"{name} {'taut' if taut else 'slack'} at state 2 (assumed)", line)
 
 
 SECOND_METHOD_AGREEMENT = 1e-6  # relative
@@ -1264,16 +1256,17 @@ def assess(
     checks: list[Assumption] = []
     slips: dict[str, int] = {}
     scene, formulation = problem.scene, problem.formulation
+    cords, switched = _cord_checks(formulation, substitution)
+    slips |= switched
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions, chain_slips
 
-        chained = chain_assumptions(scene, formulation, substitution)
+        chained = chain_assumptions(scene, formulation, substitution) + cords
         slips |= chain_slips(formulation, substitution)
         if not formulation.kinematics:
             return chained, slips
         checks += chained  # a single travel: its state 1 is checked as an instant too
-    cords, switched = _cord_checks(formulation, substitution)
-    slips |= switched
+        cords = ()
     if scene.travels and not formulation.reactions:
         events = tuple(_event_checks(formulation, substitution))
         return _between_states(problem, substitution) + events + cords, slips
@@ -1414,22 +1407,23 @@ def _cord_checks(
     assumed taut must be stretched there (s₂ > 0), one assumed slack must not be. Returns
     the checks and the states to re-solve with (``"taut:S"``: +1 taut, −1 slack)."""
     checks, switched = [], {}
-    for name, s_2, taut in formulation.cords:
-        s = real_value(s_2, substitution)
-        if s is None and taut and not s_2.free_symbols <= set(substitution):
-            detail = "no root keeps it stretched (s₂ > 0): it is slack there; re-solved so"
-            checks.append(Assumption(f"elastic cord {name} taut at state 2", False, detail))
+    for cord in formulation.cords:
+        name, taut, k = cord.name, cord.taut, cord.state
+        s = real_value(cord.stretch, substitution)
+        if s is None and taut and not cord.stretch.free_symbols <= set(substitution):
+            detail = f"no root keeps it stretched (s{k} > 0): it is slack there; re-solved so"
+            checks.append(Assumption(f"elastic cord {name} taut at state {k}", False, detail))
             switched[f"taut:{name}"] = -1
             continue
         if s is None:
             continue
         holds = s > 0 if taut else s <= 0
-        detail = f"stretch at state 2 s₂ = {s:.4g}" + (" > 0" if s > 0 else " ≤ 0")
+        detail = f"stretch at state {k} s = {s:.4g}" + (" > 0" if s > 0 else " ≤ 0")
         if not holds:
             detail += f": it is {'slack' if taut else 'stretched'} there; re-solved so"
             switched[f"taut:{name}"] = -1 if taut else 1
         state = "taut" if taut else "slack"
-        checks.append(Assumption(f"elastic cord {name} {state} at state 2", holds, detail))
+        checks.append(Assumption(f"elastic cord {name} {state} at state {k}", holds, detail))
     return tuple(checks), switched
 
 

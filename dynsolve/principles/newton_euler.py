@@ -19,7 +19,7 @@ from typing import Any
 
 import sympy
 
-from dynsolve.model.scene import Body, Scene, Support, Vec
+from dynsolve.model.scene import Body, CordState, Scene, Support, Vec
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.names import pretty
 from dynsolve.numbers import real_value, tidy
@@ -126,8 +126,7 @@ class Formulation:
     energy_terms: tuple[tuple[str, sympy.Expr], ...] = ()
     # over an interval solved by impulse and momentum: (T1, each force's work, T2), checked
     interval_energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr] | None = None
-    # elastic cords whose state at the travel's end was assumed: (name, stretch s₂, taut)
-    cords: tuple[tuple[str, sympy.Expr, bool], ...] = ()
+    cords: tuple[CordState, ...] = ()  # elastic cords whose state at a travel's end was assumed
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:

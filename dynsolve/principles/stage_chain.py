@@ -28,7 +28,17 @@ from dataclasses import dataclass, replace
 
 import sympy
 
-from dynsolve.model.scene import Body, Impact, Link, Pivot, Scene, Support, Travel, Vec
+from dynsolve.model.scene import (
+    Body,
+    CordState,
+    Impact,
+    Link,
+    Pivot,
+    Scene,
+    Support,
+    Travel,
+    Vec,
+)
 from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
 from dynsolve.numbers import float_functions, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
@@ -64,6 +74,7 @@ class _Step:
     relations_are: str = "kinematics"  # what the relations are, for their note's name
     constraints: tuple[Constraint, ...] = ()  # root branches (an until event's first zero)
     turn: tuple[str, sympy.Expr, sympy.Expr] | None = None  # (body, angle turned, rise of G)
+    cords: tuple[CordState, ...] = ()  # elastic cords assumed taut (or slack) at its end
 
 
 def chain_formulation(
@@ -92,6 +103,7 @@ def chain_formulation(
     notes: list[tuple[str, str]] = []
     second: list[tuple[sympy.Symbol, float, str, str]] = []
     constraints: list[Constraint] = []
+    cords: list[CordState] = []
     turns: dict[str, sympy.Expr] = {}
     heights: dict[str, sympy.Expr] = {}
     reactions: dict[str, tuple[sympy.Symbol, Vec]] = {}
@@ -133,6 +145,7 @@ def chain_formulation(
             instant(stage.number + 1)
         second += step.second
         constraints += step.constraints
+        cords += step.cords
         if step.turn is not None:
             body, turns[body], heights[body] = step.turn
         if step.relations:
@@ -161,6 +174,7 @@ def chain_formulation(
         turns=turns,
         heights=heights,
         constraints=tuple(constraints),
+        cords=tuple(cords),
         reactions=reactions,
         events=tuple(events),
         spins=_after_travels(records, states, lambda s, n: s.omegas[n]),
@@ -399,13 +413,13 @@ class _Chain:
                     point=carried(link.body, link.point),
                     other_point=carried(link.other, link.other_point),
                 )
-                for link in scene.links
+                for link in self.start.links
             ),
             springs=tuple(
                 replace(
                     s, point=carried(s.body, s.point), other_point=carried(s.other, s.other_point)
                 )
-                for s in scene.springs
+                for s in self.start.springs
             ),
             velocities={
                 n: tuple(sympy.Integer(0) + c for c in v)
@@ -560,7 +574,8 @@ class _Chain:
         supports = tuple(
             replace(s, point=_plus(s.point, shift)) if s.body in part else s for s in scene.supports
         )
-        return replace(scene, bodies=bodies, supports=supports)
+        springs = _springs_carried(scene, part, shift)
+        return replace(scene, bodies=bodies, supports=supports, springs=springs)
 
     def impact(self, stage: Stage, impact: Impact) -> _Step:
         from dynsolve.principles.impact import impact_equations, velocity_after
@@ -763,20 +778,28 @@ class _Chain:
         sub = self.moving_part(part, riders, body, links)
         if translates:  # its energy is that of its mass at G: ½ m v_G², W·Δr_G
             sub = replace(sub, bodies={body: replace(sub.bodies[body], particle=True)})
-        (energy,) = energy_equations(
-            replace(sub, travels={body: travel}), self.symbols, self.values
+        # the start's unknowns (v_2_B from a travel before) hidden from the new stage's
+        # own rate, which work and energy names v_2_B too, until it is renamed v_{k+1}_B
+        starts = {s for v in sub.velocities.values() for c in v for s in (0 + c).free_symbols}
+        starts |= {s for w in sub.omegas.values() for s in (0 + w).free_symbols}
+        hidden = {s: sympy.Dummy(s.name, **s.assumptions0) for s in starts}
+        unseen = replace(
+            sub,
+            velocities={
+                n: tuple((0 + c).xreplace(hidden) for c in v) for n, v in sub.velocities.items()
+            },
+            omegas={n: (0 + w).xreplace(hidden) for n, w in sub.omegas.items()},
+            travels={body: travel},
         )
-        if energy.cords:
-            raise StageError(
-                stage,
-                f"{stage.title}: whether the elastic cord {energy.cords[0][0]} is stretched at "
-                "the stage's end is not known before solving; in a chain it is not followed "
-                "yet (give the extent, or describe this travel as a scene of its own)",
-            )
-        names: dict[sympy.Symbol, sympy.Symbol] = {}
+        (energy,) = energy_equations(unseen, self.symbols, self.values)
+        names: dict[sympy.Symbol, sympy.Symbol] = {d: s for s, d in hidden.items()}
         if energy.rate is not None:
             prefix = "omega" if energy.rate.name.startswith("omega") else "v"
             names[energy.rate] = _renamed(energy.rate, prefix, stage.number + 1, body)
+        cords = tuple(  # assumed taut (or slack) at the stage's end: checked, switched
+            replace(c, stretch=c.stretch.xreplace(names), state=stage.number + 1)
+            for c in energy.cords
+        )
         k = stage.number
         note = energy.equation.note.replace(
             "T1 + ΣU(1→2) = T2", f"T{k} + ΣU({k}→{k + 1}) = T{k + 1}"
@@ -799,7 +822,10 @@ class _Chain:
             after_w = {n: sympy.Integer(0) for n in (body, *riders)}
         second = ()
         if energy.rate is not None and energy.second is not None:
-            second = ((names[energy.rate], *energy.second),)
+            value, how, what = energy.second
+            if isinstance(value, sympy.Basic):  # from the start's unknowns: shown again
+                value = value.xreplace(names)
+            second = ((names[energy.rate], value, how, what),)
         record = StageRecord(
             stage, tuple(sorted(part)), dict(energy.works), stops=travel.stops,
             start_along=start_along, scene=replace(sub, travels={body: travel}),
@@ -813,6 +839,8 @@ class _Chain:
             self.moved(travel, part, lone),
             second,
             energy.relations,
+            constraints=tuple(c.branch() for c in cords),
+            cords=cords,
         )
 
     def moving_part(
@@ -867,7 +895,7 @@ class _Chain:
         bodies = dict(scene.bodies)
         for name in part:
             bodies[name] = _carried(bodies[name], shift)
-        return replace(scene, bodies=bodies)
+        return replace(scene, bodies=bodies, springs=_springs_carried(scene, part, shift))
 
 
 def _renamed(symbol: sympy.Symbol, prefix: str, state: int, body: str) -> sympy.Symbol:
@@ -913,6 +941,18 @@ def _joined(scene: Scene, body: str) -> set[str]:
                 part |= {a, b}
                 grown = True
     return {name for name in part if name in scene.bodies}
+
+
+def _springs_carried(scene: Scene, part: set[str], shift: Vec) -> tuple:
+    """The scene's springs with the ends on the bodies of ``part`` moved by ``shift``."""
+    return tuple(
+        replace(
+            s,
+            point=_plus(s.point, shift) if s.body in part else s.point,
+            other_point=_plus(s.other_point, shift) if s.other in part else s.other_point,
+        )
+        for s in scene.springs
+    )
 
 
 def _carried(body: Body, shift: Vec) -> Body:

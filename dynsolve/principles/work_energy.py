@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.model.scene import Scene, Support, Travel, Vec
+from dynsolve.model.scene import CordState, Scene, Support, Travel, Vec
 from dynsolve.model.states import (
     Placement,
     Rates,
@@ -65,8 +65,7 @@ class Energy:
     works: Mapping[str, sympy.Expr] = field(default_factory=dict)  # U(1→2) per force's name
     # the equation's terms as the textbook lists them: ("T1", T1), each ("U_… = …", U), ("T2", T2)
     terms: tuple[tuple[str, sympy.Expr], ...] = ()
-    # elastic cords whose state at state 2 was assumed: (name, stretch s₂, taut assumed)
-    cords: tuple[tuple[str, sympy.Expr, bool], ...] = ()
+    cords: tuple[CordState, ...] = ()  # elastic cords whose state at state 2 was assumed
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -117,7 +116,7 @@ class _Work:
         self.notes: list[str] = []
         self.idle: list[str] = []
         self.named: dict[str, sympy.Expr] = {}  # each force's work, by its name
-        self.cords: list[tuple[str, sympy.Expr, bool]] = []  # (cord, s₂, taut assumed)
+        self.cords: list[CordState] = []  # elastic cords assumed taut (or slack) at the end
 
     def by_name(self, name: str, term: sympy.Expr, note: str) -> None:
         """Add the work ``term`` of the force called ``name`` (0 when it does none)."""
@@ -180,7 +179,8 @@ class _Work:
                 try:
                     spring.stretch(s2, values)
                 except ValueError:  # not known before solving: assumed (taut), then checked
-                    self.cords.append((spring.name, tidy(s2), bool(spring.taut)))
+                    state = CordState(spring.name, tidy(s2), bool(spring.taut), line=spring.line)
+                    self.cords.append(state)
                 s1 = spring.stretch(s1, values)
                 s2 = spring.stretch(s2, values, end=True)
             self.by_name(
