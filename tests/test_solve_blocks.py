@@ -271,3 +271,14 @@ def test_numeric_mode_starts_angles_near_one_radian_at_any_scale(name):
     theta = next(a for a in solution.answers if a.name == "theta")
     unscaled = next(a for a in solve_spec(parse_file(path)).answers if a.name == "theta")
     assert theta.value == pytest.approx(unscaled.value, rel=1e-12)
+
+
+def test_numeric_mode_polishes_a_tiny_root_beside_a_large_one() -> None:
+    # regression: x² + x = c² with c = 1e-50: polyroots' error is absolute, so the root
+    # c² = 1e-100 (to first order; hand: x = (−1 + √(1 + 4c²))/2 = c² − c⁴ + …) came out
+    # as about 1e-36 or 0; a Newton step on the polynomial makes it relative
+    from dynsolve.solver.blocks import _univariate_roots
+
+    x = sympy.Symbol("x")
+    roots = sorted(_univariate_roots(x**2 + x - sympy.Rational(1, 10**100), x), key=abs)
+    assert float(roots[0]) == pytest.approx(1e-100, rel=1e-12)

@@ -584,7 +584,10 @@ def _univariate_roots(residual: sympy.Expr, unknown: sympy.Symbol) -> list[mpmat
             numbers = [_mp_real(c, digits) for c in coefficients]
             if numbers[0] == 0:
                 return None
-            roots = mpmath.polyroots(numbers, maxsteps=100, extraprec=2 * digits)
+            roots = [
+                _polished(numbers, r)
+                for r in mpmath.polyroots(numbers, maxsteps=100, extraprec=2 * digits)
+            ]
             for i, a in enumerate(roots):
                 for b in roots[i + 1 :]:
                     if abs(a - b) <= mpmath.mpf(10) ** -8 * max(abs(a), abs(b)):
@@ -592,6 +595,25 @@ def _univariate_roots(residual: sympy.Expr, unknown: sympy.Symbol) -> list[mpmat
             return list(roots)
     except (sympy.PolynomialError, ValueError, TypeError, ArithmeticError, mpmath.NoConvergence):
         return None
+
+
+def _polished(coefficients: list[mpmath.mpf], root: mpmath.mpc) -> mpmath.mpc:
+    """``root`` refined by Newton steps on the polynomial: the search's error is absolute
+    (a root of 1e-200 beside one of 1 comes out 1e-36), a Newton step's is relative.
+
+    >>> c = [mpmath.mpf(1), mpmath.mpf(1), -mpmath.mpf(10) ** -200]  # x² + x − 1e-200
+    >>> mpmath.nstr(_polished(c, mpmath.mpf(3e-36)), 8)
+    '1.0e-200'
+    """
+    for _ in range(8):
+        value, slope = mpmath.polyval(coefficients, root, derivative=True)
+        if slope == 0:
+            break
+        step = value / slope
+        root -= step
+        if abs(step) <= mpmath.eps * abs(root):
+            break
+    return root
 
 
 def _solve_symbolically(
