@@ -381,11 +381,38 @@ def _table(spec: str, header: Sequence[str], rows: Iterable[Sequence[str]]) -> s
 
 
 def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
+    """The givens' table; quantities derived from them (r_G, I_O = I_G + m d²) follow as
+    displayed equations, formula = numbers = value, where they have room.
+
+    >>> rows = [GivenRow("m", "10 kg", "10 kg", "mass", False, "m", "10\\,kg"),
+    ...         GivenRow("I_O", "", "", "I about O: I_G + m r_G^2", False, "I_{O}",
+    ...                  "\\frac{m}{3} = 3.3\\,kg")]
+    >>> tex = _givens_section(rows, "SI")
+    >>> "\\[ I_{O} = \\frac{m}{3} = 3.3\\,kg \\]" in tex, "$I_{G}$" in tex  # no base value
+    (True, True)
+    """
     if not givens:
         return "\\subsection*{Given}\nNo givens."
     header = ["Symbol", "Value", f"{escape_latex(system)} value", "Description"]
-    rows = [_given_cells(g) for g in givens]
-    return "\\subsection*{Given}\n" + _table(r"@{}lllp{0.4\linewidth}@{}", header, rows)
+    derived = [g for g in givens if not g.symbolic and "=" in g.latex_value]
+    rows = [_given_cells(g) for g in givens if g not in derived]
+    table = _table(r"@{}lllp{0.4\linewidth}@{}", header, rows) if rows else ""
+    lines = [
+        f"{_prose(g.description)}:\n\\[ {g.latex_name} = {g.latex_value}"
+        + (f" = \\text{{{escape_latex(g.base)}}}" if g.base else "")
+        + " \\]"
+        for g in derived
+    ]
+    return "\n".join(["\\subsection*{Given}", table, *lines]).replace("\n\n", "\n")
+
+
+def _prose(text: str) -> str:
+    """A given's description with its symbols typeset as mathematics (as a caption's).
+
+    >>> _prose("I about O: I_G + m r_G^2 (parallel axis)")
+    'I about O: $I_{G}$ + m $r_{G}^{2}$ (parallel axis)'
+    """
+    return caption_latex(text.replace("^2", "²").replace("^3", "³"))
 
 
 def _given_cells(given: GivenRow) -> list[str]:
@@ -394,7 +421,7 @@ def _given_cells(given: GivenRow) -> list[str]:
         _math(given.latex_name),
         value,
         escape_latex(given.base),
-        escape_latex(given.description),
+        _prose(given.description),
     ]
 
 
