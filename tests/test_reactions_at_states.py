@@ -159,3 +159,60 @@ def test_an_angle_with_many_digits_does_not_stall_the_exact_trig(tmp_path):
     result = dynsolve.solve(str(path), time_budget=30)
     c = math.cos(math.radians(37.1234))
     assert result["T_2"].to("N").magnitude == pytest.approx(2 * G * (3 - 2 * c), rel=1e-9)
+
+
+LINK_TURN = """\
+given:
+  m = 1 kg
+  L = 0.8 m
+  n = 90 deg
+scene:
+  point O: (0, 0)
+  body bob: particle, mass m, at (-L, 0)
+  link cord: bob at G to O
+  gravity
+  travel cord: turns n ccw
+find: v = speed(bob), T_b = cord(2)
+"""
+
+
+def test_a_link_turned_in_a_stage_places_its_bob_for_the_reactions_there(tmp_path):
+    # regression (newcomer report): 'travel cord: turns n ccw' with a stage find crashed
+    # with KeyError 'cord' (a link, not a body). Hand: released with the cord horizontal,
+    # v = √(2 g L) = 3.96181 m/s at the bottom, T = 3 m g = 29.43 N
+    got = answers(solve(tmp_path, LINK_TURN))
+    assert got["v"].value == pytest.approx((2 * G * 0.8) ** 0.5, rel=1e-9)
+    assert got["T_b"].value == pytest.approx(3 * G, rel=1e-9)
+
+
+def test_a_bullet_and_bob_swing_together_after_a_plastic_impact(tmp_path):
+    # regression (newcomer report): refused ("a travel of particles moving together is
+    # supported on its own only"). Hand: v_2 = 0.03·400/3.03 = 3.960396 m/s; after the cord
+    # turns 50°, v_3 = √(v_2² − 2 g L (1 − cos 50°)) = 2.114504 m/s
+    text = """\
+given:
+  m_b = 30 g
+  v_0 = 400 m/s
+  M = 3 kg
+  L = 1.6 m
+  D = 0.1 m
+  n = 50 deg
+scene:
+  point O: (0, 0)
+  body bullet: particle, mass m_b, at (-D, -L)
+  body bob: particle, mass M, at (0, -L)
+  link cord: bob at G to O
+  velocity bullet: v_0, right
+  gravity
+  impact bullet with bob: e 0, line right
+  travel cord: turns n ccw
+find: v_3 = speed(bob), T_3 = cord(3)
+"""
+    solution = solve(tmp_path, text)
+    assert all(c.passed for c in solution.checks)
+    got = answers(solution)
+    v_3 = 2.114504
+    assert got["v_3"].value == pytest.approx(v_3, rel=1e-6)
+    # at 50° past the bottom: T − (m_b + M) g cos 50° = (m_b + M) v_3²/L
+    c = math.cos(math.radians(50))
+    assert got["T_3"].value == pytest.approx(3.03 * (G * c + v_3**2 / 1.6), rel=1e-6)

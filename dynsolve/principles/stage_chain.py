@@ -746,6 +746,9 @@ class _Chain:
         from dynsolve.principles.work_energy import energy_equations
 
         scene, body = self.scene, travel.body
+        link = next((k for k in scene.links if k.name == body), None)
+        if body not in scene.bodies and link is not None:  # 'travel cord: turns …': its body
+            body = link.body
         riders = self.together[body] - {body}  # carried along since a plastic impact
         part = _joined(scene, body) | riders
         for name in scene.bodies:
@@ -766,11 +769,11 @@ class _Chain:
             and (scene.bodies[body].particle or translates)
             and not links
         )
-        if riders and not lone:
+        if riders and not scene.bodies[body].particle:  # a plastic impact sticks particles
             raise StageError(
                 stage,
                 f"{stage.title}: {body} carries {', '.join(sorted(riders))} since a plastic "
-                "impact; a travel of particles moving together is supported on its own only",
+                "impact; bodies moving together are followed as one particle only",
             )
         start_along = None
         if lone and travel.kind in ("to", "by"):
@@ -884,11 +887,11 @@ class _Chain:
         scene = self.scene
         if not lone:
             self.unfollowed |= part
-            body = scene.bodies[travel.body]
-            if body.particle and travel.kind in ("to", "by"):  # where a bob has swung to
-                shift = particle_shift(scene, travel)
-                assert shift is not None
-                self.places[travel.body] = _plus(body.G, shift)
+            place = _bob_place(scene, travel)
+            if place is not None:  # a particle on a link: where it swung to
+                name, G = place
+                for rider in self.together[name]:
+                    self.places[rider] = G
             return scene
         shift = particle_shift(scene, travel)
         assert shift is not None
@@ -927,6 +930,30 @@ def _check_straight(stage: Stage, travel: Travel, scene: Scene, v: Vec) -> sympy
             "(only its speed); its path must be straight along the travel",
         )
     return tidy(dot(v, shift))
+
+
+def _bob_place(scene: Scene, travel: Travel) -> tuple[str, Vec] | None:
+    """Where a particle swinging on a link ends a travel (``to``/``by`` it, or a turn of
+    its link to a fixed point), as (particle, G); None for a rigid body or a linkage."""
+    from dynsolve.model.states import particle_shift
+
+    body = scene.bodies.get(travel.body)
+    if body is not None:
+        if body.particle and travel.kind in ("to", "by"):
+            shift = particle_shift(scene, travel)
+            assert shift is not None
+            return travel.body, _plus(body.G, shift)
+        return None
+    link = next((k for k in scene.links if k.name == travel.body), None)
+    if link is None or link.other or travel.kind != "turns" or travel.angle is None:
+        return None
+    if not scene.bodies[link.body].particle:
+        return None
+    centre, G = link.other_point, scene.bodies[link.body].G
+    c, s = sympy.cos(travel.angle), sympy.sin(travel.angle)
+    r = (G[0] - centre[0], G[1] - centre[1])
+    x, y = centre[0] + c * r[0] - s * r[1], centre[1] + s * r[0] + c * r[1]
+    return link.body, (tidy(x), tidy(y))
 
 
 def _joined(scene: Scene, body: str) -> set[str]:
