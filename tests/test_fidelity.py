@@ -569,10 +569,6 @@ NOTES: dict[str, Notes] = {
 
 # Where a derivation is not yet faithful, what precisely is missing (issue 12, part 1).
 MISSING: dict[tuple[str, str], str] = {
-    ("gpm_seed_incline_threshold", "equations"): "the equations are written in x–y (with "
-    "tan_β/sqrt(tan_β^2 + 1)), not along and normal to the incline: the notes' "
-    "F_N = m g cos β and F_f − m g sin β = −m R α are each a combination of two printed "
-    "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "
     "an expanded ΣM_G,z with C_y and D_y, and the bearing force only as the step D_y = …; "
     "the notes' F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) is not among the equations",
