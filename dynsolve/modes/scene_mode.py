@@ -1793,6 +1793,13 @@ def free_bodies(
             motion += " (drawn in state 1: the forces whose work enters T1 + ΣU = T2)"
         elif name in formulation.axes:
             motion += f"; {formulation.axes[name]}"
+        axes = None
+        incline = formulation.inclines.get(name) if at_start is None else None
+        if incline is not None:  # drawn where the slope has numbers
+            found = [real_value(c, knowns) for c in (*incline.t, *incline.n)]
+            floats = [v for v in found if v is not None]
+            if len(floats) == 4:
+                axes = ((floats[0], floats[1]), (floats[2], floats[3]))
         out.append(
             FreeBody(
                 name,
@@ -1802,6 +1809,7 @@ def free_bodies(
                 tuple(rows),
                 () if at_start is not None else formulation.kinetic.get(name, ()),
                 "" if at_start is not None else formulation.moment_points.get(name, ""),
+                axes,
             )
         )
     return tuple(out)
