@@ -364,8 +364,10 @@ class _Writer:
     def constraint(self, lhs: sympy.Expr, rhs: sympy.Expr, note: str) -> None:
         """A kinematic constraint; one that the axes already satisfy (0 = 0: a contact
         kept on incline axes, where a_G has no normal component) is not written."""
-        if self.inclines and _is_zero(lhs - rhs):
-            return
+        if self.inclines:  # a_G = (a_G)_t t: the axes' cosines combine (sin² + cos² = 1)
+            if _is_zero(lhs - rhs):
+                return
+            lhs, rhs = tidy(lhs), tidy(rhs)
         self.constraints.append((lhs, rhs, note))
 
     def numbered(self) -> tuple[Equation, ...]:
