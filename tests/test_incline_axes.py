@@ -180,3 +180,34 @@ def test_a_level_rolling_sphere_keeps_x_y(tmp_path: Path) -> None:
 def test_ascii_names_read_back() -> None:
     # the printed θ and α are the spec's theta and alpha (the residuals above rely on it)
     assert ascii_name("θ") == "theta" and ascii_name("α") == "alpha"
+
+
+def test_impulse_and_momentum_on_an_incline_keeps_its_velocity_unknowns(tmp_path: Path) -> None:
+    # a block sliding down a rough 30° incline at v0 = 1 m/s, for Δt = 2 s (μ_k = 0.2):
+    # m v0 + (m g sin θ − μ_k m g cos θ) Δt = m v2, so v2 = 1 + (4.905 − 0.2 × 8.49571)(2)
+    # = 7.41172 m/s. Over an interval the equations stay in x–y velocity unknowns.
+    spec = """\
+problem: Block slides down a rough incline for 2 s
+units: SI
+given:
+  m = 10 kg
+  theta = 30 deg
+  mu_k = 0.2
+  dt = 2 s
+  v0 = 1 m/s
+  g = 9.81 m/s^2
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: normal (-sin(theta), cos(theta)), mu_k mu_k
+  velocity block: v0, (-cos(theta), -sin(theta))
+  gravity
+  travel block: for dt
+find: v = speed(block) [m/s]
+"""
+    data = _solved(tmp_path, spec)
+    shown = " ".join(e["text"] for e in data["equations"])
+    assert "nan" not in shown and "a_Gt" not in shown
+    theta_ = math.radians(30)
+    expected = 1 + (9.81 * math.sin(theta_) - 0.2 * 9.81 * math.cos(theta_)) * 2
+    answer = next(a for a in data["answers"] if a["name"] == "v")
+    assert answer["value"] == pytest.approx(expected, rel=1e-9)

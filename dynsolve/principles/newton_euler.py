@@ -339,6 +339,7 @@ class _Writer:
         self.notes: list[tuple[str, str]] = []  # shown with the checks (a slack cord)
         self.sliding: dict[str, sympy.Expr] = {}  # contacts slipping at the instant: v_P·t
         self.inclines: dict[str, InclineAxes] = {}  # bodies written along/normal to an incline
+        self.incline_allowed = True
         self.axes: dict[str, str] = {}  # and why, in words
 
     # ---- names and symbols
@@ -425,7 +426,9 @@ class _Writer:
         surface (no v²/ρ), under gravity straight down. None (x–y kept) for level problems,
         pins, contacts with different normals and anything else."""
         mine = [s for s in self.scene.supports if s.body == body.name]
-        if motion == "rotation" or not mine or self.scene.gravity is None:
+        if not self.incline_allowed or motion == "rotation" or not mine:
+            return None
+        if self.scene.gravity is None:
             return None
         if any(s.kind not in ("contact", "rolls", "base") for s in mine):
             return None
@@ -1105,15 +1108,20 @@ class _Writer:
 
 
 def formulate(
-    scene: Scene, symbols: Mapping[str, sympy.Expr], slipping: Mapping[str, int] | None = None
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    slipping: Mapping[str, int] | None = None,
+    inclines: bool = True,
 ) -> Formulation:
     """The Newton–Euler equations and constraints of ``scene``.
 
     ``slipping`` maps contacts whose no-slip assumption failed to the sense (±1 along
     the contact tangent) of their kinetic friction, and declared slides that the answer
-    contradicted to 0 (no slip assumed instead).
+    contradicted to 0 (no slip assumed instead). ``inclines=False`` keeps x–y for every
+    body (impulse and momentum over an interval reads each a_G component as a symbol).
     """
     writer = _Writer(scene, symbols, slipping or {})
+    writer.incline_allowed = inclines
     for body in scene.bodies.values():
         writer.kinematics[body.name] = writer.body_kinematics(body)
     writer.loads()
