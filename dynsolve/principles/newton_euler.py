@@ -458,7 +458,7 @@ class _Writer:
         if name in self.symbols or (taken is not None and tidy(taken[0] - beta_value) != 0):
             name = f"beta_{first.name}"
         beta = self.name_quantity(
-            name, beta_value, Dim(), f"incline angle at {first.point_name} (from its normal)"
+            name, beta_value, Dim(), f"incline angle at {first.point_name}, from its normal (rad)"
         )
         t_beta = (side * sympy.cos(beta), -sympy.sin(beta))
         perp = _perp(t)  # n is t turned ±90°: the sense that points out of the surface
