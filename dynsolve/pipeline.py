@@ -1164,7 +1164,7 @@ class _View:
         hints = []
         for body in bodies:
             mine = [n for n in free if n.endswith(f"_{body}") or (len(bodies) == 1 and n in
-                    ("a_Gx", "a_Gy", "alpha"))]  # fmt: skip
+                    ("a_Gx", "a_Gy", "a_Gt", "a_Gn", "alpha"))]  # fmt: skip
             if mine:
                 hints.append(
                     f"{body}'s {', '.join(pretty(n) for n in mine)} stay free: add a support "

@@ -123,6 +123,8 @@ class FreeBody:
     forces: tuple[ForceRow, ...]
     kinetic: tuple[str, ...]  # kinetic-diagram terms: "m a_Gx", "I_G α"
     moment_point: str  # the point moments are taken about, and why
+    # incline axes (t down the slope, n out of it) as unit vectors, where the equations use them
+    axes: tuple[tuple[float, float], tuple[float, float]] | None = None
 
 
 @dataclass(frozen=True)

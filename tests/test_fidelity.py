@@ -569,10 +569,6 @@ NOTES: dict[str, Notes] = {
 
 # Where a derivation is not yet faithful, what precisely is missing (issue 12, part 1).
 MISSING: dict[tuple[str, str], str] = {
-    ("gpm_seed_incline_threshold", "equations"): "the equations are written in x–y (with "
-    "tan_β/sqrt(tan_β^2 + 1)), not along and normal to the incline: the notes' "
-    "F_N = m g cos β and F_f − m g sin β = −m R α are each a combination of two printed "
-    "equations; and moments are taken about the contact C, not about G (F_f R = I α)",
     ("3d_seed_gear_rolling", "equations"): "the seed is a 3D scene now: its work and energy "
     "is one line M n = ½ m v_G² + ½ ωᵀ I_G ω in the rates (about G), where the notes write "
     "T2 about the fixed point C with I_xx = m r_A²/2 and I_zz = m r_A²/4 + m r_B² and W = 4πM "

@@ -240,6 +240,8 @@ def _with_instant(chain: Formulation, instant: Formulation) -> Formulation:
         kinetic=instant.kinetic,
         derived={**instant.derived, **chain.derived},
         stages=stages,
+        axes=instant.axes,
+        inclines=instant.inclines,
     )
 
 
@@ -628,8 +630,14 @@ def second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
     for name, kinematics in formulation.kinematics.items():
         body = problem.scene.bodies.get(name)
         used = formulation.moment_points.get(name, "")
-        if body is None or kinematics.motion == "particle" or not used or used.startswith("G"):
+        if body is None or kinematics.motion == "particle" or not used:
             continue
+        point, label = body.G, "G"
+        if used.startswith("G"):  # on incline axes about G: the contact is Method II
+            contact = next((s for s in problem.scene.supports if s.body == name), None)
+            if name not in formulation.axes or contact is None:
+                continue
+            point, label = contact.point, contact.point_name
         pin = kinematics.pin
         if pin is not None and all(
             tidy(a - b) == 0 for a, b in zip(pin.point, body.G, strict=True)
@@ -640,14 +648,17 @@ def second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
             formulation.forces.get(name, ()),
             formulation.couples.get(name, ()),
             kinematics,
-            body.G,
+            point,
+            formulation.inclines.get(name),
         )
         principle = (
             "ΣM_G = 0 (translation)" if kinematics.motion == "translation" else ("ΣM_G = I_G α")
         )
+        if label != "G":
+            principle = f"ΣM_{label} = I_G α + (r_G/{label} × m a_G)"
         line += 1
         note = f"{principle} ({name}): a second moment point, a check, not used in the solve"
-        equation = Equation(tidy(applied), tidy(kinetic), f"ΣM_G ({name})", line, note)
+        equation = Equation(tidy(applied), tidy(kinetic), f"ΣM_{label} ({name})", line, note)
         rows.append(_row(equation, dims, problem.spec))
     return tuple(rows)
 
@@ -948,6 +959,8 @@ def _quantity(
         if function == "omega":
             return target("rotation", Dim(0, 0, -1), kin.omega)
         if function in ("a_G", "a"):
+            if kin.tangent is not None and kin.along is not None:  # along the incline
+                return target("along", Dim(1, 0, -2), kin.along, axis=kin.tangent)
             return target("vector", Dim(1, 0, -2), vector=kin.a_G)
         raise SpecError(
             f"unknown scene quantity '{function}'",
@@ -1772,6 +1785,15 @@ def free_bodies(
         }[kin.motion]
         if at_start is not None:
             motion += " (drawn in state 1: the forces whose work enters T1 + ΣU = T2)"
+        elif name in formulation.axes:
+            motion += f"; {formulation.axes[name]}"
+        axes = None
+        incline = formulation.inclines.get(name) if at_start is None else None
+        if incline is not None:  # drawn where the slope has numbers
+            found = [real_value(c, knowns) for c in (*incline.t, *incline.n)]
+            floats = [v for v in found if v is not None]
+            if len(floats) == 4:
+                axes = ((floats[0], floats[1]), (floats[2], floats[3]))
         out.append(
             FreeBody(
                 name,
@@ -1781,6 +1803,7 @@ def free_bodies(
                 tuple(rows),
                 () if at_start is not None else formulation.kinetic.get(name, ()),
                 "" if at_start is not None else formulation.moment_points.get(name, ""),
+                axes,
             )
         )
     return tuple(out)

@@ -103,7 +103,7 @@ def impulse_formulation(
         rolls = sliding_contact(scene, travel)
         if rolls.name not in slipping:
             slipping[rolls.name] = friction_sense(scene, travel, rolls)
-    motion = formulate(scene, symbols, slipping)
+    motion = formulate(scene, symbols, slipping, inclines=False)  # a_G in x–y symbols
     replace: dict[sympy.Symbol, sympy.Expr] = {}
     unknowns: dict[sympy.Symbol, Dim] = {
         s: d for s, d in motion.unknowns.items() if not _is_acceleration(s, motion)

@@ -36,7 +36,13 @@ import sympy
 
 from dynsolve.model.scene import Body, Vec
 from dynsolve.numbers import real_value, tidy
-from dynsolve.principles.newton_euler import CoupleTerm, ForceTerm, Kinematics, cross
+from dynsolve.principles.newton_euler import (
+    CoupleTerm,
+    ForceTerm,
+    InclineAxes,
+    Kinematics,
+    cross,
+)
 from dynsolve.results import Check
 
 MOMENT_AGREEMENT = 1e-9  # relative to the sum of the magnitudes of the terms
@@ -84,9 +90,11 @@ def moment_equation(
     couples: Sequence[CoupleTerm],
     kinematics: Kinematics,
     P: Vec,
+    axes: InclineAxes | None = None,
 ) -> tuple[sympy.Expr, sympy.Expr]:
     """ΣM_P of the forces and couples, and the kinetic diagram's moment about P,
-    I_G α + r_G/P × m a_G, both in the unknowns: the equation Method II writes.
+    I_G α + r_G/P × m a_G, both in the unknowns: the equation Method II writes (its arms
+    from t and n components where the body is on incline ``axes``).
 
     >>> from dynsolve.model.scene import Body
     >>> from dynsolve.principles.newton_euler import ForceTerm, Kinematics
@@ -98,11 +106,17 @@ def moment_equation(
     >>> moment_equation(rod, [weight], [], kin, (0, 0))
     (-L*g*m/2, L**2*alpha*m/3)
     """
-    arms = [tidy(cross((f.point[0] - P[0], f.point[1] - P[1]), f.direction)) for f in forces]
+    arm = cross if axes is None else axes.cross  # on an incline: arms in β, not the slope
+    arms = [tidy(arm((f.point[0] - P[0], f.point[1] - P[1]), f.direction)) for f in forces]
     applied = sympy.Add(*(f.magnitude * arm for f, arm in zip(forces, arms, strict=True)))
     applied += sympy.Add(*(c.moment for c in couples))
     r = (body.G[0] - P[0], body.G[1] - P[1])
-    kinetic = body.I_G * kinematics.alpha + body.mass * cross(r, kinematics.a_G)
+    if axes is not None and kinematics.along is not None and kinematics.tangent is not None:
+        kinetic = body.I_G * kinematics.alpha + body.mass * kinematics.along * axes.cross(
+            r, kinematics.tangent
+        )
+    else:
+        kinetic = body.I_G * kinematics.alpha + body.mass * cross(r, kinematics.a_G)
     return applied, kinetic
 
 

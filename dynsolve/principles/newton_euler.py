@@ -90,6 +90,9 @@ class Kinematics:
     a_G: Vec
     omega: sympy.Expr
     pin: Support | None = None
+    # on incline axes with no normal component: a_G = along · tangent (tangent down the slope)
+    tangent: Vec | None = None
+    along: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -127,6 +130,9 @@ class Formulation:
     # over an interval solved by impulse and momentum: (T1, each force's work, T2), checked
     interval_energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr] | None = None
     cords: tuple[CordState, ...] = ()  # elastic cords whose state at a travel's end was assumed
+    # bodies whose force equations are written along and normal to an incline: why, in words
+    axes: Mapping[str, str] = field(default_factory=dict)
+    inclines: Mapping[str, InclineAxes] = field(default_factory=dict)  # and the axes
 
 
 def bare_formulation(bodies: Iterable[str], **fields: Any) -> Formulation:
@@ -235,6 +241,82 @@ def touches_at_rim(body: Body, support: Support) -> bool:
     )
 
 
+@dataclass(frozen=True)
+class InclineAxes:
+    """Axes along (t, down the slope) and normal (n, out of the surface) to an incline.
+
+    ``t`` and ``n`` are exact unit vectors in x–y; ``t_beta`` and ``n_beta`` are the same
+    vectors written with the incline angle β (``(-cos β, -sin β)``), so that a weight
+    projects as ``m g sin β`` rather than as a quotient of the slope's components.
+    """
+
+    support: str  # the contact whose normal gives the axes
+    t: Vec
+    n: Vec
+    t_beta: Vec
+    n_beta: Vec
+    beta: sympy.Expr  # the incline angle (a given or a derived quantity)
+    normal_fixed: bool  # a_G has no n component (the contact is kept): a_G = (a_G)_t t
+    rolling: bool  # rolls without slip: (a_G)_t = α r, no acceleration unknown of its own
+
+    def component(self, direction: Vec, axis: str) -> sympy.Expr:
+        """direction · t (or · n): exactly ±1 or 0 for a direction along an axis, else in β.
+
+        >>> b = sympy.Symbol("beta", positive=True)
+        >>> c, s = sympy.cos(b), sympy.sin(b)
+        >>> axes = InclineAxes("C", (-c, -s), (-s, c), (-c, -s), (-s, c), b, True, False)
+        >>> axes.component((0, -1), "t"), axes.component((-s, c), "t")
+        (sin(beta), 0)
+        """
+        exact, written = (self.t, self.t_beta) if axis == "t" else (self.n, self.n_beta)
+        along = tidy(dot(direction, exact))
+        if along.is_Number or _is_zero(cross(direction, exact)):
+            return along
+        return tidy(dot(direction, written))
+
+    def cross(self, r: Vec, f: Vec) -> sympy.Expr:
+        """The z component of r × f from their t and n components (in β, not the slope).
+
+        >>> b = sympy.Symbol("beta", positive=True)
+        >>> c, s = sympy.cos(b), sympy.sin(b)
+        >>> axes = InclineAxes("C", (-c, -s), (-s, c), (-c, -s), (-s, c), b, True, False)
+        >>> axes.cross((s, -c), (0, -1))
+        -sin(beta)
+        """
+        handed = tidy(cross(self.t, self.n))  # ±1: t then n turn ccw (+1) or cw (−1)
+        r_t, r_n = self.component(r, "t"), self.component(r, "n")
+        f_t, f_n = self.component(f, "t"), self.component(f, "n")
+        return tidy(handed * (r_t * f_n - r_n * f_t))
+
+
+def _sign(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
+    """+1 or −1 where ``expr``'s sign is known (from the numbers or the symbols'
+    assumptions), else 0."""
+    value = real_value(expr, values)
+    if value is not None:
+        return 0 if abs(value) < 1e-12 else (1 if value > 0 else -1)
+    expr = tidy(expr)
+    if expr.is_positive:
+        return 1
+    if expr.is_negative:
+        return -1
+    return 0
+
+
+def _incline_angle(t: Vec, side: int) -> sympy.Expr:
+    """β with |t_x| = side·t_x = cos β and −t_y = sin β (t down the slope): ``θ`` itself
+    when t is written with a given angle, else ``atan`` of the slope.
+
+    >>> k = sympy.Symbol("k", positive=True)
+    >>> _incline_angle((-1 / sympy.sqrt(1 + k**2), -k / sympy.sqrt(1 + k**2)), -1)
+    atan(k)
+    """
+    across, down = tidy(side * t[0]), tidy(-t[1])
+    if isinstance(down, sympy.sin) and tidy(across - sympy.cos(down.args[0])) == 0:
+        return down.args[0]
+    return tidy(sympy.atan(down / across))
+
+
 class _Writer:
     """Collects unknowns, forces and equations while walking the scene."""
 
@@ -255,6 +337,9 @@ class _Writer:
         self.several = len(scene.bodies) > 1
         self.notes: list[tuple[str, str]] = []  # shown with the checks (a slack cord)
         self.sliding: dict[str, sympy.Expr] = {}  # contacts slipping at the instant: v_P·t
+        self.inclines: dict[str, InclineAxes] = {}  # bodies written along/normal to an incline
+        self.incline_allowed = True
+        self.axes: dict[str, str] = {}  # and why, in words
 
     # ---- names and symbols
     def unknown(self, name: str, dim: Dim) -> sympy.Symbol:
@@ -277,6 +362,12 @@ class _Writer:
         self.equations.append((lhs, rhs, note))
 
     def constraint(self, lhs: sympy.Expr, rhs: sympy.Expr, note: str) -> None:
+        """A kinematic constraint; one that the axes already satisfy (0 = 0: a contact
+        kept on incline axes, where a_G has no normal component) is not written."""
+        if self.inclines:  # a_G = (a_G)_t t: the axes' cosines combine (sin² + cos² = 1)
+            if _is_zero(lhs - rhs):
+                return
+            lhs, rhs = tidy(lhs), tidy(rhs)
         self.constraints.append((lhs, rhs, note))
 
     def numbered(self) -> tuple[Equation, ...]:
@@ -306,6 +397,9 @@ class _Writer:
     def body_kinematics(self, body: Body) -> Kinematics:
         motion = self.motion(body)
         omega = self.scene.omegas.get(body.name, self.omega_from_velocity(body))
+        axes = self.incline_axes(body, motion, omega)
+        if axes is not None:
+            return self._incline_kinematics(body, motion, omega, axes)
         if motion in ("translation", "particle"):
             a_G = (
                 self.unknown(self.suffix("a_Gx", body.name), ACCELERATION),
@@ -323,6 +417,113 @@ class _Writer:
             self.unknown(self.suffix("a_Gy", body.name), ACCELERATION),
         )
         return Kinematics(motion, alpha, a_G, omega)
+
+    def incline_axes(self, body: Body, motion: str, omega: sympy.Expr) -> InclineAxes | None:
+        """The axes along and normal to the incline a body rests on, as the textbook takes
+        them: every support of the body is a contact, roll or base with one common normal
+        that is neither vertical nor horizontal (a wall is not an incline), on a straight
+        surface (no v²/ρ), under gravity straight down. None (x–y kept) for level problems,
+        pins, contacts with different normals and anything else."""
+        mine = [s for s in self.scene.supports if s.body == body.name]
+        if not self.incline_allowed or motion == "rotation" or not mine:
+            return None
+        if self.scene.gravity is None:
+            return None
+        if any(s.kind not in ("contact", "rolls", "base") for s in mine):
+            return None
+        if any(not _is_zero(s.normal_acceleration) for s in mine):
+            return None
+        first = mine[0]
+        if any(not _is_zero(cross(s.normal, first.normal)) for s in mine[1:]):
+            return None
+        if any(_sign(dot(s.normal, first.normal), self.scene.values) != 1 for s in mine[1:]):
+            return None
+        gravity = tuple(tidy(c) for c in self.scene.gravity)
+        if gravity != (0, -1):
+            return None
+        values = self.scene.values
+        side = _sign(first.tangent[0], values)
+        downhill = _sign(dot(gravity, first.tangent), values)
+        if side == 0 or downhill == 0:  # level, a wall, or a slope of unknown sense
+            return None
+        t = (tidy(downhill * first.tangent[0]), tidy(downhill * first.tangent[1]))
+        side = downhill * side
+        beta_value = _incline_angle(t, side)
+        cos_b, sin_b = sympy.cos(beta_value), sympy.sin(beta_value)
+        if tidy(cos_b - side * t[0]) != 0 or tidy(sin_b + t[1]) != 0:
+            return None  # β could not be written exactly: x–y rather than a guess
+        name = "beta"
+        taken = self.derived.get(sympy.Symbol(name, positive=True))
+        if name in self.symbols or (taken is not None and tidy(taken[0] - beta_value) != 0):
+            name = f"beta_{first.name}"
+        beta = self.name_quantity(
+            name, beta_value, Dim(), f"incline angle at {first.point_name}, from its normal (rad)"
+        )
+        t_beta = (side * sympy.cos(beta), -sympy.sin(beta))
+        perp = _perp(t)  # n is t turned ±90°: the sense that points out of the surface
+        turn = 1 if tidy(dot(first.normal, perp) - 1) == 0 else -1
+        n_beta = (-turn * t_beta[1], turn * t_beta[0])
+        exact = {beta: beta_value} if beta != beta_value else {}
+        for written, vector in ((t_beta, t), (n_beta, first.normal)):
+            if any(tidy(w.xreplace(exact) - v) != 0 for w, v in zip(written, vector, strict=True)):
+                return None  # the β form is not the same vector: x–y rather than a guess
+        at_rim = all(s.kind == "rolls" or touches_at_rim(body, s) for s in mine)
+        normal_fixed = motion in ("translation", "particle") or at_rim
+        rolling = (
+            motion == "general"
+            and len(mine) == 1
+            and at_rim
+            and not first.smooth
+            and self._rolls_without_slip(body, first, omega)
+        )
+        return InclineAxes(first.name, t, first.normal, t_beta, n_beta, beta, normal_fixed, rolling)
+
+    def _rolls_without_slip(self, body: Body, support: Support, omega: sympy.Expr) -> bool:
+        """True when the contact's friction is static (no slip assumed): not declared or
+        found slipping, and its point not already sliding at the instant."""
+        if support.name in self.slipping:
+            return not self.slipping[support.name]
+        if support.friction_sense is not None:
+            return False
+        v_G = self.scene.velocities.get(body.name, (sympy.Integer(0), sympy.Integer(0)))
+        r = _minus(support.point, body.G)
+        v_P = (v_G[0] + omega * _perp(r)[0], v_G[1] + omega * _perp(r)[1])
+        return _is_zero(dot(v_P, support.tangent))
+
+    def _incline_kinematics(
+        self, body: Body, motion: str, omega: sympy.Expr, axes: InclineAxes
+    ) -> Kinematics:
+        """a_G along and normal to the incline: (a_G)_t = α r where the body rolls without
+        slip, else an unknown (a_G)_t; (a_G)_n = 0 where the contact is kept by the axes'
+        choice, else an unknown."""
+        self.inclines[body.name] = axes
+        support = next(s for s in self.scene.supports if s.body == body.name)
+        where = support.point_name
+        alpha: sympy.Expr = sympy.Integer(0)
+        if motion not in ("translation", "particle"):
+            alpha = self.unknown(self.suffix("alpha", body.name), ANGULAR_ACCELERATION)
+        if axes.rolling:  # a_C·t = 0: (a_G)_t = −α (k × r_C/G)·t
+            along = tidy(-alpha * dot(_perp(_minus(support.point, body.G)), axes.t))
+        else:
+            along = self.unknown(self.suffix("a_Gt", body.name), ACCELERATION)
+        normal: sympy.Expr = sympy.Integer(0)
+        if not axes.normal_fixed:
+            normal = self.unknown(self.suffix("a_Gn", body.name), ACCELERATION)
+        a_G = (
+            tidy(along * axes.t[0] + normal * axes.n[0]),
+            tidy(along * axes.t[1] + normal * axes.n[1]),
+        )
+        why = (
+            f"axes t down the incline and n normal to it, as the contact normal at {where} "
+            "gives them"
+        )
+        if axes.normal_fixed:
+            why += f" (contact at {where} kept: (a_G)_n = 0)"
+        if axes.rolling:
+            why += f"; rolling without slip at {where}: (a_G)_t = α r"
+        self.axes[body.name] = why
+        tangent, component = (axes.t, along) if axes.normal_fixed else (None, None)
+        return Kinematics(motion, alpha, a_G, omega, None, tangent, component)
 
     def omega_from_velocity(self, body: Body) -> sympy.Expr:
         """ω implied by a given v_G: rolling without slip (v_C = 0) or rotation about a pin."""
@@ -761,15 +962,21 @@ class _Writer:
         if kin.motion == "rotation" and kin.pin is not None:
             self._rotation(body, kin, forces, couples)
             return
-        sum_x = sympy.Add(*(f.vector[0] for f in forces))
-        sum_y = sympy.Add(*(f.vector[1] for f in forces))
-        self.equation(sum_x, m * kin.a_G[0], f"ΣF_x = m (a_G)_x {tag}")
-        self.equation(sum_y, m * kin.a_G[1], f"ΣF_y = m (a_G)_y {tag}")
-        self.kinetic[body.name] = ("m (a_G)_x", "m (a_G)_y")
+        axes = self.inclines.get(body.name)
+        if axes is not None:
+            self._along_and_normal(body, kin, forces, axes)
+        else:
+            sum_x = sympy.Add(*(f.vector[0] for f in forces))
+            sum_y = sympy.Add(*(f.vector[1] for f in forces))
+            self.equation(sum_x, m * kin.a_G[0], f"ΣF_x = m (a_G)_x {tag}")
+            self.equation(sum_y, m * kin.a_G[1], f"ΣF_y = m (a_G)_y {tag}")
+            self.kinetic[body.name] = ("m (a_G)_x", "m (a_G)_y")
         if kin.motion == "particle":
             self.moment_points[body.name] = ""
             return
         P, why = self._moment_point(body, forces)
+        if axes is not None and axes.normal_fixed and kin.motion == "general":
+            P, why = body.G, "G (ΣM_G = I_G α, as the textbook writes a wheel on an incline)"
         if kin.motion == "translation" and P == body.G:
             why = "G (translation: ΣM_G = 0)"
         moment = _moment(forces, couples, P)
@@ -787,6 +994,28 @@ class _Writer:
         self.moment_points[body.name] = why
         if kin.motion != "translation":
             self.kinetic[body.name] = (*self.kinetic[body.name], "I_G α")
+
+    def _along_and_normal(
+        self, body: Body, kin: Kinematics, forces: list[ForceTerm], axes: InclineAxes
+    ) -> None:
+        """ΣF_t = m (a_G)_t and ΣF_n = m (a_G)_n, t down the incline and n out of it."""
+        m, tag = body.mass, f"({body.name})"
+        along = tidy(dot(kin.a_G, axes.t))
+        normal = tidy(dot(kin.a_G, axes.n))
+        sum_t = sympy.Add(*(f.magnitude * axes.component(f.direction, "t") for f in forces))
+        sum_n = sympy.Add(*(f.magnitude * axes.component(f.direction, "n") for f in forces))
+        where = next(s.point_name for s in self.scene.supports if s.name == axes.support)
+        t_label = f"ΣF_t = m (a_G)_t {tag}"
+        if axes.rolling:
+            t_label = f"ΣF_t = m (a_G)_t, (a_G)_t = α r (rolls without slip at {where}) {tag}"
+        n_label = f"ΣF_n = m (a_G)_n {tag}"
+        if axes.normal_fixed:
+            n_label = f"ΣF_n = m (a_G)_n = 0 (contact at {where} kept) {tag}"
+        self.equation(sum_t, m * along, t_label)
+        self.equation(sum_n, m * normal, n_label)
+        self.kinetic[body.name] = (("m α r",) if axes.rolling else ("m (a_G)_t",)) + (
+            () if axes.normal_fixed else ("m (a_G)_n",)
+        )
 
     def _rotation(
         self, body: Body, kin: Kinematics, forces: list[ForceTerm], couples: list[CoupleTerm]
@@ -878,15 +1107,20 @@ class _Writer:
 
 
 def formulate(
-    scene: Scene, symbols: Mapping[str, sympy.Expr], slipping: Mapping[str, int] | None = None
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    slipping: Mapping[str, int] | None = None,
+    inclines: bool = True,
 ) -> Formulation:
     """The Newton–Euler equations and constraints of ``scene``.
 
     ``slipping`` maps contacts whose no-slip assumption failed to the sense (±1 along
     the contact tangent) of their kinetic friction, and declared slides that the answer
-    contradicted to 0 (no slip assumed instead).
+    contradicted to 0 (no slip assumed instead). ``inclines=False`` keeps x–y for every
+    body (impulse and momentum over an interval reads each a_G component as a symbol).
     """
     writer = _Writer(scene, symbols, slipping or {})
+    writer.incline_allowed = inclines
     for body in scene.bodies.values():
         writer.kinematics[body.name] = writer.body_kinematics(body)
     writer.loads()
@@ -905,4 +1139,6 @@ def formulate(
         derived=writer.derived,
         notes=tuple(writer.notes),
         sliding=dict(writer.sliding),
+        axes=dict(writer.axes),
+        inclines=dict(writer.inclines),
     )

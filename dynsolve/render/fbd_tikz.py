@@ -246,8 +246,9 @@ def _kinetic(
     label: Callable[[str], str],
 ) -> str | None:
     """The kinetic diagram: the outline with each term it can place as a blue arrow
-    (m (a_G)_x along +x, m (a_G)_y along +y, I α counterclockwise, m ω² r_G toward the
-    pin, m α r_G across it); None when it can place none."""
+    (m (a_G)_x along +x, m (a_G)_y along +y, m (a_G)_t and m α r down an incline,
+    m (a_G)_n out of it, I α counterclockwise, m ω² r_G toward the pin, m α r_G across
+    it); None when it can place none."""
     arrows = []
     pin = _pin(body, at)
     for term in body.kinetic:
@@ -258,6 +259,10 @@ def _kinetic(
             direction = (1.0, 0.0)
         elif key in ("ma_Gy", "ma_G_y"):
             direction = (0.0, 1.0)
+        elif body.axes is not None and key in ("ma_G_t", "ma_Gt", "mαr"):
+            direction = body.axes[0]  # along the incline, down the slope
+        elif body.axes is not None and key in ("ma_G_n", "ma_Gn"):
+            direction = body.axes[1]
         elif key.endswith("α") and key.startswith("I_"):
             arrows.append(
                 f"\\draw[kinetic] {_xy(polar((0.0, 0.0), COUPLE_MM, -45.0))} arc[start angle=-45,"
