@@ -336,6 +336,35 @@ find: w_BC = omega(BC)
     assert "rigid structure" in str(error.value)
 
 
+def test_a_five_bar_with_one_drive_has_two_degrees_of_freedom():
+    """Four moving bars between two fixed pivots: Gruebler's count 3(n − 1) − 2 j with
+    n = 5 links (ground included) and j = 5 pins gives 12 − 10 = 2 degrees of freedom;
+    one drive leaves 9 velocity unknowns for 8 equations."""
+    text = """\
+given:
+  L = 1 m
+  d = 2 m
+  theta = 60 deg
+  w = 1 rad/s
+scene:
+  point A: (0, 0)
+  point E: (d, 0)
+  bar AB: A to B, length L, angle theta
+  bar BC: B to C
+  bar CD: C to D
+  bar DE: D to E, length L
+  joint C: (L, 1.5*L)
+  joint D: (d, L)
+  omega AB: w ccw
+find: w_BC = omega(BC)
+"""
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "five_bar.dyn")
+    message = str(error.value)
+    assert "2 degrees of freedom" in message and "1 drive" in message
+    assert "9 unknowns" in message and "8 equations" in message
+
+
 def test_placed_joints_must_match_the_lengths():
     text = """\
 given:
