@@ -468,9 +468,11 @@ def _body(
             hint=f"write 'axes {stmt.name}: (x-axis), (y-axis)' in scene coordinates",
         )
     axes = body_axes(z_axis, x_axis)
-    if explicit:
-        zero = sympy.Integer(0)
-        _check_physical(stmt.name, moments, products or (zero, zero, zero), reader, where)
+    if products is not None:
+        # only where products are given: principal moments alone are taken as written
+        # (a seed's thin gear sits at I_z = I_x + I_y, and its graded variants vary I_z
+        # and I_x apart)
+        _check_physical(stmt.name, moments, products, reader, where)
     I_G = tensor(moments, axes, products)
     return Body3D(stmt.name, m, G, I_G, moments, axes, shape, products)  # type: ignore[arg-type]
 
