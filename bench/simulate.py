@@ -139,6 +139,47 @@ def hand_double() -> Hand:
     return Hand(lambda t, y: accel(*y), energy, [0.0, 0.0, 0.0, 0.0])
 
 
+SHAFT = """\
+given:
+  m = 2 kg
+  L = 0.8 m
+  Omega = 6 rad/s
+  theta = 30 deg
+  w = 0 rad/s
+scene:
+  body bar: mass m, rod L, at (L/2*sin(theta), -L/2*cos(theta), 0)
+  axis bar: (sin(theta), -cos(theta), 0)
+  rotates bar: about (0, 1, 0), through (0, 0, 0), omega Omega
+  spins bar: about (0, 0, 1), through (0, 0, 0), omega w, alpha theta_ddot
+  bearing B: at (0, 0, 0), pin
+  gravity
+"""
+SHAFT_START = math.radians(30)
+
+
+def hand_shaft() -> Hand:
+    # the seed's bar on a rotating shaft (002, problems/seed/3d_seed_bar_shaft.dyn): the
+    # b3 component of Ḣ_B = (Ḣ_B)_b + ω × H_B with I_B = m L²/3 across the bar,
+    # I_B θ'' − I_B Ω² sin θ cos θ = −m g (L/2) sin θ, θ from the downward vertical,
+    # θ = θ₀ + q. Ω is held constant, so the invariant is the Jacobi integral
+    # ½ I_B θ'² − ½ I_B Ω² sin²θ − m g (L/2) cos θ (split as T-part and V-part)
+    q, w = sympy.symbols("q w")
+    m, L, g, Omega = 2.0, 0.8, 9.81, 6.0
+    I_B = m * L**2 / 3
+    theta = SHAFT_START + q
+    accel = sympy.lambdify(
+        [q], Omega**2 * sympy.sin(theta) * sympy.cos(theta) - 1.5 * g / L * sympy.sin(theta)
+    )
+    energy = sympy.lambdify(
+        [q, w],
+        (
+            I_B * w**2 / 2 - I_B * Omega**2 * sympy.sin(theta) ** 2 / 2,
+            -m * g * (L / 2) * sympy.cos(theta),
+        ),
+    )
+    return Hand(lambda t, y: [y[1], accel(y[0])], energy, [0.0, 0.0])
+
+
 def run_hand(hand: Hand, method: str, rtol: float) -> tuple[float, float, int]:
     """q at T_END, the energy drift and the number of right-hand side evaluations."""
     sol = solve_ivp(hand.rhs, (0.0, T_END), hand.y0, method=method, rtol=rtol, atol=rtol / 100)
@@ -173,6 +214,9 @@ def main() -> None:
     parser.add_argument("--methods", default="RK45,DOP853,Radau,LSODA")
     parser.add_argument("--rtols", default="1e-6,1e-8,1e-10,1e-12")
     parser.add_argument("--no-write", action="store_true", help="print, do not update the doc")
+    parser.add_argument(
+        "--systems", default="", help="only the systems whose names hold these words (a,b)"
+    )
     args = parser.parse_args()
     builds: list[str] = []
     systems = {
@@ -190,6 +234,10 @@ def main() -> None:
         parse_spec(DOUBLE, "double.dyn"),
         hand_double(),
     )
+    systems["bar on a rotating shaft (seed, 3D)"] = (parse_spec(SHAFT, "shaft.dyn"), hand_shaft())
+    if args.systems:
+        wanted = [w.strip() for w in args.systems.split(",")]
+        systems = {k: v for k, v in systems.items() if any(w in k for w in wanted)}
     for name, (spec, hand) in systems.items():
         start = time.perf_counter()
         integrator = _ours(spec)
@@ -226,8 +274,15 @@ def _ours(spec: object) -> object:
     """dynsolve's equation of motion of the spec, built once; a function (method, rtol)
     that integrates it over T_END as ``dynsolve simulate`` does (every step kept)."""
     from dynsolve.linkage.model import is_linkage
+    from dynsolve.rigid3d.model import is_3d
     from dynsolve.simulate.chain import chain_of
 
+    if is_3d(spec):
+        from dynsolve.simulate.chain_run import integrate_chain
+        from dynsolve.simulate.spin3d import spin_of
+
+        spin = spin_of(spec)
+        return lambda m, r: integrate_chain(spin, T_END, m, r, r / 100, None)
     if is_linkage(spec):
         from dynsolve.simulate.chain_run import integrate_chain
 

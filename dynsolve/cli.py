@@ -599,6 +599,12 @@ def _simulation_text(history: object) -> str:
             f"  small-oscillation period 2π√(M/V'') about q* = {data['equilibrium']:.6g}: "
             f"{data['small_oscillation_period']:.9g} s"
         )
+    constant = data.get("constant_acceleration")
+    if constant is not None:
+        lines.append(
+            f"  constant q'' = {constant['q_ddot']:.9g}: closed form q = q'₀ t + ½ q'' t², "  # type: ignore[index]
+            f"largest difference {constant['difference']:.2e} of the largest |q|"  # type: ignore[index]
+        )
     invariant = str(data["invariant"]).replace(" - ", " − ").replace("Omega", "Ω")
     lines.append(f"  energy drift |Δ({invariant})|/scale: {data['energy_drift']:.2e}")
     return "\n".join(lines)

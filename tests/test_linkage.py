@@ -336,6 +336,35 @@ find: w_BC = omega(BC)
     assert "rigid structure" in str(error.value)
 
 
+def test_a_five_bar_with_one_drive_has_two_degrees_of_freedom():
+    """Four moving bars between two fixed pivots: Gruebler's count 3(n − 1) − 2 j with
+    n = 5 links (ground included) and j = 5 pins gives 12 − 10 = 2 degrees of freedom;
+    one drive leaves 9 velocity unknowns for 8 equations."""
+    text = """\
+given:
+  L = 1 m
+  d = 2 m
+  theta = 60 deg
+  w = 1 rad/s
+scene:
+  point A: (0, 0)
+  point E: (d, 0)
+  bar AB: A to B, length L, angle theta
+  bar BC: B to C
+  bar CD: C to D
+  bar DE: D to E, length L
+  joint C: (L, 1.5*L)
+  joint D: (d, L)
+  omega AB: w ccw
+find: w_BC = omega(BC)
+"""
+    with pytest.raises(SpecError) as error:
+        solve_text(text, "five_bar.dyn")
+    message = str(error.value)
+    assert "2 degrees of freedom" in message and "1 drive" in message
+    assert "9 unknowns" in message and "8 equations" in message
+
+
 def test_placed_joints_must_match_the_lengths():
     text = """\
 given:
@@ -522,6 +551,40 @@ def test_planet_gear_on_a_rotating_arm():
     found = answers(solution)
     assert signed(found["w_P"], "ccw") == pytest.approx(5 * 0.15 / 0.05, rel=1e-12)
     assert found["v_B"].value == pytest.approx(5 * 0.15, rel=1e-12)
+
+
+def test_a_gear_train_of_three_gears_on_fixed_centres():
+    """A drives B drives C in external mesh, centres fixed: at each pitch point the rims'
+    speeds agree, ω_A r_A = ω_B r_B = ω_C r_C, each mesh turning the sense (Hibbeler 16.3),
+    so C turns as A does, at ω_A r_A/r_C; the same for α. ω_A = 300 rpm = 10π rad/s cw:
+    ω_B = 10π (40/100) = 12.566 rad/s ccw, ω_C = 10π (40/60) = 20.944 rad/s cw,
+    α_C = 2 (40/60) = 1.3333 rad/s² cw."""
+    text = """\
+given:
+  r_A = 40 mm
+  r_B = 100 mm
+  r_C = 60 mm
+  n = 300 rpm
+  a = 2 rad/s^2
+scene:
+  point O_A: (0, 0)
+  point O_B: (r_A + r_B, 0)
+  point O_C: (r_A + 2*r_B + r_C, 0)
+  bar gA: O_A
+  bar gB: O_B
+  bar gC: O_C
+  mesh gA with gB: radii r_A, r_B
+  mesh gB with gC: radii r_B, r_C
+  omega gA: n cw
+  alpha gA: a cw
+find: w_B = omega(gB), w_C = omega(gC), al_C = alpha(gC)
+"""
+    solution = solve_text(text, "train.dyn")
+    assert all(c.passed for c in solution.checks)
+    found = answers(solution)
+    assert signed(found["w_B"], "ccw") == pytest.approx(10 * math.pi * 0.4, rel=1e-12)
+    assert signed(found["w_C"], "ccw") == pytest.approx(-10 * math.pi * 40 / 60, rel=1e-12)
+    assert signed(found["al_C"], "ccw") == pytest.approx(-2 * 40 / 60, rel=1e-12)
 
 
 def test_rolling_disk_driven_by_a_couple():

@@ -173,3 +173,46 @@ def test_cli_bad_input_exits_2(tmp_path: Path):
     assert run_cli(spec, "-o", tmp_path / "h.txt").exit_code == 2
     result = run_cli(spec, "--until", "x(bar) = 1 kg")
     assert result.exit_code == 2 and "not a unit of length" in result.output
+
+
+SMOOTH_SLOPE = """\
+given:
+  m = 3 kg
+  v_0 = 4 m/s
+  phi = {phi}
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: normal (-sin(phi), cos(phi))
+  velocity block: v_0, (cos(phi), sin(phi))
+  gravity
+"""
+
+
+@pytest.mark.parametrize("phi", ["30 deg", "12.5 deg"])
+def test_constant_acceleration_is_compared_with_its_closed_form(phi):
+    # a block sent up a smooth slope: along it m s'' = −m g sin(phi) (Hibbeler 13.4), so
+    # s = v_0 t − ½ g sin(phi) t², highest at t = v_0/(g sin phi), s = v_0²/(2 g sin phi)
+    p = math.radians(float(phi.split()[0]))
+    history = simulate(SMOOTH_SLOPE.format(phi=phi), t_end=3.0)  # the top before 3 s
+    accel, difference = history.constant_acceleration
+    assert accel == pytest.approx(-G * math.sin(p), rel=1e-12)
+    assert difference < 1e-9
+    top = next(e for e in history.events if e[0] == "max")
+    assert top[1] == pytest.approx(4.0 / (G * math.sin(p)), rel=1e-9)
+
+
+def test_a_pendulum_has_no_constant_acceleration():
+    history = simulate(BAR.format(theta_0="30 deg"), t_end=0.5)
+    assert history.constant_acceleration is None
+
+
+def test_cli_shows_the_constant_acceleration_closed_form(tmp_path: Path):
+    spec = tmp_path / "slope.dyn"
+    spec.write_text(SMOOTH_SLOPE.format(phi="30 deg"))
+    result = CliRunner().invoke(app, ["simulate", str(spec), "--t-end", "1 s"])
+    assert result.exit_code == 0, result.output
+    assert "constant q'' = -4.905" in result.output and "closed form" in result.output
+    out = tmp_path / "h.json"
+    CliRunner().invoke(app, ["simulate", str(spec), "--t-end", "1 s", "-o", str(out)])
+    data = json.loads(out.read_text())
+    assert data["constant_acceleration"]["q_ddot"] == pytest.approx(-G / 2)

@@ -1,9 +1,11 @@
 """Inertia of a rigid body in 3D: the shape table about G, rotated into the scene's axes.
 
-Body axes: for a disk, cylinder, ring or rod, z is the axis of symmetry (a rod lies
-along z); for a plate ``a by b``, side a lies along x and side b along y (z normal).
-The scene's inertia tensor about G is I_G = R diag(I_x, I_y, I_z) Rᵀ, R's columns the
-body axes written in scene axes (Hibbeler 21.1).
+Body axes: for a disk, cylinder, cone, ring or rod, z is the axis of symmetry (a rod
+lies along z); for a plate ``a by b``, side a lies along x and side b along y (z normal).
+The scene's inertia tensor about G is I_G = R J Rᵀ, R's columns the body axes written in
+scene axes and J the tensor in body axes: diag(I_x, I_y, I_z) for principal axes, or
+with products of inertia I_xy = ∫ x y dm, … off the diagonal with a minus sign
+(Hibbeler 21.1, Eq. 21-6).
 
 >>> import sympy
 >>> m, r = sympy.symbols("m r", positive=True)
@@ -23,7 +25,7 @@ from collections.abc import Sequence
 import sympy
 
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
-SHAPES_3D = ("disk", "cylinder", "ring", "rod", "plate", "sphere", "shell", "particle")
+SHAPES_3D = ("disk", "cylinder", "cone", "ring", "rod", "plate", "sphere", "shell", "particle")
 
 
 def principal(
@@ -44,6 +46,14 @@ def principal(
             raise ValueError("a 3D cylinder needs its length: 'cylinder r by h'")
         side = m * (3 * first**2 + sizes[1] ** 2) / 12
         return (side, side, half * m * first**2)
+    if shape == "cone":
+        # solid right circular cone, radius r at the base, height h; G on the axis h/4
+        # above the base. About the apex I = (3/5) m (r²/4 + h²); parallel axis to G
+        # (3h/4 away): (3/20) m r² + (3/5 − 9/16) m h² = (3/80) m (4 r² + h²).
+        if len(sizes) < 2:
+            raise ValueError("a cone needs its height: 'cone r by h' (r the base radius)")
+        side = sympy.Rational(3, 80) * m * (4 * first**2 + sizes[1] ** 2)
+        return (side, side, sympy.Rational(3, 10) * m * first**2)
     if shape == "ring":
         return (half * m * first**2, half * m * first**2, m * first**2)
     if shape == "rod":
@@ -60,10 +70,30 @@ def principal(
     raise ValueError(f"the 3D shape table has no '{shape}' (it has {', '.join(SHAPES_3D)})")
 
 
-def tensor(moments: Sequence[sympy.Expr], axes: tuple[Vec3, Vec3, Vec3]) -> sympy.Matrix:
-    """I_G in scene axes: R diag(moments) Rᵀ, with R's columns the body's x, y, z axes."""
+def tensor(
+    moments: Sequence[sympy.Expr],
+    axes: tuple[Vec3, Vec3, Vec3],
+    products: Sequence[sympy.Expr] | None = None,
+) -> sympy.Matrix:
+    """I_G in scene axes: R J Rᵀ, with R's columns the body's x, y, z axes and J the tensor
+    in body axes: diag(moments), less the products of inertia (I_xy, I_yz, I_zx) off the
+    diagonal (J_xy = −I_xy, …: Hibbeler Eq. 21-6, I_xy = ∫ x y dm).
+
+    >>> a, b, c = sympy.symbols("a b c")
+    >>> tensor((1, 2, 3), ((1, 0, 0), (0, 1, 0), (0, 0, 1)), (a, b, c))
+    Matrix([
+    [ 1, -a, -c],
+    [-a,  2, -b],
+    [-c, -b,  3]])
+    """
     R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
-    I_G = R * sympy.diag(*moments) * R.T
+    J = sympy.diag(*moments)
+    if products is not None:
+        xy, yz, zx = products
+        J[0, 1] = J[1, 0] = -xy
+        J[1, 2] = J[2, 1] = -yz
+        J[0, 2] = J[2, 0] = -zx
+    I_G = R * J * R.T
     # sin² + cos² = 1 where the axes are turned by an angle (9 small entries: cheap)
     return I_G.applyfunc(lambda e: sympy.trigsimp(e) if e.has(sympy.sin, sympy.cos) else e)
 
@@ -114,3 +144,27 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
 def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:
     """a × b."""
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def physical_problem(J: sympy.Matrix) -> str | None:
+    """Why the inertia tensor ``J`` (numbers) cannot be a rigid body's, or None: its
+    principal moments (eigenvalues) must not be negative and each must be at most the sum
+    of the other two (I_x + I_y = ∫ (x² + y² + 2 z²) dm ≥ I_z, Hibbeler 21.1)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        A = mpmath.matrix(
+            [[mpmath.mpf(str(sympy.N(J[i, j], 30))) for j in range(3)] for i in range(3)]
+        )
+        values = sorted(mpmath.eigsy(A, eigvals_only=True))
+    scale = max(abs(v) for v in values) or 1
+    tol = 1e-12 * scale
+    names = ", ".join(f"{float(v):.6g}" for v in values)
+    if values[0] < -tol:
+        return f"its principal moments ({names}) include a negative one"
+    if values[2] > values[0] + values[1] + tol:
+        return (
+            f"its largest principal moment is more than the sum of the other two "
+            f"(principal moments {names})"
+        )
+    return None

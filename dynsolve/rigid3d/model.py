@@ -45,7 +45,7 @@ from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import relation
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
-from dynsolve.rigid3d.inertia import Vec3, body_axes, principal, tensor, unit
+from dynsolve.rigid3d.inertia import Vec3, body_axes, physical_problem, principal, tensor, unit
 from dynsolve.spec.ast import Expr, Name, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import Constraint
@@ -85,6 +85,7 @@ class Body3D:
     principal: tuple[sympy.Expr, sympy.Expr, sympy.Expr]
     axes: tuple[Vec3, Vec3, Vec3]
     shape: str
+    products: tuple[sympy.Expr, sympy.Expr, sympy.Expr] | None = None
 
 
 @dataclass(frozen=True)
@@ -394,12 +395,19 @@ def _body(
     )  # type: ignore[arg-type]
     shapes = [p for p in stmt.props if p.key == "shape"]
     explicit = [s for s in statements if s.kind == "inertia3" and s.body == stmt.name]
+    products: tuple[sympy.Expr, ...] | None = None
     if explicit:
         moments = tuple(
             reader.value(e, MOMENT_OF_INERTIA, "a moment of inertia")
             for e in explicit[0].vectors[0]
         )
         shape = "given principal moments"
+        if len(explicit[0].vectors) > 1:
+            products = tuple(
+                reader.value(e, MOMENT_OF_INERTIA, "a product of inertia")
+                for e in explicit[0].vectors[1]
+            )
+            shape = "given moments and products of inertia"
     elif shapes:
         sizes = tuple(reader.value(v, LENGTH, "a size") for v in shapes[0].values)
         try:
@@ -437,6 +445,21 @@ def _body(
                 x_axis[2] * y_axis[0] - x_axis[0] * y_axis[2],
                 x_axis[0] * y_axis[1] - x_axis[1] * y_axis[0],
             )
+    has_axis = any(line.body == stmt.name and line.kind == "axis" for line in statements)
+    has_axis = has_axis or bool(spinning)
+    if products is not None and x_axis is None and not has_axis:
+        # no axis lines: the body axes are the scene's, x = (1, 0, 0) and z = (0, 0, 1)
+        x_axis = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
+    if products is not None and any(p != 0 for p in products) and x_axis is None:
+        # products of inertia belong to a pair of body axes: with 'axis' alone, x and y
+        # would be an arbitrary pair about z
+        raise SpecError(
+            f"body {stmt.name}'s products of inertia are about its x, y, z axes, "
+            "but only its z axis is given",
+            where,
+            hint=f"write 'axes {stmt.name}: (x-axis), (y-axis)' in scene coordinates "
+            "(without axis lines the body axes are the scene's)",
+        )
     if x_axis is None and sympy.simplify(moments[0] - moments[1]) != 0:
         raise SpecError(
             f"body {stmt.name} is not symmetric about its z axis (I_x ≠ I_y): give both "
@@ -445,7 +468,36 @@ def _body(
             hint=f"write 'axes {stmt.name}: (x-axis), (y-axis)' in scene coordinates",
         )
     axes = body_axes(z_axis, x_axis)
-    return Body3D(stmt.name, m, G, tensor(moments, axes), moments, axes, shape)  # type: ignore[arg-type]
+    if products is not None:
+        # only where products are given: principal moments alone are taken as written
+        # (a seed's thin gear sits at I_z = I_x + I_y, and its graded variants vary I_z
+        # and I_x apart)
+        _check_physical(stmt.name, moments, products, reader, where)
+    I_G = tensor(moments, axes, products)
+    return Body3D(stmt.name, m, G, I_G, moments, axes, shape, products)  # type: ignore[arg-type]
+
+
+def _check_physical(
+    name: str,
+    moments: Sequence[sympy.Expr],
+    products: Sequence[sympy.Expr],
+    reader: SceneReader,
+    where: Position,
+) -> None:
+    """Refuse moments and products of inertia that no rigid body has (a negative principal
+    moment, or one larger than the other two together), when the givens are numbers."""
+    J = tensor(moments, body_axes((0, 0, 1), (1, 0, 0)), products)  # type: ignore[arg-type]
+    J = J.xreplace(reader.given_values)
+    if J.free_symbols:
+        return
+    why = physical_problem(J)
+    if why is not None:
+        raise SpecError(
+            f"the inertia given for {name} is not a rigid body's: {why}",
+            where,
+            hint="products of inertia are I_xy = ∫ x y dm (the tensor holds −I_xy); "
+            "check their signs and sizes",
+        )
 
 
 def _spin(stmt: SceneStmt, reader: SceneReader, spec: Spec, rates: dict[sympy.Symbol, Dim]) -> Spin:

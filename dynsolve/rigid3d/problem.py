@@ -378,10 +378,19 @@ def _inertia_note(
             )
         rows.append("[" + ", ".join(entries) + "]")
     unit = natural_unit(Dim(2, 1, 0), spec.system)
-    detail = (
-        f"{body.shape}: principal (I_x, I_y, I_z) = ({moments}) about G in body axes; "
-        f"I_G = R diag(I_x, I_y, I_z) Rᵀ in scene axes = [{', '.join(rows)}] {unit}"
-    )
+    if body.products is None:
+        detail = (
+            f"{body.shape}: principal (I_x, I_y, I_z) = ({moments}) about G in body axes; "
+            f"I_G = R diag(I_x, I_y, I_z) Rᵀ in scene axes = [{', '.join(rows)}] {unit}"
+        )
+    else:
+        products = ", ".join(sympy.sstr(tidy(p)) for p in body.products)
+        detail = (
+            f"{body.shape}: (I_x, I_y, I_z) = ({moments}) and products "
+            f"(I_xy, I_yz, I_zx) = ({products}) about G in body axes; "
+            "I_G = R J Rᵀ in scene axes, J = [[I_x, −I_xy, −I_zx], [−I_xy, I_y, −I_yz], "
+            f"[−I_zx, −I_yz, I_z]], = [{', '.join(rows)}] {unit}"
+        )
     return (f"inertia of {body.name}", detail)
 
 

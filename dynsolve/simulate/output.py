@@ -40,6 +40,7 @@ def summary(history: History | ChainHistory) -> dict[str, object]:
         "period": history.period,
         "small_oscillation_period": history.small_period,
         "equilibrium": history.equilibrium,
+        "constant_acceleration": _constant(getattr(history, "constant_acceleration", None)),
         "energy_drift": run.drift,
         "invariant": getattr(history, "invariant", "T + V - U_f"),
         "evaluations": run.evaluations,
@@ -92,3 +93,10 @@ def history_plot(history: History | ChainHistory, suffix: str = ".png") -> bytes
     figure.savefig(buffer, format=suffix.lstrip(".") or "png")
     plt.close(figure)
     return buffer.getvalue()
+
+
+def _constant(pair: tuple[float, float] | None) -> dict[str, float] | None:
+    """The constant q'' and the run's largest relative difference from q'₀ t + ½ q'' t²."""
+    if pair is None:
+        return None
+    return {"q_ddot": pair[0], "difference": pair[1]}

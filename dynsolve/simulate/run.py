@@ -75,6 +75,8 @@ class History:
     period: float | None  # from the turning points of q
     small_period: float | None  # 2π √(M/V'') about the equilibrium it oscillates about
     equilibrium: float | None
+    # (q'', largest |q − (q'₀ t + ½ q'' t²)| over the largest |q|) where q'' is constant
+    constant_acceleration: tuple[float, float] | None = None
 
     def columns(self) -> tuple[str, ...]:
         """The history's column names, with units."""
@@ -248,6 +250,7 @@ def simulate_spec(
     run = _with_last(run)
     period = _period(run.events)
     small, equilibrium = _small_oscillations(motion, run)
+    constant = _constant_acceleration(motion, qd0, run)
     return History(
         spec.file,
         spec.title or spec.file,
@@ -259,7 +262,30 @@ def simulate_spec(
         period,
         small,
         equilibrium,
+        constant,
     )
+
+
+def _constant_acceleration(motion: OneDof, qd0: float, run: Run) -> tuple[float, float] | None:
+    """Where M and Q do not depend on q (no friction: a body sliding down a smooth slope, a
+    wheel rolling down it, a flywheel under a constant couple), q'' = Q/M is constant and
+    the closed form is q = q'₀ t + ½ q'' t² (Hibbeler 12.2, 16.3): (q'', the largest
+    difference from the run over the largest |q|); None for any other motion."""
+    import sympy
+
+    from dynsolve.simulate.equations import Q as q_symbol
+
+    M, dM, Qc, friction = motion.terms[:4]
+    if friction != 0 or any((sympy.Integer(0) + e).has(q_symbol) for e in (M, dM, Qc)):
+        return None
+    if sympy.Integer(0) + dM != 0:
+        return None
+    accel = float(Qc / M)
+    t = np.asarray(run.t, float)
+    closed = qd0 * t + accel * t**2 / 2
+    q = np.asarray(run.q, float)
+    size = max(float(np.max(np.abs(closed))), float(np.max(np.abs(q))), 1e-300)
+    return accel, float(np.max(np.abs(q - closed))) / size
 
 
 def _with_last(run: Run) -> Run:

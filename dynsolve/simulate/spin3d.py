@@ -61,15 +61,30 @@ class Spin3D:
     theta0: float
     joints: tuple[str, ...] = ()
     size: int = 1
+    accel: Callable[[float, float], float] | None = None  # θ''(θ, θ') in closed form
 
     def right_hand_side(self) -> Callable[[float, Sequence[float]], list[float]]:
-        """(θ', θ'') of the state (turn, rate): solve_ivp's ``fun``."""
-        system, column, start = self.system, self.column, self.theta0
+        """(θ', θ'') of the state (turn, rate): solve_ivp's ``fun``. θ'' from its closed
+        form when there is one (the six equations solved once, symbolically, and checked
+        against the numeric solve), else from the six equations solved at each state; a
+        state where the closed form is not finite (a pivot that vanishes there) is solved
+        numerically."""
+        system, column, start, accel = self.system, self.column, self.theta0, self.accel
+
+        def solved(theta: float, rate: float) -> float:
+            A, b = system(theta, rate)
+            x = np.linalg.solve(np.asarray(A, float), np.asarray(b, float).ravel())
+            return float(x[column])
+
+        if accel is None:
+            return lambda _t, y: [float(y[1]), solved(start + float(y[0]), float(y[1]))]
 
         def rates(_t: float, y: Sequence[float]) -> list[float]:
-            A, b = system(start + float(y[0]), float(y[1]))
-            solved = np.linalg.solve(np.asarray(A, float), np.asarray(b, float).ravel())
-            return [float(y[1]), float(solved[column])]
+            theta, rate = start + y[0], y[1]
+            value = accel(theta, rate)
+            if not math.isfinite(value):
+                value = solved(float(theta), float(rate))
+            return [rate, value]
 
         return rates
 
@@ -132,6 +147,7 @@ def spin_of(spec: Spec) -> Spin3D:
             "reactions and the relative angular acceleration are fixed"
         )
     system = sympy.lambdify([theta, omega], (A, b), "numpy", cse=True)
+    accel = _closed_form(A, b, unknowns.index(rate), theta, omega, system, float(values[theta]))
     w, _, v_G, _ = motion(scene)
     body = scene.body
     origin = scene.spin.through
@@ -151,7 +167,51 @@ def spin_of(spec: Spec) -> Spin3D:
         unknowns.index(rate),
         jacobi,
         float(values[theta]),
+        accel=accel,
     )
+
+
+CLOSED_FORM_OPS = 2000  # a larger θ'' is left to the numeric solve at each state
+
+
+def _closed_form(
+    A: sympy.Matrix,
+    b: sympy.Matrix,
+    column: int,
+    theta: sympy.Symbol,
+    omega: sympy.Symbol,
+    system: Callable[..., tuple[object, object]],
+    theta0: float,
+) -> Callable[[float, float], float] | None:
+    """θ''(θ, θ') from the six equations solved once by LU (sympy), tidied and lambdified
+    with ``math``: the same work per step as a hand-written script. It is substituted
+    back: at five states it must agree with the numeric solve of the equations (relative
+    1e-10), else (or when the LU needs a pivot that is zero, or the formula is large)
+    None, and the equations are solved at each state."""
+    from dynsolve.numbers import tidy
+
+    try:
+        x = A.LUsolve(b)
+    except (ValueError, ZeroDivisionError, sympy.polys.polyerrors.PolynomialError):
+        return None
+    expr = x[column]
+    if sympy.count_ops(expr) > CLOSED_FORM_OPS:
+        return None
+    expr = tidy(expr)
+    accel = sympy.lambdify([theta, omega], expr, "math", cse=True)
+    for shift, rate in ((0.0, 0.0), (0.37, 1.3), (-0.81, -2.2), (1.9, 0.4), (2.7, -4.1)):
+        at = theta0 + shift
+        A_n, b_n = system(at, rate)
+        try:
+            want = float(
+                np.linalg.solve(np.asarray(A_n, float), np.asarray(b_n, float).ravel())[column]
+            )
+            got = float(accel(at, rate))
+        except (np.linalg.LinAlgError, ZeroDivisionError, ValueError, OverflowError):
+            return None
+        if not math.isclose(got, want, rel_tol=1e-10, abs_tol=1e-12 * (1 + abs(want))):
+            return None
+    return accel
 
 
 def _coordinate(

@@ -1187,8 +1187,11 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("axes", body, body=str(body), vectors=(x_axis, y_axis))
 
     def inertia3_stmt(self, c: list[Any]) -> SceneStmt:
-        body, *moments = c
-        return self._stmt("inertia3", body, body=str(body), vectors=(tuple(moments),))
+        body, *values = c
+        vectors = (tuple(values[:3]),)
+        if len(values) > 3:  # ', products I_xy, I_yz, I_zx'
+            vectors += (tuple(values[3:]),)
+        return self._stmt("inertia3", body, body=str(body), vectors=vectors)
 
     def torque_stmt(self, c: list[Any]) -> SceneStmt:
         name, body = c
