@@ -22,7 +22,7 @@ from dataclasses import fields, is_dataclass
 
 from dynsolve.errors import DynsolveError
 from dynsolve.quantities import resolve_unit
-from dynsolve.spec.ast import Call, Given, Spec
+from dynsolve.spec.ast import Call, Direction, Given, Prop, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.units import Dim
 
@@ -94,24 +94,39 @@ def _one_slip(a: str, b: str) -> bool:
 def _bare_angles(spec: Spec) -> Iterator[tuple[str, str]]:
     bare = {g.name: g for g in spec.givens if g.quantity is not None and g.quantity.unit is None}
     seen: set[str] = set()
-    for call in _calls(spec):
-        if call.function not in TRIG:
-            continue
-        for arg in call.args:
-            for name in iter_names(arg):
-                given = bare.get(name.text)
-                if given is None or given.name in seen or given.quantity is None:
-                    continue
-                seen.add(given.name)
-                value = float(given.quantity.value)
-                degrees = f"{math.degrees(value):.4g}"
-                yield (
-                    "bare angle",
-                    f"{given.name} = {given.quantity.text} (line {given.line}) has no unit, so "
-                    f"{call.function}({arg}) reads it as {given.quantity.text} rad "
-                    f"({degrees}°); write '{given.quantity.text} deg' for degrees, or "
-                    f"'{given.quantity.text} rad' if radians are meant",
-                )
+    for reader, expr in _angle_uses(spec):
+        for name in iter_names(expr):
+            given = bare.get(name.text)
+            if given is None or given.name in seen or given.quantity is None:
+                continue
+            seen.add(given.name)
+            value = float(given.quantity.value)
+            degrees = f"{math.degrees(value):.4g}"
+            yield (
+                "bare angle",
+                f"{given.name} = {given.quantity.text} (line {given.line}) has no unit, so "
+                f"{reader} reads it as {given.quantity.text} rad "
+                f"({degrees}°); write '{given.quantity.text} deg' for degrees, or "
+                f"'{given.quantity.text} rad' if radians are meant",
+            )
+
+
+def _angle_uses(spec: Spec) -> Iterator[tuple[str, object]]:
+    """Where the spec reads an expression as an angle: the argument of sin/cos/tan, and a
+    scene direction or property ``angle EXPR`` (a contact's normal, a force, a travel)."""
+    stack: list[object] = [spec]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Call) and item.function in TRIG:
+            yield from ((f"{item.function}({arg})", arg) for arg in item.args)
+        elif isinstance(item, Direction) and item.kind == "angle" and item.angle is not None:
+            yield f"'angle {item.angle}'", item.angle
+        elif isinstance(item, Prop) and item.key == "angle":
+            yield from ((f"'angle {value}'", value) for value in item.values)
+        if isinstance(item, tuple | list):
+            stack.extend(item)
+        elif is_dataclass(item) and not isinstance(item, type):
+            stack.extend(getattr(item, f.name) for f in fields(item))
 
 
 def _pounds_as_mass(spec: Spec) -> Iterator[tuple[str, str]]:
@@ -135,17 +150,3 @@ def _is_force(given: Given, file: str) -> bool:
         return resolve_unit(given.quantity.unit, file).dim == FORCE
     except DynsolveError:
         return False  # reported where the givens are resolved
-
-
-def _calls(node: object) -> Iterator[Call]:
-    """Every function call anywhere in the spec's statements (equations, scene, defines)."""
-    stack: list[object] = [node]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, Call):
-            yield item
-            stack.extend(item.args)
-        elif isinstance(item, tuple | list):
-            stack.extend(item)
-        elif is_dataclass(item) and not isinstance(item, type):
-            stack.extend(getattr(item, f.name) for f in fields(item))

@@ -155,6 +155,28 @@ def test_a_bare_number_in_sin_is_a_warning(workdir: Path) -> None:
     assert "warning: bare angle" in terminal
 
 
+INCLINE = """\
+given:
+  m = 5 kg
+  beta = 20
+  d = 2 m
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: normal angle pi/2 - beta, smooth
+  gravity
+  travel block: by d, angle -beta
+find: v = speed(block)
+"""
+
+
+def test_a_bare_number_in_a_scene_angle_is_a_warning(workdir: Path) -> None:
+    # regression (newcomer report): 'angle -beta' with beta = 20 read 20 rad with every
+    # check green and no word (v = 5.99 m/s where 20° gives √(2 g d sin 20°) = 3.66 m/s)
+    (workdir / "i.dyn").write_text(INCLINE)
+    (warning,) = json.loads(run("solve", "i.dyn", "-f", "json").stdout)["warnings"]
+    assert "beta = 20 (line 3) has no unit, so 'angle" in warning and "1146°" in warning
+
+
 def test_an_angle_in_degrees_is_not_a_warning(workdir: Path) -> None:
     (workdir / "w.dyn").write_text(BARE_ANGLE.replace("theta = 30", "theta = 30 deg"))
     assert json.loads(run("solve", "w.dyn", "-f", "json").stdout)["warnings"] == []

@@ -293,6 +293,7 @@ def _instants_asked(spec: Spec, scene: Scene) -> frozenset[int]:
         if item.ref is not None
         and item.ref.function not in _NOT_REACTIONS
         and item.ref.function not in scene.bodies
+        and item.ref.function not in {s.name for s in scene.springs}
         and len(item.ref.args) == 1
         and item.ref.args[0].isdigit()
         and scene.events
@@ -944,12 +945,20 @@ def _quantity(
         ):
             return target("signed", Dim(1, 1, -2), reaction)  # a tension (+) or a push (−)
         return target("along", Dim(1, 1, -2), reaction, axis=axis)
+    if any(s.name == function for s in scene.springs):
+        raise SpecError(
+            f"the force of the spring {function} is not a find",
+            where,
+            hint="define it from its stretch, e.g. 'define: F_S = k*x' with x the stretch "
+            "at that state (or ask work(S, k) for its work over a stage)",
+        )
     if args and not formulation.kinematics:
         raise SpecError(
             f"'{function}' is not a quantity of a scene between states or impacts",
             where,
-            hint="such a scene answers speed(B), omega2(B), v_after(B), omega_after(B), "
-            "m(B), I(B) and I(B, P)",
+            hint="such a scene answers speed(B[, k]), omega2(B), v_after(B), omega_after(B), "
+            "T(B, k), V(B, k), work(F, k), energy_lost(k), impulse(B, k), distance(B), "
+            "angle(B), height(B), a reaction at a state (cord(2)), m(B), I(B) and I(B, P)",
         )
     if args:
         body = _body(args[0], scene, where)

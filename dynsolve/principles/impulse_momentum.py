@@ -232,6 +232,7 @@ def impulse_formulation(
         events=events,
         after={name: v_G for name, (v_G, _) in ends.items()},
         interval_energy=(tidy(T_1), works, tidy(T_2)),
+        sliding=motion.sliding,  # contacts slipping at the start: kinetic friction, said so
     )
 
 

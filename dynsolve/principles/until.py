@@ -351,9 +351,10 @@ def _first_zero(
         for k in range(1, steps + 1):
             angle = 2 * math.pi * k / steps
             if f_v2(angle) <= 0:
+                stop = _bisect(f_v2, previous, angle)  # where v² = 0, to the last digit
                 raise UntilError(
                     travel,
-                    f"{travel.body} stops at θ = {math.degrees(angle):.4g}° (its speed falls to "
+                    f"{travel.body} stops at θ = {math.degrees(stop):.5g}° (its speed falls to "
                     f"zero) before {circle.force} does: it swings back, and {circle.what} "
                     f"never {'goes slack' if travel.until == 'slack' else 'is left'}",
                 )
