@@ -381,14 +381,14 @@ def _table(spec: str, header: Sequence[str], rows: Iterable[Sequence[str]]) -> s
 
 
 def _givens_section(givens: Sequence[GivenRow], system: str) -> str:
-    """The givens' table; quantities derived from them (r_G, I_O = I_G + m d²) follow as
+    r"""The givens' table; quantities derived from them (r_G, I_O = I_G + m d²) follow as
     displayed equations, formula = numbers = value, where they have room.
 
-    >>> rows = [GivenRow("m", "10 kg", "10 kg", "mass", False, "m", "10\\,kg"),
+    >>> rows = [GivenRow("m", "10 kg", "10 kg", "mass", False, "m", r"10\,kg"),
     ...         GivenRow("I_O", "", "", "I about O: I_G + m r_G^2", False, "I_{O}",
-    ...                  "\\frac{m}{3} = 3.3\\,kg")]
+    ...                  r"\frac{m}{3} = 3.3\,kg")]
     >>> tex = _givens_section(rows, "SI")
-    >>> "\\[ I_{O} = \\frac{m}{3} = 3.3\\,kg \\]" in tex, "$I_{G}$" in tex  # no base value
+    >>> r"\[ I_{O} = \frac{m}{3} = 3.3\,kg \]" in tex, "$I_{G}$" in tex  # no base value
     (True, True)
     """
     if not givens:
