@@ -1020,11 +1020,14 @@ def chain_assumptions(
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)
             if closing is not None:
+                ground = event.other not in scene.bodies  # either sense of the line
                 checks.append(
                     Assumption(
                         f"approach in stage {k}",
                         closing > 0,
-                        f"before the impact (v_A − v_B)·n = {closing:.4g}"
+                        f"before the impact |v·n| = {closing:.4g} (the ground)"
+                        if ground
+                        else f"before the impact (v_A − v_B)·n = {closing:.4g}"
                         + (
                             " > 0"
                             if closing > 0
