@@ -1025,9 +1025,11 @@ def chain_assumptions(
                     Assumption(
                         f"approach in stage {k}",
                         closing > 0,
-                        f"before the impact |v·n| = {closing:.4g} (the ground)"
-                        if ground
-                        else f"before the impact (v_A − v_B)·n = {closing:.4g}"
+                        (
+                            f"before the impact |v·n| = {closing:.4g} (the ground)"
+                            if ground
+                            else f"before the impact (v_A − v_B)·n = {closing:.4g}"
+                        )
                         + (
                             " > 0"
                             if closing > 0
