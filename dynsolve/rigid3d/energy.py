@@ -51,7 +51,7 @@ from dynsolve.numbers import tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check
 from dynsolve.rigid3d.inertia import Vec3, cross
-from dynsolve.rigid3d.model import Rolling, Scene3D, Travel3D, close_name
+from dynsolve.rigid3d.model import Rolling, Scene3D, Travel3D
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Constraint, Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -379,25 +379,14 @@ def _target(
     dims: Mapping[str, Dim],
     terms: EnergyTerms,
 ) -> Target:
+    from dynsolve.rigid3d.problem import named_target
+
+    hint = f"ask for a rate, a torque, T({scene.body.name}) or U({scene.body.name})"
+    found = named_target(item, spec, unknowns, dims, hint)
+    if found is not None:
+        return found
     where = Position(spec.file, item.line, item.column)
-    alias = item.ref.function if item.ref is not None and not item.ref.args else item.name
     symbol = sympy.Symbol(item.name)
-    named = {s.name: s for s in unknowns}
-    if item.ref is None or alias != item.name:
-        if alias in named:
-            unit, dim = _unit(item, dims[alias], spec, where)
-            return Target(
-                item.name, symbol, dim, unit, item.unit is not None, False, "signed", named[alias]
-            )
-        if alias == item.name and alias in dims:
-            unit, dim = _unit(item, dims[alias], spec, where)
-            return Target(item.name, symbol, dim, unit, item.unit is not None, True)
-        raise SpecError(
-            f"'{alias}' is not a quantity of the 3D scene",
-            where,
-            hint=close_name(alias, list(named))
-            or f"ask for a rate, a torque, T({scene.body.name}) or U({scene.body.name})",
-        )
     function, args = item.ref.function, item.ref.args
     name = scene.body.name
     if function not in ("T", "U") or len(args) != 1 or args[0] != name:

@@ -405,25 +405,12 @@ def _target(
     a_G: tuple[sympy.Expr, ...],
     H_dot: tuple[sympy.Expr, ...],
 ) -> Target:
+    hint = "ask for a bearing reaction (A_x, A_y, A_z), a torque, T(B) or Hdot_x(B)"
+    found = named_target(item, spec, unknowns, dims, hint)
+    if found is not None:
+        return found
     where = Position(spec.file, item.line, item.column)
-    alias = item.ref.function if item.ref is not None and not item.ref.args else item.name
     symbol = sympy.Symbol(item.name)
-    named = {s.name: s for s in unknowns}
-    if item.ref is None or alias != item.name:
-        if alias in named:
-            unit, dim = _unit(item, dims[alias], spec, where)
-            return Target(
-                item.name, symbol, dim, unit, item.unit is not None, False, "signed", named[alias]
-            )
-        if alias == item.name and alias in dims:
-            unit, dim = _unit(item, dims[alias], spec, where)
-            return Target(item.name, symbol, dim, unit, item.unit is not None, True)
-        raise SpecError(
-            f"'{alias}' is not a quantity of the 3D scene",
-            where,
-            hint=close_name(alias, list(named))
-            or "ask for a bearing reaction (A_x, A_y, A_z), a torque, T(B) or Hdot_x(B)",
-        )
     function, args = item.ref.function, item.ref.args
     body = scene.body
     if len(args) != 1 or args[0] != body.name:
@@ -477,6 +464,37 @@ def moment_check(
     if not problem.scene.bearings:
         return onsets
     return _second_point(problem, known) + onsets
+
+
+def named_target(
+    item: FindItem,
+    spec: Spec,
+    unknowns: Mapping[sympy.Symbol, Dim],
+    dims: Mapping[str, Dim],
+    hint: str,
+) -> Target | None:
+    """The target of a find that names an unknown or a given of a 3D scene (``A_x``,
+    ``F = A_x``); None for a function of the scene (``T(B)``), which the caller reads;
+    a name the scene does not know is an error with ``hint``."""
+    where = Position(spec.file, item.line, item.column)
+    alias = item.ref.function if item.ref is not None and not item.ref.args else item.name
+    if item.ref is not None and alias == item.name:
+        return None
+    symbol = sympy.Symbol(item.name)
+    named = {s.name: s for s in unknowns}
+    if alias in named:
+        unit, dim = _unit(item, dims[alias], spec, where)
+        return Target(
+            item.name, symbol, dim, unit, item.unit is not None, False, "signed", named[alias]
+        )
+    if alias == item.name and alias in dims:
+        unit, dim = _unit(item, dims[alias], spec, where)
+        return Target(item.name, symbol, dim, unit, item.unit is not None, True)
+    raise SpecError(
+        f"'{alias}' is not a quantity of the 3D scene",
+        where,
+        hint=close_name(alias, list(named)) or hint,
+    )
 
 
 def _second_point(
