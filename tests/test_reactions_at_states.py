@@ -216,3 +216,21 @@ find: v_3 = speed(bob), T_3 = cord(3)
     # at 50° past the bottom: T − (m_b + M) g cos 50° = (m_b + M) v_3²/L
     c = math.cos(math.radians(50))
     assert got["T_3"].value == pytest.approx(3.03 * (G * c + v_3**2 / 1.6), rel=1e-6)
+
+
+def test_a_travel_off_its_surface_is_refused_at_the_contact_line(tmp_path):
+    # regression (newcomer report): the error pointed at 1:1 (the problem line)
+    text = """\
+given:
+  m = 5 kg
+  d = 2 m
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: smooth
+  gravity
+  travel block: by d, angle -pi/6
+find: v = speed(block)
+"""
+    with pytest.raises(SpecError, match="would leave its contact G") as error:
+        solve(tmp_path, text)
+    assert error.value.position.line == 6

@@ -237,10 +237,13 @@ class _Work:
         if not _is_zero(
             dot(step, support.normal), self.values, _norm(step) * _norm(support.normal)
         ):
-            raise ValueError(
+            error = ValueError(
                 f"{support.body} would leave its contact {support.name} on the way to state 2 "
-                "(a travel must run along the surface)"
+                "(a travel must run along the surface: check the travel's direction and the "
+                "contact's normal)"
             )
+            error.line, error.column = support.line, support.column  # type: ignore[attr-defined]
+            raise error
         path = _length(P2, support.point)
         reach = sympy.Max(_norm(P2), _norm(support.point))
         if support.smooth or _is_zero(path, self.values, reach):
