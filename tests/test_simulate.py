@@ -216,3 +216,23 @@ def test_cli_shows_the_constant_acceleration_closed_form(tmp_path: Path):
     CliRunner().invoke(app, ["simulate", str(spec), "--t-end", "1 s", "-o", str(out)])
     data = json.loads(out.read_text())
     assert data["constant_acceleration"]["q_ddot"] == pytest.approx(-G / 2)
+
+
+def test_a_cord_goes_slack_in_time_where_the_hand_formula_says(tmp_path: Path) -> None:
+    # issue 11 part 3 (events: cord slack). Hand: a bob at the bottom of a 1-m cord at
+    # 6 m/s goes slack where cos θ = (2gL − v²)/(3gL): θ = 123.8193°, v = √(−gL cos θ)
+    spec = tmp_path / "slack.dyn"
+    spec.write_text(
+        "given:\n  m = 2 kg\n  L = 1 m\n  v_1 = 6 m/s\nscene:\n  point O: (0, 0)\n"
+        "  body bob: particle, mass m, at (0, -L)\n  link cord: bob at G to O\n"
+        "  velocity bob: v_1, right\n  gravity\nfind: v = speed(bob)\n"
+    )
+    from dynsolve.simulate.run import simulate_spec
+    from dynsolve.spec.parser import parse_file
+
+    history = simulate_spec(parse_file(str(spec)), "slack(cord)", 10.0)
+    assert history.stopped_by == "slack(cord)"
+    ((_, _, q, qd),) = [e for e in history.events if e[0] == "slack(cord)"]
+    c = (2 * 9.81 - 36) / (3 * 9.81)
+    assert q == pytest.approx(math.acos(c), rel=1e-8)
+    assert abs(qd) == pytest.approx(math.sqrt(-9.81 * c), rel=1e-7)

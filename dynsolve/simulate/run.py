@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
@@ -174,6 +175,58 @@ def until_event(text: str, motion: OneDof, system: str) -> Event:
     return Event(text.strip(), measure, 0)
 
 
+SLACK = re.compile(r"^\s*slack\(\s*(?P<link>[A-Za-z_][A-Za-z_0-9]*)\s*\)\s*$")
+
+
+def slack_event(
+    text: str, scene: Scene, motion: OneDof, symbols: dict, values: dict
+) -> Event | None:
+    """``slack(CORD)``: the tension of a particle's cord (a ``link`` to a fixed point)
+    falls through zero, T/m = v²/R + g·ê with ê from the fixed point to the particle;
+    None when ``text`` names no such event (another until text)."""
+    found = SLACK.match(text)
+    if not found:
+        return None
+    where = Position("--until", 1, 1)
+    name = found["link"]
+    link = next((k for k in scene.links if k.name == name), None)
+    if link is None or link.other or not scene.bodies[link.body].particle:
+        raise SpecError(
+            f"slack({name}) needs a link {name} from a particle to a fixed point",
+            where,
+            hint="e.g. 'link cord: bob at G to O' and --until 'slack(cord)'",
+        )
+    if scene.gravity is None or link.body not in motion.bodies:
+        raise SpecError(f"slack({name}) needs gravity and {link.body} moving", where, hint="")
+    number = _numbers(values)
+    centre = (number(link.other_point[0]), number(link.other_point[1]))
+    down = (number(scene.gravity[0]), number(scene.gravity[1]))
+    g = number(symbols["g"])
+    index = list(motion.bodies).index(link.body)
+
+    def tension_per_mass(q: float, qd: float) -> float:
+        place = motion.places(q)[motion.bodies[index]]
+        r = (place[0] - centre[0], place[1] - centre[1])
+        R = math.hypot(*r)
+        v2 = (place[3] ** 2 + place[4] ** 2) * qd * qd
+        return v2 / R + g * (down[0] * r[0] + down[1] * r[1]) / R
+
+    return Event(f"slack({name})", tension_per_mass, -1)
+
+
+def _numbers(values: dict) -> Callable[[object], float]:
+    """A reader of an expression's value as a float (a scene's numbers put in)."""
+    from dynsolve.numbers import real_value
+
+    def number(expr: object) -> float:
+        found = real_value(0 + expr, values)  # type: ignore[operator]
+        if found is None:
+            raise SpecError("the scene has no numbers for the cord", Position("--until", 1, 1), "")
+        return float(found)
+
+    return number
+
+
 def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
     """The scene's equation of motion in its one coordinate (see the module's docstring)."""
     travels = [t for t in scene.travels.values() if t.kind != "for"]
@@ -240,7 +293,9 @@ def simulate_spec(
         raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
     events = [Event("max", lambda q, qd: qd, -1, False), Event("min", lambda q, qd: qd, 1, False)]
     if until:
-        stop = until_event(until, motion, spec.system)
+        stop = slack_event(until, scene, motion, symbols, values) or until_event(
+            until, motion, spec.system
+        )
         events = [e for e in events if e.name != stop.name] + [stop]
     grid = np.linspace(0.0, t_end, samples)
     try:
