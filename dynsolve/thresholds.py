@@ -105,7 +105,7 @@ def threshold(problem: Any, target: sympy.Expr, options: Any) -> sympy.Expr | No
         conditions = [reactions[f"N_{element}"][0]]
         needed = conditions
     wanted = tuple(
-        s for e in needed for s in sympy.sympify(e).free_symbols if s in formulation.unknowns
+        s for e in needed for s in (sympy.Integer(0) + e).free_symbols if s in formulation.unknowns
     )
     system = EquationSystem(
         formulation.equations, tuple(formulation.unknowns), knowns, wanted=wanted

@@ -101,7 +101,7 @@ def tensor(
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:
     """``vector`` divided by its length (ValueError for a zero vector); a vector already
     of unit length (cos² + sin² = 1, tested at sample values) is kept as written."""
-    x, y, z = (sympy.sympify(c) for c in vector)
+    x, y, z = (sympy.Integer(0) + c for c in vector)  # model expressions, never text
     length_sq = x**2 + y**2 + z**2
     if length_sq == 0:
         raise ValueError("a direction cannot be (0, 0, 0)")
