@@ -3,8 +3,9 @@
 The laws are the problem's own formulas with the givens' values put in, evaluated with numpy;
 where a law has no formula (an a(v) or a(x) law that was not inverted) the motion is
 integrated with scipy's ``solve_ivp`` instead. The time axis runs from t₀ to a little past
-the latest time the problem mentions (a given or a found time); axes are labelled with the
-spec's units (SI or FPS base units).
+the latest time the problem mentions (a given or a found time), except a path, which ends
+at that time (past a landing the path would run underground) with each found time marked on
+it; axes are labelled with the spec's units (SI or FPS base units).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> from dynsolve.modes.kinematics_mode import build_kinematics_problem
@@ -44,12 +45,16 @@ def motion_plot(problem: KinematicsProblem, suffix: str = ".png") -> bytes:
     import numpy as np
 
     values = dict(problem.system.knowns)
-    t_0, t_end = _time_span(problem, values)
-    times = np.linspace(t_0, t_end, SAMPLES)
     system = problem.spec.system
     formulas = problem.motion.formulas
     plane = any(k in formulas for k in ("y(t)", "r(t)"))
-    curves = _plane(formulas, values, times) if plane else _line(problem, values, times)
+    t_0, t_end = _time_span(problem, values, margin=0.0 if plane else 0.1)
+    times = np.linspace(t_0, t_end, SAMPLES)
+    if plane:
+        marked = [t for _, t in _marks(problem, values)]
+        curves = _plane(formulas, values, np.union1d(times, marked))
+    else:
+        curves = _line(problem, values, times)
     figure, axes = plt.subplots(len(curves), 1, figsize=(7, 2.4 * len(curves)))
     axes = np.atleast_1d(axes)
     for axis, (label, dim, xs, ys, x_label) in zip(axes, curves, strict=True):
@@ -59,6 +64,7 @@ def motion_plot(problem: KinematicsProblem, suffix: str = ".png") -> bytes:
         axis.grid(True, linewidth=0.3)
         if label == "y":
             axis.set_aspect("equal", adjustable="datalim")
+            _mark_path(axis, xs, ys, _marks(problem, values), times=curves[1][2])
     axes[0].set_title(problem.spec.title or problem.spec.file)
     figure.tight_layout()
     buffer = io.BytesIO()
@@ -155,8 +161,39 @@ def _given(problem: KinematicsProblem, name: str, values: dict) -> float:
     return value or 0.0
 
 
-def _time_span(problem: KinematicsProblem, values: dict) -> tuple[float, float]:
-    """From t₀ to 10 % past the latest time a given or an answer names (1 s when none)."""
+def _marks(problem: KinematicsProblem, values: dict) -> list[tuple[str, float]]:
+    """The found times (name, t) with a value, to mark on a path."""
+    marks = []
+    for target in problem.targets:
+        if target.dim == TIME and target.expr is not None:
+            t = real_value(target.expr, values)
+            if t is not None and math.isfinite(t):
+                marks.append((target.name, t))
+    return marks
+
+
+def _mark_path(axis: object, xs: object, ys: object, marks: list, times: object) -> None:
+    """A dot and the found time's name where the path is at each found time."""
+    import numpy as np
+
+    for name, t in marks:
+        i = int(np.argmin(np.abs(np.asarray(times) - t)))
+        axis.plot([xs[i]], [ys[i]], "o", markersize=4)  # type: ignore[attr-defined]
+        base, _, sub = name.partition("_")
+        label = f"${base}_{{{sub}}}$" if sub.isalnum() and base.isalpha() else name
+        axis.annotate(  # type: ignore[attr-defined]
+            f"{label} = {t:.4g} s",
+            (xs[i], ys[i]),
+            textcoords="offset points",
+            xytext=(-4, 6),
+            ha="right",
+        )
+
+
+def _time_span(
+    problem: KinematicsProblem, values: dict, margin: float = 0.1
+) -> tuple[float, float]:
+    """From t₀ to ``margin`` past the latest time a given or an answer names (1 s when none)."""
     t_0 = _given(problem, "t_0", values)
     latest = [g.value for g in problem.givens if g.dim == TIME and g.value is not None]
     latest = [real_value(v) for v in latest]
@@ -165,7 +202,7 @@ def _time_span(problem: KinematicsProblem, values: dict) -> tuple[float, float]:
     ]
     later = [t for t in latest if t is not None and math.isfinite(t) and t > t_0]
     end = max(later) if later else t_0 + 1.0
-    return t_0, t_0 + 1.1 * (end - t_0)
+    return t_0, t_0 + (1.0 + margin) * (end - t_0)
 
 
 def _nothing(why: str) -> SpecError:

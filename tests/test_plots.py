@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from dynsolve.cli import app
 from dynsolve.modes.kinematics_mode import build_kinematics_problem
-from dynsolve.plots import _line, _plane
+from dynsolve.plots import _line, _plane, motion_plot
 from dynsolve.spec.parser import parse_file
 
 PROBLEMS = Path(__file__).resolve().parent.parent / "problems"
@@ -65,3 +65,25 @@ def test_plot_of_a_scene_is_refused_before_solving(tmp_path):
 def test_plot_with_an_unknown_suffix_is_refused(tmp_path):
     result = cli("solve", str(PROBLEMS / "kinematics" / "drag_fall.dyn"), "--plot", "fig.jpg")
     assert result.exit_code == 2 and "use .png, .svg, .pdf" in result.stderr
+
+
+def test_the_projectile_path_ends_at_landing_not_underground(monkeypatch):
+    # regression: the path ran 10 % past t_f = 2 v_0 sin 30° / g = 2.039 s (by hand) and
+    # dipped to y = -0.9 m below the level ground it lands on
+    import matplotlib.axes
+
+    drawn: list[tuple] = []
+    original = matplotlib.axes.Axes.plot
+
+    def record(self, *args, **kwargs):
+        drawn.append(args)
+        return original(self, *args, **kwargs)
+
+    monkeypatch.setattr(matplotlib.axes.Axes, "plot", record)
+    problem = build_kinematics_problem(parse_file(PROBLEMS / "kinematics" / "projectile.dyn"))
+    assert motion_plot(problem).startswith(b"\x89PNG")
+    xs, ys = drawn[0][0], drawn[0][1]
+    assert min(ys) > -1e-9
+    assert max(xs) == pytest.approx(20**2 * math.sin(math.radians(60)) / 9.81, rel=1e-6)
+    marked = [args for args in drawn[1:] if len(args) == 3 and args[2] == "o"]
+    assert [x[0] for x, _, _ in marked] == pytest.approx([35.3119], rel=1e-4)
