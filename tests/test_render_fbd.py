@@ -122,7 +122,7 @@ EXPECTED_TIPS = {
     "crate": [
         ((0, -7), (0, -1)),  # weight from G, 80 % of the 8.75 mm to the base
         ((0, -8.75), (0, 1)),  # the base's normal force pushes up into the base
-        ((-10, -8.75), (-1, 0)),  # friction from the contact point
+        ((-10, -10.25), (-1, 0)),  # friction along the floor, 1.5 mm below the base line
         ((-17.5, 3.5), (COS, -SIN)),  # the push ends at its point on the left face
     ],
     "link": [((0, -10), (0, -1)), ((-17.5, 0), (1, 0)), ((-17.5, 10), (0, 1))],
@@ -235,10 +235,10 @@ def test_latex_text_under_each_picture() -> None:
 def test_latex_assumptions() -> None:
     tex = render_latex(scene_solution())
     assert (
-        "\\item[$\\checkmark$] \\textbf{no slip at C} (holds): \\textbar{}F\\_C\\textbar{} = "
-        "98.1 N $\\leq$ $\\mu$\\_s N\\_C = 196 N"
+        "\\item[$\\checkmark$] \\textbf{no slip at C} (holds): \\textbar{}$F_{C}$\\textbar{} = "
+        "98.1 N $\\leq$ $\\mu_{s}$ $N_{C}$ = 196 N"
     ) in tex
-    assert "\\item[$\\checkmark$] \\textbf{no tipping} (holds): x\\_C = 0.1 m" in tex
+    assert "\\item[$\\checkmark$] \\textbf{no tipping} (holds): $x_{C}$ = 0.1 m" in tex
     assert (
         "\\item[$\\times$] \\textbf{cord T taut} (\\textbf{fails}): T = -3.2 N \\textless{} 0"
         in tex
@@ -634,3 +634,33 @@ def test_random_scenes_compile(
     solution = replace(scene_solution(), free_body=tuple(free_body), assumptions=tuple(assumptions))
     with tempfile.TemporaryDirectory() as directory:
         compile_pdf(render_latex(solution), Path(directory), pdflatex)
+
+
+def test_latex_pin_off_g_is_a_hole_with_its_distance_dimensioned() -> None:
+    # the link turns about A, 1 m left of G (a 2 m rod drawn 35 mm long): a hole at A,
+    # and a dimension line 5 mm below A–G labelled 1 m
+    lines = pictures(render_latex(scene_solution((LINK,))))["link"]
+    assert "\\draw[pin] (-17.5,0) circle[radius=1.1] node[anchor=0,inner sep=2pt] {$A$};" in lines
+    (dimension,) = [line for line in lines if line.startswith("\\draw[dimension]")]
+    assert dimension.startswith("\\draw[dimension] (0,-5) -- (-17.5,-5) ")
+    assert "{$\\qty{1}{m}$};" in dimension
+    # in an FPS sheet the same distance is in feet: 1 m = 3.28 ft
+    fps = render_latex(replace(scene_solution((LINK,)), system="FPS"))
+    assert "{$\\qty{3.28}{ft}$};" in fps
+    # a drum pinned at its centre: the G mark stands for the pin, nothing to dimension
+    drum = pictures(render_latex(scene_solution((DRUM,))))["drum"]
+    assert not any(line.startswith(("\\draw[pin]", "\\draw[dimension]")) for line in drum)
+
+
+def test_latex_kinetic_couple_label_clears_the_kinetic_arrows() -> None:
+    # a pendulum's m ω² r_G heads up-right to its pin: I_G α is labelled upper left instead
+    pinned = replace(
+        LINK,
+        forces=(*LINK.forces[1:2], force("O_n", "reaction", "O", (0.3, 0.3), "up", (0, 1), False)),
+        motion="rotation about O",
+        kinetic=("m ω² r_G", "I_G α"),
+    )
+    tex = render_latex(scene_solution((pinned,)))
+    kinetic = tex[tex.index("\\quad$=$\\quad") :]
+    assert "\\node[anchor=315] at (-4.95,4.95) {$I_{G} \\, \\alpha$};" in kinetic
+    assert "node[anchor=225] {$m \\, \\omega^{2} \\, r_{G}$};" in kinetic

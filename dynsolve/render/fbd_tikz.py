@@ -6,7 +6,10 @@ shape, by its radius of gyration, as a circle with a hub through its farthest fo
 point, or a small box when every force acts at G), 35 mm across whatever its size, with
 G marked. Every force is an arrow 10 mm long at its point: from the point, or into it
 when it pushes on the body there (a normal force under a block), an arrow from G kept
-inside the outline; unknown forces dashed and red; couples as arcs around their point.
+inside the outline; friction 1.5 mm outside the surface it acts along; unknown forces dashed
+and red; couples as arcs around their point. A pin off G is drawn as a hole with its name,
+and the distance from it to G as a dimension line (in the sheet's units, when the caller
+gives ``length_label``).
 Beside it, after "=", the kinetic diagram: the same outline with m (a_G)_x, m (a_G)_y and
 I_G α drawn in blue (their assumed senses: +x, +y, counterclockwise), as the textbook
 sets ΣF = m a_G beside its picture.
@@ -36,8 +39,13 @@ BODY_MM = 35.0  # a body is drawn this wide (or its force points this far apart)
 ARROW_MM = 10.0  # every force arrow, whatever its magnitude
 COUPLE_MM = 6.0  # the radius of a body's first couple arc; the next ones 3 mm wider
 SQUARE_MM = 8.0  # the side of the box drawn for a body with nothing to size it
+SURFACE_MM = 1.5  # friction is drawn this far outside the surface it acts along
+PIN_MM = 1.1  # the radius of a pin's hole
+DIMENSION_MM = 5.0  # a dimension line's offset from the points it measures
 STYLES = (
     r"force/.style={thick,-{Stealth[length=2.4mm,width=1.8mm]}},"
+    r"pin/.style={thick,fill=white},"
+    r"dimension/.style={thin,{Stealth[length=1.6mm]}-{Stealth[length=1.6mm]}},"
     r"unknown/.style={dashed,red},"
     r"kinetic/.style={thick,blue,-{Stealth[length=2.4mm,width=1.8mm]}},"
     r"baseline=(current bounding box.center)"  # "=" between the diagrams sits mid-height
@@ -48,9 +56,11 @@ def free_body_tikz(
     body: FreeBody,
     label: Callable[[ForceRow], str],
     kinetic_label: Callable[[str], str] | None = None,
+    length_label: Callable[[float], str] | None = None,
 ) -> str:
     """The body's free-body diagram, and its kinetic diagram beside it when it has terms
-    (``label`` typesets a force's name, ``kinetic_label`` a kinetic term)."""
+    (``label`` typesets a force's name, ``kinetic_label`` a kinetic term, ``length_label`` a
+    length in metres in the sheet's units)."""
     footprint = footprint_of(body)
     points = [(_finite(f.x), _finite(f.y)) for f in body.forces]
     half = max([*(footprint or (0.0, 0.0)), *(abs(c) for p in points for c in p)])
@@ -63,6 +73,7 @@ def free_body_tikz(
 
     outline = _outline(body, footprint, at)
     lines = [f"\\begin{{tikzpicture}}[x=1mm,y=1mm,{STYLES}]", *outline, *_centre()]
+    lines += _pin_and_distance(body, at, length_label)
     couples = 0
     for force, point in zip(body.forces, points, strict=True):
         if force.kind == "couple":
@@ -71,7 +82,8 @@ def free_body_tikz(
             continue
         unit = unit_of(force.dx, force.dy)
         room = _room(body.shape, at(footprint) if footprint else None, unit)
-        lines.append(_arrow(force, point, at(point), unit, room, label(force)))
+        start = _off_surface(body, force, at(point))
+        lines.append(_arrow(force, point, start, unit, room, label(force)))
     lines.append(r"\end{tikzpicture}")
     picture = "\n".join(lines)
     if kinetic_label is None or not body.kinetic:
@@ -214,6 +226,63 @@ def _arrow(
     return f"\\draw[{style},->] {_xy(tail)} -- {_xy(tip)} {node};"
 
 
+def _off_surface(body: FreeBody, force: ForceRow, start: Point) -> Point:
+    """Where a friction force is drawn: ``SURFACE_MM`` outside the surface, away from the
+    normal force at the same point (which pushes into the body), so that the arrow does
+    not lie on the outline; any other force at its point."""
+    if not force.kind.startswith("friction"):
+        return start
+    for other in body.forces:
+        if other is not force and other.point == force.point and other.kind == "reaction":
+            normal = unit_of(other.dx, other.dy)
+            along = unit_of(force.dx, force.dy)
+            if (
+                normal is None
+                or along is None
+                or abs(normal[0] * along[0] + normal[1] * along[1]) > 0.1
+            ):
+                continue
+            return (start[0] - SURFACE_MM * normal[0], start[1] - SURFACE_MM * normal[1])
+    return start
+
+
+def _pin_and_distance(
+    body: FreeBody, at: Callable[[Point], Point], length_label: Callable[[float], str] | None
+) -> list[str]:
+    """A pin off G as a hole with its name, and the distance O–G as a dimension line beside
+    the line from the pin to G (on the side away from the body's forces, below or left)."""
+    found = _pin_force(body)
+    if found is None:
+        return []
+    name, (px, py) = found
+    pin = at((px, py))
+    reach = math.hypot(*pin)
+    if reach < 1.0:
+        return []  # the pin is at G: the G mark stands for it
+    away = unit_of(pin[0], pin[1])
+    assert away is not None
+    text = f"${name}$" if name.isalnum() and name.isascii() else ""
+    lines = [
+        f"\\draw[pin] {_xy(pin)} circle[radius={num(PIN_MM)}] "
+        f"node[anchor={_anchor(away)},inner sep=2pt] {{{text}}};"
+    ]
+    if length_label is None:
+        return lines
+    side = (away[1], -away[0])  # perpendicular, clockwise of G→pin
+    if side[1] > 0 or (side[1] == 0 and side[0] > 0):
+        side = (-side[0], -side[1])  # below or to the left
+    offset = (DIMENSION_MM * side[0], DIMENSION_MM * side[1])
+    a, b = (offset[0], offset[1]), (pin[0] + offset[0], pin[1] + offset[1])
+    distance = math.hypot(px, py)
+    lines += [
+        f"\\draw[very thin,gray] (0,0) -- {_xy((1.3 * offset[0], 1.3 * offset[1]))} "
+        f"{_xy(pin)} -- {_xy((pin[0] + 1.3 * offset[0], pin[1] + 1.3 * offset[1]))};",
+        f"\\draw[dimension] {_xy(a)} -- {_xy(b)} node[pos=0.5,anchor={_anchor(side)},"
+        f"inner sep=1.5pt,fill=white] {{{length_label(distance)}}};",
+    ]
+    return lines
+
+
 def _room(shape: str, half: Point | None, unit: Point | None) -> float:
     """How far (mm) the outline is from G in direction ``unit``; 0 for a rod or a dot."""
     if half is None or not half[0] or not half[1] or unit is None:
@@ -250,6 +319,8 @@ def _kinetic(
     m (a_G)_n out of it, I α counterclockwise, m ω² r_G toward the pin, m α r_G across
     it); None when it can place none."""
     arrows = []
+    directions: list[Point] = []
+    couple = None
     pin = _pin(body, at)
     for term in body.kinetic:
         words = term.replace("(", " ").replace(")", " ").split()
@@ -264,12 +335,7 @@ def _kinetic(
         elif body.axes is not None and key in ("ma_G_n", "ma_Gn"):
             direction = body.axes[1]
         elif key.endswith("α") and key.startswith("I_"):
-            arrows.append(
-                f"\\draw[kinetic] {_xy(polar((0.0, 0.0), COUPLE_MM, -45.0))} arc[start angle=-45,"
-                f"end angle=225,radius={num(COUPLE_MM)}]; "
-                f"\\node[anchor=225] at {_xy(polar((0.0, 0.0), COUPLE_MM + 1.0, 45.0))} "
-                f"{{{label(term)}}};"
-            )
+            couple = term
             continue
         elif pin is not None and key in ("mω²r_G", "mαr_G"):
             toward = unit_of(pin[0], pin[1])
@@ -278,11 +344,14 @@ def _kinetic(
             direction = toward if key.startswith("mω") else (-toward[1], toward[0])
         if direction is None:
             continue
+        directions.append(direction)
         tip = (ARROW_MM * direction[0], ARROW_MM * direction[1])
         arrows.append(
             f"\\draw[kinetic] (0,0) -- {_xy(tip)} node[anchor={_anchor(direction)}] "
             f"{{{label(term)}}};"
         )
+    if couple is not None:
+        arrows.append(_kinetic_couple(label(couple), directions))
     if not arrows:
         return None
     return "\n".join(
@@ -291,13 +360,43 @@ def _kinetic(
     )  # fmt: skip
 
 
+def _kinetic_couple(text: str, directions: Sequence[Point]) -> str:
+    """I α as a counterclockwise arc around G, its label where no kinetic arrow runs (upper
+    right unless an arrow heads there; then upper left, lower right or below)."""
+    corner = max(
+        (45.0, 135.0, 300.0, 270.0),
+        key=lambda a: (
+            min(
+                (
+                    math.dist((math.cos(math.radians(a)), math.sin(math.radians(a))), d)
+                    for d in directions
+                ),
+                default=2.0,
+            )
+            > 0.8
+        ),
+    )
+    return (
+        f"\\draw[kinetic] {_xy(polar((0.0, 0.0), COUPLE_MM, -45.0))} arc[start angle=-45,"
+        f"end angle=225,radius={num(COUPLE_MM)}]; "
+        f"\\node[anchor={num((corner + 180.0) % 360.0)}] at "
+        f"{_xy(polar((0.0, 0.0), COUPLE_MM + 1.0, corner))} {{{text}}};"
+    )
+
+
 def _pin(body: FreeBody, at: Callable[[Point], Point]) -> Point | None:
     """Where the body's pin is on the page (its motion says "rotation about O" and a force
     acts at O), or None."""
+    found = _pin_force(body)
+    return None if found is None else at(found[1])
+
+
+def _pin_force(body: FreeBody) -> tuple[str, Point] | None:
+    """The body's pin, its name and where it is (metres from G), or None."""
     if "rotation about " not in body.motion:
         return None
     name = body.motion.rsplit("rotation about ", 1)[1].strip().rstrip(".")
     for force in body.forces:
         if force.point == name:
-            return at((_finite(force.x), _finite(force.y)))
+            return name, (_finite(force.x), _finite(force.y))
     return None

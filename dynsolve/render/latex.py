@@ -307,7 +307,9 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
             f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings
         ],
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
-        "free_body": lambda: _free_body_section(solution.free_body) + _linkage_section(solution),
+        "free_body": lambda: (
+            _free_body_section(solution.free_body, solution.system) + _linkage_section(solution)
+        ),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
         "equations": lambda: [
@@ -682,19 +684,29 @@ def _linkage_section(solution: Solution) -> list[str]:
     ]
 
 
-def _free_body_section(bodies: Sequence[FreeBody]) -> list[str]:
+def _free_body_section(bodies: Sequence[FreeBody], system: str = "SI") -> list[str]:
     """The "Free-body diagrams" subsection, or nothing in equation mode."""
     if not bodies:
         return []
-    return ["\\subsection*{Free-body diagrams}", *(_free_body(b) for b in bodies)]
+    return ["\\subsection*{Free-body diagrams}", *(_free_body(b, system) for b in bodies)]
 
 
-def _free_body(body: FreeBody) -> str:
+def _length(metres: float, system: str) -> str:
+    """A diagram's dimension in the sheet's units, to 3 significant figures.
+
+    >>> print(_length(0.54, "SI"), _length(0.3048, "FPS"))
+    $\\qty{0.54}{m}$ $\\qty{1}{ft}$
+    """
+    value, unit = (metres / 0.3048, "ft") if system.upper() == "FPS" else (metres, "m")
+    return f"$\\qty{{{float(f'{value:.3g}'):g}}}{{{unit}}}$"
+
+
+def _free_body(body: FreeBody, system: str = "SI") -> str:
     """One body: its picture, then the motion, the moment point and the kinetic terms."""
     shape = f" ({escape_latex(body.shape)})" if body.shape.strip() else ""
     facts = [f"\\textbf{{Motion:}} {escape_latex(body.motion) or '?'}."]
     if body.moment_point.strip():
-        facts.append(f"\\textbf{{Moments about:}} {escape_latex(body.moment_point)}.")
+        facts.append(f"\\textbf{{Moments about:}} {caption_latex(body.moment_point)}.")
     if body.kinetic:
         terms = ", ".join(_kinetic_term(t) for t in body.kinetic)
         facts.append(f"\\textbf{{Kinetic diagram:}} {terms}.")
@@ -706,7 +718,7 @@ def _free_body(body: FreeBody) -> str:
         r"\par\noindent\begin{minipage}{\linewidth}",
         f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
-        free_body_tikz(body, _force_label, _kinetic_term),
+        free_body_tikz(body, _force_label, _kinetic_term, lambda d: _length(d, system)),
         r"\end{center}",
         " \\\\\n".join(facts),
         r"\end{minipage}\par\medskip",
@@ -761,6 +773,6 @@ def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
 
 def _assumption_text(assumption: Assumption) -> str:
     detail = pretty_unit(assumption.detail)
-    detail = f": {escape_latex(detail)}" if detail.strip() else ""
+    detail = f": {caption_latex(detail)}" if detail.strip() else ""
     status = "holds" if assumption.holds else "\\textbf{fails}"
     return f"\\textbf{{{escape_latex(assumption.name) or '?'}}} ({status}){detail}"
