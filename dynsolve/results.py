@@ -125,6 +125,7 @@ class FreeBody:
     moment_point: str  # the point moments are taken about, and why
     # incline axes (t down the slope, n out of it) as unit vectors, where the equations use them
     axes: tuple[tuple[float, float], tuple[float, float]] | None = None
+    omega: str = ""  # the body's sense of rotation at the instant, "ccw" or "cw", when it turns
 
 
 @dataclass(frozen=True)

@@ -664,3 +664,27 @@ def test_latex_kinetic_couple_label_clears_the_kinetic_arrows() -> None:
     kinetic = tex[tex.index("\\quad$=$\\quad") :]
     assert "\\node[anchor=315] at (-4.95,4.95) {$I_{G} \\, \\alpha$};" in kinetic
     assert "node[anchor=225] {$m \\, \\omega^{2} \\, r_{G}$};" in kinetic
+
+
+def test_latex_omega_arc_turns_the_way_the_body_does() -> None:
+    # an arc over the upper left, beyond the outline (a 35 mm disk: 17.5 + 4 mm from G)
+    lines = pictures(render_latex(scene_solution((replace(DRUM, omega="cw"),))))["drum"]
+    (spin,) = [line for line in lines if line.startswith("\\draw[spin]")]
+    assert "arc[start angle=160,end angle=100,radius=21.5]" in spin and "{$\\omega$}" in spin
+    lines = pictures(render_latex(scene_solution((replace(DRUM, omega="ccw"),))))["drum"]
+    (spin,) = [line for line in lines if line.startswith("\\draw[spin]")]
+    assert "arc[start angle=100,end angle=160,radius=21.5]" in spin
+    # a body that does not turn at the instant (the default) has none
+    lines = pictures(render_latex(scene_solution((DRUM,))))["drum"]
+    assert not any(line.startswith("\\draw[spin]") for line in lines)
+
+
+def test_scene_free_body_carries_the_given_sense_of_omega() -> None:
+    # seed pendulum: "omega pendulum: omega ccw" with ω = 3 rad/s given; the crate translates
+    from dynsolve.pipeline import solve_file
+
+    seeds = Path(__file__).resolve().parent.parent / "problems" / "seed"
+    (pendulum,) = solve_file(seeds / "fa_seed_pendulum.dyn").free_body
+    assert pendulum.omega == "ccw"
+    (crate,) = solve_file(seeds / "tr_hib_crate.dyn").free_body
+    assert crate.omega == ""

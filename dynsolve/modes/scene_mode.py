@@ -1803,6 +1803,7 @@ def free_bodies(
             floats = [v for v in found if v is not None]
             if len(floats) == 4:
                 axes = ((floats[0], floats[1]), (floats[2], floats[3]))
+        omega = real_value(kin.omega, knowns) if at_start is None else None
         out.append(
             FreeBody(
                 name,
@@ -1813,6 +1814,7 @@ def free_bodies(
                 () if at_start is not None else formulation.kinetic.get(name, ()),
                 "" if at_start is not None else formulation.moment_points.get(name, ""),
                 axes,
+                "" if not omega else ("ccw" if omega > 0 else "cw"),
             )
         )
     return tuple(out)

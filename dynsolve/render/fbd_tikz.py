@@ -45,6 +45,7 @@ DIMENSION_MM = 5.0  # a dimension line's offset from the points it measures
 STYLES = (
     r"force/.style={thick,-{Stealth[length=2.4mm,width=1.8mm]}},"
     r"pin/.style={thick,fill=white},"
+    r"spin/.style={semithick,-{Stealth[length=2mm,width=1.6mm]}},"
     r"dimension/.style={thin,{Stealth[length=1.6mm]}-{Stealth[length=1.6mm]}},"
     r"unknown/.style={dashed,red},"
     r"kinetic/.style={thick,blue,-{Stealth[length=2.4mm,width=1.8mm]}},"
@@ -74,6 +75,12 @@ def free_body_tikz(
     outline = _outline(body, footprint, at)
     lines = [f"\\begin{{tikzpicture}}[x=1mm,y=1mm,{STYLES}]", *outline, *_centre()]
     lines += _pin_and_distance(body, at, length_label)
+    corner = at(footprint) if footprint else (0.0, 0.0)
+    round_ = body.shape.strip().lower() in ROUND_SHAPES
+    extent = max(
+        [math.hypot(*at(p)) for p in points] + [corner[0] if round_ else math.hypot(*corner)]
+    )
+    lines += _spin(body.omega, extent)
     couples = 0
     for force, point in zip(body.forces, points, strict=True):
         if force.kind == "couple":
@@ -244,6 +251,19 @@ def _off_surface(body: FreeBody, force: ForceRow, start: Point) -> Point:
                 continue
             return (start[0] - SURFACE_MM * normal[0], start[1] - SURFACE_MM * normal[1])
     return start
+
+
+def _spin(sense: str, extent: float) -> list[str]:
+    """The body's ω at the instant: an arc over its upper left, 4 mm beyond the farthest
+    drawn point (``extent`` mm from G; at least 14 mm), pointing the way the body turns."""
+    if sense not in ("ccw", "cw"):
+        return []
+    radius = max(14.0, extent + 4.0)
+    start, end = (100.0, 160.0) if sense == "ccw" else (160.0, 100.0)
+    return [
+        f"\\draw[spin] {_xy(polar((0.0, 0.0), radius, start))} arc[start angle={num(start)},"
+        f"end angle={num(end)},radius={num(radius)}] node[anchor=310,pos=0.5] {{$\\omega$}};"
+    ]
 
 
 def _pin_and_distance(
