@@ -243,7 +243,9 @@ def touches_at_rim(body: Body, support: Support) -> bool:
 
 @dataclass(frozen=True)
 class InclineAxes:
-    """Axes along (t, down the slope) and normal (n, out of the surface) to an incline.
+    """Axes along (t, down the slope) and normal (n, out of the surface) to an incline, or
+    to a particle's curved path (n then toward the centre of curvature, as the textbook's
+    ΣF_n = m v²/ρ).
 
     ``t`` and ``n`` are exact unit vectors in x–y; ``t_beta`` and ``n_beta`` are the same
     vectors written with the incline angle β (``(-cos β, -sin β)``), so that a weight
@@ -258,6 +260,9 @@ class InclineAxes:
     beta: sympy.Expr  # the incline angle (a given or a derived quantity)
     normal_fixed: bool  # a_G has no n component (the contact is kept): a_G = (a_G)_t t
     rolling: bool  # rolls without slip: (a_G)_t = α r, no acceleration unknown of its own
+    # on a curved path: n points to the centre of curvature and (a_G)_n = v²/ρ (a given
+    # quantity's value); normal_fixed is then False
+    a_n: sympy.Expr | None = None
 
     def component(self, direction: Vec, axis: str) -> sympy.Expr:
         """direction · t (or · n): exactly ±1 or 0 for a direction along an axis, else in β.
@@ -431,7 +436,8 @@ class _Writer:
             return None
         if any(s.kind not in ("contact", "rolls", "base") for s in mine):
             return None
-        if any(not _is_zero(s.normal_acceleration) for s in mine):
+        curved = any(not _is_zero(s.normal_acceleration) for s in mine)
+        if curved and (motion != "particle" or len(mine) != 1):
             return None
         first = mine[0]
         if any(not _is_zero(cross(s.normal, first.normal)) for s in mine[1:]):
@@ -456,9 +462,10 @@ class _Writer:
         taken = self.derived.get(sympy.Symbol(name, positive=True))
         if name in self.symbols or (taken is not None and tidy(taken[0] - beta_value) != 0):
             name = f"beta_{first.name}"
-        beta = self.name_quantity(
-            name, beta_value, Dim(), f"incline angle at {first.point_name}, from its normal (rad)"
-        )
+        meaning = f"incline angle at {first.point_name}, from its normal (rad)"
+        if curved:
+            meaning = f"slope of the path {first.name} at {body.name}, from its normal (rad)"
+        beta = self.name_quantity(name, beta_value, Dim(), meaning)
         t_beta = (side * sympy.cos(beta), -sympy.sin(beta))
         perp = _perp(t)  # n is t turned ±90°: the sense that points out of the surface
         turn = 1 if tidy(dot(first.normal, perp) - 1) == 0 else -1
@@ -467,6 +474,8 @@ class _Writer:
         for written, vector in ((t_beta, t), (n_beta, first.normal)):
             if any(tidy(w.xreplace(exact) - v) != 0 for w, v in zip(written, vector, strict=True)):
                 return None  # the β form is not the same vector: x–y rather than a guess
+        if curved:
+            return self._path_axes(first, t, t_beta, n_beta, beta)
         at_rim = all(s.kind == "rolls" or touches_at_rim(body, s) for s in mine)
         normal_fixed = motion in ("translation", "particle") or at_rim
         rolling = (
@@ -477,6 +486,25 @@ class _Writer:
             and self._rolls_without_slip(body, first, omega)
         )
         return InclineAxes(first.name, t, first.normal, t_beta, n_beta, beta, normal_fixed, rolling)
+
+    def _path_axes(
+        self, path: Support, t: Vec, t_beta: Vec, n_beta: Vec, beta: sympy.Expr
+    ) -> InclineAxes | None:
+        """t along a particle's curved path (downhill) and n toward its centre of curvature,
+        with a_n = v²/ρ named as a given quantity; None (x–y kept) where the centre's side
+        is not known."""
+        toward = _sign(path.normal_acceleration, self.scene.values)
+        if toward == 0:
+            return None
+        n = (tidy(toward * path.normal[0]), tidy(toward * path.normal[1]))
+        n_beta = (tidy(toward * n_beta[0]), tidy(toward * n_beta[1]))
+        a_n = self.name_quantity(
+            self.suffix("a_n", path.body),
+            tidy(toward * path.normal_acceleration),
+            ACCELERATION,
+            f"a_n = v²/ρ on the path {path.name}, toward its centre of curvature",
+        )
+        return InclineAxes(path.name, t, n, t_beta, n_beta, beta, False, False, a_n)
 
     def _rolls_without_slip(self, body: Body, support: Support, omega: sympy.Expr) -> bool:
         """True when the contact's friction is static (no slip assumed): not declared or
@@ -507,7 +535,9 @@ class _Writer:
         else:
             along = self.unknown(self.suffix("a_Gt", body.name), ACCELERATION)
         normal: sympy.Expr = sympy.Integer(0)
-        if not axes.normal_fixed:
+        if axes.a_n is not None:
+            normal = axes.a_n
+        elif not axes.normal_fixed:
             normal = self.unknown(self.suffix("a_Gn", body.name), ACCELERATION)
         a_G = (
             tidy(along * axes.t[0] + normal * axes.n[0]),
@@ -517,6 +547,11 @@ class _Writer:
             f"axes t down the incline and n normal to it, as the contact normal at {where} "
             "gives them"
         )
+        if axes.a_n is not None:
+            why = (
+                f"axes t along the path {support.name} (downhill) and n toward its centre of "
+                "curvature: (a_G)_n = v²/ρ"
+            )
         if axes.normal_fixed:
             why += f" (contact at {where} kept: (a_G)_n = 0)"
         if axes.rolling:
@@ -820,6 +855,9 @@ class _Writer:
 
     def _contact(self, support: Support) -> None:
         self._normal_and_friction(support)
+        axes = self.inclines.get(support.body)
+        if axes is not None and axes.a_n is not None:
+            return  # (a_G)_n = v²/ρ is built into the path's n–t axes
         a_P = self.point_acceleration(support.body, support.point)
         note = (
             f"on the curved path {support.name}: a_n = v²/ρ toward the centre of curvature"
@@ -1009,7 +1047,10 @@ class _Writer:
         if axes.rolling:
             t_label = f"ΣF_t = m (a_G)_t, (a_G)_t = α r (rolls without slip at {where}) {tag}"
         n_label = f"ΣF_n = m (a_G)_n {tag}"
-        if axes.normal_fixed:
+        if axes.a_n is not None:
+            t_label = f"ΣF_t = m a_t {tag}"
+            n_label = f"ΣF_n = m a_n, a_n = v²/ρ toward the centre of curvature {tag}"
+        elif axes.normal_fixed:
             n_label = f"ΣF_n = m (a_G)_n = 0 (contact at {where} kept) {tag}"
         self.equation(sum_t, m * along, t_label)
         self.equation(sum_n, m * normal, n_label)
