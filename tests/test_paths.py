@@ -4,6 +4,8 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from dynsolve.errors import DimensionError, SpecError
 from dynsolve.pipeline import solve_file
@@ -148,3 +150,24 @@ def test_a_body_on_a_path_must_be_on_it(tmp_path):
     file.write_text(HUMP.format(x_1="20 m").replace("at (x_1, -x_1^2/(2*c))", "at (x_1, 0)"))
     with pytest.raises(SpecError, match="not on the path road"):
         solve_file(file)
+
+
+@settings(
+    max_examples=15, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(
+    x_1=st.floats(min_value=-40, max_value=40).filter(lambda x: abs(x) > 0.5),
+    v=st.floats(min_value=1, max_value=25),
+)
+def test_n_t_axes_on_the_hump_agree_with_the_closed_form(tmp_path, x_1, v):
+    # the hump y = −x²/(2c) on its n–t axes, anywhere on the slope, either side of the top:
+    # a_t = g sin β, N = m (g cos β − v²/ρ), tan β = |x|/c, 1/ρ = (1/c) cos³ β (by hand)
+    file = tmp_path / "hump.dyn"
+    file.write_text(HUMP.format(x_1=f"{x_1!r} m").replace("v = 15 m/s", f"v = {v!r} m/s"))
+    solution = solve_file(file)
+    beta = math.atan(abs(x_1) / 50)
+    N, a = solution.answers
+    a_n = v**2 * math.cos(beta) ** 3 / 50
+    assert N.value == pytest.approx(abs(1200 * (9.81 * math.cos(beta) - a_n)), rel=1e-9)
+    assert a.value == pytest.approx(math.hypot(9.81 * math.sin(beta), a_n), rel=1e-9)
+    assert solution.equations[1].note.startswith("ΣF_n = m a_n")
