@@ -55,6 +55,7 @@ from dynsolve.units import BASE_UNITS, Dim, natural_unit
 
 if TYPE_CHECKING:
     from dynsolve.modes.scene_mode import SceneProblem
+    from dynsolve.rigid3d.problem import Problem3D
 
 RESIDUAL_LIMIT = 1e-9
 NAMED_UNKNOWNS = 12  # the structure check names this many unknowns
@@ -151,11 +152,17 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
 
     if is_3d(spec):
         from dynsolve.rigid3d.problem import build_3d_problem, moment_check
+        from dynsolve.rigid3d.problem import second_moment_rows as moment_rows_3d
 
         problem3d = build_3d_problem(spec)
         solved = solve_system(problem3d.system, options)
         checks = moment_check(problem3d, solved.values)
-        return solve_problem(problem3d, options, solved, second_methods=checks)
+        solution = solve_problem(problem3d, options, solved, second_methods=checks)
+        return replace(
+            solution,
+            energy=_energy_terms_3d(problem3d, solved, options),
+            second_moments=moment_rows_3d(problem3d),
+        )
     if is_linkage(spec):
         from dynsolve.linkage.problem import build_linkage_problem, figure
         from dynsolve.linkage.problem import cross_checks as linkage_checks
@@ -237,11 +244,8 @@ def _energy_terms(
     terms = problem.formulation.energy_terms
     if not terms:
         return ()
-    view = _View(problem, outcome, {}, options)
-    values = {**problem.system.knowns, **outcome.values}
     energy_unit = natural_unit(ENERGY, problem.spec.system)
     speed_unit = natural_unit(SPEED, problem.spec.system)
-    rows = []
     works = [expr for label, expr in terms if label.startswith("U")]
     if len(works) > 1:  # the textbook's U(1→2) = U_S + U_M = −5 + 9.375 = 4.375, before T2
         total = ("U_12 = ΣU(1→2), the work of all the forces", sympy.Add(*works))
@@ -250,14 +254,45 @@ def _energy_terms(
     speeds = _kinematic_relations(problem)
     if speeds:  # the notes' "kinematic relation: v_O = r ω = 0.4 ω", just before T2
         terms = (*terms[:-1], *speeds, terms[-1])
-    for label, expr in terms:
+    rows = tuple(
+        (label, expr, speed_unit if label.startswith("v_G") else energy_unit)
+        for label, expr in terms
+    )
+    values = {**problem.system.knowns, **outcome.values}
+    return energy_rows(_View(problem, outcome, {}, options), rows, values)
+
+
+def _energy_terms_3d(
+    problem: Problem3D, outcome: Outcome, options: SolveOptions
+) -> tuple[EnergyTerm, ...]:
+    """A 3D scene's T1 + ΣU1-2 = T2 term by term (:func:`dynsolve.rigid3d.energy.energy_table`),
+    printed as the planar work–energy table is; none for a scene at an instant."""
+    if problem.energy is None:
+        return ()
+    from dynsolve.rigid3d.energy import energy_table
+
+    values = {**problem.system.knowns, **outcome.values}
+    rows, defined = energy_table(problem.scene, problem.energy, values, problem.spec.system)
+    view = _View(problem, outcome, {}, options)
+    return energy_rows(view, rows, {**values, **defined})
+
+
+def energy_rows(
+    view: _View,
+    rows: tuple[tuple[str, sympy.Expr, str], ...],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> tuple[EnergyTerm, ...]:
+    """Each (``"name = meaning"``, formula, unit) as a row of the work–energy table: its
+    formula in the givens' symbols (none for a number) and its value with ``values`` put
+    in (none while a symbol is left, as in a symbolic problem)."""
+    terms = []
+    for label, expr, unit in rows:
         name, _, meaning = label.partition(" = ")
         meaning = meaning or _ENERGY_MEANINGS.get(name, "")
-        unit = speed_unit if name.startswith("v_G") else energy_unit
         number = real_value(expr, values)
         shown = format_quantity(number, unit) if number is not None else ""
         symbolic = bool((sympy.Integer(0) + expr).free_symbols)
-        rows.append(
+        terms.append(
             EnergyTerm(
                 name,
                 meaning,
@@ -267,7 +302,7 @@ def _energy_terms(
                 f"{latex_number(number)}\\,{latex_unit(unit)}" if number is not None else "",
             )
         )
-    return tuple(rows)
+    return tuple(terms)
 
 
 SPEED = Dim(1, 0, -1)

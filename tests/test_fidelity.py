@@ -14,7 +14,8 @@ every work–energy term ``T2 = formula`` and, for a trial, its own equations. E
 equation is parsed with dynsolve's safe spec parser (never ``eval`` or ``sympify``); the
 problem statement's numbers are put in, and a derived quantity (I_O, r_G) is replaced by the
 formula its row prints. An equation of the table that defines one unknown by the givens
-alone (``a_Gy = 0``, ``I_B = m*L^2/3``) may be put into the others, as the notes do inline.
+alone (``a_Gy = 0``, ``I_B = m*L^2/3``) may be put into the others, as the notes do inline;
+so may a term of the work–energy table that does (``U_M = M*n``, ``I_xx = R_A^2*m_A/2``).
 What is left is a residual in the unknowns only.
 
 The notes' equation is written here as a sympy expression in dynsolve's unknowns, with each
@@ -502,25 +503,33 @@ NOTES: dict[str, Notes] = {
         (Value(("I_B",), 2 * 0.64 / 3, "kg·m²"),),  # I_B = m L²/3 with the example's numbers
     ),
     # seed 002_776057af0fe2b6ff.txt, problem 9.1 (gear A rolling on fixed gear B): work
-    # W = 4πM (9.2), ω_CE R_A = ω_CD R_B (9.3), I_xx = m r_A²/2 (9.6), I_zz = m r_A²/4 +
-    # m r_B² (9.7), T2 = ½ I_xx ω_x² + ½ I_zz ω_z² (9.5), T2 = W (9.9).
+    # W = 4πM (9.2), ω_CE R_A = ω_CD R_B (9.3), I_xx = m r_A²/2 (9.6), I_yy = I_zz = m r_A²/4 +
+    # m r_B² (9.7), T2 = ½ I_xx ω_x² + ½ I_yy ω_y² + ½ I_zz ω_z² (9.5), T2 = W + T1 (9.9).
+    # dynsolve's names: W is U_M (the work of the couple M), T2 the kinetic energy in state 2;
+    # the notes' z (the shaft CD) is the scene's y, and I_yy = I_zz (9.7).
     "3d_seed_gear_rolling": Notes(
         "seed 002, problem 9.1 (gear rolling on a fixed gear)",
         {S("m_A"): 4, S("R_A"): R(1, 10), S("R_B"): R(3, 10), S("M"): 5, S("n"): 4 * pi},
         {
-            "W = 4πM": S("U_12") - 4 * pi * 5,
+            "W = 4πM": S("U_M") - 4 * pi * 5,
             "ω_CE R_A = ω_CD R_B": S("omega_spin") * R(1, 10) - S("omega_CD") * R(3, 10),
             "I_xx = m r_A²/2": S("I_xx") - 4 * R(1, 100) / 2,
             "I_zz = m r_A²/4 + m r_B²": S("I_zz") - (4 * R(1, 100) / 4 + 4 * R(9, 100)),
-            "T2 = ½ I_xx ω_x² + ½ I_zz ω_z², I_xx and I_zz as above": S("T_2")
+            "T2 = ½ I_xx ω_x² + ½ I_zz ω_z², I_xx and I_zz as above": S("T2")
             - (4 * R(1, 100) / 2) * S("omega_spin") ** 2 / 2
             - (4 * R(1, 100) / 4 + 4 * R(9, 100)) * S("omega_CD") ** 2 / 2,
-            "T2 = W (from rest)": S("T_2") - S("U_12"),
+            "T2 = W + T1 (from rest): ½ I_xx ω_x² + ½ I_zz ω_z² = 4πM": (4 * R(1, 100) / 2)
+            * S("omega_spin") ** 2
+            / 2
+            + (4 * R(1, 100) / 4 + 4 * R(9, 100)) * S("omega_CD") ** 2 / 2
+            - 4 * pi * 5,
         },
         (
             Value(("I_xx",), 0.02, "kg·m²"),
             Value(("I_zz",), 0.37, "kg·m²"),
-            Value(("U_12",), 4 * 3.14159265 * 5, "J"),
+            Value(("U_M", "U_12"), 4 * 3.14159265 * 5, "J"),
+            Value(("T1",), 0, "J"),  # the system starts at rest
+            Value(("T2",), 4 * 3.14159265 * 5, "J"),  # T2 = W + T1 (9.9)
         ),
     ),
     # seed 002_776057af0fe2b6ff.txt, problem 9.7 (thin plate turning about its diagonal):
@@ -568,21 +577,7 @@ NOTES: dict[str, Notes] = {
 }
 
 # Where a derivation is not yet faithful, what precisely is missing (issue 12, part 1).
-MISSING: dict[tuple[str, str], str] = {
-    ("3d_seed_plate_diagonal", "equations"): "the bearings' couple is printed in scene axes as "
-    "an expanded ΣM_G,z with C_y and D_y, and the bearing force only as the step D_y = …; "
-    "the notes' F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) is not among the equations",
-    # the seed became a 3D scene (merge 190d588) after these notes were written against its
-    # equation-mode version (now problems/equations/3d_seed_gear_rolling.dyn)
-    ("3d_seed_gear_rolling", "equations"): "as a 3D scene the seed prints one energy equation "
-    "M n = ½ m R_B² ω_CD² + ½ (m R_A²/2) ω_spin² + ½ (m R_A²/4) ω_CD² (T about G); the work "
-    "W = 4πM is a check line (work of the couple M), and I_xx = m r_A²/2, "
-    "I_zz = m r_A²/4 + m r_B² about the fixed point C and T2 = ½ I_xx ω_x² + ½ I_zz ω_z² "
-    "appear only inside the check 'T about the fixed point', not as equations",
-    ("3d_seed_gear_rolling", "values"): "as a 3D scene the seed prints I_G in scene axes "
-    "(a check line), not I_xx = 0.02 and I_zz = 0.37 kg·m² about C, and the work of M "
-    "(62.83 J) in a check line, not as U_12 among the values",
-}
+MISSING: dict[tuple[str, str], str] = {}
 
 
 # ---- reading the derivation back -----------------------------------------------------------
@@ -642,8 +637,9 @@ def derived_formulas(data: dict) -> dict[sympy.Symbol, sympy.Expr]:
 def residuals(name: str, trial: bool = False) -> tuple[list[tuple[str, str, sympy.Expr]], dict]:
     """(where, text, residual in the unknowns) of each printed equation, the problem's
     numbers and the derived rows' formulas put in; and the table's definitions of one unknown
-    by the givens alone (``a_Gy = 0``, ``I_B = m*L^2/3``: the unknown alone on one side), which
-    :func:`matches` may put into the other equations, as the notes do inline. A governing
+    by the givens alone (``a_Gy = 0``, ``I_B = m*L^2/3``: the unknown alone on one side), and
+    the work–energy table's (``I_xx = R_A^2*m_A/2``), which :func:`matches` may put into the
+    other equations, as the notes do inline. A governing
     equation with one unknown (``-g*m*r_G = I_O*α``) is not such a definition."""
     data, notes = derivation(name), NOTES[name]
     derived = derived_formulas(data)
@@ -655,7 +651,8 @@ def residuals(name: str, trial: bool = False) -> tuple[list[tuple[str, str, symp
         residual = residual.xreplace(notes.givens)
         rows.append((where, text, residual))
         lhs = ascii_name(text.split("=")[0].strip())
-        single = where.startswith("equation") and residual.free_symbols == {S(lhs)}
+        defines = where.startswith(("equation", "energy"))  # U_M = M*n, I_xx = m*r^2/2
+        single = defines and residual.free_symbols == {S(lhs)}
         if single and sympy.degree(residual, S(lhs)) == 1:
             fixed[S(lhs)] = sympy.solve(residual, S(lhs))[0]
     return rows, fixed

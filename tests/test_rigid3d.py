@@ -498,6 +498,46 @@ def test_the_weight_does_work_as_g_falls(axis, sign):
     assert found["w"].value == pytest.approx(sign * omega, rel=1e-12)
 
 
+def test_the_gear_derivation_lists_work_and_energy_term_by_term():
+    """The seed's 9.1 solution, term by term (seed 002, (9.2), (9.5)–(9.7)): T1 = 0 (at
+    rest), U_M = M (2 rev) = 20π = 62.8 J; about the fixed point C, I_xx = m R_A²/2 =
+    4 (0.1)²/2 = 0.0200 kg·m², I_yy = I_zz = m R_A²/4 + m R_B² = 0.01 + 0.36 = 0.370 kg·m²;
+    T2 = ½ I_xx ω_x² + ½ I_yy ω_y² = T1 + ΣU = 62.8 J."""
+    solution = solve_file(PROBLEMS / "rigid3d" / "gear_rolling.dyn")
+    terms = {t.name: t for t in solution.energy}
+    assert list(terms) == ["T1", "U_M", "I_xx", "I_yy", "I_zz", "T2"]
+    assert terms["T1"].value == "0 J" and terms["U_M"].value == "62.8 J"
+    assert terms["U_M"].formula == "M*n" and "M Δθ" in terms["U_M"].meaning
+    assert terms["I_xx"].value == "0.0200 kg·m²"
+    assert terms["I_yy"].value == terms["I_zz"].value == "0.370 kg·m²"
+    assert terms["T2"].formula == "I_xx*ω_spin^2/2 + I_yy*ω_CD^2/2"
+    assert terms["T2"].value == "62.8 J"
+
+
+def test_the_weight_work_and_t_about_the_axle_are_listed():
+    """The swinging arm (above): U_W = m g L = 2 (9.81) 0.5 = 9.81 J; about the axle
+    (z, through the fixed point O), I_zz = m r²/4 + m L² = 2 (0.0025 + 0.25) = 0.505 kg·m²,
+    and T2 = ½ I_zz ω² (ω only about z)."""
+    terms = {t.name: t for t in solve_text(ARM.format(axis="(0, 0, -1)"), "arm.dyn").energy}
+    assert terms["U_W"].value == "9.81 J" and "−m g Δy_G" in terms["U_W"].meaning
+    assert terms["I_zz"].value == "0.505 kg·m²"
+    assert terms["T2"].formula == "I_zz*w^2/2" and terms["T2"].value == "9.81 J"
+
+
+def test_the_moments_about_the_second_point_are_printed():
+    """The moment equations about the first bearing, as the notes write them: about the
+    pivot O of the gyroscope the reactions drop out, m g d = Ω I_s ω_s with I_s = m r²/2
+    (Hibbeler 21.5); about bearing C of the plate turning about its diagonal, the bearings'
+    couple F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) (seed 002, (9.33)–(9.34))."""
+    gyroscope = solve_file(PROBLEMS / "rigid3d" / "gyroscope.dyn")
+    assert [r.text for r in gyroscope.second_moments] == ["-d*g*m = -m*r^2*w_s*Ω/2"]
+    assert gyroscope.second_moments[0].note.startswith("ΣM_O,z = (Ḣ_G + r_G/O × m a_G)_z")
+    plate = solve_file(PROBLEMS / "seed" / "3d_seed_plate_diagonal.dyn")
+    texts = [r.text for r in plate.second_moments]
+    assert "D_y*sqrt(a^2 + b^2) = M*a*b*ω^2*(a^2 - b^2)/(12*(a^2 + b^2))" in texts
+    assert not solve_file(PROBLEMS / "rigid3d" / "gear_rolling.dyn").second_moments
+
+
 @pytest.mark.parametrize(
     ("change", "message", "line"),
     [

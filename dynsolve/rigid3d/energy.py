@@ -402,25 +402,35 @@ def _target(
     return Target(item.name, symbol, dim, unit, item.unit is not None, False, "signed", tidy(value))
 
 
-def fixed_point_check(
-    scene: Scene3D, terms: EnergyTerms, values: Mapping[sympy.Symbol, sympy.Expr], system: str
-) -> tuple[Check, ...]:
-    """A second method for T2: about the frame's point O on its axis, when the body's point
-    there is at rest (O is then a fixed point of the body), T2 = ½ ωᵀ I_O ω with
-    I_O = I_G + m (|d|² E − d dᵀ), d = r_G/O (the parallel-axis theorem in 3D)."""
+def fixed_point_inertia(
+    scene: Scene3D, terms: EnergyTerms, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> sympy.Matrix | None:
+    """I_O about the frame's point O on its axis when the body's point there is at rest (O
+    is then a fixed point of the body): I_O = I_G + m (|d|² E − d dᵀ), d = r_G/O (the
+    parallel-axis theorem in 3D); None when that point moves."""
     body, origin = scene.body, scene.spin.through
     d = tuple(body.G[i] - origin[i] for i in range(3))
     v_O = tuple(
         v + c for v, c in zip(terms.v_G, cross(terms.omega, tuple(-x for x in d)), strict=True)
     )
     if not _at_rest(v_O, terms.v_G, values):
-        return ()  # the body's point on the frame's axis moves: no fixed point there
+        return None
     D = sympy.Matrix(d)
-    I_O = body.I_G + body.mass * ((D.T * D)[0] * sympy.eye(3) - D * D.T)
+    return body.I_G + body.mass * ((D.T * D)[0] * sympy.eye(3) - D * D.T)
+
+
+def fixed_point_check(
+    scene: Scene3D, terms: EnergyTerms, values: Mapping[sympy.Symbol, sympy.Expr], system: str
+) -> tuple[Check, ...]:
+    """A second method for T2: about the frame's point O on its axis, when the body's point
+    there is at rest, T2 = ½ ωᵀ I_O ω (:func:`fixed_point_inertia`)."""
+    I_O = fixed_point_inertia(scene, terms, values)
+    if I_O is None:
+        return ()  # the body's point on the frame's axis moves: no fixed point there
     w = sympy.Matrix(terms.omega)
     about_O = ((w.T * I_O * w)[0] / 2).xreplace(values)
     about_G = terms.T2.xreplace(values)
-    point = ", ".join(_plain(c) for c in origin)
+    point = ", ".join(_plain(c) for c in scene.spin.through)
     lead = (
         f"the body's point ({point}) on the frame's axis is at rest: T2 = ½ ωᵀ I_O ω with "
         "I_O = I_G + m(|r_G/O|² E − r_G/O r_G/Oᵀ)"
@@ -435,6 +445,95 @@ def fixed_point_check(
     shown = format_quantity(convert(b, unit, system), unit)
     detail = f"{lead} = {shown}, as ½ m v_G² + ½ ωᵀ I_G ω (relative difference {error:.1e})"
     return (Check("T about the fixed point", error < 1e-9, detail),)
+
+
+EnergyRow = tuple[str, sympy.Expr, str]  # ("name = meaning", formula, unit)
+
+
+def energy_table(
+    scene: Scene3D,
+    terms: EnergyTerms,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
+) -> tuple[tuple[EnergyRow, ...], dict[sympy.Symbol, sympy.Expr]]:
+    """T1 + ΣU1-2 = T2 term by term, as the notes write it (seed 002, problem 9.1): T1, the
+    work of each load (U_M = M Δθ), their sum U_12 when several do work, and T2. About a
+    fixed point O of the body whose I_O is diagonal in scene axes, T2 = ½ (I_xx ω_x² +
+    I_yy ω_y² + I_zz ω_z²) after a row for each I_O moment (9.5)–(9.7); else T2 = ½ m v_G² +
+    ½ ωᵀ I_G ω. Returns the rows and the values of the names they define (I_xx …)."""
+    energy = natural_unit(ENERGY, system, "E")
+    rows = [
+        ("T1 = kinetic energy in state 1 (at rest)", terms.T1, energy),
+        *_work_rows(terms, energy),
+    ]
+    I_O = fixed_point_inertia(scene, terms, values)
+    if I_O is None or not _diagonal(I_O, values):
+        meaning = "½ m v_G² + ½ ωᵀ I_G ω (kinetic energy in state 2)"
+        return (*rows, (f"T2 = {meaning}", terms.T2, energy)), {}
+    about_O, defined = _fixed_point_rows(scene, terms, I_O, values, system)
+    return (*rows, *about_O), defined
+
+
+def _work_rows(terms: EnergyTerms, unit: str) -> tuple[EnergyRow, ...]:
+    """U1-2 of each load that does work, and their sum U_12 when there are several."""
+    works = [(what, u) for what, u in terms.work if u != 0]
+    rows = [(f"{_work_name(what)} = {_work_meaning(what)}", u, unit) for what, u in works]
+    if len(works) > 1:
+        rows.append(("U_12 = ΣU(1→2), the work of all the loads", terms.U, unit))
+    return tuple(rows)
+
+
+def _fixed_point_rows(
+    scene: Scene3D,
+    terms: EnergyTerms,
+    I_O: sympy.Matrix,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
+) -> tuple[tuple[EnergyRow, ...], dict[sympy.Symbol, sympy.Expr]]:
+    """I_xx, I_yy, I_zz about the fixed point O (principal axes there) and T2 = ½ (I_xx ω_x² +
+    I_yy ω_y² + I_zz ω_z²) in them, a term for each nonzero component of ω."""
+    point = ", ".join(_plain(c) for c in scene.spin.through)
+    inertia = natural_unit(Dim(2, 1, 0), system)
+    moments = [sympy.Symbol(f"I_{a}{a}") for a in AXES]
+    rows: list[EnergyRow] = []
+    for i, axis in enumerate(AXES):
+        meaning = (
+            f"about the {axis} axis through the fixed point O ({point}): "
+            f"I_G,{axis}{axis} + m d² (parallel axis)"
+        )
+        rows.append((f"{moments[i].name} = {meaning}", tidy(I_O[i, i]), inertia))
+    T2 = sum(
+        (moment * w**2 / 2 for moment, w in zip(moments, terms.omega, strict=True) if w != 0),
+        ZERO,
+    )
+    meaning = f"½ (I_xx ω_x² + I_yy ω_y² + I_zz ω_z²) about O ({point}): kinetic energy in state 2"
+    rows.append((f"T2 = {meaning}", T2, natural_unit(ENERGY, system, "E")))
+    known = dict(values)
+    defined = {moment: (ZERO + I_O[i, i]).xreplace(known) for i, moment in enumerate(moments)}
+    return tuple(rows), defined
+
+
+def _work_name(what: str) -> str:
+    """The name of a load's work, as the planar table names it: U_M for the couple M, U_W
+    for the weight."""
+    return f"U_{what.removeprefix('the couple ')}" if what.startswith("the couple") else "U_W"
+
+
+def _work_meaning(what: str) -> str:
+    formula = "M Δθ" if what.startswith("the couple") else "−m g Δy_G"
+    return f"{formula} ({what})"
+
+
+def _diagonal(I_O: sympy.Matrix, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+    """Whether the scene axes are principal axes at O: every product of inertia is zero
+    (exactly, with letters; against the largest moment to 1e-12, with numbers)."""
+    known = dict(values)
+    entries = {(i, j): (ZERO + I_O[i, j]).xreplace(known) for i in range(3) for j in range(3)}
+    products = [entries[i, j] for i in range(3) for j in range(i + 1, 3)]
+    if any(e.free_symbols for e in entries.values()):
+        return all(sympy.simplify(e) == 0 for e in products)
+    scale = max(abs(float(sympy.N(entries[k, k]))) for k in range(3))
+    return all(abs(float(sympy.N(e))) <= 1e-12 * scale for e in products)
 
 
 def _at_rest(

@@ -497,19 +497,22 @@ def named_target(
     )
 
 
-def _second_point(
-    problem: Problem3D, known: Mapping[sympy.Symbol, sympy.Expr]
-) -> tuple[Check, ...]:
-    """ΣM about a second point (the first bearing, or G), with the solved reactions."""
-    body = problem.scene.body
+def _second_origin(problem: Problem3D) -> tuple[Vec3, str]:
+    """The second moment point: the first bearing, or G when the equations were about it."""
     first = problem.scene.bearings[0]
-    origin, label = first.at, first.name
     if problem.moment_point != "G":  # the equations were about the bearing: check about G
-        origin, label = body.G, "G"
+        return problem.scene.body.G, "G"
+    return first.at, first.name
+
+
+def _moments_about(problem: Problem3D, origin: Vec3) -> tuple[list[sympy.Expr], list[sympy.Expr]]:
+    """ΣM_O of the loads (the reactions, the weight, the couples) and Ḣ_G + r_G/O × m a_G,
+    component by component in scene axes."""
+    body, scene = problem.scene.body, problem.scene
     total = [sympy.Integer(0)] * 3
     weight = (
-        tuple(body.mass * problem.scene.symbols["g"] * c for c in problem.scene.gravity)
-        if problem.scene.gravity
+        tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
+        if scene.gravity
         else (sympy.Integer(0),) * 3
     )
     loads = [(force, at) for force, at in problem.reactions.values()] + [(weight, body.G)]
@@ -518,17 +521,55 @@ def _second_point(
         total = [t + c for t, c in zip(total, cross(arm, force), strict=True)]
     torques = sum(
         (
-            (problem.scene.symbols[n] if n in problem.scene.symbols else sympy.Symbol(n, real=True))
-            for n in problem.scene.torques
+            (scene.symbols[n] if n in scene.symbols else sympy.Symbol(n, real=True))
+            for n in scene.torques
         ),
         sympy.Integer(0),
     )
-    total = [t + torques * c for t, c in zip(total, problem.scene.spin.axis, strict=True)]
+    total = [t + torques * c for t, c in zip(total, scene.spin.axis, strict=True)]
     for couple in problem.couples.values():
         total = [t + c for t, c in zip(total, couple, strict=True)]
     r_G = tuple(body.G[i] - origin[i] for i in range(3))
     m_a = tuple(body.mass * a for a in problem.a_G)
     expected = [h + c for h, c in zip(problem.H_dot, cross(r_G, m_a), strict=True)]
+    return total, expected
+
+
+def second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
+    """The moment equations about the second point, printed in the unknowns as the notes
+    write them: about bearing C, ΣM_C = Ḣ_G + r_G/C × m a_G component by component. The
+    bearings' couple of a plate turning about its diagonal reads F √(a² + b²) =
+    M ω² ab(a² − b²)/(12(a² + b²)) here (seed 002, (9.33)); about G, ΣM_G = Ḣ_G. A check,
+    not used to solve (the 'second moment point' check verifies it with the solved values);
+    a component that holds whatever the reactions is left out."""
+    if problem.energy is not None or not problem.scene.bearings:
+        return ()
+    origin, label = _second_origin(problem)
+    total, expected = _moments_about(problem, origin)
+    dims = {problem.symbols[n]: d for n, d in problem.dims.dims.items() if n in problem.symbols}
+    unknowns = set(problem.system.unknowns)
+    values = dict(problem.scene.values)
+    rows = []
+    for i, axis in enumerate(AXES):
+        lhs, rhs = tidy(total[i]), tidy(expected[i])
+        if not unknowns & (lhs - rhs).free_symbols and (
+            sympy.simplify((lhs - rhs).xreplace(values)) == 0
+        ):
+            continue  # holds whatever the reactions
+        kinetic = f"Ḣ_G + r_G/{label} × m a_G" if label != "G" else "Ḣ_G"
+        note = f"ΣM_{label},{axis} = ({kinetic})_{axis}: a second moment point, a check, "
+        note += "not used in the solve"
+        equation = Equation(lhs, rhs, f"ΣM_{label},{axis}", problem.scene.spin.line, note)
+        rows.append(_row(equation, dims, problem.spec))
+    return tuple(rows)
+
+
+def _second_point(
+    problem: Problem3D, known: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """ΣM about a second point (the first bearing, or G), with the solved reactions."""
+    origin, label = _second_origin(problem)
+    total, expected = _moments_about(problem, origin)
     worst, scale = 0.0, 0.0
     for lhs, rhs in zip(total, expected, strict=True):
         try:
