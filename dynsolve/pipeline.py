@@ -22,6 +22,7 @@ import sympy
 from dynsolve.answer_key import compare, compare_magnitude
 from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
+from dynsolve.errors import DynsolveError
 from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
@@ -39,6 +40,7 @@ from dynsolve.results import (
     FreeBody,
     GivenRow,
     KeyComparison,
+    LimitRemark,
     Remark,
     Solution,
     Step,
@@ -407,7 +409,8 @@ def solve_problem(
         status=outcome.status,
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
-        remarks=_remarks(problem, outcome, options),
+        remarks=_remarks(problem, outcome, options)
+        + _limit_remarks(problem, outcome, options, view),
     )
 
 
@@ -450,6 +453,94 @@ def _remarks(
     return cancelled_masses(
         answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns)
     )
+
+
+def _limit_remarks(
+    problem: SolvableProblem, outcome: Outcome, options: SolveOptions, view: _View
+) -> tuple[LimitRemark, ...]:
+    """Limit cases of the answers' formulas (from rest, smooth) that free them from other
+    givens, from the formulas of an exact solve. Each is confirmed by solving the problem
+    again with that given at 0 (numeric mode): a limit outside the formula's own case (a
+    cord that no longer goes slack when the bob starts at rest) fails there and is not
+    remarked."""
+    from dynsolve.remarks import limit_cases
+
+    if options.mode != "exact" or outcome.status != "solved":
+        return ()
+    formulas: dict[sympy.Symbol, sympy.Expr] = {}
+    for block in outcome.blocks:
+        if block.method != "numeric":
+            formulas.update(block.formulas)
+    formulas.update({g.symbol: g.formula for g in problem.givens if g.formula is not None})
+    givens = {
+        g.symbol: (g.name, _limit_case(g))
+        for g in problem.givens
+        if g.formula is None and (g.given is not None or g.name == "g")
+    }
+    targets = {
+        t.name: t
+        for t in problem.targets
+        if not t.trial and not t.is_given and t.vector is None and t.expr is not None
+    }
+    cases = limit_cases({n: t.expr for n, t in targets.items()}, formulas, givens)
+    confirmed: dict[str, Solution | None] = {}
+    rows = []
+    for case in cases:
+        if case.given not in confirmed:
+            confirmed[case.given] = _at_zero(problem.spec, case.given)
+        again = confirmed[case.given]
+        row = next((a for a in again.answers if a.name == case.answer), None) if again else None
+        limit = case.limit
+        number = real_value(limit, view.knowns)
+        if row is None or row.value is None or number is None:
+            continue
+        _, _, expected = view.shown(case.answer, sympy.Float(abs(number), 17))
+        if expected is None or not math.isclose(
+            abs(row.value), expected, rel_tol=1e-6, abs_tol=1e-12
+        ):
+            continue  # the re-solve does not bear the formula out: no remark
+        if number < 0 and targets[case.answer].kind != "signed":
+            limit = -limit  # a magnitude with its direction, as the answers table shows it
+        value_latex = view.shown(case.answer, sympy.Float(abs(number), 17))[1]
+        rows.append(
+            LimitRemark(
+                case.answer, case.given, case.case, view.text(limit), view.latex(limit),
+                row.shown, value_latex, case.whatever, row.direction,
+            )
+        )  # fmt: skip
+    return tuple(rows)
+
+
+def _at_zero(spec: Spec, given: str) -> Solution | None:
+    """The problem solved again (numeric mode) with ``given`` nearly 0 (1e-7 of its value:
+    the limit from above, a block nudged off the top of a dome rather than balanced there),
+    or None where it cannot be or a check other than an answer's finiteness fails."""
+    from dynsolve.grade.substitute import with_variant
+
+    quantity = next(g.quantity for g in spec.givens if g.name == given)
+    assert quantity is not None
+    unit = quantity.unit.text if quantity.unit is not None else ""
+    try:
+        small = f"{float(quantity.text) * 1e-7!r} {unit}".strip()
+        solution = solve_spec(with_variant(spec, {given: small}, "limit"), SolveOptions("numeric"))
+    except (DynsolveError, ValueError, OverflowError):
+        return None
+    checks = [c for c in solution.checks if c.name != "finite"]
+    if solution.status != "solved" or not all(c.passed for c in checks):
+        return None
+    return solution
+
+
+def _limit_case(given: GivenInfo) -> str:
+    """The limit case a given's going to 0 stands for: a speed, "nearly from rest"; a
+    friction coefficient, "nearly smooth"; else ""."""
+    if given.value is None or not given.value.is_nonzero:
+        return ""
+    if given.dim == Dim.of("velocity"):
+        return "nearly from rest"
+    if given.dim == Dim() and given.name.split("_")[0] in ("mu", "μ"):
+        return "nearly smooth"
+    return ""
 
 
 def _orthonormal(

@@ -189,6 +189,46 @@ class Remark:
 
 
 @dataclass(frozen=True)
+class LimitRemark:
+    """A limit case the answer shows: as a given goes to 0 (nearly from rest, nearly
+    smooth) the answer's formula tends to one that no longer depends on some other givens.
+
+    >>> LimitRemark("theta", "v_1", "nearly from rest", "acos(2/3)", "", "48.2°", "",
+    ...             ("R", "g")).text
+    'as v_1 → 0 (nearly from rest), θ → acos(2/3) = 48.2°, whatever R and g'
+    """
+
+    answer: str
+    given: str
+    case: str
+    formula: str  # the answer's formula in the limit, as the terminal prints it
+    formula_latex: str
+    value: str  # with its unit
+    value_latex: str
+    whatever: tuple[str, ...]  # the givens the limit does not depend on
+    direction: str = ""  # "down", "cw", … as the answers table gives it
+
+    @property
+    def text(self) -> str:
+        """The remark in words, names as the terminal prints them."""
+        value = f"{self.value} {self.direction}".strip()
+        return self.words(
+            pretty(self.given), pretty(self.answer), self.formula, value,
+            [pretty(n) for n in self.whatever],
+        )  # fmt: skip
+
+    def words(
+        self, given: str, answer: str, formula: str, value: str, whatever: list[str], to: str = "→"
+    ) -> str:
+        """The remark with its parts already typeset (``$v_{1}$`` for LaTeX)."""
+        names = (
+            whatever[0] if len(whatever) == 1 else ", ".join(whatever[:-1]) + " and " + whatever[-1]
+        )
+        tends = f"{answer} {to} {formula}" + (f" = {value}" if value and value != formula else "")
+        return f"as {given} {to} 0 ({self.case}), {tends}, whatever {names}"
+
+
+@dataclass(frozen=True)
 class LinkageFigure:
     """A linkage at the instant, as data for a drawing (positions in metres)."""
 
@@ -222,7 +262,8 @@ class Solution:
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
     linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
-    remarks: tuple[Remark, ...] = ()  # what the answers tell: a mass that cancels
+    # what the answers tell: a mass that cancels, a limit case
+    remarks: tuple[Remark | LimitRemark, ...] = ()
     figure: str = ""  # a LaTeX sheet's motion plot: its file, beside the sheet ("" for none)
     # the other moment equation (about G where the solve took moments about A), as a check
     second_moments: tuple[EquationRow, ...] = ()

@@ -36,6 +36,7 @@ from dynsolve.results import (
     FreeBody,
     GivenRow,
     KeyComparison,
+    LimitRemark,
     Remark,
     Solution,
     Step,
@@ -608,12 +609,24 @@ def _figure_section(figure: str) -> str:
     )
 
 
-def _remark(remark: Remark) -> str:
+def _remark(remark: Remark | LimitRemark) -> str:
     """A remark with its names typeset as mathematics.
 
     >>> _remark(Remark(("v_2",), ("m_A",)))
     '$v_{2}$ does not depend on $m_{A}$: the mass cancels'
+    >>> print(_remark(LimitRemark("h", "v_1", "nearly from rest", "R/3", "R/3", "", "", ("g",))))
+    as $v_{1}$ $\\to$ 0 (nearly from rest), $h$ $\\to$ $R/3$, whatever $g$
     """
+    if isinstance(remark, LimitRemark):
+        value = safe_math(remark.value_latex) if remark.value_latex else ""
+        return remark.words(
+            f"${latex_name(remark.given)}$",
+            f"${latex_name(remark.answer)}$",
+            f"${remark.formula_latex}$",
+            f"${value}$ {escape_latex(remark.direction)}".strip() if value else "",
+            [f"${latex_name(n)}$" for n in remark.whatever],
+            to="$\\to$",
+        )
     answers = [f"${latex_name(n)}$" for n in remark.answers]
     return remark.words(answers, [f"${latex_name(n)}$" for n in remark.masses])
 
