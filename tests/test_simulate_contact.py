@@ -168,3 +168,8 @@ def test_without_the_event_a_sign_change_of_n_is_shown_not_passed_over(tmp_path:
     result = run_cli(spec, "--t-end", "1 s")
     assert result.exit_code == 0, result.output
     assert "note: N_dome changes sign at t = 0.907255" in result.output
+
+
+def test_the_help_names_the_event() -> None:
+    result = CliRunner().invoke(app, ["simulate", "--help"], terminal_width=200)
+    assert "lost(PATH)" in result.output and "slack(CORD)" in result.output

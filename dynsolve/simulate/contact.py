@@ -93,7 +93,8 @@ def circular_path(scene: Scene) -> tuple[str, Path] | None:
     from dynsolve.principles.until import _circle_of
 
     particles = [n for n, b in scene.bodies.items() if b.particle]
-    if len(particles) != 1 or len(scene.bodies) != 1 or scene.links or scene.supports:
+    alone = len(particles) == 1 and len(scene.bodies) == 1
+    if not alone or scene.links or scene.supports or scene.movers:  # a mover's speed is given
         return None
     body = scene.bodies[particles[0]]
     for path in scene.paths.values():
