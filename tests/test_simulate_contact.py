@@ -173,3 +173,33 @@ def test_without_the_event_a_sign_change_of_n_is_shown_not_passed_over(tmp_path:
 def test_the_help_names_the_event() -> None:
     result = CliRunner().invoke(app, ["simulate", "--help"], terminal_width=200)
     assert "lost(PATH)" in result.output and "slack(CORD)" in result.output
+
+
+def test_released_from_rest_off_the_top_of_a_dome_not_at_the_origin() -> None:
+    # Hand (θ from the top, released from rest at θ₀): v² = 2 g R (cos θ₀ − cos θ) and
+    # m g cos θ = m v²/R at N = 0 → cos θ = (2/3) cos θ₀; θ₀ = 30°: θ = 54.73561°, turned
+    # θ − θ₀ = 24.73561° ccw (it starts left of the top); drop R (cos θ₀ − cos θ) = R cos θ₀/3
+    text = (
+        "given:\n  m = 1 kg\n  R = 2 m\n  c = 1 m\n  d = 3 m\n  a = 30 deg\nscene:\n"
+        "  path dome: (x - c)^2 + (y - d)^2 = R^2\n"
+        "  body block: particle, mass m, at (c - R*sin(a), d + R*cos(a))\n  gravity\n"
+    )
+    history = simulate_spec(parse_spec(text, "off.dyn"), "lost(dome)")
+    ((_, _, q, _),) = [e for e in history.events if e[0] == "lost(dome)"]
+    theta = math.acos(2 / 3 * math.cos(math.radians(30)))
+    assert q == pytest.approx(theta - math.radians(30), rel=1e-9)
+    assert history.contact is not None
+    assert history.contact.from_top(q) == pytest.approx(theta, rel=1e-9)
+    assert history.contact.rise(q) == pytest.approx(-2 * math.cos(math.radians(30)) / 3, rel=1e-9)
+
+
+def test_uniform_motion_round_a_ring_never_loses_contact(tmp_path: Path) -> None:
+    # no gravity: N = m v²/R = 1·9/2 = 4.5 N throughout, the contact is never lost
+    spec = tmp_path / "ring.dyn"
+    spec.write_text(
+        "given:\n  m = 1 kg\n  R = 2 m\n  v = 3 m/s\nscene:\n  path ring: x^2 + y^2 = R^2\n"
+        "  body bead: particle, mass m, at (R, 0)\n  velocity bead: v, up\n"
+    )
+    result = run_cli(spec, "--until", "lost(ring)", "--t-end", "1 s")
+    assert result.exit_code == 2
+    assert "stays between 4.5 and 4.5 N (N does not change: it never will)" in result.output

@@ -411,6 +411,8 @@ def _missed(name: str, run: Run, contact: Contact | None, spec: Spec) -> str:
         f"it hardly moves from where it starts (at most {turned:.2g} rad): at rest at an "
         "equilibrium, it needs a nudge (a 'velocity' line)"
         if turned <= 1e-6
+        else "N does not change: it never will"
+        if max(normals) - min(normals) <= 1e-9 * max(abs(n) for n in normals)
         else "it goes round and round"
         if turned >= 2 * math.pi
         else "it swings back and forth below where it would leave"
