@@ -203,3 +203,16 @@ def test_uniform_motion_round_a_ring_never_loses_contact(tmp_path: Path) -> None
     result = run_cli(spec, "--until", "lost(ring)", "--t-end", "1 s")
     assert result.exit_code == 2
     assert "stays between 4.5 and 4.5 N (N does not change: it never will)" in result.output
+
+
+def test_an_until_event_not_met_by_a_chain_is_said_too(tmp_path: Path) -> None:
+    # a double pendulum released level cannot swing its top rod to −90° in 0.1 s
+    spec = tmp_path / "double.dyn"
+    spec.write_text(
+        "given:\n  m = 2 kg\n  L = 1 m\n  level = 0 deg\nscene:\n  point O: (0, 0)\n"
+        "  bar OA: O to A, length L, angle level, mass m\n"
+        "  bar AB: A to B, length L, angle level, mass m\n  gravity\n"
+    )
+    result = run_cli(spec, "--t-end", "0.1 s", "--until", "theta(OA) = -90 deg")
+    assert result.exit_code == 2
+    assert "the event 'theta(OA) = -90 deg' was not met by t = 0.1 s" in result.output
