@@ -90,6 +90,8 @@ class Contact:
 def circular_path(scene: Scene) -> tuple[str, Path] | None:
     """(the lone particle, the circular path through its G), or None when the scene is not
     a single particle on a circle with nothing else guiding it."""
+    if not scene.paths:
+        return None
     from dynsolve.principles.until import _circle_of
 
     particles = [n for n, b in scene.bodies.items() if b.particle]
