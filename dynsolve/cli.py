@@ -525,7 +525,9 @@ def simulate(
         str | None,
         typer.Option(
             help="Stop at an event: max, min, 'theta(B) = 0 deg', 'x(B) = 0 m', … "
-            "(a chain: 'theta(BAR) = …', 'y(JOINT) = …')"
+            "'slack(CORD)' (a cord's tension falls to zero), 'lost(PATH)' (a particle "
+            "leaves its circular path: N = 0); a chain: 'theta(BAR) = …', 'y(JOINT) = …'. "
+            "Default: the event of the scene's 'travel B: until …' line."
         ),
     ] = None,
     t_end: Annotated[str, typer.Option("--t-end", help="The end time, e.g. '10 s'.")] = "10 s",
@@ -545,7 +547,10 @@ def simulate(
 
     Prints the events met (turning points, the --until event), the period of an
     oscillation beside the small-oscillation period, and the drift of T + V − U_f.
-    Exit code 0 when simulated, 2 for bad input or a scene it cannot simulate.
+    A particle on a circular path adds its normal force N to the history, and
+    --until 'lost(PATH)' reports the time, angle and speed where N falls to zero.
+    Exit code 0 when simulated, 2 for bad input, a scene it cannot simulate, or an
+    --until event not met by the end time (the history is still written).
     """
     from dynsolve.errors import DynsolveError
     from dynsolve.simulate.output import history_csv, history_json, history_plot
@@ -570,6 +575,9 @@ def simulate(
         _write_output(output, text)
     if plot is not None:
         _write_output(plot, history_plot(history, plot.suffix.lower()))
+    missed = getattr(history, "missed", "")
+    if missed:
+        _fail(missed, "check the start state, or give a longer --t-end")
     raise typer.Exit(ExitCode.OK)
 
 
@@ -605,9 +613,37 @@ def _simulation_text(history: object) -> str:
             f"  constant q'' = {constant['q_ddot']:.9g}: closed form q = q'₀ t + ½ q'' t², "  # type: ignore[index]
             f"largest difference {constant['difference']:.2e} of the largest |q|"  # type: ignore[index]
         )
+    lines += _contact_lines(history, data)
     invariant = str(data["invariant"]).replace(" - ", " − ").replace("Omega", "Ω")
     lines.append(f"  energy drift |Δ({invariant})|/scale: {data['energy_drift']:.2e}")
     return "\n".join(lines)
+
+
+def _contact_lines(history: object, data: dict) -> list[str]:
+    """Where a particle left its circular path (or that the path pushed the other way)."""
+    contact = data.get("contact")
+    if not contact:
+        return []
+    length = "ft" if getattr(history, "system", "SI") == "FPS" else "m"
+    lost = contact["lost"]
+    if lost is not None:
+        top = lost["angle_from_top_deg"]
+        rise = lost["rise"]
+        return [
+            f"  contact with {contact['path']} lost ({contact['force']} = 0, {contact['side']} "
+            f"the circle): t = {lost['t']:.9g} s, turned {lost['angle_turned_deg']:.7g}°"
+            + (f", {top:.7g}° from the top" if top is not None else "")
+            + f", speed {lost['speed']:.7g} {length}/s"
+            + (f", G rose {rise:.7g} {length}" if rise is not None else "")
+        ]
+    flips = [e for e in data["events"] if e["event"] == f"{contact['force']} = 0"]
+    if not flips:
+        return []
+    return [
+        f"  note: {contact['force']} changes sign at t = {flips[0]['t']:.9g} s: a surface lets "
+        f"go there (--until 'lost({contact['path']})'); past it the run holds "
+        f"{contact['body']} on {contact['path']} as a bead on a wire"
+    ]
 
 
 class UnitsChoice(enum.StrEnum):

@@ -70,6 +70,7 @@ class ChainHistory:
     period: None = None  # an n-coordinate motion has no one period
     small_period: None = None
     equilibrium: None = None
+    missed: str = ""  # why the --until event was not met ("" when it was, or none asked)
 
     @property
     def invariant(self) -> str:
@@ -135,9 +136,15 @@ def simulate_chain(
             else "try --method Radau or a looser --rtol",
         ) from None
     coordinates = Coordinates(", ".join(f"turn of {b}" for b in chain.bars), "rad", chain.bars)
+    end = float(run.t[-1]) if run.t.size else 0.0
+    missed = (
+        f"the event '{event[0]}' was not met by t = {end:.6g} s (the end time)"
+        if event is not None and not run.stopped_by
+        else ""
+    )
     return ChainHistory(
         spec.file, spec.title or spec.file, spec.system, chain, coordinates, run,
-        run.stopped_by, run.events,
+        run.stopped_by, run.events, missed=missed,
     )  # fmt: skip
 
 

@@ -44,6 +44,30 @@ def summary(history: History | ChainHistory) -> dict[str, object]:
         "energy_drift": run.drift,
         "invariant": getattr(history, "invariant", "T + V - U_f"),
         "evaluations": run.evaluations,
+        "missed": getattr(history, "missed", ""),
+        "contact": _contact(history),
+    }
+
+
+def _contact(history: History | ChainHistory) -> dict[str, object] | None:
+    """A particle on a circular path: the path, its side, and where the contact was lost
+    (time, angle turned and from the top in degrees, speed, rise of G; None if it held)."""
+    from dynsolve.simulate.contact import loss_report
+
+    contact = getattr(history, "contact", None)
+    if contact is None:
+        return None
+    lost = None
+    for name, t, q, qd in history.events:
+        if name == f"lost({contact.path})":
+            lost = loss_report(contact, t, q, qd)
+    return {
+        "path": contact.path,
+        "body": contact.body,
+        "force": contact.name,
+        "side": "inside" if contact.side > 0 else "outside",
+        "radius": contact.radius,
+        "lost": lost,
     }
 
 
@@ -76,7 +100,10 @@ def history_plot(history: History | ChainHistory, suffix: str = ".png") -> bytes
     run = history.run
     columns = history.columns()
     rows = history.rows()
-    figure, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    contact = getattr(history, "contact", None)
+    panels = 3 if contact is not None else 2
+    figure, axes = plt.subplots(panels, 1, figsize=(7, 3 * panels), sharex=True)
+    top, bottom = axes[0], axes[-1]
     top.plot(run.t, run.q)
     top.set_ylabel(columns[1])
     for name, t, q, _ in history.events:
@@ -85,6 +112,14 @@ def history_plot(history: History | ChainHistory, suffix: str = ".png") -> bytes
     for index in (-3, -2, -1):  # T (or T − Ω·H_O in a turning frame), V, U_friction
         label = columns[index].rsplit(" [", 1)[0]
         bottom.plot(run.t, [row[index] for row in rows], label=label)
+    if contact is not None:  # the path's push, and where it falls to zero
+        index = columns.index(next(c for c in columns if c.startswith(contact.name + " [")))
+        axes[1].plot(run.t, [row[index] for row in rows], color="C2")
+        axes[1].axhline(0.0, color="0.6", linewidth=0.8)
+        axes[1].set_ylabel(columns[index])
+        for name, t, _, _ in history.events:
+            if name.startswith("lost(") or name == f"{contact.name} = 0":
+                axes[1].plot([t], [0.0], "o", color="C3")
     bottom.set_xlabel("t [s]")
     bottom.set_ylabel(f"energy [{columns[-3].rsplit('[', 1)[1]}")
     bottom.legend()

@@ -7,7 +7,9 @@ distance along its guide. The run starts from the scene as written (``velocity``
 minima: the period of an oscillation), stops at an ``until`` event, and reports the
 drift of T + V − U_f. Where the motion oscillates about a stable equilibrium q*, the
 period of small oscillations 2π √(M(q*)/V''(q*)) (for a pendulum 2π √(I_O/(m g d)))
-is shown beside the simulated one.
+is shown beside the simulated one. A lone particle on a circular ``path`` is simulated in
+its turn about the centre, with the path's normal force in the history and the event
+``lost(PATH)`` where that force falls through zero (:mod:`dynsolve.simulate.contact`).
 
 >>> from dynsolve.spec.parser import parse_spec
 >>> text = ("given:\\n  m = 1 kg\\n  L = 1 m\\nscene:\\n  point O: (0, 0)\\n"
@@ -31,6 +33,7 @@ from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import Scene, Travel, build_scene
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.simulate.chain_run import ChainHistory
+from dynsolve.simulate.contact import Contact, on_circle
 from dynsolve.simulate.crosscheck import start_rate, travel_motion
 from dynsolve.simulate.equations import (
     NotSimulable,
@@ -78,6 +81,8 @@ class History:
     equilibrium: float | None
     # (q'', largest |q − (q'₀ t + ½ q'' t²)| over the largest |q|) where q'' is constant
     constant_acceleration: tuple[float, float] | None = None
+    contact: Contact | None = None  # a particle on a circular path: its normal force
+    missed: str = ""  # why the --until event was not met ("" when it was, or none asked)
 
     def columns(self) -> tuple[str, ...]:
         """The history's column names, with units."""
@@ -87,6 +92,8 @@ class History:
         for b in self.motion.bodies:
             names += [f"x_{b} [{length}]", f"y_{b} [{length}]", f"theta_{b} [rad]"]
             names += [f"vx_{b} [{length}/s]", f"vy_{b} [{length}/s]", f"omega_{b} [rad/s]"]
+        if self.contact is not None:
+            names.append(f"{self.contact.name} [{'lb' if self.system == 'FPS' else 'N'}]")
         energy = "ft*lb" if self.system == "FPS" else "J"
         return (*names, f"T [{energy}]", f"V [{energy}]", f"U_friction [{energy}]")
 
@@ -98,6 +105,8 @@ class History:
             row = [float(t), float(q), float(qd)]
             for p in motion.places(float(q)).values():
                 row += [p[0], p[1], p[2], p[3] * qd, p[4] * qd, p[5] * qd]
+            if self.contact is not None:
+                row.append(self.contact.normal(float(q), float(qd)))
             T = motion.kinetic(q, qd)
             row += [T, motion.energy(q, qd) - T, float(uf)]
             out.append(tuple(float(v) for v in row))
@@ -214,6 +223,45 @@ def slack_event(
     return Event(f"slack({name})", tension_per_mass, -1)
 
 
+LOST = re.compile(r"^\s*(?:lost\(\s*(?P<path>[A-Za-z_][A-Za-z_0-9]*)\s*\)|contact\s+lost)\s*$")
+
+
+def lost_event(text: str, contact: Contact | None, qd0: float, system: str) -> Event | None:
+    """``lost(PATH)`` (or ``contact lost``): the push N of a particle's circular path falls
+    through zero (:meth:`~dynsolve.simulate.contact.Contact.normal`); None when ``text``
+    names no such event. Refused when the path does not hold the particle at the start."""
+    found = LOST.match(text)
+    if not found:
+        return None
+    where = Position("--until", 1, 1)
+    asked = found["path"] or "the contact"
+    if contact is None:
+        raise SpecError(
+            f"lost({asked}) needs a lone particle on a circular path",
+            where,
+            hint="e.g. 'path dome: x^2 + y^2 = R^2', 'body block: particle, mass m, at (0, R)' "
+            "and --until 'lost(dome)'",
+        )
+    if found["path"] and found["path"] != contact.path:
+        raise SpecError(
+            f"no circular path '{found['path']}' under {contact.body}",
+            where,
+            hint=f"{contact.body} is on {contact.path}: --until 'lost({contact.path})'",
+        )
+    N0 = contact.normal(0.0, qd0)
+    if not N0 > 0:
+        force = "lb" if system == "FPS" else "N"
+        where_on = "inside" if contact.side > 0 else "outside"
+        raise SpecError(
+            f"{contact.name} = {N0:.6g} {force} at the start: {contact.path} does not hold "
+            f"{contact.body} there ({where_on} the circle), so there is no contact to lose",
+            where,
+            hint="start it where the path presses on it (a dome: below the speed √(g R) at "
+            "the top; a loop: fast enough at the bottom)",
+        )
+    return Event(f"lost({contact.path})", contact.normal, -1)
+
+
 def _numbers(values: dict) -> Callable[[object], float]:
     """A reader of an expression's value as a float (a scene's numbers put in)."""
     from dynsolve.numbers import real_value
@@ -229,7 +277,7 @@ def _numbers(values: dict) -> Callable[[object], float]:
 
 def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
     """The scene's equation of motion in its one coordinate (see the module's docstring)."""
-    travels = [t for t in scene.travels.values() if t.kind != "for"]
+    travels = [t for t in scene.travels.values() if t.kind not in ("for", "until")]
     scene = numeric_scene(scene, values)
     if travels:
         motion, _ = travel_motion(scene, travels[0], symbols, values, simplify=True)
@@ -249,6 +297,9 @@ def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
         if len(particles) == 1 and len(guides) == 1:
             what = f"distance of {name} along its surface at {guides[0].name}"
             return straight_line(scene, name, guides[0].tangent, symbols, values, what)
+    on_path = on_circle(scene, symbols, values)
+    if on_path is not None:
+        return on_path[0]
     why = f" ({reasons[0]})" if reasons else ""
     raise NotSimulable(
         "the scene has no one coordinate to simulate in" + why + ": simulate supports "
@@ -286,23 +337,37 @@ def simulate_spec(
     symbols = {g.name: g.symbol for g in givens}
     values = {g.symbol: g.value for g in givens if g.value is not None}
     scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
+    contact = None
     try:
-        motion = motion_of(scene, symbols, values)
+        guided = any(t.kind not in ("for", "until") for t in scene.travels.values())
+        on_path = None if guided else on_circle(numeric_scene(scene, values), symbols, values)
+        if on_path is not None:
+            motion, contact = on_path
+        else:
+            motion = motion_of(scene, symbols, values)
         qd0 = start_rate(motion, replace(scene, travels={}), values)
     except NotSimulable as exc:
         raise SpecError(str(exc), where, hint="see docs/simulate.md") from None
     events = [Event("max", lambda q, qd: qd, -1, False), Event("min", lambda q, qd: qd, 1, False)]
+    until = until or _travel_event(scene, contact)
+    stop = None
     if until:
-        stop = slack_event(until, scene, motion, symbols, values) or until_event(
-            until, motion, spec.system
+        stop = (
+            lost_event(until, contact, qd0, spec.system)
+            or slack_event(until, scene, motion, symbols, values)
+            or until_event(until, motion, spec.system)
         )
         events = [e for e in events if e.name != stop.name] + [stop]
+    if contact is not None and (stop is None or not stop.name.startswith("lost(")):
+        # a surface would let go here: shown, never passed over (the run holds it, a bead)
+        events.append(Event(f"{contact.name} = 0", contact.normal, 0, False))
     grid = np.linspace(0.0, t_end, samples)
     try:
         run = integrate(motion, 0.0, qd0, t_end, events, method, rtol, atol, t_eval=grid)
     except ValueError as exc:
         raise SpecError(str(exc), Position("--method", 1, 1), hint="see docs/simulate.md") from None
     run = _with_last(run)
+    missed = "" if stop is None or run.stopped_by else _missed(stop.name, run, contact, spec)
     period = _period(run.events)
     small, equilibrium = _small_oscillations(motion, run)
     constant = _constant_acceleration(motion, qd0, run)
@@ -318,6 +383,45 @@ def simulate_spec(
         small,
         equilibrium,
         constant,
+        contact,
+        missed,
+    )
+
+
+def _travel_event(scene: Scene, contact: Contact | None) -> str:
+    """The event a ``travel B: until …`` line names, as an until text ("" for none)."""
+    for travel in scene.travels.values():
+        if travel.kind == "until" and travel.until == "slack":
+            return f"slack({travel.until_name})"
+        if travel.kind == "until" and travel.until == "lost" and contact is not None:
+            return f"lost({contact.path})"
+    return ""
+
+
+def _missed(name: str, run: Run, contact: Contact | None, spec: Spec) -> str:
+    """Why the until event was not met: the run reached its end time first."""
+    end = float(run.t[-1]) if run.t.size else 0.0
+    text = f"the event '{name}' was not met by t = {end:.6g} s (the end time)"
+    if contact is None or not name.startswith("lost("):
+        return text
+    normals = [contact.normal(float(q), float(qd)) for q, qd in zip(run.q, run.qd, strict=True)]
+    force = "lb" if spec.system == "FPS" else "N"
+    turned = float(np.max(np.abs(run.q))) if run.q.size else 0.0
+    how = (
+        f"it hardly moves from where it starts (at most {turned:.2g} rad): at rest at an "
+        "equilibrium, it needs a nudge (a 'velocity' line)"
+        if turned <= 1e-6
+        else "N does not change: it never will"
+        if max(normals) - min(normals) <= 1e-9 * max(abs(n) for n in normals)
+        else "it goes round and round"
+        if turned >= 2 * math.pi
+        else "it swings back and forth below where it would leave"
+        if any(n for n in run.events if n[0] in ("max", "min"))
+        else "it has not got there yet: a longer --t-end may find it"
+    )
+    return (
+        f"contact with {contact.path} is never lost by t = {end:.6g} s: {contact.name} stays "
+        f"between {min(normals):.6g} and {max(normals):.6g} {force} ({how})"
     )
 
 
