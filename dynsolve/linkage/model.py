@@ -45,6 +45,7 @@ RATES = {
 }
 LINKAGE_LINES = frozenset(
     {"point", "bar", "joint", "slider", "omega", "alpha", "velocity", "acceleration", "branch"}
+    | {"method"}
     | {"gravity", "couple", "force", "wheel", "mesh"}
 )
 
@@ -149,6 +150,7 @@ class Linkage:
     loads: tuple[Load, ...] = ()
     wheels: Mapping[str, Wheel] = field(default_factory=dict)
     meshes: tuple[Mesh, ...] = ()
+    method: str = ""  # "ic": velocities by instantaneous centres; "" or "relative": v = v + ω × r
 
     def round(self, bar: str) -> bool:
         """Whether the bar is a wheel or a gear (its G and turning centre: its first point)."""
@@ -202,7 +204,7 @@ def read_linkage(spec: Spec) -> Linkage:
     loads: list[Load] = []
     wheels: dict[str, Wheel] = {}
     meshes: list[Mesh] = []
-    branch = ""
+    branch = method = ""
     declared: dict[str, tuple[int, int]] = {}
     statements = tuple(spec.scene or ())
     for stmt in statements:
@@ -212,8 +214,8 @@ def read_linkage(spec: Spec) -> Linkage:
                 f"a '{stmt.kind}' line cannot go in a linkage scene (one with bars)",
                 where,
                 hint="a linkage takes point, bar, joint, slider, omega, alpha, velocity, "
-                "acceleration, branch, gravity, couple and force lines (see docs/scene-mode.md, "
-                "Linkages)",
+                "acceleration, branch, method, gravity, couple and force lines (see "
+                "docs/scene-mode.md, Linkages)",
             )
         if stmt.kind == "point":
             if stmt.body:
@@ -251,6 +253,8 @@ def read_linkage(spec: Spec) -> Linkage:
             drives.append(_drive(stmt, reader, bars, fixed, where))
         elif stmt.kind == "branch":
             branch = stmt.word
+        elif stmt.kind == "method":
+            method = stmt.word
         elif stmt.kind in ("gravity", "couple", "force"):
             loads.append(_load(stmt, reader, bars, where))
         elif stmt.kind == "wheel":
@@ -302,6 +306,7 @@ def read_linkage(spec: Spec) -> Linkage:
         tuple(loads),
         wheels,
         tuple(meshes),
+        method,
     )
 
 

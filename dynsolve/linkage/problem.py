@@ -122,7 +122,18 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
     slots, directions = _slot_directions(linkage, r, taken, placed)
     givens += directions
     asked = {item.ref.function if item.ref else item.name for item in spec.finds}
-    levels = {"velocity": relative_motion(linkage, r, "velocity", slots=slots)}
+    if linkage.method == "ic":  # velocities by instantaneous centres (Hibbeler 16.6)
+        from dynsolve.linkage.centres import by_centres
+
+        placed = {g.symbol: g.value for g in givens if g.value is not None}
+        velocity, centres = by_centres(linkage, r, placed)
+        named = set().union(*(g.formula.free_symbols for g in centres if g.formula is not None))
+        givens = [replace(g, shown=True) if g.symbol in named else g for g in givens]
+        givens += centres
+        taken |= {g.name for g in centres}
+        levels = {"velocity": velocity}
+    else:
+        levels = {"velocity": relative_motion(linkage, r, "velocity", slots=slots)}
     kinetics = has_kinetics(linkage)
     released: tuple[str, ...] = ()
     if asked & set(ACCELERATIONS) or kinetics:
@@ -525,9 +536,41 @@ def cross_checks(
     (a chain released), each α against Lagrange's equations of the open chain."""
     return (
         _centre_checks(problem, values)
+        + _relative_velocity_check(problem, values)
         + _power_check(problem, values)
         + _lagrange_check(problem, values)
     )
+
+
+def _relative_velocity_check(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Velocities found by instantaneous centres, put into the relative-velocity equations
+    v_B = v_A + ω × r_B/A of every bar (the default method): each must hold."""
+    if problem.linkage.method != "ic":
+        return ()
+    level = problem.levels["velocity"]
+    relative = relative_motion(problem.linkage, problem.r, "velocity")
+    rates = {}
+    for point, (x, y) in relative.rate.items():
+        for symbol, expr in zip((x, y), level.rate[point], strict=True):
+            if isinstance(symbol, sympy.Symbol) and symbol in relative.unknowns:
+                rates[symbol] = expr
+    known = {**problem.system.knowns, **values}
+    worst, scale = 0.0, 0.0
+    for equation in relative.equations:
+        sides = [_full(side.xreplace(rates), known) for side in (equation.lhs, equation.rhs)]
+        try:
+            lhs, rhs = (float(sympy.N(side, 20)) for side in sides)
+        except TypeError:
+            return ()
+        worst, scale = max(worst, abs(lhs - rhs)), max(scale, abs(lhs), abs(rhs))
+    relative_error = worst / scale if scale else worst
+    detail = (
+        f"the velocities by instantaneous centres put into v_B = v_A + ω × r_B/A of every bar "
+        f"({len(relative.equations)} equations): largest relative difference {relative_error:.1e}"
+    )
+    return (Check("relative velocity", relative_error < 1e-9, detail),)
 
 
 def _centre_checks(

@@ -52,6 +52,7 @@ LINKAGE_ONLY = {  # scene lines of a linkage (dynsolve.linkage), as written
     "alpha": "alpha",
     "acceleration": "acceleration",
     "branch": "branch",
+    "method": "method",
     "wheel": "rolls …: radius",
     "mesh": "mesh",
 }

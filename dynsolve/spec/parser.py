@@ -114,6 +114,8 @@ _EXPECTED_WORDS = {
     "COLON": "':'",
     "PLUSMINUS": "'+-'",
     "DIRECTION": "a direction (cw, ccw, up, down, left, right)",
+    "METHOD": "a method: ic (instantaneous centres) or relative (v_B = v_A + ω × r_B/A)",
+    "BRANCH": "a branch: open or crossed",
     "RPAR": "')'",
     "LPAR": "'('",
     "RSQB": "']'",
@@ -1068,6 +1070,9 @@ class _Builder(Transformer_NonRecursive):
 
     def branch_stmt(self, c: list[Token]) -> SceneStmt:
         return self._stmt("branch", c[0], word=str(c[0]))
+
+    def method_stmt(self, c: list[Token]) -> SceneStmt:
+        return self._stmt("method", c[0], word=str(c[0]))
 
     def _sense(self, token: Token) -> None:
         if str(token) not in ("cw", "ccw"):
