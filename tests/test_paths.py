@@ -171,3 +171,33 @@ def test_n_t_axes_on_the_hump_agree_with_the_closed_form(tmp_path, x_1, v):
     assert N.value == pytest.approx(abs(1200 * (9.81 * math.cos(beta) - a_n)), rel=1e-9)
     assert a.value == pytest.approx(math.hypot(9.81 * math.sin(beta), a_n), rel=1e-9)
     assert solution.equations[1].note.startswith("ΣF_n = m a_n")
+
+
+CONSTANT = (Path(__file__).parent.parent / "problems" / "scenes" / "path_hump_nt.dyn").read_text()
+
+
+def test_a_car_at_constant_speed_is_held_to_it_by_a_force_along_the_road(tmp_path):
+    # newcomer report: 'moves … speed v' was solved as a coasting car (a_t = g sin β) where the
+    # statement says constant speed. With ', constant': a_t = 0, F = −m g sin β along t,
+    # N = m (g cos β − v²/ρ), a = a_n = v²/ρ (hand derivation in path_hump_nt.dyn)
+    file = tmp_path / "hump.dyn"
+    file.write_text(CONSTANT)
+    N, F, a = solve_file(file).answers
+    beta = math.atan(0.4)
+    a_n = 15**2 * math.cos(beta) ** 3 / 50
+    assert N.value == pytest.approx(1200 * (9.81 * math.cos(beta) - a_n), rel=1e-12)
+    assert F.value == pytest.approx(1200 * 9.81 * math.sin(beta), rel=1e-12)
+    assert a.value == pytest.approx(a_n, rel=1e-12)
+
+
+def test_a_car_too_fast_over_the_hump_is_told_the_road_would_have_to_pull_it(tmp_path):
+    # newcomer report: at 30 m/s, N = m (g cos β − v²/ρ) = 1200 (9.108 − 14.41) = −6359 N (by
+    # hand): the two-sided path holds the car down, which no road can; said, not silent
+    file = tmp_path / "hump.dyn"
+    file.write_text(CONSTANT.replace("v   = 15 m/s", "v   = 30 m/s").split("answers:")[0])
+    solution = solve_file(file)
+    (held,) = [a for a in solution.assumptions if "holds car down" in a.name]
+    assert "a road or surface under it cannot" in held.detail and "-6359 N" in held.detail
+    slow = tmp_path / "slow.dyn"
+    slow.write_text(CONSTANT.split("answers:")[0])
+    assert not [a for a in solve_file(slow).assumptions if "holds" in a.name]

@@ -105,6 +105,7 @@ class Support:
     two_sided: bool = False  # a guide (collar on a rod): the normal force may take either sign
     friction_sense: int | None = None  # ±1 along the tangent when sliding: opposes ``slides``
     normal_acceleration: sympy.Expr | int = 0  # a_P·n on a curved path: v²(K·n)
+    constant_speed: bool = False  # a particle driven along its path at constant speed
     at: str = ""  # the point's own name when ``name`` carries the body too (two ``at G``)
 
     @property
@@ -298,6 +299,7 @@ class Mover:
     speed: sympy.Expr
     line: int = 0
     column: int = 0
+    constant: bool = False  # ", constant": a_t = 0, held by a drive force along the path
 
 
 @dataclass(frozen=True)
@@ -1098,7 +1100,8 @@ def _mover(builder: _Builder, stmt: SceneStmt, paths: Mapping[str, Path]) -> Mov
         )
     assert stmt.value is not None
     speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
-    return Mover(stmt.name, paths[stmt.other], speed, stmt.line, stmt.column)
+    constant = stmt.word == "constant"
+    return Mover(stmt.name, paths[stmt.other], speed, stmt.line, stmt.column, constant)
 
 
 def _on_path(builder: _Builder, mover: Mover) -> Support:
@@ -1143,6 +1146,7 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
         column=mover.column,
         two_sided=True,
         normal_acceleration=tidy(-(mover.speed**2) * tHt / size),
+        constant_speed=mover.constant,
     )
 
 

@@ -18,7 +18,7 @@ from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
-from dynsolve.model.scene import Path, Scene, Vec, build_scene
+from dynsolve.model.scene import Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
@@ -1303,6 +1303,8 @@ def assess(
         if support.kind == "pin":
             continue
         N = real_value(formulation.reactions[f"N_{support.name}"][0], substitution)
+        if N is not None and support.two_sided and not _is_zero_expr(support.normal_acceleration):
+            checks += _path_side(scene, support, N, substitution)
         if N is not None and not support.two_sided:
             checks.append(
                 Assumption(
@@ -1873,3 +1875,32 @@ def direction_of(kind: str, value: float, axis: tuple[float, float] | None = Non
         sign = 1 if value > 0 else -1
         return direction_word(sign * axis[0], sign * axis[1])
     return ""
+
+
+def _is_zero_expr(expr: sympy.Expr | int) -> bool:
+    return (sympy.Integer(0) + expr).is_zero is True
+
+
+def _path_side(
+    scene: Scene, support: Support, N: float, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Assumption, ...]:
+    """Which way a curved path pushes its particle: a path takes either sign (a bead on a
+    wire, a car in a track), but a road under the particle only pushes it up. Said in words
+    whenever the path holds the particle down, so that a car too fast over a hump is not
+    answered as if the road could pull it without a word."""
+    if scene.gravity is None:
+        return ()
+    up = real_value(
+        -(support.normal[0] * scene.gravity[0] + support.normal[1] * scene.gravity[1]), values
+    )
+    if up is None or N * up >= 0:
+        return ()
+    return (
+        Assumption(
+            f"path {support.name} holds {support.body} down",
+            True,
+            f"N_{support.name} = {N:.4g} N pulls {support.body} down toward the path: a wire, a "
+            "track, a tube or the inside of a loop can; a road or surface under it cannot — on "
+            "one, it leaves the path (too fast for the curvature) and these answers do not hold",
+        ),
+    )

@@ -532,6 +532,8 @@ class _Writer:
             alpha = self.unknown(self.suffix("alpha", body.name), ANGULAR_ACCELERATION)
         if axes.rolling:  # a_C·t = 0: (a_G)_t = −α (k × r_C/G)·t
             along = tidy(-alpha * dot(_perp(_minus(support.point, body.G)), axes.t))
+        elif axes.a_n is not None and support.constant_speed:
+            along = sympy.Integer(0)  # driven at constant speed along the path: a_t = 0
         else:
             along = self.unknown(self.suffix("a_Gt", body.name), ACCELERATION)
         normal: sympy.Expr = sympy.Integer(0)
@@ -856,6 +858,8 @@ class _Writer:
     def _contact(self, support: Support) -> None:
         self._normal_and_friction(support)
         axes = self.inclines.get(support.body)
+        if support.constant_speed:
+            self._drive_along_path(support, axes)
         if axes is not None and axes.a_n is not None:
             return  # (a_G)_n = v²/ρ is built into the path's n–t axes
         a_P = self.point_acceleration(support.body, support.point)
@@ -922,6 +926,25 @@ class _Writer:
     def _static(self, support: Support) -> bool:
         """True when friction here is an unknown with a no-slip assumption."""
         return not support.smooth and self._sliding_sense(support) is None
+
+    def _drive_along_path(self, support: Support, axes: InclineAxes | None) -> None:
+        """A particle driven along its path at constant speed (a car's traction or brakes):
+        an unknown force F_PATH along the path, and a_t = 0 (on the path's n–t axes, built
+        in; in x–y, a constraint)."""
+        direction = axes.t if axes is not None else support.tangent
+        name = f"F_{support.name}"
+        force = self.unknown(name, FORCE)
+        self.reactions[name] = (force, direction)
+        self.add_force(
+            ForceTerm(
+                name, "traction", support.body, support.point, support.point_name, direction,
+                force, False,
+            )
+        )  # fmt: skip
+        if axes is None:
+            a_P = self.point_acceleration(support.body, support.point)
+            note = f"constant speed along the path {support.name}: a_t = 0"
+            self.constraint(dot(a_P, support.tangent), sympy.Integer(0), note)
 
     def _normal_and_friction(self, support: Support, point: Vec | None = None) -> None:
         where = point if point is not None else support.point
@@ -1049,14 +1072,15 @@ class _Writer:
         n_label = f"ΣF_n = m (a_G)_n {tag}"
         if axes.a_n is not None:
             t_label = f"ΣF_t = m a_t {tag}"
+            if _is_zero(along):
+                t_label = f"ΣF_t = m a_t = 0 (constant speed) {tag}"
             n_label = f"ΣF_n = m a_n, a_n = v²/ρ toward the centre of curvature {tag}"
         elif axes.normal_fixed:
             n_label = f"ΣF_n = m (a_G)_n = 0 (contact at {where} kept) {tag}"
         self.equation(sum_t, m * along, t_label)
         self.equation(sum_n, m * normal, n_label)
-        self.kinetic[body.name] = (("m α r",) if axes.rolling else ("m (a_G)_t",)) + (
-            () if axes.normal_fixed else ("m (a_G)_n",)
-        )
+        along_term = ("m α r",) if axes.rolling else ("m (a_G)_t",) * (not _is_zero(along))
+        self.kinetic[body.name] = along_term + (() if axes.normal_fixed else ("m (a_G)_n",))
 
     def _rotation(
         self, body: Body, kin: Kinematics, forces: list[ForceTerm], couples: list[CoupleTerm]

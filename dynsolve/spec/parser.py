@@ -918,8 +918,9 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("path", name, name=str(name), vectors=((lhs, rhs),))
 
     def moves_stmt(self, c: list[Any]) -> SceneStmt:
-        name, path, speed = c
-        return self._stmt("moves", name, name=str(name), other=str(path), value=speed)
+        name, path, speed, *constant = c
+        word = "constant" if constant and constant[0] is not None else ""
+        return self._stmt("moves", name, name=str(name), other=str(path), value=speed, word=word)
 
     def assume_stmt(self, c: list[Any]) -> SceneStmt:
         lhs, relation, rhs = c
