@@ -188,3 +188,30 @@ def test_a_rigid_body_between_two_states_gets_its_free_body_diagram_in_state_1()
     assert {"N_C", "F_C", "M"} <= names and any(f.kind == "weight" for f in disk.forces)
     assert any(f.kind == "spring" for f in disk.forces)
     assert disk.kinetic == () and "state 1" in disk.motion
+
+
+def test_a_spring_along_a_rough_floor_leaves_the_normal_force_alone():
+    # regression (newcomer report): refused with "the normal force changes along the path";
+    # by hand ½ m v² = ½ k δ² − μk m g δ = 16 − 0.7848 J, v = 3.90067 m/s
+    from dynsolve.pipeline import solve_file
+
+    path = Path(__file__).parent.parent / "problems" / "scenes" / "spring_launch_rough_floor.dyn"
+    (v,) = solve_file(path).answers
+    assert v.value == pytest.approx(math.sqrt(16 - 0.2 * 2 * 9.81 * 0.2), rel=1e-12)
+
+
+def test_a_spring_across_the_surface_is_still_refused_where_its_line_is(tmp_path):
+    # a spring pulling the block up off the floor changes N along the way: U_F = −μk N s
+    # would not hold, and the error points at the contact's line
+    from dynsolve.errors import SpecError
+    from dynsolve.pipeline import solve_file
+
+    text = (
+        Path(__file__).parent.parent / "problems" / "scenes" / "spring_launch_rough_floor.dyn"
+    ).read_text()
+    text = text.replace("point E: (0, 0)", "point E: (0, L_0)").split("answers:")[0]
+    file = tmp_path / "up.dyn"
+    file.write_text(text)
+    with pytest.raises(SpecError, match="the normal force would change") as error:
+        solve_file(file)
+    assert error.value.position is not None and error.value.position.line == 24

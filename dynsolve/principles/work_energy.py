@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.model.scene import CordState, Scene, Support, Travel, Vec
+from dynsolve.model.scene import CordState, Scene, Spring, Support, Travel, Vec
 from dynsolve.model.states import (
     Placement,
     Rates,
@@ -265,7 +265,7 @@ class _Work:
                 f"{support.name} would change sense on the way (U_F = −μk N s assumes one "
                 "sense): split the travel where it turns back"
             )
-        N = self.normal_force(support)
+        N = self.normal_force(support, step)
         self.by_name(
             f"F_{support.name}",
             -support.mu_k * N * path,
@@ -273,17 +273,27 @@ class _Work:
             "(constant along the straight path)",
         )
 
-    def normal_force(self, support: Support) -> sympy.Expr:
-        """N from ΣF_n = 0 for a body translating along a straight surface."""
+    def normal_force(self, support: Support, step: Vec) -> sympy.Expr:
+        """N from ΣF_n = 0 for a body translating along a straight surface by ``step``; a
+        spring to a fixed point on the line of the motion pushes or pulls along the surface
+        only, so it leaves N alone (a block launched by a spring on a rough floor)."""
         body = self.scene.bodies[support.body]
         n = support.normal
         others = [s for s in self.scene.supports if s.body == body.name and s is not support]
-        pulls = [s for s in self.scene.springs if body.name in (s.body, s.other)]
+        pulls = [
+            s
+            for s in self.scene.springs
+            if body.name in (s.body, s.other) and not self._along_the_motion(s, step)
+        ]
         if others or pulls or any(link.body == body.name for link in self.scene.links):
-            raise ValueError(
-                f"friction work at {support.name}: the normal force changes along the path "
-                "(another support, spring or link acts on the body)"
+            what = others[0].name if others else pulls[0].name if pulls else "a link"
+            error = ValueError(
+                f"friction work at {support.name}: the normal force would change along the "
+                f"path ({what} acts on {body.name} across the surface), so U_F = −μk N s "
+                "does not hold"
             )
+            error.line, error.column = support.line, support.column  # type: ignore[attr-defined]
+            raise error
         total = sympy.Integer(0)
         if self.scene.gravity is not None:
             total += body.mass * self.symbols["g"] * dot(self.scene.gravity, n)
@@ -295,6 +305,16 @@ class _Work:
         if number is not None and number < 0:
             raise ValueError(f"{body.name} would leave the surface at {support.name} (N < 0)")
         return N
+
+    def _along_the_motion(self, spring: Spring, step: Vec) -> bool:
+        """Whether ``spring`` runs from a fixed point along the line its end moves on (its
+        force then has no part across the surface, at every point of the travel)."""
+        if spring.other or spring.wound:
+            return False
+        start = spring.point
+        reach = spring.other_point[0] - start[0], spring.other_point[1] - start[1]
+        scale = _norm(reach) * _norm(step)
+        return _is_zero(reach[0] * step[1] - reach[1] * step[0], self.values, scale)
 
     def links(self) -> None:
         if self.scene.links:
