@@ -688,3 +688,31 @@ def test_scene_free_body_carries_the_given_sense_of_omega() -> None:
     assert pendulum.omega == "ccw"
     (crate,) = solve_file(seeds / "tr_hib_crate.dyn").free_body
     assert crate.omega == ""
+
+
+def test_a_tilted_rod_is_drawn_along_its_pin_and_without_a_centripetal_term_at_rest(tmp_path):
+    # newcomer report: a 2-m rod pinned at O, released from rest 30° below the horizontal, was
+    # drawn horizontal with O off the rod, and its kinetic diagram showed m ω² r_G with ω = 0.
+    # By hand O is at −(cos 30°, −sin 30°) × 1 m from G: the bar runs along (0.866, −0.5)
+    from dynsolve.pipeline import solve_text
+
+    spec = """\
+given:
+  m = 10 kg
+  L = 2 m
+  theta = 30 deg
+scene:
+  point O: (0, 0)
+  body rod: rod L, mass m, at (L/2*cos(theta), -L/2*sin(theta))
+  pin rod at O
+  gravity
+find: alpha = alpha(rod)
+"""
+    solution = solve_text(spec)
+    (rod,) = solution.free_body
+    assert "m ω² r_G" not in rod.kinetic and "m α r_G" in rod.kinetic
+    lines = pictures(render_latex(solution))["rod"]
+    (bar,) = [line for line in lines if "line width=2.4pt" in line]
+    (x0, y0), (x1, y1) = ((float(a), float(b)) for a, b in PAIR.findall(bar))
+    assert (x1 - x0, y1 - y0) == (pytest.approx(35 * math.cos(math.pi / 6), abs=0.02),
+                                  pytest.approx(-35 * 0.5, abs=0.02))  # fmt: skip

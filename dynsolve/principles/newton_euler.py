@@ -1118,9 +1118,14 @@ class _Writer:
         else:
             e_r = (tidy(r[0] / r_G_value), tidy(r[1] / r_G_value))
             e_n, e_t = (-e_r[0], -e_r[1]), _perp(e_r)
-            self.equation(_projected(forces, e_n), m * kin.omega**2 * r_G, f"ΣF_n = m ω² r_G {tag}")
+            n_label = f"ΣF_n = m ω² r_G {tag}"
+            at_rest = _is_zero(kin.omega)  # released from rest: no centripetal term to draw
+            if at_rest:
+                n_label = f"ΣF_n = m ω² r_G = 0 (ω = 0 at the instant) {tag}"
+            self.equation(_projected(forces, e_n), m * kin.omega**2 * r_G, n_label)
             self.equation(_projected(forces, e_t), m * kin.alpha * r_G, f"ΣF_t = m α r_G {tag}")
-            self.kinetic[body.name] = ("m ω² r_G", "m α r_G", "I_G α")
+            spin = () if at_rest else ("m ω² r_G",)
+            self.kinetic[body.name] = (*spin, "m α r_G", "I_G α")
         moment = _moment(forces, couples, pin.point)
         note = (
             f"ΣM_{pin_name} = I_{pin_name} α, I_{pin_name} = I_G + m r_G² {tag}"

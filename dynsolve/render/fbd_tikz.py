@@ -175,7 +175,11 @@ def _outline(body: FreeBody, footprint: Point | None, at: Callable[[Point], Poin
                 [hub] if shape in HUBBED else []
             )
         if shape == "rod":
-            return [f"\\draw[line width=2.4pt,line cap=round] ({num(-hx)},0) -- ({num(hx)},0);"]
+            ux, uy = _rod_axis(body)
+            return [
+                f"\\draw[line width=2.4pt,line cap=round] {_xy((-hx * ux, -hx * uy))} -- "
+                f"{_xy((hx * ux, hx * uy))};"
+            ]
         return [f"\\draw[very thick] ({num(-hx)},{num(-hy)}) rectangle ({num(hx)},{num(hy)});"]
     points = [at((_finite(f.x), _finite(f.y))) for f in body.forces if f.kind != "couple"]
     reach = max((math.hypot(*p) for p in points), default=0.0)
@@ -190,6 +194,29 @@ def _outline(body: FreeBody, footprint: Point | None, at: Callable[[Point], Poin
         f"\\draw[very thick,rounded corners=2mm] ({num(-hx)},{num(-hy)}) rectangle "
         f"({num(hx)},{num(hy)});"
     ]
+
+
+def _rod_axis(body: FreeBody) -> Point:
+    """A rod's direction on the page: along its force points off G where they all lie on
+    one line through G (a pin at its end, a load at the other), else horizontal.
+
+    >>> from dynsolve.results import ForceRow, FreeBody
+    >>> pin = ForceRow("O_n", "reaction", "O", -0.866, 0.5, "", 1.0, 0.0, False, "")
+    >>> rod = FreeBody("rod", "rod", (2.0,), "rotation about O", (pin,), (), "")
+    >>> tuple(round(c, 3) for c in _rod_axis(rod))
+    (0.866, -0.5)
+    """
+    points = [(_finite(f.x), _finite(f.y)) for f in body.forces if f.kind != "couple"]
+    off = [p for p in points if math.hypot(*p) > 1e-9 * (1.0 + max(map(abs, p)))]
+    if not off:
+        return (1.0, 0.0)
+    far = max(off, key=lambda p: math.hypot(*p))
+    unit = unit_of(*far)
+    assert unit is not None
+    for p in off:
+        if abs(p[0] * unit[1] - p[1] * unit[0]) > 1e-6 * math.hypot(*far):
+            return (1.0, 0.0)  # off the line through G: not a rod's axis
+    return unit if unit[0] > 0 or (unit[0] == 0 and unit[1] > 0) else (-unit[0], -unit[1])
 
 
 def _centre() -> list[str]:
