@@ -716,3 +716,29 @@ find: alpha = alpha(rod)
     (x0, y0), (x1, y1) = ((float(a), float(b)) for a, b in PAIR.findall(bar))
     assert (x1 - x0, y1 - y0) == (pytest.approx(35 * math.cos(math.pi / 6), abs=0.02),
                                   pytest.approx(-35 * 0.5, abs=0.02))  # fmt: skip
+
+
+def test_a_pins_x_and_y_components_are_found_where_its_reactions_are_n_and_t():
+    # newcomer report: 'O_x' was "not a quantity of this scene" for a pendulum rod.
+    # By hand (rod 10 kg, 2 m, released 30° below the horizontal): O_n = m g sin 30° = 49.05 N
+    # toward O, O_t = m g cos 30°/4 = 21.239 N; projected: O_x = 31.86 N left, O_y = 42.92 N up
+    from dynsolve.pipeline import solve_text
+
+    spec = """\
+given:
+  m = 10 kg
+  L = 2 m
+  theta = 30 deg
+scene:
+  point O: (0, 0)
+  body rod: rod L, mass m, at (L/2*cos(theta), -L/2*sin(theta))
+  pin rod at O
+  gravity
+find: O_x [N], O_y [N]
+"""
+    O_x, O_y = solve_text(spec).answers
+    c, s = math.cos(math.pi / 6), 0.5
+    O_n, O_t = 10 * 9.81 * s, 10 * 9.81 * c / 4
+    # e_n = (−cos 30°, sin 30°) toward O; e_t ⊥ (cw α), O_t along −e_t here
+    assert (O_x.value, O_x.direction) == (pytest.approx(O_n * c - O_t * s, rel=1e-12), "left")
+    assert (O_y.value, O_y.direction) == (pytest.approx(O_n * s + O_t * c, rel=1e-12), "up")

@@ -989,6 +989,15 @@ def _quantity(
             sympy.Add(*(s * a[1] for s, a in parts)),
         )
         return target("vector", Dim(1, 1, -2), vector=vector)
+    pin, _, axis_name = function.rpartition("_")
+    if axis_name in ("x", "y") and any(s.kind == "pin" and s.name == pin for s in scene.supports):
+        # O_x, O_y of a pin whose reactions are written along n and t (G off the pin):
+        # the components the textbook also asks for, projected from O_n and O_t
+        parts = [v for k, v in formulation.reactions.items() if k.startswith(f"{pin}_")]
+        index = 0 if axis_name == "x" else 1
+        component = sympy.Add(*(s * a[index] for s, a in parts))
+        axis = (sympy.Integer(1), sympy.Integer(0)) if index == 0 else (0, 1)
+        return target("along", Dim(1, 1, -2), tidy(component), axis=axis)
     if function in symbols and function in dims:
         kind = "rotation" if function.startswith(_ROTATION) else "signed"
         return target(kind, dims[function], symbols[function])
