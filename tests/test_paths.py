@@ -201,3 +201,13 @@ def test_a_car_too_fast_over_the_hump_is_told_the_road_would_have_to_pull_it(tmp
     slow = tmp_path / "slow.dyn"
     slow.write_text(CONSTANT.split("answers:")[0])
     assert not [a for a in solve_file(slow).assumptions if "holds" in a.name]
+
+
+def test_a_path_with_a_bare_coefficient_is_told_to_give_it_a_unit(tmp_path):
+    # newcomer report: 'y = 0.0025*x^2' was refused with "a missing moment arm (length)?"
+    file = tmp_path / "dip.dyn"
+    file.write_text(HUMP.format(x_1="20 m").replace("y = -x^2/(2*c)", "y = 0.0025*x^2"))
+    with pytest.raises(DimensionError) as error:
+        solve_file(file)
+    assert "a path's coefficients carry units" in error.value.hint
+    assert "k = 0.0025 1/m" in error.value.hint

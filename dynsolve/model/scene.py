@@ -1069,7 +1069,16 @@ def _path(builder: _Builder, stmt: SceneStmt) -> Path:
     _known_names(builder, (lhs, rhs), symbols)
     probe = EquationStmt(lhs, "=", rhs, "", "", stmt.line, stmt.column)
     dims = {**builder.dims, "x": LENGTH, "y": LENGTH, "pi": Dim()}
-    check_dimensions((probe,), dims, builder.file)  # x and y are lengths
+    try:
+        check_dimensions((probe,), dims, builder.file)  # x and y are lengths
+    except DimensionError as error:  # y = 0.0025*x^2: the number's unit is not written
+        raise DimensionError(
+            error.message,
+            error.position,
+            hint="x and y are lengths, so a path's coefficients carry units: give them as "
+            "givens, e.g. 'k = 0.0025 1/m' and 'path road: y = k*x^2', or 'y = x^2/(2*c)' "
+            "with 'c = 200 m'",
+        ) from None
     left, right = to_sympy(lhs, symbols), to_sympy(rhs, symbols)
     explicit = right if left == y and not right.has(y) else None
     return Path(stmt.name, left - right, x, y, explicit, stmt.line, stmt.column)
