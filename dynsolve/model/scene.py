@@ -1073,7 +1073,7 @@ def _path(builder: _Builder, stmt: SceneStmt) -> Path:
         check_dimensions((probe,), dims, builder.file)  # x and y are lengths
     except DimensionError as error:  # y = 0.0025*x^2: the number's unit is not written
         raise DimensionError(
-            error.message,
+            error.message.removeprefix(f"line {stmt.line}: "),
             error.position,
             hint="x and y are lengths, so a path's coefficients carry units: give them as "
             "givens, e.g. 'k = 0.0025 1/m' and 'path road: y = k*x^2', or 'y = x^2/(2*c)' "
