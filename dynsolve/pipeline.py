@@ -856,7 +856,9 @@ class _View:
         placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
         shown = formula.xreplace(placeholders)
         text = sympy.sstr(shown).replace("**", "^")
-        latex = sympy.latex(shown, symbol_names={placeholders[s]: n for s, n in names.items()})
+        latex = sympy.latex(  # numbers side by side need their dot: (-6.372) \cdot 10
+            shown, symbol_names={placeholders[s]: n for s, n in names.items()}, mul_symbol="dot"
+        )
         for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
             text = text.replace(placeholders[symbol].name, names[symbol])
         return text, latex

@@ -376,3 +376,12 @@ def test_repo_problem_compiles(spec: Path, tmp_path: Path, pdflatex: str) -> Non
     tex = render_latex(solution)
     assert_document(tex, solution)
     compile_pdf(tex, tmp_path, pdflatex)
+
+
+def test_numbers_put_in_a_product_keep_their_dots():
+    # newcomer report: the sheet printed "(−6.372) 10 · 1" for α m r_G with the numbers in
+    from dynsolve.pipeline import solve_text
+
+    spec = "given:\n  m = 10 kg\n  a = -2 m/s^2\nequations:\n  F = m*a\nfind: F\n"
+    tex = render_latex(solve_text(spec))
+    assert "(-2) \\cdot 10" in tex or "10 \\cdot (-2)" in tex
