@@ -83,6 +83,24 @@ def tidy(expr: sympy.Expr | int) -> sympy.Expr:
     return best
 
 
+def abs_resolved(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with each |x| written as x or −x by the sign of x in ``values`` (a length
+    |E − P| = L_0 − δ where L_0 > δ), then tidied; an |x| whose sign is not known is kept.
+
+    >>> L, d = sympy.symbols("L_0 delta", positive=True)
+    >>> abs_resolved(sympy.Abs(L - d) - L, {L: 1, d: sympy.Rational(1, 5)})
+    -delta
+    """
+
+    def signed(argument: sympy.Expr) -> sympy.Expr:
+        value = real_value(argument, values)
+        if value is None or value == 0:
+            return sympy.Abs(argument)
+        return argument if value > 0 else -argument
+
+    return tidy((sympy.Integer(0) + expr).replace(sympy.Abs, signed))
+
+
 def _size(expr: sympy.Expr) -> tuple[int, int]:
     """How long a form prints, then how many operations it has: the smaller, the tidier."""
     return len(sympy.sstr(expr)), sympy.count_ops(expr)

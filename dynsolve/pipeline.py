@@ -28,7 +28,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
 from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import abs_resolved, real_value, tidy
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
@@ -490,7 +490,7 @@ def _limit_remarks(
             confirmed[case.given] = _at_zero(problem.spec, case.given)
         again = confirmed[case.given]
         row = next((a for a in again.answers if a.name == case.answer), None) if again else None
-        limit = _signs_resolved(case.limit, view.knowns)
+        limit = abs_resolved(case.limit, view.knowns)
         if sympy.count_ops(limit) > LIMIT_OPS:
             continue  # a limit too long to tell the reader anything at a glance
         number = real_value(limit, view.knowns)
@@ -514,23 +514,6 @@ def _limit_remarks(
 
 
 LIMIT_OPS = 24  # a limit case's formula longer than this is not remarked
-
-
-def _signs_resolved(formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
-    """|x| written as x or −x by the sign of x in the problem's numbers, then tidied.
-
-    >>> L, d = sympy.symbols("L_0 delta", positive=True)
-    >>> _signs_resolved(sympy.Abs(L - d), {L: 1, d: sympy.Rational(1, 5)})
-    L_0 - delta
-    """
-
-    def signed(argument: sympy.Expr) -> sympy.Expr:
-        value = real_value(argument, values)
-        if value is None or value == 0:
-            return sympy.Abs(argument)
-        return argument if value > 0 else -argument
-
-    return tidy(formula.replace(sympy.Abs, signed))
 
 
 def _at_zero(spec: Spec, given: str) -> Solution | None:

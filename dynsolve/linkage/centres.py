@@ -45,7 +45,7 @@ from dynsolve.linkage.relations import Level
 from dynsolve.model.scene import Vec
 from dynsolve.modes.equation_mode import GivenInfo
 from dynsolve.names import pretty
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import abs_resolved, real_value, tidy
 from dynsolve.system import Equation
 from dynsolve.units import Dim
 
@@ -78,7 +78,7 @@ def by_centres(
         """r_P/IC of ``bar``, named the first time it is used."""
         if (point, bar) not in distances:
             rho = _minus(r[point], exact[bar])  # the IC's own formula: r_A/IC = x_B
-            formula = _without_abs(tidy(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2)), values)
+            formula = abs_resolved(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2), values)
             distances[(point, bar)] = _named(
                 f"r_{point}_{bar}", formula, values, rows, f"{point} to the IC of {bar}"
             )
@@ -260,18 +260,6 @@ def _named(
     rows.append(GivenInfo(name, symbol, value, LENGTH, None, note, formula, shown))
     values[symbol] = value
     return symbol
-
-
-def _without_abs(formula: sympy.Expr, values: Mapping) -> sympy.Expr:
-    """|x| written as x or −x by the sign of x at the instant (r_A/IC = x_B, not Abs(x_B))."""
-
-    def signed(argument: sympy.Expr) -> sympy.Expr:
-        value = real_value(argument, values)
-        if value is None or value == 0:
-            return sympy.Abs(argument)
-        return argument if value > 0 else -argument
-
-    return formula.replace(sympy.Abs, signed)
 
 
 def _minus(a: Vec, b: Vec) -> Vec:

@@ -151,21 +151,39 @@ class Spring:
     # an elastic cord's state assumed where its stretch's sign is not known before solving
     # (an unknown extent): taut (True) or slack; checked against the answer, and switched
     taut: bool | None = None
+    # a spring the body rests against, not fixed to it: no force while longer than
+    # unstretched (``taut`` then means in contact, compressed)
+    compression_only: bool = False
+
+    @property
+    def one_way(self) -> int:
+        """+1 for an elastic cord (acts while s > 0), −1 for a spring that only pushes (acts
+        while s < 0), 0 for a plain spring."""
+        return 1 if self.tension_only else -1 if self.compression_only else 0
+
+    @property
+    def acting_word(self) -> str:
+        """What the one-way spring is called in messages."""
+        return "elastic cord" if self.tension_only else "spring"
 
     def stretch(
         self, s: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], end: bool = False
     ) -> sympy.Expr:
-        """The stretch that acts: ``s`` itself, or for a tension-only spring max(s, 0)
-        (a slack elastic cord pushes nothing and stores no energy); ValueError when the
-        sign of ``s`` cannot be told, except at the ``end`` of a travel where the cord's
-        state is assumed (``taut``, checked once solved).
+        """The stretch that acts: ``s`` itself; for a tension-only spring max(s, 0) (a slack
+        elastic cord pushes nothing and stores no energy), for a compression-only one
+        min(s, 0) (a spring the body has left pulls nothing back); ValueError when the sign of
+        ``s`` cannot be told, except at the ``end`` of a travel where the state is assumed
+        (``taut``: acting, checked once solved).
 
         >>> k, L0 = sympy.Integer(800), sympy.Integer(15)
         >>> cord = Spring("S", "b", (0, 0), "", (0, 0), k, L0, tension_only=True)
         >>> cord.stretch(sympy.Integer(-15), {}), cord.stretch(sympy.Integer(5), {})
         (0, 5)
+        >>> pad = Spring("S", "b", (0, 0), "", (0, 0), k, L0, compression_only=True)
+        >>> pad.stretch(sympy.Integer(-15), {}), pad.stretch(sympy.Integer(5), {})
+        (-15, 0)
         """
-        if not self.tension_only:
+        if not self.one_way:
             return s
         from dynsolve.solver.roots import sign_of
 
@@ -178,12 +196,13 @@ class Spring:
                 return sympy.Integer(0)
             if end and self.taut is not None:  # assumed, and checked once solved
                 return s if self.taut else sympy.Integer(0)
+            state = "stretched (L > L0)" if self.tension_only else "compressed (L < L0)"
             raise ValueError(
-                f"whether the elastic cord {self.name} is stretched (L > L0) cannot be told "
-                "before solving (it depends on symbolic givens or an unknown extent): give "
-                "them values, or use a plain spring"
+                f"whether the {self.acting_word} {self.name} is {state} cannot be told before "
+                "solving (it depends on symbolic givens or an unknown extent): give them "
+                "values, or use a plain spring"
             ) from None
-        return s if sign > 0 else sympy.Integer(0)
+        return s if sign * self.one_way > 0 else sympy.Integer(0)
 
 
 @dataclass(frozen=True)
@@ -197,16 +216,24 @@ class CordState:
     taut: bool
     state: int = 2  # the state at the travel's end
     line: int = 0  # the spring's line
+    sign: int = 1  # +1 an elastic cord (acts while s > 0), −1 a push-only spring (s < 0)
 
     def branch(self) -> Constraint:
-        """The root the assumed state keeps: stretched (s > 0) or not (s ≤ 0)."""
+        """The root the assumed state keeps: acting (s > 0 for a cord, s < 0 for a
+        push-only spring) or not."""
         from dynsolve.system import Constraint
 
-        relation = sympy.Gt(self.stretch, 0) if self.taut else sympy.Le(self.stretch, 0)
-        state = "taut" if self.taut else "slack"
+        acting = self.sign * self.stretch
+        relation = sympy.Gt(acting, 0) if self.taut else sympy.Le(acting, 0)
+        state = self.words[0] if self.taut else self.words[1]
         return Constraint(
             relation, f"{self.name} {state} at state {self.state} (assumed)", self.line
         )
+
+    @property
+    def words(self) -> tuple[str, str]:
+        """The state acting and not, in words: taut/slack, or in contact/clear."""
+        return ("taut", "slack") if self.sign > 0 else ("in contact", "clear")
 
 
 @dataclass(frozen=True)
@@ -762,6 +789,7 @@ def build_scene(
                 free = builder.value(stmt.props[1].values[0], LENGTH, "an unstretched length")
                 wound = any(p.key == "wound" for p in stmt.props)
                 tension_only = any(p.key == "tension_only" for p in stmt.props)
+                compression_only = any(p.key == "compression_only" for p in stmt.props)
                 springs.append(
                     Spring(
                         stmt.name,
@@ -775,6 +803,7 @@ def build_scene(
                         stmt.column,
                         wound,
                         tension_only,
+                        compression_only=compression_only,
                     )
                 )
         elif stmt.kind in ("force", "couple"):

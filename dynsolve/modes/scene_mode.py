@@ -451,11 +451,21 @@ def _state_unknowns(spec: Spec, symbols: Mapping[str, sympy.Symbol]) -> dict[sym
             and (value.text in asked or value.text in stops)
         ):
             extent = stmt.kind == "travel" and stmt.word == ""  # a distance may be 0
+            if extent and value.text in stops and _from_rest(spec, stmt.body):
+                extent = False  # from rest until it stops: d = 0 (not moving) is no answer
             sign = {"nonnegative": True} if extent else {"positive": True}
             if any(p.key == "until" for p in stmt.props):
                 sign = {"real": True}  # its sign is checked: the event comes after the start
             found[sympy.Symbol(value.text, **sign)] = dim
     return found
+
+
+def _from_rest(spec: Spec, body: str) -> bool:
+    """Whether ``body`` starts at rest in a single stage: no velocity or ω given to it and
+    no impact before its travel."""
+    scene = spec.scene or ()
+    moving = any(s.kind in ("velocity", "omega") and s.body == body for s in scene)
+    return not moving and not any(s.kind in ("impact", "pivot") for s in scene)
 
 
 def _stopping_distances(spec: Spec) -> list[object]:
@@ -491,7 +501,7 @@ def _cord_states(scene: Scene, slipping: Mapping[str, int]) -> Scene:
     """Each elastic cord assumed taut at the end of a travel whose extent is unknown, or
     slack where a solve found it so (``slipping["taut:S"]`` = −1)."""
     springs = tuple(
-        replace(s, taut=slipping.get(f"taut:{s.name}", 1) > 0) if s.tension_only else s
+        replace(s, taut=slipping.get(f"taut:{s.name}", 1) > 0) if s.one_way else s
         for s in scene.springs
     )
     return replace(scene, springs=springs)
@@ -1444,19 +1454,27 @@ def _cord_checks(
         name, taut, k = cord.name, cord.taut, cord.state
         s = real_value(cord.stretch, substitution)
         if s is None and taut and not cord.stretch.free_symbols <= set(substitution):
-            detail = f"no root keeps it stretched (s{k} > 0): it is slack there; re-solved so"
-            checks.append(Assumption(f"elastic cord {name} taut at state {k}", False, detail))
+            on, off = cord.words
+            what = "elastic cord" if cord.sign > 0 else "spring"
+            relation = "s > 0" if cord.sign > 0 else "s < 0"
+            detail = (
+                f"no root keeps it {on} ({relation} at state {k}): it is {off} there; re-solved so"
+            )
+            checks.append(Assumption(f"{what} {name} {on} at state {k}", False, detail))
             switched[f"taut:{name}"] = -1
             continue
         if s is None:
             continue
-        holds = s > 0 if taut else s <= 0
+        acting = cord.sign * s > 0
+        holds = acting if taut else not acting
+        what = "elastic cord" if cord.sign > 0 else "spring"
+        on, off = cord.words
         detail = f"stretch at state {k} s = {s:.4g}" + (" > 0" if s > 0 else " ≤ 0")
         if not holds:
-            detail += f": it is {'slack' if taut else 'stretched'} there; re-solved so"
+            detail += f": it is {off if taut else on} there; re-solved so"
             switched[f"taut:{name}"] = -1 if taut else 1
-        state = "taut" if taut else "slack"
-        checks.append(Assumption(f"elastic cord {name} {state} at state {k}", holds, detail))
+        state = on if taut else off
+        checks.append(Assumption(f"{what} {name} {state} at state {k}", holds, detail))
     return tuple(checks), switched
 
 

@@ -67,6 +67,9 @@ def speed_by_integration(
             pull = sympy.Piecewise((pull, current > spring.unstretched), (0, True))
             taut = dot(to_end, to_end) - spring.unstretched**2  # zero where it tightens
             kinks.append(taut)
+        elif spring.compression_only:  # a spring pushes only while compressed
+            pull = sympy.Piecewise((pull, current < spring.unstretched), (0, True))
+            kinks.append(dot(to_end, to_end) - spring.unstretched**2)  # where it is left
         forces.append((pull * to_end[0], pull * to_end[1]))
     for load in scene.loads:
         if load.body == body_name and load.kind == "force":

@@ -731,6 +731,15 @@ class _Writer:
                 )
             )
             return  # no force (its direction may not even exist: ends together)
+        if spring.compression_only and stretch == 0:
+            self.notes.append(
+                (
+                    f"spring {spring.name}",
+                    f"clear: its length {sympy.sstr(length)} is not less than its unstretched "
+                    f"length {sympy.sstr(spring.unstretched)}, so it pushes nothing",
+                )
+            )
+            return
         force = spring.k * stretch  # tension positive: pulls the ends together
         self.add_force(
             ForceTerm(

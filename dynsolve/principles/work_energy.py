@@ -36,7 +36,7 @@ from dynsolve.model.states import (
     state_change,
     wound_after,
 )
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import abs_resolved, real_value, tidy
 from dynsolve.principles.newton_euler import dot
 from dynsolve.system import Equation
 
@@ -66,6 +66,27 @@ class Energy:
     # the equation's terms as the textbook lists them: ("T1", T1), each ("U_… = …", U), ("T2", T2)
     terms: tuple[tuple[str, sympy.Expr], ...] = ()
     cords: tuple[CordState, ...] = ()  # elastic cords whose state at state 2 was assumed
+
+
+def _side_kept(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """A spring's length |E − P₂| at the end of a travel of unknown extent, written with
+    the sign its end had at the start (the unknowns at 0: not moved yet): a spring's end
+    does not pass through its anchor, so the root beyond it (the block through the wall)
+    is not a root of the equation at all.
+
+    >>> d = sympy.Symbol("d", nonnegative=True)
+    >>> _side_kept(sympy.Abs(sympy.Rational(3, 5) - d), {})
+    3/5 - d
+    """
+
+    def signed(argument: sympy.Expr) -> sympy.Expr:
+        unknown = {s: sympy.Integer(0) for s in argument.free_symbols if s not in known}
+        value = real_value(argument.xreplace(unknown), known) if unknown else None
+        if value is None or value == 0:
+            return sympy.Abs(argument)
+        return argument if value > 0 else -argument
+
+    return tidy(expr.replace(sympy.Abs, signed))
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -172,14 +193,19 @@ class _Work:
                 how = "from the positions of its ends"
             end = self.moved(spring.other, spring.other_point) if spring.other else None
             end = end or spring.other_point
-            s1 = _length(spring.point, spring.other_point) - spring.unstretched
-            s2 = _length(start, end) - spring.unstretched
-            if spring.tension_only:  # an elastic cord stores energy only while stretched
+            known = {**self.scene.values, **self.values}  # |E − P| as E − P where its sign shows
+            s1 = abs_resolved(_length(spring.point, spring.other_point) - spring.unstretched, known)
+            s2 = _side_kept(abs_resolved(_length(start, end) - spring.unstretched, known), known)
+            if spring.one_way:  # an elastic cord stores energy only while stretched, a
+                # push-only spring only while compressed
                 values = {**self.scene.values, **self.values}
                 try:
                     spring.stretch(s2, values)
-                except ValueError:  # not known before solving: assumed (taut), then checked
-                    state = CordState(spring.name, tidy(s2), bool(spring.taut), line=spring.line)
+                except ValueError:  # not known before solving: assumed (acting), then checked
+                    state = CordState(
+                        spring.name, tidy(s2), bool(spring.taut), line=spring.line,
+                        sign=spring.one_way,
+                    )  # fmt: skip
                     self.cords.append(state)
                 s1 = spring.stretch(s1, values)
                 s2 = spring.stretch(s2, values, end=True)

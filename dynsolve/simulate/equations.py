@@ -298,6 +298,8 @@ def _applied(
         pull = spring.k * (length - spring.unstretched) / length
         if spring.tension_only:  # no force (nor direction, at zero length) while slack
             pull = sympy.Piecewise((pull, length > spring.unstretched), (0, True))
+        elif getattr(spring, "compression_only", False):  # none once the body leaves it
+            pull = sympy.Piecewise((pull, length < spring.unstretched), (0, True))
         sense = 1 if spring.body == body else -1
         fx += sense * pull * d[0]
         fy += sense * pull * d[1]
@@ -306,7 +308,9 @@ def _applied(
 
 def _acting(spring: object, s: sympy.Expr) -> sympy.Expr:
     """The stretch that acts along the motion: for an elastic cord (tension only) none
-    while it is slack."""
+    while it is slack, for a push-only spring none once the body has left it."""
+    if getattr(spring, "compression_only", False):
+        return sympy.Piecewise((s, s < 0), (0, True))
     if not getattr(spring, "tension_only", False):
         return s
     return sympy.Piecewise((s, s > 0), (0, True))

@@ -834,8 +834,10 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def spring_stmt(self, c: list[Any]) -> SceneStmt:
-        tension_only = isinstance(c[-1], Token) and c[-1].type == "TENSION"
-        c = c[:-1] if tension_only else c
+        one_way = c[-1].type if isinstance(c[-1], Token) else ""
+        one_way = one_way if one_way in ("TENSION", "COMPRESSION") else ""
+        tension_only = one_way == "TENSION"
+        c = c[:-1] if one_way else c
         wound = isinstance(c[-1], Token) and c[-1].type == "WOUND"
         name, body, location, other, *rest = c[:-1] if wound else c
         other_location = rest[0] if len(rest) == 3 else None
@@ -843,6 +845,8 @@ class _Builder(Transformer_NonRecursive):
         extra = (Prop("wound", line=self.line, column=self.offset + 1),) if wound else ()
         if tension_only:  # an elastic cord: it pulls, never pushes
             extra += (Prop("tension_only", line=self.line, column=self.offset + 1),)
+        elif one_way:  # a spring the body only rests against: it pushes, never pulls
+            extra += (Prop("compression_only", line=self.line, column=self.offset + 1),)
         return self._stmt(
             "spring",
             name,
