@@ -257,11 +257,21 @@ def _energy_terms(
     if speeds:  # the notes' "kinematic relation: v_O = r ω = 0.4 ω", just before T2
         terms = (*terms[:-1], *speeds, terms[-1])
     rows = tuple(
-        (label, expr, speed_unit if label.startswith("v_G") else energy_unit)
+        (label, expr, _energy_row_unit(label, speed_unit, energy_unit, problem.spec.system))
         for label, expr in terms
     )
     values = {**problem.system.knowns, **outcome.values}
     return energy_rows(_View(problem, outcome, {}, options), rows, values)
+
+
+def _energy_row_unit(label: str, speed: str, energy: str, system: str) -> str:
+    """The unit of a work–energy table row: a speed (v_G), an angular velocity (ω₂) or an
+    energy."""
+    if label.startswith("v_G"):
+        return speed
+    if label.startswith("omega_2"):
+        return natural_unit(Dim(0, 0, -1), system)
+    return energy
 
 
 def _energy_terms_3d(
@@ -321,6 +331,13 @@ def _kinematic_relations(problem: SceneProblem) -> tuple[tuple[str, sympy.Expr],
             continue
         name = "v_G" if len(speeds) == 1 else f"v_G_{body}"
         found.append((f"{name} = speed of G of {body} in state 2 (kinematic relation)", speed))
+    spins = problem.formulation.spins
+    for body, spin in spins.items():  # a disk rolling: ω₂ = v₂/r, before T2 uses it
+        spin = sympy.Integer(0) + spin
+        if spin.is_Symbol or not spin.free_symbols & set(problem.system.unknowns):
+            continue
+        name = "omega_2" if len(spins) == 1 else f"omega_2_{body}"
+        found.append((f"{name} = ω of {body} in state 2, ccw + (kinematic relation)", spin))
     return tuple(found)
 
 
