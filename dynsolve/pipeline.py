@@ -442,10 +442,7 @@ def _remarks(
 
     if options.mode != "exact" or outcome.status != "solved":
         return ()
-    formulas: dict[sympy.Symbol, sympy.Expr] = {}
-    for block in outcome.blocks:
-        if block.method != "numeric":
-            formulas.update(block.formulas)
+    formulas = _derived_formulas(outcome)
     derived = {g.symbol: g.formula for g in problem.givens if g.formula is not None}
     used = set().union(
         *(e.lhs.free_symbols | e.rhs.free_symbols for e in problem.system.equations),
@@ -472,6 +469,16 @@ def _remarks(
     )
 
 
+def _derived_formulas(outcome: Outcome) -> dict[sympy.Symbol, sympy.Expr]:
+    """Each unknown's formula from the blocks solved symbolically (a block solved in
+    floating point has lost its letters: its unknowns are left out)."""
+    formulas: dict[sympy.Symbol, sympy.Expr] = {}
+    for block in outcome.blocks:
+        if block.method != "numeric":
+            formulas.update(block.formulas)
+    return formulas
+
+
 def _limit_remarks(
     problem: SolvableProblem, outcome: Outcome, options: SolveOptions, view: _View
 ) -> tuple[LimitRemark, ...]:
@@ -484,10 +491,7 @@ def _limit_remarks(
 
     if options.mode != "exact" or outcome.status != "solved":
         return ()
-    formulas: dict[sympy.Symbol, sympy.Expr] = {}
-    for block in outcome.blocks:
-        if block.method != "numeric":
-            formulas.update(block.formulas)
+    formulas = _derived_formulas(outcome)
     formulas.update({g.symbol: g.formula for g in problem.givens if g.formula is not None})
     givens = {
         g.symbol: (g.name, _limit_case(g))

@@ -690,13 +690,7 @@ def test_scene_free_body_carries_the_given_sense_of_omega() -> None:
     assert crate.omega == ""
 
 
-def test_a_tilted_rod_is_drawn_along_its_pin_and_without_a_centripetal_term_at_rest(tmp_path):
-    # newcomer report: a 2-m rod pinned at O, released from rest 30° below the horizontal, was
-    # drawn horizontal with O off the rod, and its kinetic diagram showed m ω² r_G with ω = 0.
-    # By hand O is at −(cos 30°, −sin 30°) × 1 m from G: the bar runs along (0.866, −0.5)
-    from dynsolve.pipeline import solve_text
-
-    spec = """\
+ROD_30 = """\
 given:
   m = 10 kg
   L = 2 m
@@ -706,9 +700,16 @@ scene:
   body rod: rod L, mass m, at (L/2*cos(theta), -L/2*sin(theta))
   pin rod at O
   gravity
-find: alpha = alpha(rod)
-"""
-    solution = solve_text(spec)
+"""  # a 10-kg, 2-m rod pinned at its end O, released from rest 30° below the horizontal
+
+
+def test_a_tilted_rod_is_drawn_along_its_pin_and_without_a_centripetal_term_at_rest():
+    # newcomer report: a 2-m rod pinned at O, released from rest 30° below the horizontal, was
+    # drawn horizontal with O off the rod, and its kinetic diagram showed m ω² r_G with ω = 0.
+    # By hand O is at −(cos 30°, −sin 30°) × 1 m from G: the bar runs along (0.866, −0.5)
+    from dynsolve.pipeline import solve_text
+
+    solution = solve_text(ROD_30 + "find: alpha = alpha(rod)\n")
     (rod,) = solution.free_body
     assert "m ω² r_G" not in rod.kinetic and "m α r_G" in rod.kinetic
     lines = pictures(render_latex(solution))["rod"]
@@ -724,19 +725,7 @@ def test_a_pins_x_and_y_components_are_found_where_its_reactions_are_n_and_t():
     # toward O, O_t = m g cos 30°/4 = 21.239 N; projected: O_x = 31.86 N left, O_y = 42.92 N up
     from dynsolve.pipeline import solve_text
 
-    spec = """\
-given:
-  m = 10 kg
-  L = 2 m
-  theta = 30 deg
-scene:
-  point O: (0, 0)
-  body rod: rod L, mass m, at (L/2*cos(theta), -L/2*sin(theta))
-  pin rod at O
-  gravity
-find: O_x [N], O_y [N]
-"""
-    O_x, O_y = solve_text(spec).answers
+    O_x, O_y = solve_text(ROD_30 + "find: O_x [N], O_y [N]\n").answers
     c, s = math.cos(math.pi / 6), 0.5
     O_n, O_t = 10 * 9.81 * s, 10 * 9.81 * c / 4
     # e_n = (−cos 30°, sin 30°) toward O; e_t ⊥ (cw α), O_t along −e_t here
