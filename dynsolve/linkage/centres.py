@@ -92,18 +92,18 @@ def by_centres(
             rate[point] = (ZERO, ZERO)
             continue
         bars = [b for b in linkage.bars if point in linkage.bars[b].points]
-        first = bars[0]
+        first, where = bars[0], linkage.where(point)
         turning = _turning(r[point], centres[first])  # k × r_P/IC: v_P = ω (k × r_P/IC)
         rate[point] = (rotation[first] * turning[0], rotation[first] * turning[1])
         if _size(turning, values) < PARALLEL:
             raise SpecError(
                 f"joint {point} is at the instantaneous centre of {first}",
-                linkage.where(point),
+                where,
                 hint="its velocity is zero there; solve without 'method ic'",
             )
         at_first = rotation[first] * distance(point, first)
         for other in bars[1:]:
-            sign = _sign(_dot(turning, _turning(r[point], centres[other])), values)
+            sign = _sign(_dot(turning, _turning(r[point], centres[other])), values, where)
             law = f"v_{point} = ω_{first} r_{point}/IC({first}) = ω_{other} r_{point}/IC({other})"
             line = linkage.bars[other].line
             equations.append(
@@ -112,10 +112,11 @@ def by_centres(
         slider = linkage.sliders.get(point)
         drive = linkage.drive("velocity", point)
         if slider is not None and slider.axis is not None:
-            sign = _sign(_dot(turning, slider.axis), values)
+            sign = _sign(_dot(turning, slider.axis), values, where)
             if drive is not None:
                 assert drive.direction is not None
-                along[point] = drive.value * _sign(_dot(drive.direction, slider.axis), values)
+                same = _sign(_dot(drive.direction, slider.axis), values, where)
+                along[point] = drive.value * same
             else:
                 along[point] = sympy.Symbol(f"v_{point}", real=True)
                 unknowns[along[point]] = VELOCITY
@@ -124,7 +125,7 @@ def by_centres(
             equations.append(Equation(along[point], sign * at_first, law, slider.line, law))
         elif drive is not None:
             assert drive.direction is not None
-            sign = _sign(_dot(turning, drive.direction), values)
+            sign = _sign(_dot(turning, drive.direction), values, where)
             law = f"v_{point} = ω_{first} r_{point}/IC({first}) (given)"
             equations.append(Equation(drive.value, sign * at_first, law, drive.line, law))
     if len(equations) != len(unknowns):
@@ -283,13 +284,13 @@ def _size(v: Vec, values: Mapping) -> float:
     return math.hypot(*numbers)  # type: ignore[arg-type]
 
 
-def _sign(expr: sympy.Expr, values: Mapping) -> int:
+def _sign(expr: sympy.Expr, values: Mapping, where: Position) -> int:
     """+1 or −1 from the numbers at the instant (the two sides turn the same way or not)."""
     value = real_value(sympy.Integer(0) + expr, values)
     if value is None or value == 0:
         raise SpecError(
             f"'method ic' needs the geometry in numbers at the instant ({pretty(str(expr))[:60]})",
-            None,
+            where,
             hint="give the lengths and angles values, or solve without 'method ic'",
         )
     return 1 if value > 0 else -1
