@@ -22,7 +22,9 @@ def real_value(
     """``expr`` (after ``substitution``) as a float; None if symbols remain or it is not real."""
     value = sympy.Integer(0) + expr
     if substitution:
-        value = value.xreplace(dict(substitution))
+        # a dict as it is: copying a big scene's values per call is n²
+        rule = substitution if isinstance(substitution, dict) else dict(substitution)
+        value = value.xreplace(rule)
     if value.free_symbols:
         return None
     number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))

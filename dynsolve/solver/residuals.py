@@ -60,7 +60,7 @@ def equation_residual(
     >>> equation_residual(3, Equation(x**2, 2, "line 3"), {x: sympy.Rational(7, 5)}).relative
     0.02
     """
-    if set(unsolved) & equation.residual.free_symbols:
+    if not equation.residual.free_symbols.isdisjoint(unsolved):
         return Residual(index, math.nan, math.nan, evaluated=False)
     sides = [substitute(equation.lhs, substitution), substitute(equation.rhs, substitution)]
     terms = [

@@ -96,8 +96,8 @@ def choose_root(
     for keep in (_defined, _real, _as_declared, _within(constraints, given)):
         remaining = _apply(keep, remaining, discarded)
     remaining = _apply_if_any_passes(_satisfying(checks, given), remaining, discarded)
-    for unknown in unknowns:
-        if enters_only_squared(residuals, unknown):
+    for unknown in unknowns:  # a preference: a single root has no rival to lose to
+        if len(remaining) > 1 and enters_only_squared(residuals, unknown):
             remaining = _apply_if_any_passes(_non_negative(unknown), remaining, discarded)
     if not remaining:
         return RootChoice({}, {}, tuple(discarded))
