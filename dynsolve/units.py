@@ -63,7 +63,9 @@ class Dim:
 
     def __post_init__(self) -> None:
         for name in ("L", "M", "T"):
-            object.__setattr__(self, name, Fraction(getattr(self, name)))
+            exponent = getattr(self, name)
+            if type(exponent) is not Fraction:  # (products of dimensions are already)
+                object.__setattr__(self, name, Fraction(exponent))
 
     @staticmethod
     def of(name: str) -> Dim:

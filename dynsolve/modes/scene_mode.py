@@ -730,11 +730,11 @@ def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> Equa
     from dynsolve.system import Equation
 
     assert isinstance(equation, Equation)
-    used = (equation.lhs - equation.rhs).free_symbols  # not every symbol: n² for n bodies
+    used = equation.residual.free_symbols  # not every symbol: n² for n bodies
     pretty_names = {s: sympy.Symbol(pretty(s.name)) for s in used}
     latex_names = {s: latex_name(s.name) for s in used}
     try:
-        dim = sympy_dimension(equation.lhs - equation.rhs, dims)
+        dim = sympy_dimension(equation.residual, dims)
         ok = True
     except DimensionError as exc:  # a scene whose givens have the wrong units
         raise DimensionError(
