@@ -353,6 +353,7 @@ class _Builder:
     ):
         self.spec, self.symbols, self.dims = spec, symbols, dims
         self.dimensions: dict[str, Dim] = {}  # of each value's text, inferred once
+        self.converted: dict[str, sympy.Expr] = {}  # each value's text as sympy, built once
         self.given_values = dict(given_values or {})
         self.file = spec.file
         self.bodies: dict[str, Body] = {}
@@ -376,19 +377,21 @@ class _Builder:
                     self.where(name.line, name.column),
                     hint,
                 )
-        found = self.dimension(expr)
+        text = expr_text(expr, str)
+        found = self.dimension(expr, text)
         if found != dim:
             raise DimensionError(
                 f"{what} must be {_article(dim.name)}, but '{expr}' is {_article(found.name)}",
                 self.where(expr.line, expr.column),
                 hint="check the units of the givens it uses",
             )
-        return to_sympy(expr, self.symbols, self.given_values)
+        if text not in self.converted:  # a chain of bodies writes 'm' and 'w/2' on every line
+            self.converted[text] = to_sympy(expr, self.symbols, self.given_values)
+        return self.converted[text]
 
-    def dimension(self, expr: Expr) -> Dim:
-        """The dimension of ``expr``, inferred once per text: a chain of bodies writes 'm'
-        and 'w/2' on every line (an error is raised at the first, so none is kept)."""
-        text = expr_text(expr, str)
+    def dimension(self, expr: Expr, text: str) -> Dim:
+        """The dimension of ``expr``, written ``text``, inferred once per text (an error is
+        raised at the first, so none is kept)."""
         if text not in self.dimensions:
             probe = EquationStmt(
                 Name("__value__", expr.line, expr.column), "=", expr, "", "", expr.line, expr.column
