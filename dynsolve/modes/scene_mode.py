@@ -716,13 +716,11 @@ def _checked(scene: Scene, formulation: Formulation) -> tuple[sympy.Symbol, ...]
     exprs += [
         formulation.reactions[c.name][0] for c in scene.cords if c.name in formulation.reactions
     ]
-    found: list[sympy.Symbol] = []
+    found: dict[sympy.Symbol, None] = {}  # in order, each once (a list's 'in' is n²)
     for expr in exprs:
-        found += [
-            s
-            for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str)
-            if s in formulation.unknowns and s not in found
-        ]
+        for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str):
+            if s in formulation.unknowns:
+                found.setdefault(s)
     return tuple(found)
 
 
