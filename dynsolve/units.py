@@ -189,6 +189,7 @@ _NATURAL: dict[Dim, tuple[str, str]] = {
 }
 _ENERGY_UNITS = ("J", "ft*lb")
 _ENERGY_NAMES = ("T", "U", "V", "E", "W", "K")  # kinetic/potential energy, work
+_ENERGY = Dim(2, 1, -2)  # (shared with moments)
 
 
 def natural_unit(dim: Dim, system: System, name: str = "") -> str:
@@ -201,7 +202,7 @@ def natural_unit(dim: Dim, system: System, name: str = "") -> str:
     ('J', 'N*m')
     """
     column = 0 if system == "SI" else 1
-    if dim == Dim(2, 1, -2) and name[:1] in _ENERGY_NAMES:
+    if dim == _ENERGY and name[:1] in _ENERGY_NAMES:
         return _ENERGY_UNITS[column]
     if dim in _NATURAL:
         return _NATURAL[dim][column]
