@@ -22,7 +22,16 @@ def real_value(
     """``expr`` (after ``substitution``) as a float; None if symbols remain or it is not real."""
     value = sympy.Integer(0) + expr
     if substitution:
-        value = value.xreplace(dict(substitution))
+        # a dict as it is: copying a big scene's values per call is n²
+        rule = substitution if isinstance(substitution, dict) else dict(substitution)
+        value = value.xreplace(rule)
+    return _real_number(value)
+
+
+@cacheit  # a scene asks for the same numbers again and again (forces, arms, residual terms)
+def _real_number(value: sympy.Expr) -> float | None:
+    """A closed ``value`` as a float, evaluated to 30 digits; None if symbols remain or
+    it is not real."""
     if value.free_symbols:
         return None
     number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))

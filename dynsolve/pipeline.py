@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import replace
+from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
@@ -684,14 +685,18 @@ class _View:
 
     # ---- helpers
     def used(self, given: GivenInfo) -> bool:
-        return (
-            given.given is not None
-            or given.shown
-            or any(
-                given.symbol in e.lhs.free_symbols | e.rhs.free_symbols
-                for e in self.problem.system.equations
-            )
-        )
+        return given.given is not None or given.shown or given.symbol in self.equation_symbols
+
+    @cached_property
+    def equation_symbols(self) -> frozenset[sympy.Symbol]:
+        """Every symbol the equations hold (gathered once: per given it is n²)."""
+        equations = self.problem.system.equations
+        return frozenset().union(*(e.lhs.free_symbols | e.rhs.free_symbols for e in equations))
+
+    @cached_property
+    def solved(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """The knowns and the solved values in one map (merged once: per row it is n²)."""
+        return {**self.knowns, **self.outcome.values}
 
     def unit_of(self, name: str) -> str:
         if name in self.units:
@@ -810,7 +815,7 @@ class _View:
                 formula is not None and formula.free_symbols and formula != block.values[symbol]
             )
             if show_formula and formula is not None:
-                formula = combined_roots(formula, {**self.knowns, **self.outcome.values})
+                formula = combined_roots(formula, self.solved)
             numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
@@ -846,7 +851,7 @@ class _View:
         where a symbol has no number (a symbolic problem) or the formula is a bare symbol."""
         if isinstance(formula, sympy.Symbol):
             return None
-        values = {**self.knowns, **self.outcome.values, **(extra or {})}
+        values = {**self.solved, **extra} if extra else self.solved
         names: dict[sympy.Symbol, str] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
@@ -1139,7 +1144,7 @@ class _View:
         unknowns = sorted(
             (x.free_symbols | y.free_symbols) & set(self.problem.system.unknowns), key=str
         )
-        values = {**self.knowns, **self.outcome.values}
+        values = self.solved
         nonzero = [u for u in unknowns if self.number(values.get(u, u)) not in (None, 0.0)]
         if len(nonzero) < 2:
             return None
@@ -1181,7 +1186,7 @@ class _View:
         }
         if self.problem.mode == "kinematics":
             known_dims |= {n: d for n, d in self.dims.items() if n in ("t", "x", "v")}
-        solved = {**self.knowns, **self.outcome.values}
+        solved = self.solved
         out = []
         for answer in spec.answers:
             target = targets[answer.name]
@@ -1332,7 +1337,7 @@ class _View:
 
         assert isinstance(constraint, Constraint)
         name = f"constraint {constraint.text} (line {constraint.line})"
-        verdict = truth(constraint.relation, {**self.knowns, **self.outcome.values})
+        verdict = truth(constraint.relation, self.solved)
         if verdict is None:
             return Check(name, True, "cannot be decided for symbolic givens")
         symbolic = any(v.free_symbols for v in self.outcome.values.values())

@@ -18,11 +18,10 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterator
-from dataclasses import fields, is_dataclass
 
 from dynsolve.errors import DynsolveError
 from dynsolve.quantities import resolve_unit
-from dynsolve.spec.ast import Call, Direction, Given, Prop, Spec
+from dynsolve.spec.ast import Call, Direction, Given, Prop, Spec, children
 from dynsolve.spec.parser import iter_names
 from dynsolve.units import Dim
 
@@ -123,10 +122,7 @@ def _angle_uses(spec: Spec) -> Iterator[tuple[str, object]]:
             yield f"'angle {item.angle}'", item.angle
         elif isinstance(item, Prop) and item.key == "angle":
             yield from ((f"'angle {value}'", value) for value in item.values)
-        if isinstance(item, tuple | list):
-            stack.extend(item)
-        elif is_dataclass(item) and not isinstance(item, type):
-            stack.extend(getattr(item, f.name) for f in fields(item))
+        stack.extend(children(item))
 
 
 def _pounds_as_mass(spec: Spec) -> Iterator[tuple[str, str]]:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Literal
 
 import sympy
@@ -30,9 +31,9 @@ class Equation:
     line: int = 0  # source line, 0 when generated
     note: str = ""  # the principle it states, e.g. "ΣM_O = I_O α"
 
-    @property
+    @cached_property
     def residual(self) -> sympy.Expr:
-        """``lhs - rhs``: zero when the equation holds."""
+        """``lhs - rhs``: zero when the equation holds (built once: the solver asks often)."""
         return self.lhs - self.rhs
 
 

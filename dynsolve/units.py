@@ -63,7 +63,9 @@ class Dim:
 
     def __post_init__(self) -> None:
         for name in ("L", "M", "T"):
-            object.__setattr__(self, name, Fraction(getattr(self, name)))
+            exponent = getattr(self, name)
+            if type(exponent) is not Fraction:  # (products of dimensions are already)
+                object.__setattr__(self, name, Fraction(exponent))
 
     @staticmethod
     def of(name: str) -> Dim:
@@ -187,6 +189,7 @@ _NATURAL: dict[Dim, tuple[str, str]] = {
 }
 _ENERGY_UNITS = ("J", "ft*lb")
 _ENERGY_NAMES = ("T", "U", "V", "E", "W", "K")  # kinetic/potential energy, work
+_ENERGY = Dim(2, 1, -2)  # (shared with moments)
 
 
 def natural_unit(dim: Dim, system: System, name: str = "") -> str:
@@ -199,7 +202,7 @@ def natural_unit(dim: Dim, system: System, name: str = "") -> str:
     ('J', 'N*m')
     """
     column = 0 if system == "SI" else 1
-    if dim == Dim(2, 1, -2) and name[:1] in _ENERGY_NAMES:
+    if dim == _ENERGY and name[:1] in _ENERGY_NAMES:
         return _ENERGY_UNITS[column]
     if dim in _NATURAL:
         return _NATURAL[dim][column]

@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import dataclasses
 import difflib
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from dynsolve.errors import Position, SpecError
-from dynsolve.spec.ast import FindItem, Name, SceneStmt, Spec
+from dynsolve.spec.ast import FindItem, Name, SceneStmt, Spec, children
 
 if TYPE_CHECKING:
     from dynsolve.modes.equation_mode import GivenInfo
@@ -111,8 +110,5 @@ def scene_reads(spec: Spec) -> set[str]:
             found.add(node.name)
             if node.ref is not None:
                 found |= set(node.ref.args)
-        if isinstance(node, tuple | list):
-            stack.extend(node)
-        elif dataclasses.is_dataclass(node) and not isinstance(node, type):
-            stack.extend(getattr(node, f.name) for f in dataclasses.fields(node))
+        stack.extend(children(node))
     return found

@@ -35,6 +35,7 @@ if TYPE_CHECKING:
 from dynsolve.numbers import real_value, tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
+from dynsolve.spec.printing import expr_text
 from dynsolve.units import Dim
 
 Vec = tuple[sympy.Expr, sympy.Expr]
@@ -381,6 +382,8 @@ class _Builder:
         given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
     ):
         self.spec, self.symbols, self.dims = spec, symbols, dims
+        self.dimensions: dict[str, Dim] = {}  # of each value's text, inferred once
+        self.converted: dict[str, sympy.Expr] = {}  # each value's text as sympy, built once
         self.given_values = dict(given_values or {})
         self.file = spec.file
         self.bodies: dict[str, Body] = {}
@@ -404,18 +407,28 @@ class _Builder:
                     self.where(name.line, name.column),
                     hint,
                 )
-        probe = EquationStmt(
-            Name("__value__", expr.line, expr.column), "=", expr, "", "", expr.line, expr.column
-        )
-        report = check_dimensions((probe,), {**self.dims, "pi": Dim()}, self.file)
-        found = report.dims["__value__"]
+        text = expr_text(expr, str)
+        found = self.dimension(expr, text)
         if found != dim:
             raise DimensionError(
                 f"{what} must be {_article(dim.name)}, but '{expr}' is {_article(found.name)}",
                 self.where(expr.line, expr.column),
                 hint="check the units of the givens it uses",
             )
-        return to_sympy(expr, self.symbols, self.given_values)
+        if text not in self.converted:  # a chain of bodies writes 'm' and 'w/2' on every line
+            self.converted[text] = to_sympy(expr, self.symbols, self.given_values)
+        return self.converted[text]
+
+    def dimension(self, expr: Expr, text: str) -> Dim:
+        """The dimension of ``expr``, written ``text``, inferred once per text (an error is
+        raised at the first, so none is kept)."""
+        if text not in self.dimensions:
+            probe = EquationStmt(
+                Name("__value__", expr.line, expr.column), "=", expr, "", "", expr.line, expr.column
+            )
+            report = check_dimensions((probe,), {**self.dims, "pi": Dim()}, self.file)
+            self.dimensions[text] = report.dims["__value__"]
+        return self.dimensions[text]
 
     def vector(self, vector: tuple[Expr, Expr], what: str) -> Vec:
         return (self.value(vector[0], LENGTH, what), self.value(vector[1], LENGTH, what))

@@ -726,13 +726,11 @@ def _checked(scene: Scene, formulation: Formulation) -> tuple[sympy.Symbol, ...]
     exprs += [
         formulation.reactions[c.name][0] for c in scene.cords if c.name in formulation.reactions
     ]
-    found: list[sympy.Symbol] = []
+    found: dict[sympy.Symbol, None] = {}  # in order, each once (a list's 'in' is n²)
     for expr in exprs:
-        found += [
-            s
-            for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str)
-            if s in formulation.unknowns and s not in found
-        ]
+        for s in sorted((sympy.Integer(0) + expr).free_symbols, key=str):
+            if s in formulation.unknowns:
+                found.setdefault(s)
     return tuple(found)
 
 
@@ -740,11 +738,11 @@ def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> Equa
     from dynsolve.system import Equation
 
     assert isinstance(equation, Equation)
-    used = (equation.lhs - equation.rhs).free_symbols  # not every symbol: n² for n bodies
+    used = equation.residual.free_symbols  # not every symbol: n² for n bodies
     pretty_names = {s: sympy.Symbol(pretty(s.name)) for s in used}
     latex_names = {s: latex_name(s.name) for s in used}
     try:
-        dim = sympy_dimension(equation.lhs - equation.rhs, dims)
+        dim = sympy_dimension(equation.residual, dims)
         ok = True
     except DimensionError as exc:  # a scene whose givens have the wrong units
         raise DimensionError(

@@ -1158,12 +1158,11 @@ class _Writer:
     def _moment_point(self, body: Body, forces: list[ForceTerm]) -> tuple[Vec, str]:
         unknown = [f for f in forces if not f.known]
         candidates: list[Vec] = [body.G]
-        unknowns = set(self.unknowns)
         candidates += [
             f.point
             for f in unknown
             if f.point not in candidates  # a point at an unknown place (a base's N) is no help
-            and not (sympy.Add(*f.point).free_symbols & unknowns)
+            and not any(s in self.unknowns for s in sympy.Add(*f.point).free_symbols)
         ]
         best, best_names = body.G, []
         for P in candidates:

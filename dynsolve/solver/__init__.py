@@ -182,6 +182,8 @@ def _constraints_for(
     unknowns: list[sympy.Symbol], system: EquationSystem, progress: _Progress
 ) -> list[Constraint]:
     """Declared constraints on these unknowns whose other unknowns are already solved."""
+    if not system.constraints:
+        return []  # (the pending set below is n per block: n² in big scenes)
     mine, pending = set(unknowns), set(system.unknowns) - set(progress.solved) - set(unknowns)
     return [
         c
@@ -197,6 +199,8 @@ def _checks_for(
     progress: _Progress,
 ) -> list[tuple[int, Equation]]:
     """Surplus equations on these unknowns whose other unknowns are already solved."""
+    if not surplus:
+        return []
     mine, pending = set(unknowns), set(system.unknowns) - set(progress.solved) - set(unknowns)
     chosen = []
     for i in surplus:

@@ -35,6 +35,7 @@ import random
 from collections.abc import Collection, Mapping, Sequence
 
 import sympy
+from sympy.core.cache import cacheit
 
 from dynsolve.numbers import MAX_DIGITS
 from dynsolve.solver.blocks import as_expr, substitute
@@ -44,6 +45,7 @@ from dynsolve.system import Equation
 DIGITS = 30
 SATISFIED = 1e-9  # relative residual up to which an equation counts as holding
 SPOT_CHECK_SEED = 20240611
+EVALF_MAXN = 100  # sympy's own default
 
 
 def equation_residual(
@@ -60,7 +62,7 @@ def equation_residual(
     >>> equation_residual(3, Equation(x**2, 2, "line 3"), {x: sympy.Rational(7, 5)}).relative
     0.02
     """
-    if set(unsolved) & equation.residual.free_symbols:
+    if not equation.residual.free_symbols.isdisjoint(unsolved):
         return Residual(index, math.nan, math.nan, evaluated=False)
     sides = [substitute(equation.lhs, substitution), substitute(equation.rhs, substitution)]
     terms = [
@@ -99,7 +101,7 @@ def term_size(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> fl
         return math.prod(term_size(arg, values) for arg in expr.args)
     if expr.is_Pow and expr.exp.is_number and expr.exp.is_positive:
         return term_size(expr.base, values) ** float(expr.exp)
-    magnitude = _magnitude(sympy.N(expr.xreplace(values), 17))
+    magnitude = _size(expr.xreplace(values), 17, EVALF_MAXN)
     return 0.0 if math.isnan(magnitude) else magnitude
 
 
@@ -122,7 +124,7 @@ def _measure(sides: Sequence[sympy.Expr], terms: Sequence[sympy.Expr]) -> tuple[
     try:
         lhs, rhs = (sympy.N(side, DIGITS, maxn=MAX_DIGITS) for side in sides)
         absolute = _magnitude(lhs - rhs)
-        sizes = [_magnitude(sympy.N(t, DIGITS, maxn=MAX_DIGITS)) for t in terms]
+        sizes = [_size(t, DIGITS, MAX_DIGITS) for t in terms]
         scale = max(_magnitude(lhs), _magnitude(rhs), *sizes)
     except (TypeError, ValueError, ArithmeticError):
         return math.nan, math.nan
@@ -130,6 +132,12 @@ def _measure(sides: Sequence[sympy.Expr], terms: Sequence[sympy.Expr]) -> tuple[
         return math.nan, math.nan
     relative = absolute / scale if scale > 0 else 0.0
     return absolute, relative
+
+
+@cacheit  # the terms of a long chain's equations repeat: each number evaluated once
+def _size(value: sympy.Expr, digits: int, maxn: int) -> float:
+    """``|value|`` evaluated to ``digits`` digits (``maxn`` at most through cancellation)."""
+    return _magnitude(sympy.N(value, digits, maxn=maxn))
 
 
 def _magnitude(value: sympy.Expr) -> float:

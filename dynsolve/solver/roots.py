@@ -96,8 +96,8 @@ def choose_root(
     for keep in (_defined, _real, _as_declared, _within(constraints, given)):
         remaining = _apply(keep, remaining, discarded)
     remaining = _apply_if_any_passes(_satisfying(checks, given), remaining, discarded)
-    for unknown in unknowns:
-        if enters_only_squared(residuals, unknown):
+    for unknown in unknowns:  # a preference: a single root has no rival to lose to
+        if len(remaining) > 1 and enters_only_squared(residuals, unknown):
             remaining = _apply_if_any_passes(_non_negative(unknown), remaining, discarded)
     if not remaining:
         return RootChoice({}, {}, tuple(discarded))
@@ -162,6 +162,8 @@ def _as_declared(candidate: Candidate) -> str:
 
 def _within(constraints: Sequence[Constraint], given: Mapping[sympy.Symbol, sympy.Expr]) -> _Filter:
     def keep(candidate: Candidate) -> str:
+        if not constraints:
+            return ""  # (no copy of the givens per root: n² over a chain's blocks)
         substitution = {**given, **candidate.values}
         for constraint in constraints:
             if truth(constraint.relation, substitution) is False:
@@ -176,6 +178,8 @@ def _satisfying(
     checks: Sequence[tuple[int, Equation]], given: Mapping[sympy.Symbol, sympy.Expr]
 ) -> _Filter:
     def keep(candidate: Candidate) -> str:
+        if not checks:
+            return ""
         substitution = {**given, **candidate.values}
         for index, equation in checks:
             if is_satisfied(equation_residual(index, equation, substitution)) is False:

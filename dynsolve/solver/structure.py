@@ -242,7 +242,8 @@ def _prune_to_wanted(
         if i in needed
     ]
     unneeded = {e for i, b in enumerate(structure.blocks) if i not in needed for e in b.equations}
-    solved = {system.unknowns.index(u) for b in kept for u in b.unknowns}
+    position = {u: i for i, u in enumerate(system.unknowns)}  # not .index: n² in big scenes
+    solved = {position[u] for b in kept for u in b.unknowns}
     surplus = tuple(e for e in structure.surplus if rows[e] <= solved)
     unneeded |= set(structure.surplus) - set(surplus)
     under_needed = bool(wanted & set(structure.undetermined))

@@ -11,8 +11,10 @@ text and later stages turn them into sympy objects.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import cache
 from typing import Literal
 
 __all__ = [
@@ -38,7 +40,28 @@ __all__ = [
     "UnitExpr",
     "UnitFactor",
     "VaryStmt",
+    "children",
 ]
+
+
+def children(node: object) -> list[object]:
+    """What a walk of the spec visits under ``node``: a tuple's or list's items, a node's
+    fields in their order; nothing under a leaf (a name's text, a number).
+
+    >>> children(Binary("*", Num(Fraction(2), "2", 1, 1), Name("m", 1, 3), 1, 2))[:3]
+    ['*', Num(value=Fraction(2, 1), text='2', line=1, column=1), Name(text='m', line=1, column=3)]
+    """
+    if isinstance(node, tuple | list):
+        return list(node)
+    return [getattr(node, name) for name in _field_names(type(node))]
+
+
+@cache  # dataclasses.fields per node was a fifth of a big scene's walks
+def _field_names(cls: type) -> tuple[str, ...]:
+    """The field names of a dataclass, none for any other class."""
+    if not dataclasses.is_dataclass(cls):
+        return ()
+    return tuple(field.name for field in dataclasses.fields(cls))
 
 
 def _as_written(node: object) -> str:
