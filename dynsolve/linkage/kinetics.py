@@ -13,7 +13,10 @@ takes the opposite of their sum); at a fixed point the ground's reaction on the 
 ``P_x``, ``P_y``; a slider's smooth guide pushes with ``N_P`` along the guide's left
 normal (k × the guide's direction); a pin in the slot of a moving bar pushes that bar
 with ``N_P`` along its left normal and the pin with the opposite. A load's magnitude is
-a given or an unknown (the couple that drives the linkage, a force needed).
+a given or an unknown (the couple that drives the linkage, a force needed). Gears in
+mesh push on each other at their pitch point with the tooth force ``F_A_B`` along the
+common tangent t = k × e (e from A's centre to B's), on A, and its opposite on B (ideal
+teeth: no pressure angle, so no push along the line of centres).
 
 >>> import sympy
 >>> from dynsolve.linkage.model import Bar, Drive, Linkage, Load
@@ -123,13 +126,21 @@ def free_bodies(
             forces[bars[0]].append((on_pin, point))
             if slider.bar:
                 forces[slider.bar].append(((-on_pin[0], -on_pin[1]), point))
-    if linkage.meshes:
-        mesh = linkage.meshes[0]
-        raise SpecError(
-            "forces between gears in mesh are not supported yet",
-            Position(linkage.file, mesh.line, mesh.column),
-            hint="ask for the gears' motion only (omega, alpha, v, a), without masses or loads",
-        )
+    teeth: dict[str, sympy.Expr] = {b: ZERO for b in linkage.bars}  # their moments about G
+    for mesh in linkage.meshes:  # the tooth force along the common tangent (Hibbeler 17.5)
+        one, two = (r[linkage.bars[b].points[0]] for b in (mesh.first, mesh.second))
+        distance = mesh.radii[0] + mesh.radii[1]
+        e = ((two[0] - one[0]) / distance, (two[1] - one[1]) / distance)
+        t = (-e[1], e[0])
+        name = f"F_{mesh.first}_{mesh.second}"
+        tooth = unknown(name, FORCE)
+        normals[name] = t
+        # F t at the pitch point r₁ e from A's centre: moment r₁ e × F t = r₁ F (ccw); on B,
+        # −F t at −r₂ e from its centre: r₂ F (ccw) too
+        forces[mesh.first].append(((tooth * t[0], tooth * t[1]), "G"))
+        forces[mesh.second].append(((-tooth * t[0], -tooth * t[1]), "G"))
+        teeth[mesh.first] += mesh.radii[0] * tooth
+        teeth[mesh.second] += mesh.radii[1] * tooth
     for wheel in linkage.wheels.values():  # the ground's friction and normal push at K
         n = wheel.normal
         tangent = (n[1], -n[0])
@@ -139,7 +150,7 @@ def free_bodies(
         forces[wheel.bar].append((push, "K"))
         normals[normal.name] = n
         normals[friction.name] = tangent
-    couples: dict[str, sympy.Expr] = {b: ZERO for b in linkage.bars}
+    couples: dict[str, sympy.Expr] = dict(teeth)  # a tooth force's moment, then the couples
     dims: dict[str, Dim] = {}
     for load in linkage.loads:
         if load.kind == "gravity":
