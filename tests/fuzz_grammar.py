@@ -63,6 +63,7 @@ SCENE_LINES = (
     "method ic",
     "rolls B: radius r",
     "mesh B with C: radii r, r",
+    "mesh B with C: radii 3*r, r, internal",
     "body B: mass m, disk r, at (0, 0, r)",
     "axis B: (1, 0, 0)",
     "body B: mass m, cone r by r, at (0, 0, 0)",

@@ -70,3 +70,60 @@ def test_a_planet_gear_on_an_arm_round_a_held_sun():
     assert got["alpha_arm"] == (pytest.approx(40.0, rel=1e-12), "ccw")
     assert got["F"][0] == pytest.approx(6.0, rel=1e-12)
     assert got["C"][0] == pytest.approx(-0.6, rel=1e-12)  # cw: the sun is held against F
+
+
+# ---- internal gears (a ring gear). Hand derivations:
+# - fixed ring 150 mm, sun 50 mm at 10 rad/s ccw, planet 50 mm: ω_P = 5 cw, ω_arm = 2.5 ccw
+#   (problems/linkages/planetary_ring_fixed.dyn; the sun held and the ring driven, and an
+#   FPS arm-driven planet: planetary_sun_fixed.dyn, ring_planet_arm_fps.dyn);
+# - a 2-kg disk planet (r_P = 50 mm) inside a held ring (r_R = 150 mm) on a 1-kg, 100-mm
+#   arm driven by M = 3 N·m from rest: ω_P = −2 ω_arm, T = ½ ω_arm² (m L²/3 + m_P L² +
+#   4 I_P) = ½ ω_arm² / 30 → α_arm = 90 rad/s²; planet: −r_P F = I_P α_P = −0.45 → F = 9 N;
+#   ring: C + r_R F = 0 → C = −1.35 N·m.
+
+RING = """\
+given:
+  r_R = 150 mm
+  r_P = 50 mm
+  m_P = 2 kg
+  m_arm = 1 kg
+  M = 3 N*m
+scene:
+  point O: (0, 0)
+  bar ring: O
+  bar arm: O to B, mass m_arm
+  bar planet: B, mass m_P
+  joint B: (r_R - r_P, 0)
+  mesh ring with planet: radii r_R, r_P, internal
+  omega ring: 0
+  alpha ring: 0
+  omega arm: 0
+  couple M on arm: ccw
+  couple C on ring: ccw
+find: alpha_arm = alpha(arm), alpha_P = alpha(planet), F = F_ring_planet, C
+"""
+
+
+@pytest.mark.parametrize(
+    "name", ["planetary_ring_fixed", "planetary_sun_fixed", "ring_planet_arm_fps"]
+)
+def test_planetary_trains_with_a_ring_gear(name):
+    solution = solve_file(LINKAGES / f"{name}.dyn")
+    assert all(c.passed for c in solution.checks)
+    assert any("internal mesh" in e.note for e in solution.equations)
+
+
+def test_a_planet_driven_round_inside_a_held_ring():
+    got = found(solve_text(RING))
+    assert got["alpha_arm"] == (pytest.approx(90.0, rel=1e-12), "ccw")
+    assert got["alpha_P"] == (pytest.approx(180.0, rel=1e-12), "cw")
+    assert got["F"][0] == pytest.approx(9.0, rel=1e-12)
+    assert got["C"][0] == pytest.approx(-1.35, rel=1e-12)
+
+
+def test_an_internal_mesh_with_its_centres_the_sum_apart_is_refused():
+    from dynsolve.errors import SpecError
+
+    text = RING.replace("joint B: (r_R - r_P, 0)", "joint B: (r_R + r_P, 0)")
+    with pytest.raises(SpecError, match="their radii differ by"):
+        solve_text(text)

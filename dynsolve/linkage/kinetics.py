@@ -129,18 +129,17 @@ def free_bodies(
     teeth: dict[str, sympy.Expr] = {b: ZERO for b in linkage.bars}  # their moments about G
     for mesh in linkage.meshes:  # the tooth force along the common tangent (Hibbeler 17.5)
         one, two = (r[linkage.bars[b].points[0]] for b in (mesh.first, mesh.second))
-        distance = mesh.radii[0] + mesh.radii[1]
-        e = ((two[0] - one[0]) / distance, (two[1] - one[1]) / distance)
+        e, side = mesh.pitch((one, two), linkage.values, linkage.file)
         t = (-e[1], e[0])
         name = f"F_{mesh.first}_{mesh.second}"
         tooth = unknown(name, FORCE)
         normals[name] = t
-        # F t at the pitch point r₁ e from A's centre: moment r₁ e × F t = r₁ F (ccw); on B,
-        # −F t at −r₂ e from its centre: r₂ F (ccw) too
+        # F t at the pitch point r₁ e₁ from A's centre: moment r₁ e₁ × F t = r₁ F (ccw); on B,
+        # −F t at r₂ e₂ from its centre: −r₂ F (e₂·e₁), so r₂ F (ccw) in external mesh
         forces[mesh.first].append(((tooth * t[0], tooth * t[1]), "G"))
         forces[mesh.second].append(((-tooth * t[0], -tooth * t[1]), "G"))
         teeth[mesh.first] += mesh.radii[0] * tooth
-        teeth[mesh.second] += mesh.radii[1] * tooth
+        teeth[mesh.second] += -side * mesh.radii[1] * tooth
     for wheel in linkage.wheels.values():  # the ground's friction and normal push at K
         n = wheel.normal
         tangent = (n[1], -n[0])

@@ -122,14 +122,67 @@ class Wheel:
 
 @dataclass(frozen=True)
 class Mesh:
-    """Two gears (bars centred on their first points) in external mesh: their pitch
-    circles, of radii ``radii``, roll on each other where they touch."""
+    """Two gears (bars centred on their first points) in mesh: their pitch circles, of
+    radii ``radii``, roll on each other where they touch, outside each other (external)
+    or the smaller inside the larger, a ring gear (``internal``)."""
 
     first: str
     second: str
     radii: tuple[sympy.Expr, sympy.Expr]
     line: int = 0
     column: int = 0
+    internal: bool = False
+
+    def pitch(
+        self, centres: tuple[Vec, Vec], values: Mapping[sympy.Symbol, sympy.Expr], file: str = ""
+    ) -> tuple[Vec, int]:
+        """The unit vector e₁ from the first gear's centre toward the pitch point, and
+        e₂·e₁ (−1 external: the point is between the centres; +1 internal: beyond the
+        smaller gear, seen from the ring's centre).
+
+        >>> import sympy
+        >>> two = Mesh("A", "B", (sympy.Integer(1), sympy.Integer(3)))
+        >>> two.pitch(((0, 0), (4, 0)), {})
+        ((1, 0), -1)
+        >>> ring = Mesh("R", "P", (sympy.Integer(3), sympy.Integer(1)), internal=True)
+        >>> ring.pitch(((0, 0), (2, 0)), {})  # the pitch point (3, 0): beyond the planet
+        ((1, 0), 1)
+        """
+        (x1, y1), (x2, y2) = centres
+        r1, r2 = self.radii
+        if not self.internal:
+            span = r1 + r2
+            return ((x2 - x1) / span, (y2 - y1) / span), -1
+        ring_first = self.ring_first(values, file)
+        span = r1 - r2 if ring_first else r2 - r1  # the centres' distance
+        # from the ring's centre toward the smaller gear's: the pitch point lies that way
+        u = (
+            ((x2 - x1) / span, (y2 - y1) / span)
+            if ring_first
+            else ((x1 - x2) / span, (y1 - y2) / span)
+        )
+        return u, 1
+
+    def ring_first(self, values: Mapping[sympy.Symbol, sympy.Expr], file: str = "") -> bool:
+        """Whether the first gear of an internal mesh is the ring (the larger radius)."""
+        from dynsolve.numbers import real_value
+
+        sizes = [real_value(r, values) for r in self.radii]
+        if sizes[0] is None or sizes[1] is None or sizes[0] == sizes[1]:
+            raise SpecError(
+                f"the internal mesh of {self.first} and {self.second} needs radii with values, "
+                "one larger (the ring)",
+                Position(file, self.line, self.column),
+                hint="give the radii numbers",
+            )
+        return sizes[0] > sizes[1]
+
+    def span(self, values: Mapping[sympy.Symbol, sympy.Expr], file: str = "") -> sympy.Expr:
+        """The distance between the centres: r₁ + r₂, or the difference for a ring gear."""
+        r1, r2 = self.radii
+        if not self.internal:
+            return r1 + r2
+        return r1 - r2 if self.ring_first(values, file) else r2 - r1
 
 
 @dataclass(frozen=True)
@@ -267,7 +320,8 @@ def read_linkage(spec: Spec) -> Linkage:
             _bar_named(stmt.body, bars, where)
             _bar_named(stmt.other, bars, where)
             radii = tuple(reader.value(e, LENGTH, "a gear's radius") for e in stmt.vectors[0])
-            meshes.append(Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column))  # type: ignore[arg-type]
+            internal = stmt.word == "internal"
+            meshes.append(Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column, internal))  # type: ignore[arg-type]
     for bar in bars.values():
         round_bar = bar.name in wheels or any(bar.name in (m.first, m.second) for m in meshes)
         if bar.mass is not None and len(bar.points) != 2 and not round_bar:

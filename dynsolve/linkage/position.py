@@ -171,12 +171,15 @@ def _check_given(linkage: Linkage, positions: Mapping[str, Vec], unknown: Sequen
         if first is None or second is None or radii is None:
             continue
         span = math.hypot(second[0] - first[0], second[1] - first[1])
-        if abs(span - sum(radii)) > AGREE * max(span, sum(radii)):
+        apart = abs(radii[0] - radii[1]) if mesh.internal else sum(radii)
+        if abs(span - apart) > AGREE * max(span, apart):
+            how = "differ by" if mesh.internal else "add up to"
             raise SpecError(
                 f"gears {mesh.first} and {mesh.second}: their centres are {span:.6g} apart "
-                f"(base units), but their radii add up to {sum(radii):.6g}",
+                f"(base units), but their radii {how} {apart:.6g}",
                 Position(linkage.file, mesh.line, mesh.column),
-                hint="gears in external mesh have their centres r_1 + r_2 apart",
+                hint="gears in external mesh have their centres r_1 + r_2 apart; in internal "
+                "mesh (', internal': a ring gear) the difference of the radii",
             )
     for slider in linkage.sliders.values():
         if slider.bar:
@@ -274,7 +277,7 @@ def _closure(
         if not {one, two} & set(unknown):
             continue
         dx, dy = where[two][0] - where[one][0], where[two][1] - where[one][1]
-        span = mesh.radii[0] + mesh.radii[1]
+        span = mesh.span(linkage.values, linkage.file)
         residuals.append((dx**2 + dy**2 - span**2) / span)
         texts.append(f"|{two} − {one}| = {sympy.sstr(span)} (gears in mesh)")
     if len(residuals) != 2 * len(unknown):

@@ -198,22 +198,25 @@ def _meshing(
     rate: Mapping[str, Vec],
 ) -> list[Equation]:
     """Gears in mesh: at the pitch point P the two gears' points share their velocity (and
-    acceleration) along the common tangent t = k × e, e from centre 1 to centre 2:
-    v_O1·t + ω_1 r_1 = v_O2·t − ω_2 r_2 (α in place of ω for accelerations)."""
+    acceleration) along the common tangent t = k × e₁, e₁ from centre 1 toward P:
+    v_O1·t + ω_1 r_1 = v_O2·t − ω_2 r_2 in external mesh, + ω_2 r_2 in internal mesh (a
+    ring gear turns the same way at P) — α in place of ω for accelerations."""
     rotation_name, _, rate_name, _, _ = LEVELS[level]
     equations = []
     for mesh in linkage.meshes:
         one, two = (linkage.bars[b].points[0] for b in (mesh.first, mesh.second))
-        dx, dy = r[two][0] - r[one][0], r[two][1] - r[one][1]
-        distance = mesh.radii[0] + mesh.radii[1]  # the centres' distance (checked)
-        t = (-dy / distance, dx / distance)
+        e, side = mesh.pitch((r[one], r[two]), linkage.values, linkage.file)
+        t = (-e[1], e[0])  # the common tangent k × e₁ (the centres' distance checked)
         lhs = rate[one][0] * t[0] + rate[one][1] * t[1] + rotation[mesh.first] * mesh.radii[0]
-        rhs = rate[two][0] * t[0] + rate[two][1] * t[1] - rotation[mesh.second] * mesh.radii[1]
+        rhs = (
+            rate[two][0] * t[0] + rate[two][1] * t[1] + side * rotation[mesh.second] * mesh.radii[1]
+        )
         w = pretty(rotation_name)
+        sign, kind = ("+", "internal mesh") if side > 0 else ("−", "mesh")
         law = (
             f"({rate_name}_P)_t on {mesh.first} = ({rate_name}_P)_t on {mesh.second}: "
-            f"{rate_name}_{one}·t + {w}_{mesh.first} r = {rate_name}_{two}·t − "
-            f"{w}_{mesh.second} r (mesh)"
+            f"{rate_name}_{one}·t + {w}_{mesh.first} r = {rate_name}_{two}·t {sign} "
+            f"{w}_{mesh.second} r ({kind})"
         )
         equations.append(Equation(lhs, rhs, law, mesh.line, law))
     return equations

@@ -1049,11 +1049,18 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def mesh_stmt(self, c: list[Any]) -> SceneStmt:
-        """``mesh A with B: radii r_A, r_B``: gears A and B (bars centred on their first
-        points) in external mesh, their pitch circles rolling on each other."""
-        first, second, r_first, r_second = c
+        """``mesh A with B: radii r_A, r_B[, internal]``: gears A and B (bars centred on
+        their first points) in mesh, their pitch circles rolling on each other: outside each
+        other, or (``internal``) the smaller inside the larger, a ring gear."""
+        first, second, r_first, r_second, *internal = c
+        word = "internal" if internal and internal[0] is not None else ""
         return self._stmt(
-            "mesh", first, body=str(first), other=str(second), vectors=((r_first, r_second),)
+            "mesh",
+            first,
+            body=str(first),
+            other=str(second),
+            vectors=((r_first, r_second),),
+            word=word,
         )
 
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
