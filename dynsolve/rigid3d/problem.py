@@ -190,7 +190,7 @@ def build_3d_problem(spec: Spec) -> Problem3D:
             note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
         else:
             note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
-        lhs, rhs = moment[i], sympy.expand(H_dot[i] + m_a_moment[i])
+        lhs, rhs = moment[i], tidy(H_dot[i] + m_a_moment[i])  # factored where shorter
         if not (set(unknowns) & (lhs - rhs).free_symbols):
             if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
                 continue  # holds whatever the reactions: nothing to solve for
