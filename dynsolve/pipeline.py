@@ -230,8 +230,14 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         for each in trials
     )
     energy = _energy_terms(problem, outcome, options)
+    from dynsolve.modes.scene_sketch import sketch_of
+
     return replace(
-        solution, trials=shown, energy=energy, second_moments=second_moment_rows(problem)
+        solution,
+        trials=shown,
+        energy=energy,
+        second_moments=second_moment_rows(problem),
+        sketch=sketch_of(problem.scene),
     )
 
 

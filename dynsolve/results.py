@@ -229,6 +229,25 @@ class LimitRemark:
 
 
 @dataclass(frozen=True)
+class SceneSketch:
+    """A planar scene as the problem's figure, in SI metres (see
+    :mod:`dynsolve.modes.scene_sketch`): each entry a name, then numbers."""
+
+    bodies: tuple[tuple, ...]  # name, shape, x_G, y_G, sizes, angle (degrees, ccw)
+    pins: tuple[tuple[str, float, float], ...]  # name, x, y
+    # name, x, y (under G), n (pushing on the body), half its length
+    surfaces: tuple[tuple[str, float, float, float, float, float], ...]
+    # name, x, y, along the cord, how far to its other end (0: to a support off the figure)
+    cords: tuple[tuple[str, float, float, float, float, float], ...]
+    springs: tuple[tuple[str, float, float, float, float], ...]  # name, one end, the other
+    links: tuple[tuple[str, float, float, float, float], ...]  # name, one end, the other
+    forces: tuple[tuple[str, float, float, float, float], ...]  # name, x, y, direction
+    couples: tuple[tuple[str, float, float, int], ...]  # name, where (G), sense (+1 ccw)
+    paths: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]  # name, sampled points
+    gravity: bool
+
+
+@dataclass(frozen=True)
 class LinkageFigure:
     """A linkage at the instant, as data for a drawing (positions in metres)."""
 
@@ -262,6 +281,7 @@ class Solution:
     trials: tuple[Trial, ...] = ()  # cases assumed, checked and rejected before the answer
     energy: tuple[EnergyTerm, ...] = ()  # work and energy term by term (a scene's travel)
     linkage: LinkageFigure | None = None  # a linkage's joints and bars at the instant
+    sketch: SceneSketch | None = None  # a planar scene as the problem's figure
     # what the answers tell: a mass that cancels, a limit case
     remarks: tuple[Remark | LimitRemark, ...] = ()
     figure: str = ""  # a LaTeX sheet's motion plot: its file, beside the sheet ("" for none)

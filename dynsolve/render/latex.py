@@ -55,7 +55,9 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \setlength{\parskip}{0.6ex}"""
 
 # Only documents with a diagram load TikZ (Debian's texlive-pictures).
-DIAGRAM_PREAMBLE = r"\usepackage{tikz}\usetikzlibrary{arrows.meta}"
+DIAGRAM_PREAMBLE = (
+    r"\usepackage{tikz}\usetikzlibrary{arrows.meta,patterns,decorations.pathmorphing}"
+)
 
 # ---- escaping -------------------------------------------------------------------------
 
@@ -309,7 +311,9 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         ],
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
         "free_body": lambda: (
-            _free_body_section(solution.free_body, solution.system) + _linkage_section(solution)
+            _sketch_section(solution)
+            + _free_body_section(solution.free_body, solution.system)
+            + _linkage_section(solution)
         ),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
         "trials": lambda: [_trial_section(t) for t in solution.trials],
@@ -327,7 +331,8 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
         "checks": lambda: [_checks_section(solution.checks)],
     }
     body = [section for name in plan if name in parts for section in parts[name]()]
-    drawn = (solution.free_body or solution.linkage is not None) and "free_body" in plan
+    pictures = solution.free_body or solution.linkage is not None or solution.sketch is not None
+    drawn = pictures and "free_body" in plan
     preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
     if solution.figure and "steps" in plan:
         preamble += "\n\\usepackage{graphicx}"
@@ -697,6 +702,18 @@ def _linkage_section(solution: Solution) -> list[str]:
     ]
 
 
+def _sketch_section(solution: Solution) -> list[str]:
+    """The problem's figure (a planar scene: bodies, supports, loads), or nothing."""
+    if solution.sketch is None:
+        return []
+    from dynsolve.render.scene_figure import scene_picture
+
+    return [
+        "\\subsection*{The scene}",
+        "\\begin{center}\n" + scene_picture(solution.sketch) + "\n\\end{center}",
+    ]
+
+
 def _free_body_section(bodies: Sequence[FreeBody], system: str = "SI") -> list[str]:
     """The "Free-body diagrams" subsection, or nothing in equation mode."""
     if not bodies:
@@ -717,7 +734,7 @@ def _length(metres: float, system: str) -> str:
 def _free_body(body: FreeBody, system: str = "SI") -> str:
     """One body: its picture, then the motion, the moment point and the kinetic terms."""
     shape = f" ({escape_latex(body.shape)})" if body.shape.strip() else ""
-    facts = [f"\\textbf{{Motion:}} {escape_latex(body.motion) or '?'}."]
+    facts = [f"\\textbf{{Motion:}} {caption_latex(body.motion) or '?'}."]
     if body.moment_point.strip():
         facts.append(f"\\textbf{{Moments about:}} {caption_latex(body.moment_point)}.")
     if body.kinetic:

@@ -1,0 +1,70 @@
+"""The problem's figure on a sheet (issue 12, part 5: "hatched floors and inclines, pins and
+rollers, forces attached at their points"): a planar scene drawn where its bodies are.
+
+Expected geometry by hand from the specs: the crate (Hibbeler 12e Ex. 17.7) 1 m by 1 m
+with G at the origin sits on its base C from (−0.5, −0.5) to (0.5, −0.5), pushed right at
+D (−0.5, 0.3); the disk of the incline example (R = 0.2 m, slope tan β = 0.6) touches the
+incline at C with the normal (−0.6, 1)/√1.36; a pendulum's pin is at O.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from dynsolve.pipeline import solve_file, solve_text
+from dynsolve.render.latex import render_latex
+
+PROBLEMS = Path(__file__).parent.parent / "problems"
+
+
+def test_the_crate_stands_on_its_hatched_floor_pushed_at_its_point():
+    sketch = solve_file(PROBLEMS / "seed" / "tr_hib_crate.dyn").sketch
+    assert sketch is not None
+    ((name, shape, x, y, sizes, angle),) = sketch.bodies
+    assert (name, shape, x, y, sizes, angle) == ("crate", "block", 0.0, 0.0, (1.0, 1.0), 0.0)
+    ((_, fx, fy, nx, ny, half),) = sketch.surfaces
+    assert (fx, fy, nx, ny) == (0.0, -0.5, 0.0, 1.0) and half == pytest.approx(0.9)
+    ((force, px, py, dx, dy),) = sketch.forces
+    assert (force, px, py, dx, dy) == ("P", -0.5, pytest.approx(0.3), 1.0, 0.0)
+    assert sketch.gravity
+
+
+def test_the_incline_is_drawn_along_the_contact():
+    sketch = solve_file(PROBLEMS / "seed" / "gpm_seed_incline_threshold.dyn").sketch
+    assert sketch is not None
+    ((_, _x, _y, nx, ny, _half),) = sketch.surfaces
+    size = math.sqrt(1 + 0.6**2)
+    assert (nx, ny) == (pytest.approx(-0.6 / size), pytest.approx(1 / size))
+
+
+def test_a_pin_is_drawn_on_its_support_and_the_sheet_shows_the_scene():
+    solution = solve_file(PROBLEMS / "seed" / "fa_seed_pendulum.dyn")
+    assert solution.sketch is not None and [p[0] for p in solution.sketch.pins] == ["O"]
+    tex = render_latex(solution)
+    scene = tex[tex.index("\\subsection*{The scene}") : tex.index("Free-body diagrams")]
+    assert "pattern=north east lines" in scene and "circle[radius=1.2]" in scene
+    assert "patterns" in tex.split("\\begin{document}")[0]
+    handout = render_latex(solution, "handout")
+    assert "\\subsection*{The scene}" in handout  # the figure is part of the problem
+    assert "\\subsection*{The scene}" not in render_latex(solution, "key")
+
+
+def test_a_scene_without_numbers_has_no_figure():
+    spec = """\
+given:
+  m: mass
+  r: length
+  M: moment
+scene:
+  body disk: mass m, disk r, at (0, 0)
+  point O: (0, 0)
+  pin disk at O
+  couple M on disk: ccw
+find: alpha = alpha(disk)
+"""
+    solution = solve_text(spec)
+    assert solution.sketch is None
+    assert "The scene" not in render_latex(solution)
