@@ -236,3 +236,12 @@ def test_a_cord_goes_slack_in_time_where_the_hand_formula_says(tmp_path: Path) -
     c = (2 * 9.81 - 36) / (3 * 9.81)
     assert q == pytest.approx(math.acos(c), rel=1e-8)
     assert abs(qd) == pytest.approx(math.sqrt(-9.81 * c), rel=1e-7)
+
+
+def test_a_linkage_without_masses_is_refused_not_divided_by_zero():
+    # fuzz seed 23 (input 806): the massless slider-crank of ic_slider_crank.dyn crashed the
+    # integrator with a ZeroDivisionError (no inertia, no equation of motion)
+    path = Path(__file__).parent.parent / "problems" / "linkages" / "ic_slider_crank.dyn"
+    result = CliRunner().invoke(app, ["simulate", str(path)])
+    assert result.exit_code == 2
+    assert "no bar that moves has a mass" in result.stderr

@@ -310,6 +310,11 @@ def loop_from(linkage: Linkage, placement: Placement) -> Loop:
             raise NotSimulable(f"force {load.name} acts at a third point of {bar.name}")
         F = size * np.array([float(c) for c in load.direction])
         forces.append((F, one, two, t))
+    if not any(m > 0 or I_G > 0 for m, _, _, I_G, _ in masses):
+        raise NotSimulable(
+            "no bar that moves has a mass: without inertia the linkage has no equation of "
+            "motion to integrate (give the bars masses, e.g. 'bar AB: A to B, …, mass m')"
+        )
     drive = linkage.drive("omega", crank.name)
     others = [dr for dr in linkage.drives if dr.name != crank.name]
     if others:
