@@ -1043,8 +1043,8 @@ def chain_assumptions(
                 Assumption(
                     f"impact in stage {k}",
                     True,
-                    f"stated: smooth contact, restitution e = {sympy.sstr(event.e)} along the line "
-                    "of impact; finite forces (weights, supports) give no impulse over it",
+                    f"stated: smooth contact, restitution {_restitution(event.e, values)} along "
+                    "the line of impact; finite forces (weights, supports) give no impulse over it",
                 )
             )
             continue
@@ -1054,8 +1054,8 @@ def chain_assumptions(
                 Assumption(
                     f"impact at {event.name} in stage {k}",
                     True,
-                    f"stated: smooth contact, restitution e = {sympy.sstr(event.e)} along the "
-                    "line; finite forces (the weight) give no impulse over it",
+                    f"stated: smooth contact, restitution {_restitution(event.e, values)} along "
+                    "the line; finite forces (the weight) give no impulse over it",
                 )
             )
             continue
@@ -1193,3 +1193,16 @@ def chain_slips(
             if slide.guessed and start is not None and start * slide.sense > 0:
                 slips[f"{slide.support}@{record.stage.number}"] = -slide.sense
     return slips
+
+
+def _restitution(e: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> str:
+    """``e = 0.6`` (a given e with its value, not "e = e").
+
+    >>> e = sympy.Symbol("e", positive=True)
+    >>> _restitution(e, {e: sympy.Rational(3, 5)}), _restitution(sympy.Rational(1, 2), {})
+    ('e = 0.6', 'e = 1/2')
+    """
+    value = real_value(e, values)
+    if isinstance(e, sympy.Symbol) and value is not None:
+        return f"e = {value:.4g}"
+    return f"e = {sympy.sstr(e)}"
