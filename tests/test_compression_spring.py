@@ -52,3 +52,18 @@ def test_a_spring_is_tension_only_or_compression_only_not_both():
     text = text.replace("compression only", "compression only, tension only")
     with pytest.raises(SpecError):
         solve_text(text, "both.dyn")
+
+
+@pytest.mark.parametrize("k", [-2, 8])
+def test_the_simulation_finds_the_top_at_any_scale(k):
+    # regression (DYNSOLVE_SLOW scale sweep): scaled by 10^-2 or 10^8 the simulation check
+    # took one step over the ball's whole flight, past its top and back onto the spring,
+    # and missed the top; h scales as 10^k (h = k δ²/(2 m g), every given scaled)
+    from dynsolve.pipeline import solve_spec
+    from dynsolve.scaling import scale_spec
+    from dynsolve.spec.parser import parse_file
+
+    solution = solve_spec(scale_spec(parse_file(SCENES / "spring_shoots_ball_up.dyn"), k))
+    (h,) = solution.answers
+    assert h.value == pytest.approx(1.0193679918 * 10**k, rel=1e-9)
+    assert all(c.passed for c in solution.checks), [c for c in solution.checks if not c.passed]

@@ -52,6 +52,7 @@ from dynsolve.simulate.legs import Leg
 AGREEMENT = 1e-6  # relative
 METHOD = "DOP853"
 HORIZON = 200.0  # the run gives up after this many times the travel's time scale
+STEPS_PER_TRAVEL = 50  # at least this many steps over the travel's time scale
 LENGTH_UNITS = {"SI": "m", "FPS": "ft"}
 
 
@@ -192,9 +193,12 @@ def _run(motion: OneDof, q_end: float, qd0: float) -> Run:
     atol = TIGHT_ATOL * np.array([abs(q_end), speed, energy])
     if motion.frictionless:
         atol = atol[:2]
+    # steps of at most 1/50 of the travel's time scale: one long step over a smooth flight
+    # can pass a top and the fall back onto a spring, and its events with it
     return integrate(
-        motion, 0.0, qd0, HORIZON * q_end / speed, [end, stop], METHOD, TIGHT_RTOL, atol
-    )
+        motion, 0.0, qd0, HORIZON * q_end / speed, [end, stop], METHOD, TIGHT_RTOL, atol,
+        max_step=q_end / speed / STEPS_PER_TRAVEL,
+    )  # fmt: skip
 
 
 def _reaches(
