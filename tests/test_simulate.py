@@ -245,3 +245,14 @@ def test_a_linkage_without_masses_is_refused_not_divided_by_zero():
     result = CliRunner().invoke(app, ["simulate", str(path)])
     assert result.exit_code == 2
     assert "no bar that moves has a mass" in result.stderr
+
+
+def test_a_particle_on_a_curved_path_is_not_simulated_down_its_tangent():
+    # regression: the dome's block (moves along a circular path) was integrated along the
+    # straight tangent at its point (q'' = g sin 30° for ever), and the constant-speed car
+    # over the hump as if coasting down its tangent (q'' = g sin β); both are refused now
+    problems = Path(__file__).parent.parent / "problems" / "scenes"
+    car = CliRunner().invoke(app, ["simulate", str(problems / "path_hump_nt.dyn")])
+    assert car.exit_code == 2 and "at constant speed" in car.stderr
+    block = CliRunner().invoke(app, ["simulate", str(problems / "path_dome_nt.dyn")])
+    assert block.exit_code == 2 and "constant q''" not in block.stdout

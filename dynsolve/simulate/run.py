@@ -292,8 +292,17 @@ def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
         except NotSimulable as exc:
             reasons.append(str(exc))
     particles = [n for n, b in scene.bodies.items() if b.particle]
+    if any(s.constant_speed for s in scene.supports):
+        raise NotSimulable(
+            "a particle driven along its path at constant speed (', constant') has no motion "
+            "to integrate: its speed is given"
+        )
     for name in particles:
-        guides = [s for s in scene.supports if s.body == name and s.kind == "contact"]
+        guides = [
+            s
+            for s in scene.supports
+            if s.body == name and s.kind == "contact" and (0 + s.normal_acceleration) == 0
+        ]  # a curved path is no straight surface
         if len(particles) == 1 and len(guides) == 1:
             what = f"distance of {name} along its surface at {guides[0].name}"
             return straight_line(scene, name, guides[0].tangent, symbols, values, what)
