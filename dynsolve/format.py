@@ -71,8 +71,12 @@ def latex_number(value: float, figures: int = 3) -> str:
 
     >>> latex_number(-0.000123456)
     '-1.23\\\\times 10^{-4}'
+    >>> latex_number(float("inf"))
+    '\\\\text{not a finite number}'
     """
     text = sig(value, figures)
+    if text == NOT_FINITE:  # an infinite or undefined value: said, not split at its "e"s
+        return f"\\text{{{NOT_FINITE}}}"
     if "e" in text:
         mantissa, exponent = text.split("e")
         return f"{mantissa}\\times 10^{{{exponent}}}"
