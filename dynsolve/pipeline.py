@@ -107,8 +107,13 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
         from dynsolve.precision import solve_auto
 
         return solve_auto(spec, options, solve_spec)
+    from dynsolve.numbers import light_tidying
+
     try:
-        with step("building the equations"):
+        with (
+            step("building the equations"),
+            light_tidying(options is not None and options.mode == "numeric"),
+        ):
             if spec.kinematics:
                 options = options or SolveOptions()
                 return solve_problem(_kinematics_problem(spec, options), options)

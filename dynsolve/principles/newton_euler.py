@@ -300,7 +300,7 @@ def _sign(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
     value = real_value(expr, values)
     if value is not None:
         return 0 if abs(value) < 1e-12 else (1 if value > 0 else -1)
-    expr = tidy(expr)
+    expr = tidy(expr, light=False)
     if expr.is_positive:
         return 1
     if expr.is_negative:
@@ -316,10 +316,10 @@ def _incline_angle(t: Vec, side: int) -> sympy.Expr:
     >>> _incline_angle((-1 / sympy.sqrt(1 + k**2), -k / sympy.sqrt(1 + k**2)), -1)
     atan(k)
     """
-    across, down = tidy(side * t[0]), tidy(-t[1])
+    across, down = tidy(side * t[0], light=False), tidy(-t[1], light=False)
     if isinstance(down, sympy.sin) and tidy(across - sympy.cos(down.args[0])) == 0:
         return down.args[0]
-    return tidy(sympy.atan(down / across))
+    return tidy(sympy.atan(down / across), light=False)
 
 
 class _Writer:
@@ -444,7 +444,7 @@ class _Writer:
             return None
         if any(_sign(dot(s.normal, first.normal), self.scene.values) != 1 for s in mine[1:]):
             return None
-        gravity = tuple(tidy(c) for c in self.scene.gravity)
+        gravity = tuple(tidy(c, light=False) for c in self.scene.gravity)
         if gravity != (0, -1):
             return None
         values = self.scene.values
@@ -452,7 +452,10 @@ class _Writer:
         downhill = _sign(dot(gravity, first.tangent), values)
         if side == 0 or downhill == 0:  # level, a wall, or a slope of unknown sense
             return None
-        t = (tidy(downhill * first.tangent[0]), tidy(downhill * first.tangent[1]))
+        t = (
+            tidy(downhill * first.tangent[0], light=False),
+            tidy(downhill * first.tangent[1], light=False),
+        )
         side = downhill * side
         beta_value = _incline_angle(t, side)
         cos_b, sin_b = sympy.cos(beta_value), sympy.sin(beta_value)

@@ -169,7 +169,7 @@ def chain_formulation(
             if isinstance(r.stage.event, Pivot)
         },
         speeds=_after_travels(
-            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)))
+            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)), light=False)
         ),
         turns=turns,
         heights=heights,
