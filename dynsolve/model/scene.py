@@ -32,7 +32,7 @@ from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about
 
 if TYPE_CHECKING:
     from dynsolve.system import Constraint
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.units import Dim
@@ -701,6 +701,20 @@ def scene_reader(
 
 
 def build_scene(
+    spec: Spec,
+    symbols: Mapping[str, sympy.Expr],
+    dims: Mapping[str, Dim],
+    given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> Scene:
+    """The scene model of ``spec``; ``symbols`` and ``dims`` cover every given (and g);
+    ``given_values`` lets numeric checks (0 ≤ e ≤ 1) be made at once. Its geometry is
+    tidied in every mode (:func:`~dynsolve.numbers.light_tidying` off): every principle
+    builds on it, and tidy positions and normals keep their formulas and tests small."""
+    with light_tidying(False):
+        return _build_scene(spec, symbols, dims, given_values)
+
+
+def _build_scene(
     spec: Spec,
     symbols: Mapping[str, sympy.Expr],
     dims: Mapping[str, Dim],
