@@ -107,6 +107,11 @@ def light_tidying(on: bool = True) -> Iterator[None]:
         _LIGHT.reset(token)
 
 
+def tidying_lightly() -> bool:
+    """True inside :func:`light_tidying` (numeric mode's model building)."""
+    return _LIGHT.get()
+
+
 def _probe(symbol: sympy.Symbol) -> sympy.Rational | None:
     """A value for ``symbol`` its assumptions allow (None for an integer or a symbol whose
     sign is not known as such): 1 + (a number in [0, 1) from its name), negative where it
