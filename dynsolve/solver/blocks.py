@@ -713,9 +713,9 @@ def _holds(
     it cannot be decided (a letter left)."""
     from dynsolve.solver.residuals import term_size
 
-    numbers: dict[sympy.Symbol, complex] = {}
+    at_root: dict[sympy.Symbol, sympy.Expr] = {}
     for u in unknowns:
-        value = values[u]
+        value = at_root[u] = substitute(values[u], given)
         if value.free_symbols:
             return False
         try:
@@ -729,8 +729,7 @@ def _holds(
             return False
         if (u.is_positive and not number.real > 0) or (u.is_nonnegative and number.real < 0):
             return False
-        numbers[u] = number
-    point = {**given, **values}
+    point = {**given, **at_root}
     for residual in residuals:
         at = substitute(residual, point)
         if at.free_symbols:
