@@ -670,7 +670,7 @@ class _Builder:
 
 def _unit(vector: Vec) -> Vec:
     length = sympy.sqrt(vector[0] ** 2 + vector[1] ** 2)
-    return (tidy(vector[0] / length), tidy(vector[1] / length))
+    return (tidy(vector[0] / length, light=False), tidy(vector[1] / length, light=False))
 
 
 def _article(text: str) -> str:
