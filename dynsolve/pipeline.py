@@ -27,7 +27,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
 from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import real_value, tidy, tidying_lightly
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
@@ -865,6 +865,8 @@ class _View:
             formula = sympy.Integer(0) + target.expr
         else:
             return None
+        if formula is not None and tidying_lightly():  # numeric mode built it untidied
+            formula = tidy(formula, light=False)
         if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
             return None
         value = self.computed(target.name)

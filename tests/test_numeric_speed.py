@@ -124,10 +124,18 @@ def test_numeric_mode_agrees_with_exact(name: str) -> None:
 )
 def test_numeric_mode_equations_read_as_exact_modes(name: str) -> None:
     """The geometry the equations are written with (unit vectors, direction cosines,
-    moment arms, kinetic energies) is tidied in numeric mode too: its equations are no
-    longer than exact mode's (they were up to 8× as long with sin² + cos² left in)."""
+    moment arms, kinetic energies) and what is only shown (derived givens, the second
+    moment point, an answer's own formula) are tidied in numeric mode too: no longer than
+    exact mode's (they were up to 8× as long with sin² + cos² left in)."""
     path = ROOT / "problems" / f"{name}.dyn"
     exact = solve_file(path, SolveOptions(mode="exact"))
     numeric = solve_file(path, SolveOptions(mode="numeric"))
     shown = sum(len(row.text) for row in numeric.equations)
     assert shown <= 1.1 * sum(len(row.text) for row in exact.equations)
+    # the givens' derived rows (I_O = I_G + m r_G²) and the second moment point as well
+    assert sum(len(g.written) for g in numeric.givens) <= 1.1 * sum(
+        len(g.written) for g in exact.givens
+    )
+    assert [row.text for row in numeric.second_moments] == [
+        row.text for row in exact.second_moments
+    ]

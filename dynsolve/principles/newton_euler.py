@@ -1081,7 +1081,7 @@ class _Writer:
         if not on_axis and not PARALLEL_AXIS_FORGOTTEN.get():
             I_O = self.name_quantity(
                 self.suffix(f"I_{pin_name}", body.name),
-                tidy(body.I_G + m * r_G_value**2),
+                tidy(body.I_G + m * r_G_value**2, light=False),
                 Dim(2, 1, 0),
                 f"I about {pin_name}: I_G + m r_G² (parallel-axis theorem)",
             )
