@@ -7,7 +7,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 import sympy
 from sympy.core.cache import cacheit
@@ -61,7 +63,7 @@ def float_functions(expr: sympy.Expr, digits: int = 30) -> sympy.Expr:
     return expr.xreplace(numbers) if numbers else expr
 
 
-def tidy(expr: sympy.Expr | int) -> sympy.Expr:
+def tidy(expr: sympy.Expr | int, light: bool = True) -> sympy.Expr:
     """``expr`` in its tidiest cheap canonical form; ``sympy.simplify`` only as a last resort.
 
     The candidates are the expression itself, its ``together``-, ``cancel``- and
@@ -70,7 +72,9 @@ def tidy(expr: sympy.Expr | int) -> sympy.Expr:
     ``sin(u)**2 + cos(u)**2 = 1`` applied; the one that prints shortest wins (ties: fewer
     operations, then the first). ``sympy.simplify`` (which tries far more, at up to a
     hundred times the cost) runs only on a small result that still holds a sine and a
-    cosine of one angle, and is kept only when it is smaller still.
+    cosine of one angle, and is kept only when it is smaller still. In numeric mode
+    (:func:`light_tidying`) a form that is surely not 0 is left as it is, unless ``light``
+    is False (a decision read from the form: its sign, whether it is a sine).
 
     >>> import sympy
     >>> r, u, a, b = sympy.symbols("r u a b")
@@ -83,6 +87,8 @@ def tidy(expr: sympy.Expr | int) -> sympy.Expr:
     """
     expr = sympy.Integer(0) + expr
     if expr.is_Atom or sympy.count_ops(expr) <= 3:
+        return expr
+    if light and _LIGHT.get() and _surely_nonzero(expr):
         return expr
     best = min(_cheap_forms(expr), key=_size)
     if _worth_simplifying(best):
@@ -108,6 +114,63 @@ def abs_resolved(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) ->
         return argument if value > 0 else -argument
 
     return tidy((sympy.Integer(0) + expr).replace(sympy.Abs, signed))
+
+
+_LIGHT: ContextVar[bool] = ContextVar("light_tidy", default=False)
+
+
+@contextmanager
+def light_tidying(on: bool = True) -> Iterator[None]:
+    """While ``on`` (numeric mode), :func:`tidy` leaves a form that is not 0 as it is (no
+    ``cancel``, Pythagoras or ``simplify``): numeric mode shows the model's formulas as the
+    model wrote them, and solves with numbers. A form that may be 0 (numerically 0 at a point
+    where every letter has a value its assumptions allow, or not a number there) still
+    gets the full :func:`tidy`, so every test ``tidy(x) == 0`` answers as in exact mode:
+    were ``x`` identically 0, it would be 0 at that point."""
+    token = _LIGHT.set(on)
+    try:
+        yield
+    finally:
+        _LIGHT.reset(token)
+
+
+def tidying_lightly() -> bool:
+    """True inside :func:`light_tidying` (numeric mode's model building)."""
+    return _LIGHT.get()
+
+
+def _probe(symbol: sympy.Symbol) -> sympy.Rational | None:
+    """A value for ``symbol`` its assumptions allow (None for an integer or a symbol whose
+    sign is not known as such): 1 + (a number in [0, 1) from its name), negative where it
+    must be."""
+    if symbol.is_integer:
+        return None
+    value = sympy.Rational(1 + sum(map(ord, symbol.name)) % 89, 89) + 1
+    value += sympy.Rational(len(symbol.name) % 7, 701)
+    if symbol.is_negative or symbol.is_nonpositive:
+        return -value
+    return value
+
+
+def _surely_nonzero(expr: sympy.Expr) -> bool:
+    """True when ``expr`` is a number not 0, to the digits sympy's ``evalf`` guarantees,
+    at one point of the letters' domain: then it is not identically 0. False (not known)
+    when a letter has no probe value, the value is not a number, or it has no digits."""
+    point = {}
+    for symbol in expr.free_symbols:
+        value = _probe(symbol) if isinstance(symbol, sympy.Symbol) else None
+        if value is None:
+            return False
+        point[symbol] = value
+    try:
+        value = sympy.N(expr.xreplace(point), 15, maxn=MAX_DIGITS)
+    except (TypeError, ValueError, ArithmeticError, RecursionError):
+        return False
+    if not value.is_number:
+        return False
+    if value.is_Rational:
+        return value != 0
+    return any(f._prec > 10 and f != 0 for f in value.atoms(sympy.Float))
 
 
 def _size(expr: sympy.Expr) -> tuple[int, int]:

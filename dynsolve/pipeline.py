@@ -29,7 +29,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
 from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import abs_resolved, real_value, tidy
+from dynsolve.numbers import abs_resolved, real_value, tidy, tidying_lightly
 from dynsolve.quantities import convert
 from dynsolve.results import (
     AnswerRow,
@@ -110,8 +110,13 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
         from dynsolve.precision import solve_auto
 
         return solve_auto(spec, options, solve_spec)
+    from dynsolve.numbers import light_tidying
+
     try:
-        with step("building the equations"):
+        with (
+            step("building the equations"),
+            light_tidying(options is not None and options.mode == "numeric"),
+        ):
             if spec.kinematics:
                 options = options or SolveOptions()
                 return solve_problem(_kinematics_problem(spec, options), options)
@@ -990,6 +995,8 @@ class _View:
             formula = sympy.Integer(0) + target.expr
         else:
             return None
+        if formula is not None and tidying_lightly():  # numeric mode built it untidied
+            formula = tidy(formula, light=False)
         if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
             return None
         value = self.computed(target.name)

@@ -32,7 +32,7 @@ from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about
 
 if TYPE_CHECKING:
     from dynsolve.system import Constraint
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.spec.ast import Direction, EquationStmt, Expr, Location, Name, Prop, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.spec.printing import expr_text
@@ -713,7 +713,7 @@ class _Builder:
 
 def _unit(vector: Vec) -> Vec:
     length = sympy.sqrt(vector[0] ** 2 + vector[1] ** 2)
-    return (tidy(vector[0] / length), tidy(vector[1] / length))
+    return (tidy(vector[0] / length, light=False), tidy(vector[1] / length, light=False))
 
 
 def _article(text: str) -> str:
@@ -744,6 +744,20 @@ def scene_reader(
 
 
 def build_scene(
+    spec: Spec,
+    symbols: Mapping[str, sympy.Expr],
+    dims: Mapping[str, Dim],
+    given_values: Mapping[sympy.Symbol, sympy.Expr] | None = None,
+) -> Scene:
+    """The scene model of ``spec``; ``symbols`` and ``dims`` cover every given (and g);
+    ``given_values`` lets numeric checks (0 ≤ e ≤ 1) be made at once. Its geometry is
+    tidied in every mode (:func:`~dynsolve.numbers.light_tidying` off): every principle
+    builds on it, and tidy positions and normals keep their formulas and tests small."""
+    with light_tidying(False):
+        return _build_scene(spec, symbols, dims, given_values)
+
+
+def _build_scene(
     spec: Spec,
     symbols: Mapping[str, sympy.Expr],
     dims: Mapping[str, Dim],

@@ -339,8 +339,12 @@ class _Builder:
                 self._derive(quantity, motion.formulas[key], rule, step_lines)
         lines = tuple(s.line for s in self.relations.values())
         v_x, v_y, a_x, a_y = (self.formulas[q] for q in ("v_x", "v_y", "a_x", "a_y"))
-        self._derive("v", tidy(sympy.sqrt(v_x**2 + v_y**2)), "v = √(v_x² + v_y²)", lines)
-        self._derive("a", tidy(sympy.sqrt(a_x**2 + a_y**2)), "a = √(a_x² + a_y²)", lines)
+        self._derive(
+            "v", tidy(sympy.sqrt(v_x**2 + v_y**2), light=False), "v = √(v_x² + v_y²)", lines
+        )
+        self._derive(
+            "a", tidy(sympy.sqrt(a_x**2 + a_y**2), light=False), "a = √(a_x² + a_y²)", lines
+        )
 
     def _polar(self) -> None:
         r_line, theta_line = self.relations["r"], self.relations["theta"]
@@ -353,9 +357,9 @@ class _Builder:
         self._derive("v_theta", found.v_theta, "v_θ = r dθ/dt", lines)
         self._derive("a_r", found.a_r, "a_r = d²r/dt² − r (dθ/dt)²", lines)
         self._derive("a_theta", found.a_theta, "a_θ = r d²θ/dt² + 2 (dr/dt)(dθ/dt)", lines)
-        speed = tidy(sympy.sqrt(found.v_r**2 + found.v_theta**2))
+        speed = tidy(sympy.sqrt(found.v_r**2 + found.v_theta**2), light=False)
         self._derive("v", speed, "v = √(v_r² + v_θ²)", lines)
-        magnitude = tidy(sympy.sqrt(found.a_r**2 + found.a_theta**2))
+        magnitude = tidy(sympy.sqrt(found.a_r**2 + found.a_theta**2), light=False)
         self._derive("a", magnitude, "a = √(a_r² + a_θ²)", lines)
 
     def _normal_tangential(self) -> None:

@@ -21,7 +21,7 @@ from dynsolve.model.inertia import composite, parallel_axis
 from dynsolve.model.scene import Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
@@ -399,10 +399,12 @@ def _inertia_rows(
     for pivot in scene.pivots:  # a body struck at a point turns about it: I_P = I_G + m d²
         body = scene.bodies[pivot.body]
         name = f"I_{pivot.name}" if len(scene.pivots) == 1 else f"I_{pivot.name}_{body.name}"
-        d2 = tidy((body.G[0] - pivot.point[0]) ** 2 + (body.G[1] - pivot.point[1]) ** 2)
+        d2 = tidy(
+            (body.G[0] - pivot.point[0]) ** 2 + (body.G[1] - pivot.point[1]) ** 2, light=False
+        )
         if body.particle or name in symbols or _is_zero_expr(d2):
             continue
-        formula = tidy(body.I_G + body.mass * d2)
+        formula = tidy(body.I_G + body.mass * d2, light=False)
         value = formula.xreplace(given_values) if given_values else formula
         note = (
             f"I about {pivot.name} of {body.name}: I_G + m d² (parallel-axis theorem), "
@@ -631,6 +633,11 @@ def second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
     a check: about G where the equations took moments about a pin or a contact (the
     spool's Method I, the car's Section I, the flywheel's ΣM_G = I_G α). Not part of the
     solved system; the 'second moment point' check verifies it with the solved values."""
+    with light_tidying(False):  # shown as exact mode shows it, in every mode
+        return _second_moment_rows(problem)
+
+
+def _second_moment_rows(problem: SceneProblem) -> tuple[EquationRow, ...]:
     from dynsolve.principles.moment_check import moment_equation
     from dynsolve.system import Equation
 

@@ -187,12 +187,12 @@ def point_text(P: Vec, G: Vec) -> str:
 
 def _projected(forces: list[ForceTerm], axis: Vec) -> sympy.Expr:
     """Σ F·axis, each force's direction cosine simplified (so O_n·e_n reads O_n)."""
-    return sympy.Add(*(f.magnitude * tidy(dot(f.direction, axis)) for f in forces))
+    return sympy.Add(*(f.magnitude * tidy(dot(f.direction, axis), light=False) for f in forces))
 
 
 def _moment(forces: list[ForceTerm], couples: list[CoupleTerm], P: Vec) -> sympy.Expr:
     """Σ (r − P) × F + Σ couples, each moment arm simplified."""
-    arms = (f.magnitude * tidy(cross(_minus(f.point, P), f.direction)) for f in forces)
+    arms = (f.magnitude * tidy(cross(_minus(f.point, P), f.direction), light=False) for f in forces)
     return sympy.Add(*arms) + sympy.Add(*(c.moment for c in couples))
 
 
@@ -274,10 +274,10 @@ class InclineAxes:
         (sin(beta), 0)
         """
         exact, written = (self.t, self.t_beta) if axis == "t" else (self.n, self.n_beta)
-        along = tidy(dot(direction, exact))
+        along = tidy(dot(direction, exact), light=False)
         if along.is_Number or _is_zero(cross(direction, exact)):
             return along
-        return tidy(dot(direction, written))
+        return tidy(dot(direction, written), light=False)
 
     def cross(self, r: Vec, f: Vec) -> sympy.Expr:
         """The z component of r × f from their t and n components (in β, not the slope).
@@ -300,7 +300,7 @@ def _sign(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> int:
     value = real_value(expr, values)
     if value is not None:
         return 0 if abs(value) < 1e-12 else (1 if value > 0 else -1)
-    expr = tidy(expr)
+    expr = tidy(expr, light=False)
     if expr.is_positive:
         return 1
     if expr.is_negative:
@@ -316,10 +316,10 @@ def _incline_angle(t: Vec, side: int) -> sympy.Expr:
     >>> _incline_angle((-1 / sympy.sqrt(1 + k**2), -k / sympy.sqrt(1 + k**2)), -1)
     atan(k)
     """
-    across, down = tidy(side * t[0]), tidy(-t[1])
+    across, down = tidy(side * t[0], light=False), tidy(-t[1], light=False)
     if isinstance(down, sympy.sin) and tidy(across - sympy.cos(down.args[0])) == 0:
         return down.args[0]
-    return tidy(sympy.atan(down / across))
+    return tidy(sympy.atan(down / across), light=False)
 
 
 class _Writer:
@@ -444,7 +444,7 @@ class _Writer:
             return None
         if any(_sign(dot(s.normal, first.normal), self.scene.values) != 1 for s in mine[1:]):
             return None
-        gravity = tuple(tidy(c) for c in self.scene.gravity)
+        gravity = tuple(tidy(c, light=False) for c in self.scene.gravity)
         if gravity != (0, -1):
             return None
         values = self.scene.values
@@ -452,7 +452,10 @@ class _Writer:
         downhill = _sign(dot(gravity, first.tangent), values)
         if side == 0 or downhill == 0:  # level, a wall, or a slope of unknown sense
             return None
-        t = (tidy(downhill * first.tangent[0]), tidy(downhill * first.tangent[1]))
+        t = (
+            tidy(downhill * first.tangent[0], light=False),
+            tidy(downhill * first.tangent[1], light=False),
+        )
         side = downhill * side
         beta_value = _incline_angle(t, side)
         cos_b, sin_b = sympy.cos(beta_value), sympy.sin(beta_value)
@@ -700,8 +703,8 @@ class _Writer:
     def _ends(self, body: str, point: Vec, other: str, other_point: Vec) -> tuple[Vec, sympy.Expr]:
         """The unit vector from ``point`` toward the other end, and the length between them."""
         d = _minus(other_point, point)
-        length = tidy(sympy.sqrt(d[0] ** 2 + d[1] ** 2))
-        return (tidy(d[0] / length), tidy(d[1] / length)), length
+        length = tidy(sympy.sqrt(d[0] ** 2 + d[1] ** 2), light=False)
+        return (tidy(d[0] / length, light=False), tidy(d[1] / length, light=False)), length
 
     def _spring(self, spring: object) -> None:
         from dynsolve.model.scene import Spring
@@ -1070,8 +1073,8 @@ class _Writer:
     ) -> None:
         """ΣF_t = m (a_G)_t and ΣF_n = m (a_G)_n, t down the incline and n out of it."""
         m, tag = body.mass, f"({body.name})"
-        along = tidy(dot(kin.a_G, axes.t))
-        normal = tidy(dot(kin.a_G, axes.n))
+        along = tidy(dot(kin.a_G, axes.t), light=False)
+        normal = tidy(dot(kin.a_G, axes.n), light=False)
         sum_t = sympy.Add(*(f.magnitude * axes.component(f.direction, "t") for f in forces))
         sum_n = sympy.Add(*(f.magnitude * axes.component(f.direction, "n") for f in forces))
         where = next(s.point_name for s in self.scene.supports if s.name == axes.support)
@@ -1097,8 +1100,11 @@ class _Writer:
         pin = kin.pin
         assert pin is not None
         m, tag = body.mass, f"({body.name})"
-        r = (tidy(body.G[0] - pin.point[0]), tidy(body.G[1] - pin.point[1]))
-        r_G_value = tidy(sympy.sqrt(r[0] ** 2 + r[1] ** 2))
+        r = (
+            tidy(body.G[0] - pin.point[0], light=False),
+            tidy(body.G[1] - pin.point[1], light=False),
+        )
+        r_G_value = tidy(sympy.sqrt(r[0] ** 2 + r[1] ** 2), light=False)
         pin_name = pin.name
         on_axis = _is_zero(r_G_value)
         r_G = self.name_quantity(
@@ -1108,7 +1114,7 @@ class _Writer:
         if not on_axis and not PARALLEL_AXIS_FORGOTTEN.get():
             I_O = self.name_quantity(
                 self.suffix(f"I_{pin_name}", body.name),
-                tidy(body.I_G + m * r_G_value**2),
+                tidy(body.I_G + m * r_G_value**2, light=False),
                 Dim(2, 1, 0),
                 f"I about {pin_name}: I_G + m r_G² (parallel-axis theorem)",
             )

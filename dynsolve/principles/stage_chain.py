@@ -40,7 +40,7 @@ from dynsolve.model.scene import (
     Vec,
 )
 from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
-from dynsolve.numbers import float_functions, real_value, tidy
+from dynsolve.numbers import float_functions, real_value, tidy, tidying_lightly
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
 from dynsolve.results import Assumption
 from dynsolve.system import Constraint, Equation
@@ -169,7 +169,7 @@ def chain_formulation(
             if isinstance(r.stage.event, Pivot)
         },
         speeds=_after_travels(
-            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)))
+            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)), light=False)
         ),
         turns=turns,
         heights=heights,
@@ -268,14 +268,17 @@ class _Chain:
         equations = [float_functions(e.residual.xreplace(self.known)) for e in step.equations]
         if any(e.free_symbols - set(step.unknowns) for e in equations):
             return  # it depends on a later stage (an unknown extent) or on loads
+        # numeric mode: without sympy's simplify of every root (half the time here): the
+        # same roots, tidied below; they are numbers, read only for the senses and signs
+        simplify = not tidying_lightly()
         try:
-            roots = sympy.solve(equations, list(step.unknowns), dict=True)
+            roots = sympy.solve(equations, list(step.unknowns), dict=True, simplify=simplify)
         except (NotImplementedError, ValueError):  # pragma: no cover - sympy's own limits
             return
         if len(roots) > 1:  # as the solve does: a rate entering only squared is taken ≥ 0
             roots = [r for r in roots if all((0 + v).is_nonnegative for v in r.values())]
         if len(roots) == 1 and set(roots[0]) == set(step.unknowns):
-            self.known.update({s: tidy(v) for s, v in roots[0].items()})
+            self.known.update({s: tidy(v, light=False) for s, v in roots[0].items()})
 
     def interval(self, stage: Stage, travel: Travel) -> _Step:
         """Impulse and momentum over an interval of constant forces (``for Δt``, with

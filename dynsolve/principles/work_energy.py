@@ -369,7 +369,10 @@ def _kinetic(scene: Scene, v_G: Mapping[str, Vec], omega: Mapping[str, sympy.Exp
     terms = []
     for name, body in scene.bodies.items():
         v = v_G.get(name, ZERO)
-        terms += [tidy(body.mass * dot(v, v) / 2), tidy(body.I_G * omega.get(name, 0) ** 2 / 2)]
+        terms += [
+            tidy(body.mass * dot(v, v) / 2, light=False),
+            tidy(body.I_G * omega.get(name, 0) ** 2 / 2, light=False),
+        ]
     return sympy.Add(*terms)
 
 
@@ -462,7 +465,9 @@ def _mechanism(
     v_G = {n: (v[0] * q, v[1] * q) for n, v in rates.v_G.items()}
     spins = {n: tidy(w * q) for n, w in {**rates.omega, **rates.link_omega}.items()}
     T2 = _kinetic(scene, v_G, spins)
-    speeds = {n: tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2)) * q for n, v in rates.v_G.items()}
+    speeds = {
+        n: tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2), light=False) * q for n, v in rates.v_G.items()
+    }
     relations = (*change.relations, f"velocities in state 2 in terms of the {change.rate_name}")
     equation = _equation(T1, work, T2)
     second = None

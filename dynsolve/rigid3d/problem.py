@@ -46,7 +46,7 @@ from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.scene_mode import _row, _unit, _unused
-from dynsolve.numbers import tidy
+from dynsolve.numbers import light_tidying, tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check, EquationRow, Step
 from dynsolve.rigid3d.energy import EnergyTerms, build_energy_problem, fixed_point_check
@@ -544,6 +544,11 @@ def second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     a component that holds whatever the reactions is left out."""
     if problem.energy is not None or not problem.scene.bearings:
         return ()
+    with light_tidying(False):  # shown as exact mode shows it, in every mode
+        return _second_moment_rows(problem)
+
+
+def _second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     origin, label = _second_origin(problem)
     total, expected = _moments_about(problem, origin)
     dims = {problem.symbols[n]: d for n, d in problem.dims.dims.items() if n in problem.symbols}

@@ -540,7 +540,7 @@ def _briefly_symbolic(
     down; the letters do not), its roots in floating point; None when sympy does not
     finish within :data:`BRIEF_BUDGET` (then the root search runs)."""
     seconds = min(BRIEF_BUDGET, options.time_budget)
-    attempt, _ = _symbolic_candidates(residuals, unknowns, seconds, given)
+    attempt, _ = _symbolic_candidates(residuals, unknowns, seconds, given, check=False)
     if attempt is None or not attempt.candidates or attempt.free:
         return None
     candidates = tuple(Candidate(_in_mode(c.values, options)) for c in attempt.candidates)
@@ -581,7 +581,7 @@ def _polynomial_roots(
             candidates = tuple(Candidate({unknowns[0]: _to_sympy(r)}) for r in roots)
             return BlockSolution(unknowns, "numeric", candidates, note=note)
     exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
-    attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None)
+    attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None, check=False)
     if attempt is None or not attempt.candidates:
         # sympy keeps only the roots its assumptions allow (t_s positive): without them,
         # every root, as a numeric search would find them, for the root choice to judge
@@ -589,7 +589,7 @@ def _polynomial_roots(
         back = {d: u for u, d in plain.items()}
         residuals_plain = [r.xreplace(plain) for r in exact]
         attempt, _ = _symbolic_candidates(
-            residuals_plain, tuple(plain.values()), options.time_budget, None
+            residuals_plain, tuple(plain.values()), options.time_budget, None, check=False
         )
         if attempt is not None:
             attempt = replace(
@@ -700,8 +700,12 @@ def _symbolic_candidates(
     unknowns: tuple[sympy.Symbol, ...],
     seconds: float,
     given: Mapping[sympy.Symbol, sympy.Expr] | None,
+    check: bool = True,
 ) -> tuple[BlockSolution | None, str]:
     """``sympy.solve`` within ``seconds``; with ``given``, roots are formulas to substitute into.
+    Without ``check`` (numeric mode, whose roots are numbers), sympy's own check of each
+    root (``checksol``, a ``simplify`` of every residual: most of the solve's time) is
+    replaced by :func:`_holds`, in numbers.
 
     Returns the solution, or None and the reason it could not be used.
     """
@@ -713,7 +717,10 @@ def _symbolic_candidates(
     try:
         # sympy's own simplify of every root costs more than the solve; tidy() does it cheaply
         roots, timed_out = _within_budget(
-            lambda: _tidy_roots(sympy.solve(problem, targets, dict=True, simplify=False)), seconds
+            lambda: _tidy_roots(
+                sympy.solve(problem, targets, dict=True, simplify=False, check=check)
+            ),
+            seconds,
         )
     except _SYMPY_GAVE_UP:
         return None, "sympy found no closed form"
@@ -728,9 +735,59 @@ def _symbolic_candidates(
         ), ""
     candidates = [_candidate(r, unknowns, given) for r in complete]
     candidates = [c for c in candidates if c is not None]
+    if not check:
+        candidates = [c for c in candidates if _holds(residuals, unknowns, c.values, given or {})]
     if not candidates:
         return None, "sympy found no solution" if not roots else "formulas undefined here"
     return BlockSolution(unknowns, "symbolic", tuple(candidates)), ""
+
+
+UNCHECKED_RESIDUAL = 1e-15  # relative residual (30 digits) up to which an unchecked root holds
+
+
+def _holds(
+    residuals: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """sympy's check of an unchecked root, in numbers: every value a number its unknown's
+    assumptions allow (real, positive, nonnegative: ``oo*I`` or −2 for a positive time is
+    not a root), and every residual at the root, evaluated to 30 digits, within
+    :data:`UNCHECKED_RESIDUAL` of 0 relative to the size of its terms (a root of a squared
+    equation, or one that zeroes a denominator, is off by far more). False when any of
+    it cannot be decided (a letter left)."""
+    from dynsolve.solver.residuals import term_size
+
+    at_root: dict[sympy.Symbol, sympy.Expr] = {}
+    for u in unknowns:
+        value = at_root[u] = substitute(values[u], given)
+        if value.free_symbols:
+            return False
+        try:
+            number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
+        except (TypeError, ValueError, ArithmeticError):
+            return False
+        if not (math.isfinite(number.real) and math.isfinite(number.imag)):
+            return False
+        real = abs(number.imag) <= 1e-20 * abs(number.real)
+        if u.is_real and not real:
+            return False
+        if (u.is_positive and not number.real > 0) or (u.is_nonnegative and number.real < 0):
+            return False
+    point = {**given, **at_root}
+    for residual in residuals:
+        at = substitute(residual, point)
+        if at.free_symbols:
+            return False
+        try:
+            size = abs(complex(sympy.N(at, 30, maxn=MAX_DIGITS)))
+            scale = term_size(as_expr(residual), point)
+        except (TypeError, ValueError, ArithmeticError):
+            return False
+        if not math.isfinite(size) or size > UNCHECKED_RESIDUAL * scale:
+            return False
+    return True
 
 
 def _tidy_roots(roots: list[dict[sympy.Symbol, sympy.Expr]]) -> list[dict]:

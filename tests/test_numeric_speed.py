@@ -1,0 +1,141 @@
+"""Numeric mode's shortcuts (issue 14, part 3) keep exact mode's decisions and answers.
+
+* While building in numeric mode (:func:`dynsolve.numbers.light_tidying`), a formula that
+  is surely not 0 is left as written, but anything that may be 0 gets the full ``tidy``,
+  so a test ``tidy(x) == 0`` answers as in exact mode.
+* Where sympy's root check is skipped (numbers only), :func:`_holds` rejects what
+  ``checksol`` would: a root off its equation, a value its unknown's assumptions forbid.
+* On bundled problems, numeric mode gives exact mode's checks and answers (1e-12).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import sympy
+
+from dynsolve.numbers import _surely_nonzero, light_tidying, tidy, tidying_lightly
+from dynsolve.pipeline import solve_file
+from dynsolve.solver.blocks import _holds, solve_block
+from dynsolve.system import SolveOptions
+
+ROOT = Path(__file__).resolve().parent.parent
+a, b, u = sympy.symbols("a b u", positive=True)
+x = sympy.Symbol("x", real=True)
+
+
+def test_light_tidying_leaves_a_nonzero_form_as_written() -> None:
+    expr = a * b * sympy.sin(u) ** 2 + a * b * sympy.cos(u) ** 2
+    assert tidy(expr) == a * b
+    with light_tidying():
+        assert tidying_lightly()
+        assert tidy(expr) == expr
+        assert tidy(expr, light=False) == a * b  # a decision read from the form
+    assert not tidying_lightly()
+
+
+@pytest.mark.parametrize(
+    "zero",
+    [
+        sympy.sin(u) ** 2 + sympy.cos(u) ** 2 - 1,
+        (a * b - b**2) / (a - b) - b,
+        sympy.sqrt(3) * sympy.sqrt(a) - sympy.sqrt(3 * a),
+        a * (sympy.sin(x) ** 2 + sympy.cos(x) ** 2) - a,
+    ],
+)
+def test_light_tidying_still_finds_zero(zero: sympy.Expr) -> None:
+    assert not _surely_nonzero(zero)
+    with light_tidying():
+        assert tidy(zero) == 0
+
+
+def test_surely_nonzero_only_with_digits() -> None:
+    assert _surely_nonzero(a - b + 1 - a + b - 1 + sympy.Rational(1, 10**20))
+    assert not _surely_nonzero(sympy.Function("f")(a))  # not a number: not known
+    assert not _surely_nonzero(sympy.Symbol("n", integer=True) - 1)  # no probe for an integer
+    w = sympy.Symbol("w", negative=True)
+    assert _surely_nonzero(sympy.sqrt(-w))  # probed at a negative value: a real root
+
+
+def test_holds_rejects_what_checksol_rejects() -> None:
+    theta = sympy.Symbol("theta", real=True)
+    residual = [sympy.sin(theta) * (2 * sympy.cos(theta) - 1)]
+    assert _holds(residual, (theta,), {theta: sympy.pi / 3}, {})
+    assert not _holds(residual, (theta,), {theta: sympy.oo * sympy.I}, {})
+    assert not _holds(residual, (theta,), {theta: sympy.Rational(1, 2)}, {})
+    t = sympy.Symbol("t", positive=True)
+    squared = [t**2 - 4]
+    assert _holds(squared, (t,), {t: sympy.Integer(2)}, {})
+    assert not _holds(squared, (t,), {t: sympy.Integer(-2)}, {})  # t is positive
+    g = sympy.Symbol("g", positive=True)
+    assert _holds([t**2 - g], (t,), {t: sympy.sqrt(g)}, {g: sympy.Integer(9)})
+    assert not _holds([t**2 - g], (t,), {t: sympy.sqrt(g)}, {})  # a letter left: unknown
+
+
+def test_brief_symbolic_block_in_numbers() -> None:
+    """A transcendental block numeric mode solves with the knowns as letters, without
+    sympy's root check: the spurious ±oo*I roots are gone, the real ones kept."""
+    theta = sympy.Symbol("theta_s", real=True)
+    L, W, g, m = sympy.symbols("L Omega g m", positive=True)
+    residual = (
+        L**2 * W**2 * m * sympy.sin(theta) * sympy.cos(theta) / 3 - L * g * m * sympy.sin(theta) / 2
+    )
+    given = {L: sympy.Rational(6, 5), W: 4, g: sympy.Rational(981, 100), m: 3}
+    found = solve_block([residual], [theta], given, SolveOptions(mode="numeric"))
+    values = sorted(float(c.values[theta]) for c in found.candidates)
+    exact = float(sympy.acos(3 * given[g] / (2 * given[L] * given[W] ** 2)))
+    assert values == pytest.approx([-exact, 0.0, exact], rel=1e-13, abs=1e-300)
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "seed/fa_seed_pendulum",
+        "scenes/path_dome_nt",
+        "stages/bob_horizontal_then_slack",
+        "rigid3d/bar_on_shaft_steady",
+        "seed/gpm_seed_incline_threshold",
+    ],
+)
+def test_numeric_mode_agrees_with_exact(name: str) -> None:
+    path = ROOT / "problems" / f"{name}.dyn"
+    exact = solve_file(path, SolveOptions(mode="exact"))
+    numeric = solve_file(path, SolveOptions(mode="numeric"))
+    assert [(c.name, c.passed) for c in numeric.checks] == [
+        (c.name, c.passed) for c in exact.checks
+    ]
+    got = {row.name: row.value for row in numeric.answers}
+    for row in exact.answers:
+        assert row.value is not None
+        assert got[row.name] == pytest.approx(row.value, rel=1e-12)
+    assert len(numeric.equations) == len(exact.equations)
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "seed/fa_seed_pendulum",
+        "scenes/path_hump_nt",
+        "seed/gpm_seed_incline_threshold",
+        "seed/rwe_seed_platform",
+        "stages/pendulum_tension_bottom",
+    ],
+)
+def test_numeric_mode_equations_read_as_exact_modes(name: str) -> None:
+    """The geometry the equations are written with (unit vectors, direction cosines,
+    moment arms, kinetic energies) and what is only shown (derived givens, the second
+    moment point, an answer's own formula) are tidied in numeric mode too: no longer than
+    exact mode's (they were up to 8× as long with sin² + cos² left in)."""
+    path = ROOT / "problems" / f"{name}.dyn"
+    exact = solve_file(path, SolveOptions(mode="exact"))
+    numeric = solve_file(path, SolveOptions(mode="numeric"))
+    shown = sum(len(row.text) for row in numeric.equations)
+    assert shown <= 1.1 * sum(len(row.text) for row in exact.equations)
+    # the givens' derived rows (I_O = I_G + m r_G²) and the second moment point as well
+    assert sum(len(g.written) for g in numeric.givens) <= 1.1 * sum(
+        len(g.written) for g in exact.givens
+    )
+    assert [row.text for row in numeric.second_moments] == [
+        row.text for row in exact.second_moments
+    ]
