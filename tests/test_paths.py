@@ -211,3 +211,16 @@ def test_a_path_with_a_bare_coefficient_is_told_to_give_it_a_unit(tmp_path):
         solve_file(file)
     assert "a path's coefficients carry units" in error.value.hint
     assert "k = 0.0025 1/m" in error.value.hint
+
+
+def test_the_newcomers_car_through_a_dip_at_constant_speed():
+    # newcomer report (hand derivation in problems/scenes/path_dip_constant_speed.dyn):
+    # N = m (g cos β + v²/ρ) = 17 453.7 N, F = m g sin β = 2182.8 N, a = v²/ρ = 1.93435 m/s²;
+    # coasting it had a = 2.42 m/s² with every check green
+    path = Path(__file__).parent.parent / "problems" / "scenes" / "path_dip_constant_speed.dyn"
+    N, F, a = solve_file(path).answers
+    beta = math.atan(0.15)
+    a_n = 400 * math.cos(beta) ** 3 / 200
+    assert N.value == pytest.approx(1500 * (9.81 * math.cos(beta) + a_n), rel=1e-12)
+    assert F.value == pytest.approx(1500 * 9.81 * math.sin(beta), rel=1e-12)
+    assert a.value == pytest.approx(a_n, rel=1e-12)
