@@ -1909,10 +1909,6 @@ def direction_of(kind: str, value: float, axis: tuple[float, float] | None = Non
     return ""
 
 
-def _is_zero_expr(expr: sympy.Expr | int) -> bool:
-    return (sympy.Integer(0) + expr).is_zero is True
-
-
 def _path_side(
     scene: Scene, support: Support, N: float, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> tuple[Assumption, ...]:

@@ -168,7 +168,7 @@ def _body(body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -
 def _reach(body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:
     """How far from G the farthest point is where a support, cord or load acts on ``body``."""
     x, y = _point(body.G, values)
-    points = [p for p in body.points.values()]
+    points = list(body.points.values())
     points += [s.point for s in scene.supports if s.body == body.name]
     points += [c.point for c in scene.cords if c.body == body.name]
     points += [c.other_point for c in scene.cords if c.other == body.name and c.other_point]

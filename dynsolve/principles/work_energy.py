@@ -78,15 +78,8 @@ def _side_kept(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr]) -> sy
     >>> _side_kept(sympy.Abs(sympy.Rational(3, 5) - d), {})
     3/5 - d
     """
-
-    def signed(argument: sympy.Expr) -> sympy.Expr:
-        unknown = {s: sympy.Integer(0) for s in argument.free_symbols if s not in known}
-        value = real_value(argument.xreplace(unknown), known) if unknown else None
-        if value is None or value == 0:
-            return sympy.Abs(argument)
-        return argument if value > 0 else -argument
-
-    return tidy(expr.replace(sympy.Abs, signed))
+    at_start = {s: sympy.Integer(0) for s in expr.free_symbols if s not in known}
+    return abs_resolved(expr, {**at_start, **known})
 
 
 def _length(a: Vec, b: Vec) -> sympy.Expr:
@@ -195,7 +188,7 @@ class _Work:
             end = end or spring.other_point
             known = {**self.scene.values, **self.values}  # |E − P| as E − P where its sign shows
             s1 = abs_resolved(_length(spring.point, spring.other_point) - spring.unstretched, known)
-            s2 = _side_kept(abs_resolved(_length(start, end) - spring.unstretched, known), known)
+            s2 = _side_kept(_length(start, end) - spring.unstretched, known)
             if spring.one_way:  # an elastic cord stores energy only while stretched, a
                 # push-only spring only while compressed
                 values = {**self.scene.values, **self.values}

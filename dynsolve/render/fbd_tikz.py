@@ -139,6 +139,32 @@ def polar(centre: Point, radius: float, degrees: float) -> Point:
     return (centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle))
 
 
+def fit(
+    reach: Sequence[Point], width: float, height: float
+) -> tuple[Callable[[Point], Point], float]:
+    """The map from metres to the page (mm, the points' box centred on 0) that fits
+    ``reach`` into ``width`` by ``height`` mm, and its scale (mm per metre; 1000 for a
+    single point).
+
+    >>> at, scale = fit([(0.0, 0.0), (2.0, 1.0)], 80.0, 60.0)
+    >>> scale, at((2.0, 1.0))
+    (40.0, (40.0, 20.0))
+    """
+    xs, ys = [p[0] for p in reach] or [0.0], [p[1] for p in reach] or [0.0]
+    span_x, span_y = max(xs) - min(xs), max(ys) - min(ys)
+    scale = min(
+        width / span_x if span_x > 0 else math.inf,
+        height / span_y if span_y > 0 else math.inf,
+    )
+    scale = scale if math.isfinite(scale) else 1000.0
+    middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
+
+    def at(point: Point) -> Point:
+        return ((point[0] - middle[0]) * scale, (point[1] - middle[1]) * scale)
+
+    return at, scale
+
+
 def unit_of(dx: float, dy: float) -> Point | None:
     """The direction as a unit vector, or None when there is none.
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 from dynsolve.names import latex_name
-from dynsolve.render.fbd_tikz import num
+from dynsolve.render.fbd_tikz import fit, num
 from dynsolve.results import LinkageFigure
 
 Point = tuple[float, float]
@@ -38,17 +38,10 @@ def linkage_picture(figure: LinkageFigure) -> str:
     for _, centre, radius in figure.wheels:
         cx, cy = where[centre]
         reach += [(cx - radius, cy - radius), (cx + radius, cy + radius)]
-    xs, ys = [p[0] for p in reach], [p[1] for p in reach]
-    span_x, span_y = max(xs) - min(xs), max(ys) - min(ys)
-    scale = min(
-        WIDTH_MM / span_x if span_x > 0 else math.inf,
-        HEIGHT_MM / span_y if span_y > 0 else math.inf,
-    )
-    scale = scale if math.isfinite(scale) else 1000.0
-    origin = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
+    to_page, scale = fit(reach, WIDTH_MM, HEIGHT_MM)
 
     def at(point: Point) -> str:
-        return _xy(((point[0] - origin[0]) * scale, (point[1] - origin[1]) * scale))
+        return _xy(to_page(point))
 
     lines = [r"\begin{tikzpicture}[x=1mm,y=1mm]"]
     for point, dx, dy in figure.guides:

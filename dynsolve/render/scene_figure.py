@@ -22,7 +22,7 @@ import math
 from collections.abc import Callable
 
 from dynsolve.names import latex_name
-from dynsolve.render.fbd_tikz import num, polar
+from dynsolve.render.fbd_tikz import fit, num, polar
 from dynsolve.results import SceneSketch
 
 Point = tuple[float, float]
@@ -104,21 +104,7 @@ def _frame(sketch: SceneSketch) -> tuple[Callable[[Point], Point], float]:
         reach += [(x1, y1), (x2, y2)]
     for _, curve in sketch.paths:
         reach += list(curve)
-    if not reach:
-        reach = [(0.0, 0.0)]
-    xs, ys = [p[0] for p in reach], [p[1] for p in reach]
-    span_x, span_y = max(xs) - min(xs), max(ys) - min(ys)
-    scale = min(
-        WIDTH_MM / span_x if span_x > 0 else math.inf,
-        HEIGHT_MM / span_y if span_y > 0 else math.inf,
-    )
-    scale = scale if math.isfinite(scale) else 1000.0
-    middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
-
-    def at(point: Point) -> Point:
-        return ((point[0] - middle[0]) * scale, (point[1] - middle[1]) * scale)
-
-    return at, scale
+    return fit(reach, WIDTH_MM, HEIGHT_MM)
 
 
 def _extent(shape: str, sizes: tuple) -> float:
@@ -198,7 +184,9 @@ def _math(name: str) -> str:
 
 
 def _text(name: str) -> str:
-    return "\\textit{" + name.replace("_", "\\_") + "}"
+    from dynsolve.render.latex import escape_latex  # latex imports this module
+
+    return f"\\textit{{{escape_latex(name)}}}"
 
 
 def _xy(point: Point) -> str:
