@@ -672,6 +672,55 @@ def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]
     )
 
 
+_ANGLE_UNITS = frozenset({"deg", "degree", "degrees", "°", "rad", "radian", "radians"})
+_TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
+
+
+def _in_trig(formula: sympy.Expr, renamed: Mapping[sympy.Symbol, sympy.Symbol]) -> sympy.Expr:
+    """``formula`` with the symbols of ``renamed`` renamed inside the arguments of its
+    sines and cosines only.
+
+    >>> t, M, d = sympy.symbols("t M d")
+    >>> _in_trig(M * t + sympy.cos(t), {t: d})
+    M*t + cos(d)
+    """
+    if not renamed:
+        return formula
+    return formula.replace(
+        lambda e: isinstance(e, _TRIG), lambda e: e.func(e.args[0].xreplace(renamed))
+    )
+
+
+def _plain(number: float, wrap: bool = True) -> str:
+    """A number as a hand calculation writes it: 4 significant digits, no trailing zeros,
+    a negative one in parentheses (``wrap``).
+
+    >>> _plain(0.5400), _plain(-2.0), _plain(45.0000001, wrap=False)
+    ('0.54', '(-2)', '45')
+    """
+    text = sig(number, 4)
+    if "." in text and "e" not in text:
+        text = text.rstrip("0").rstrip(".")
+    return f"({text})" if wrap and text.startswith("-") else text
+
+
+def _angle_arguments(expr: sympy.Expr) -> set[sympy.Symbol]:
+    """The symbols that are a term of a sine's or cosine's argument, alone or times a
+    rational (``θ``, ``θ/2``, ``θ + φ``): angles, whatever their names.
+
+    >>> t, n = sympy.symbols("t n")
+    >>> sorted(s.name for s in _angle_arguments(sympy.cos(t / 2) + sympy.sin(n * sympy.pi)))
+    ['t']
+    """
+    found: set[sympy.Symbol] = set()
+    for call in expr.atoms(*_TRIG):
+        for term in sympy.Add.make_args(call.args[0]):
+            coefficient, rest = term.as_coeff_Mul()
+            if isinstance(rest, sympy.Symbol) and coefficient.is_Rational:
+                found.add(rest)
+    return found
+
+
 class _View:
     """Formats one solved problem; holds the lookups shared by the row builders."""
 
@@ -705,6 +754,23 @@ class _View:
         return frozenset().union(*(e.lhs.free_symbols | e.rhs.free_symbols for e in equations))
 
     @cached_property
+    def angle_symbols(self) -> frozenset[sympy.Symbol]:
+        """The symbols that are angles: given in an angle unit, asked for in one, or used
+        as one in the equations (shown in degrees inside a sine or cosine)."""
+        names = set(self.problem.dims.angles)
+        for info in self.problem.givens:
+            quantity = info.given.quantity if info.given is not None else None
+            unit = quantity.unit if quantity is not None else None
+            if unit is not None and unit.text.strip() in _ANGLE_UNITS:
+                names.add(info.name)
+        names.update(t.name for t in self.problem.targets if t.unit in _ANGLE_UNITS)
+        symbols = {s for n, s in self.problem.symbols.items() if n in names}
+        for equation in self.problem.system.equations:  # a scene's θ_2 inside cos(θ_2)
+            for side in (equation.lhs, equation.rhs):
+                symbols |= _angle_arguments(side)
+        return frozenset(s for s in symbols if self.dims.get(s.name, Dim()).dimensionless)
+
+    @cached_property
     def solved(self) -> dict[sympy.Symbol, sympy.Expr]:
         """The knowns and the solved values in one map (merged once: per row it is n²)."""
         return {**self.knowns, **self.outcome.values}
@@ -713,7 +779,9 @@ class _View:
         if name in self.units:
             return self.units[name]
         dim = self.dims.get(name, Dim())
-        if dim.dimensionless and name in self.problem.dims.angles:
+        if dim.dimensionless and (
+            name in self.problem.dims.angles or self.problem.symbols.get(name) in self.angle_symbols
+        ):
             return "deg"
         return natural_unit(dim, self.system, name)
 
@@ -781,7 +849,8 @@ class _View:
         assert info.formula is not None and info.value is not None
         formula = self.text(info.formula)
         value = self.number(info.value)
-        unit = natural_unit(info.dim, self.system, info.name)
+        unit = self.unit_of(info.name) if info.dim.dimensionless else ""
+        unit = unit or natural_unit(info.dim, self.system, info.name)
         base = (
             "—"
             if value is None
@@ -859,28 +928,38 @@ class _View:
     ) -> tuple[str, str] | None:
         """(text, latex) of ``formula`` with every symbol replaced by its number in base
         units (``extra`` adds values), unevaluated, as a hand calculation writes it; None
-        where a symbol has no number (a symbolic problem) or the formula is a bare symbol."""
+        where a symbol has no number (a symbolic problem) or the formula is a bare symbol.
+        An angle inside a sine or cosine is shown in degrees, ``cos(45°)`` (elsewhere, as in
+        the work M θ of a couple, in radians)."""
         if isinstance(formula, sympy.Symbol):
             return None
         values = {**self.solved, **extra} if extra else self.solved
-        names: dict[sympy.Symbol, str] = {}
+        numbers: dict[sympy.Symbol, float] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
             if number is None:
                 return None
-            text = sig(number, 4)
-            if "." in text and "e" not in text:
-                text = text.rstrip("0").rstrip(".")
-            names[symbol] = f"({text})" if text.startswith("-") else text
+            numbers[symbol] = number
         # placeholders sort as the symbols do, so the terms keep the formula's order
-        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in names}
-        shown = formula.xreplace(placeholders)
+        placeholders = {s: sympy.Symbol(f"{s.name}__") for s in numbers}
+        angles = {s: sympy.Symbol(f"{s.name}__deg") for s in numbers if s in self.angle_symbols}
+        shown = _in_trig(
+            formula.xreplace(placeholders), {placeholders[s]: a for s, a in angles.items()}
+        )
+        names: dict[sympy.Symbol, str] = {}  # placeholder: its number as text
+        latex_names: dict[sympy.Symbol, str] = {}
+        for symbol, number in numbers.items():
+            names[placeholders[symbol]] = latex_names[placeholders[symbol]] = _plain(number)
+            if symbol in angles:
+                degrees = _plain(math.degrees(number), wrap=False)
+                names[angles[symbol]] = f"{degrees}°"
+                latex_names[angles[symbol]] = f"{degrees}^\\circ"
         text = sympy.sstr(shown).replace("**", "^")
         latex = sympy.latex(  # numbers side by side need their dot: (-6.372) \cdot 10
-            shown, symbol_names={placeholders[s]: n for s, n in names.items()}, mul_symbol="dot"
+            shown, symbol_names=latex_names, mul_symbol="dot"
         )
-        for symbol in sorted(placeholders, key=lambda s: -len(s.name)):
-            text = text.replace(placeholders[symbol].name, names[symbol])
+        for placeholder in sorted(names, key=lambda s: -len(s.name)):
+            text = text.replace(placeholder.name, names[placeholder])
         return text, latex
 
     def computed(self, name: str) -> sympy.Expr | None:

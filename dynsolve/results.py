@@ -126,6 +126,8 @@ class FreeBody:
     # incline axes (t down the slope, n out of it) as unit vectors, where the equations use them
     axes: tuple[tuple[float, float], tuple[float, float]] | None = None
     omega: str = ""  # the body's sense of rotation at the instant, "ccw" or "cw", when it turns
+    # a composite's parts, (shape, x, y, sizes, angle in degrees, hole), metres from G
+    parts: tuple[tuple, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -233,7 +235,9 @@ class SceneSketch:
     """A planar scene as the problem's figure, in SI metres (see
     :mod:`dynsolve.modes.scene_sketch`): each entry a name, then numbers."""
 
-    bodies: tuple[tuple, ...]  # name, shape, x_G, y_G, sizes, angle (degrees, ccw)
+    # name, shape, x_G, y_G, sizes, angle (degrees, ccw), a composite's parts:
+    # (shape, x, y, sizes, angle, hole) each
+    bodies: tuple[tuple, ...]
     pins: tuple[tuple[str, float, float], ...]  # name, x, y
     # name, x, y (under G), n (pushing on the body), half its length
     surfaces: tuple[tuple[str, float, float, float, float, float], ...]

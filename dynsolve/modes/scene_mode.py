@@ -18,7 +18,7 @@ from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
-from dynsolve.model.scene import Path, Scene, Support, Vec, build_scene
+from dynsolve.model.scene import Body, Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
@@ -1849,9 +1849,27 @@ def free_bodies(
                 "" if at_start is not None else formulation.moment_points.get(name, ""),
                 axes,
                 "" if not omega else ("ccw" if omega > 0 else "cw"),
+                _parts_from_G(body, problem.scene, knowns),
             )
         )
     return tuple(out)
+
+
+def _parts_from_G(body: Body, scene: Scene, knowns: Mapping) -> tuple[tuple, ...]:
+    """A composite's parts for its free-body diagram, placed from G (metres); () where a
+    size or place has no number."""
+    from dynsolve.modes.scene_sketch import NoNumber, part_outlines
+
+    if not body.parts:
+        return ()
+    try:
+        parts = part_outlines(body, scene, knowns)
+        gx, gy = (real_value(c, knowns) for c in body.G)
+    except NoNumber:
+        return ()
+    if gx is None or gy is None:
+        return ()
+    return tuple((p[0], p[1] - gx, p[2] - gy, *p[3:]) for p in parts)
 
 
 def _drawn_at_start(problem: SceneProblem) -> Formulation | None:

@@ -76,7 +76,7 @@ def sketch_of(scene: Scene) -> SceneSketch | None:
             for load in scene.loads
             if load.kind == "couple" and load.body in scene.bodies
         )
-    except _NoNumber:
+    except NoNumber:
         return None
     paths = tuple(
         (name, curve)
@@ -89,20 +89,20 @@ def sketch_of(scene: Scene) -> SceneSketch | None:
     )  # fmt: skip
 
 
-class _NoNumber(Exception):
+class NoNumber(Exception):
     """A position or direction without a number: no sketch."""
 
 
 def _number(expr: sympy.Expr | int, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:
     value = real_value(sympy.Integer(0) + expr, values)
     if value is None or not math.isfinite(value):
-        raise _NoNumber
+        raise NoNumber
     return value
 
 
 def _point(point: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> Point:
     if len(point) != 2:
-        raise _NoNumber  # a 3D scene: its own figures
+        raise NoNumber  # a 3D scene: its own figures
     return (_number(point[0], values), _number(point[1], values))
 
 
@@ -110,7 +110,7 @@ def _unit(direction: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> Point:
     x, y = _point(direction, values)
     size = math.hypot(x, y)
     if size == 0:
-        raise _NoNumber
+        raise NoNumber
     return (x / size, y / size)
 
 
@@ -146,6 +146,8 @@ def _body(body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -
     x, y = _point(body.G, values)
     sizes = tuple(_number(s, values) for s in body.sizes)
     shape = "particle" if body.particle else body.shape.strip().lower()
+    if body.parts:  # drawn by its parts
+        return (body.name, "composite", x, y, (), 0.0, part_outlines(body, scene, values))
     if shape not in SHAPES and not any(sizes):  # a drum given by its k_O: a circle through
         reach = _reach(body, scene, values)  # the farthest point anything acts at
         shape, sizes = ("disk", (reach,)) if reach > 0 else ("particle", ())
@@ -162,7 +164,60 @@ def _body(body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -
         if off:
             far = max(off, key=lambda p: math.hypot(*p))
             angle = math.degrees(math.atan2(far[1], far[0]))
-    return (body.name, shape, x, y, sizes, angle)
+    return (body.name, shape, x, y, sizes, angle, ())
+
+
+def part_outlines(
+    body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple, ...]:
+    """A composite body's parts as drawn: (shape, x, y, sizes, angle in degrees, hole) in
+    metres. A rod part lies toward the point of the body (a pin, a named point, another
+    part's centre) half its length from its centre, where there is one (a pendulum's rod
+    ends at its pin), else level. Raises ``NoNumber`` where a size has no number.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> from dynsolve.modes.scene_mode import build_scene_problem
+    >>> spec = parse_spec('''
+    ... given:
+    ...   L = 0.6 m
+    ...   m = 2 kg
+    ...   R = 0.1 m
+    ... scene:
+    ...   point O: (0, 0)
+    ...   body arm: composite, at (0, 0)
+    ...   part arm: mass m, rod L, at (0, -L/2)
+    ...   part arm: mass m, disk R, at (0, -L)
+    ...   pin arm at O
+    ...   gravity
+    ... find: alpha = alpha(arm)
+    ... ''', "arm.dyn")
+    >>> scene = build_scene_problem(spec).scene
+    >>> [(p[0], round(p[2], 3), round(p[4])) for p in part_outlines(scene.bodies["arm"], scene, {})]
+    [('rod', -0.3, 90), ('disk', -0.6, 0)]
+    """
+    values = {**scene.values, **values}
+    ox, oy = _point(body.origin, values)
+    centres = [
+        (ox + _number(p.position[0], values), oy + _number(p.position[1], values))
+        for p in body.parts
+    ]
+    anchors = [_point(p, values) for p in body.points.values()]
+    anchors += [_point(s.point, values) for s in scene.supports if s.body == body.name]
+    out = []
+    for part, (x, y) in zip(body.parts, centres, strict=True):
+        sizes = tuple(abs(_number(v, values)) for v in part.sizes)
+        angle = 0.0
+        if part.shape == "rod" and sizes:
+            half = sizes[0] / 2
+            near = [
+                (px - x, py - y)
+                for px, py in (*anchors, *centres)
+                if abs(math.hypot(px - x, py - y) - half) <= 1e-6 * max(half, 1e-300)
+            ]
+            if near:
+                angle = math.degrees(math.atan2(near[0][1], near[0][0]))
+        out.append((part.shape, x, y, sizes, angle, part.hole))
+    return tuple(out)
 
 
 def _reach(body: Body, scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:

@@ -106,6 +106,13 @@ def footprint_of(body: FreeBody) -> Point | None:
     >>> footprint_of(FreeBody("crate", "block", (1.0, 0.5), "translation", (), (), ""))
     (0.5, 0.25)
     """
+    if body.parts:  # a composite: the box around its parts, centred on G
+        corners = [
+            (abs(x) + reach, abs(y) + reach)
+            for shape, x, y, sizes, *_ in body.parts
+            for reach in (_part_reach(shape, sizes),)
+        ]
+        return (max(c[0] for c in corners), max(c[1] for c in corners))
     sizes = [abs(_finite(v)) for v in body.size]
     first = sizes[0] if sizes else 0.0
     shape = body.shape.strip().lower()
@@ -121,6 +128,14 @@ def footprint_of(body: FreeBody) -> Point | None:
         height = sizes[1] if len(sizes) > 1 and sizes[1] else first
         return (first / 2, height / 2)
     return None
+
+
+def _part_reach(shape: str, sizes: tuple) -> float:
+    """How far one part of a composite reaches from its own centre (metres)."""
+    first = abs(sizes[0]) if sizes else 0.0
+    if shape in ("block", "plate"):
+        return math.hypot(first, abs(sizes[1]) if len(sizes) > 1 else first) / 2
+    return first / 2 if shape == "rod" else first
 
 
 def num(value: float) -> str:
@@ -191,6 +206,15 @@ def _xy(point: Point) -> str:
 def _outline(body: FreeBody, footprint: Point | None, at: Callable[[Point], Point]) -> list[str]:
     """The body's outline: circle (with a hub), bar, rectangle, dot, or around its points."""
     shape = body.shape.strip().lower()
+    if body.parts:
+        per_metre = at((1.0, 0.0))[0]
+        return [
+            line
+            for part, x, y, sizes, angle, hole in body.parts
+            for line in shape_lines(
+                part, at((x, y)), tuple(abs(v) * per_metre for v in sizes), angle, hole
+            )
+        ]
     if footprint == (0.0, 0.0):
         return [r"\fill (0,0) circle[radius=1.25];"]
     if footprint is not None:
@@ -219,6 +243,38 @@ def _outline(body: FreeBody, footprint: Point | None, at: Callable[[Point], Poin
     return [
         f"\\draw[very thick,rounded corners=2mm] ({num(-hx)},{num(-hy)}) rectangle "
         f"({num(hx)},{num(hy)});"
+    ]
+
+
+def shape_lines(
+    shape: str, centre: Point, sizes: tuple[float, ...], angle: float, hole: bool = False
+) -> list[str]:
+    r"""The outline of one shape on the page (sizes in mm, ``angle`` in degrees ccw): a
+    circle with a hub (disk, drum), a bar (rod), a rectangle (block, plate), a dot
+    (particle); a hole is drawn dashed and white inside.
+
+    >>> print(*shape_lines("rod", (0.0, 0.0), (10.0,), 90.0))
+    \draw[line width=2.4pt,line cap=round] (0,-5) -- (0,5);
+    """
+    first = sizes[0] if sizes else 0.0
+    style = "thick,dashed,fill=white" if hole else "very thick,fill=white"
+    if shape == "particle" or not first:
+        return [f"\\fill {_xy(centre)} circle[radius=1.25];"]
+    if shape in ROUND_SHAPES:
+        hub = (
+            []
+            if hole or shape not in HUBBED
+            else [f"\\draw[thin] {_xy(centre)} circle[radius={num(0.12 * first)}];"]
+        )
+        return [f"\\draw[{style}] {_xy(centre)} circle[radius={num(first)}];", *hub]
+    if shape == "rod":
+        a, b = polar(centre, first / 2, angle + 180.0), polar(centre, first / 2, angle)
+        return [f"\\draw[line width=2.4pt,line cap=round] {_xy(a)} -- {_xy(b)};"]
+    height = sizes[1] if len(sizes) > 1 and sizes[1] else first
+    return [
+        f"\\draw[{style},rotate around={{{num(angle)}:{_xy(centre)}}}] "
+        f"({num(centre[0] - first / 2)},{num(centre[1] - height / 2)}) rectangle "
+        f"({num(centre[0] + first / 2)},{num(centre[1] + height / 2)});"
     ]
 
 

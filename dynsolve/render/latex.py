@@ -49,6 +49,10 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage{amssymb}
 \usepackage{booktabs}
 \usepackage{siunitx}
+\usepackage{graphicx}
+\newsavebox{\fitbox}
+\newcommand{\fitmath}[2]{\sbox{\fitbox}{$\displaystyle #2$}%
+\ifdim\wd\fitbox>#1\resizebox{#1}{!}{\usebox{\fitbox}}\else\usebox{\fitbox}\fi}
 \allowdisplaybreaks
 \renewcommand{\arraystretch}{1.25}
 \setlength{\parindent}{0pt}
@@ -334,8 +338,6 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
     pictures = solution.free_body or solution.linkage is not None or solution.sketch is not None
     drawn = pictures and "free_body" in plan
     preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
-    if solution.figure and "steps" in plan:
-        preamble += "\n\\usepackage{graphicx}"
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
@@ -509,7 +511,8 @@ def _equation(row: EquationRow) -> str:
     return "\n".join([
         head,
         r"\begin{equation*}",
-        f"{safe_math(row.latex).strip() or '?'} \\tag*{{(line {row.line})}}",
+        f"{_fitted(safe_math(row.latex).strip() or '?', EQUATION_WIDTH)} "
+        f"\\tag*{{(line {row.line})}}",
         r"\end{equation*}",
     ])  # fmt: skip
 
@@ -577,7 +580,36 @@ def _result(result: Formula) -> str:
     parts = [p for p in (formula, numbers, value) if p]
     if len(parts) >= 2 and formula == value:
         parts = [formula]
-    return f"{safe_math(latex_name(result.name))} &= " + " = ".join(parts or ["?"])
+    name = safe_math(latex_name(result.name))
+    if _printed_length(" = ".join(parts)) <= ONE_LINE:
+        return f"{name} &= " + " = ".join(parts or ["?"])
+    # a long chain as a hand calculation sets it: one "=" per line, each kept on the page
+    return " \\\\\n".join(
+        f"{name if i == 0 else ''} &= {_fitted(part, STEP_WIDTH)}" for i, part in enumerate(parts)
+    )
+
+
+ONE_LINE = 70  # printed characters a step's chain may take on one line
+EQUATION_WIDTH = r"0.85\linewidth"  # an equation beside its tag
+STEP_WIDTH = r"0.8\linewidth"  # one side of a step's "=", after its name
+
+
+def _printed_length(latex: str) -> int:
+    """About how many characters ``latex`` prints (commands, braces and spaces dropped).
+
+    >>> _printed_length(r"\\frac{a}{b} + \\sin{\\left(\\theta \\right)}")
+    7
+    """
+    quiet = re.sub(r"\\(left|right|frac|mathrm|text|qty|displaystyle)\b|[{}\s^_]", "", latex)
+    return len(re.sub(r"\\[a-zA-Z]+", "#", quiet))  # a command prints about one glyph
+
+
+def _fitted(latex: str, width: str) -> str:
+    """``latex`` shrunk to ``width`` where it would be wider (``\\fitmath`` of the preamble),
+    as it is where it fits; short formulas are left as they are."""
+    if _printed_length(latex) <= ONE_LINE:
+        return latex
+    return f"\\fitmath{{{width}}}{{{latex}}}"
 
 
 def _discarded(discarded: Sequence[str]) -> list[str]:

@@ -9,7 +9,7 @@ scaled to fit 90 mm by 45 mm. Every command is one line.
 
 >>> from dynsolve.results import SceneSketch
 >>> floor = (("C", 0.0, 0.0, 0.0, 1.0, 0.8),)
->>> crate = SceneSketch((("crate", "block", 0.0, 0.25, (1.0, 0.5), 0.0),), (), floor,
+>>> crate = SceneSketch((("crate", "block", 0.0, 0.25, (1.0, 0.5), 0.0, ()),), (), floor,
 ...                     (), (), (), (("P", -0.5, 0.3, 1.0, 0.0),), (), (), True)
 >>> tex = scene_picture(crate)
 >>> tex.count("pattern=north east lines"), "rectangle" in tex, "{$P$}" in tex
@@ -22,7 +22,7 @@ import math
 from collections.abc import Callable
 
 from dynsolve.names import latex_name
-from dynsolve.render.fbd_tikz import fit, num, polar
+from dynsolve.render.fbd_tikz import fit, num, polar, shape_lines
 from dynsolve.results import SceneSketch
 
 Point = tuple[float, float]
@@ -95,9 +95,10 @@ def scene_picture(sketch: SceneSketch) -> str:
 def _frame(sketch: SceneSketch) -> tuple[Callable[[Point], Point], float]:
     """The map from metres to the page (mm, centred) and its scale (mm per metre)."""
     reach: list[Point] = []
-    for _, shape, x, y, sizes, _angle in sketch.bodies:
-        r = _extent(shape, sizes)
-        reach += [(x - r, y - r), (x + r, y + r)]
+    for _, shape, x, y, sizes, _angle, parts in sketch.bodies:
+        for shape_, x_, y_, sizes_, *_rest in parts or ((shape, x, y, sizes),):
+            r = _extent(shape_, sizes_)
+            reach += [(x_ - r, y_ - r), (x_ + r, y_ + r)]
     reach += [(x, y) for _, x, y in sketch.pins]
     reach += [(x, y) for _, x, y, _, _, _ in sketch.surfaces]
     for _, x1, y1, x2, y2 in (*sketch.springs, *sketch.links):
@@ -118,32 +119,23 @@ def _extent(shape: str, sizes: tuple) -> float:
 
 
 def _body(body: tuple, at: Callable[[Point], Point], scale: float) -> list[str]:
-    """A body's outline at its place, its G marked and its name beside it."""
-    name, shape, x, y, sizes, angle = body
+    """A body's outline at its place (a composite's parts, each by its shape), its G
+    marked and its name beside it."""
+    name, shape, x, y, sizes, angle, parts = body
     G = at((x, y))
-    first = abs(sizes[0]) * scale if sizes else 0.0
     label = f"\\node[anchor=south west,inner sep=1pt] at {_xy(G)} {{{_text(name)}}};"
     centre = f"\\fill {_xy(G)} circle[radius=0.5];"
+    if parts:
+        lines = []
+        for shape_, x_, y_, sizes_, angle_, hole in parts:
+            mm = tuple(abs(v) * scale for v in sizes_)
+            lines += shape_lines(shape_, at((x_, y_)), mm, angle_, hole)
+        return [*lines, centre, label]
+    first = abs(sizes[0]) * scale if sizes else 0.0
     if shape == "particle" or not first:
         return [f"\\fill {_xy(G)} circle[radius={num(DOT_MM)}];", label]
-    if shape in ("disk", "ring", "cylinder", "sphere", "shell", "hollow"):
-        return [
-            f"\\draw[very thick,fill=white] {_xy(G)} circle[radius={num(first)}];",
-            f"\\draw[thin] {_xy(G)} circle[radius={num(0.12 * first)}];",
-            centre,
-            label,
-        ]
-    if shape == "rod":
-        a, b = polar(G, first / 2, angle + 180.0), polar(G, first / 2, angle)
-        return [f"\\draw[line width=2.4pt,line cap=round] {_xy(a)} -- {_xy(b)};", centre, label]
-    height = abs(sizes[1]) * scale if len(sizes) > 1 and sizes[1] else first
-    return [
-        f"\\draw[very thick,fill=white,rotate around={{{num(angle)}:{_xy(G)}}}] "
-        f"({num(G[0] - first / 2)},{num(G[1] - height / 2)}) rectangle "
-        f"({num(G[0] + first / 2)},{num(G[1] + height / 2)});",
-        centre,
-        label,
-    ]
+    mm = tuple(abs(v) * scale for v in sizes)
+    return [*shape_lines(shape, G, mm, angle), centre, label]
 
 
 def _surface(point: Point, normal: Point, half: float) -> list[str]:
