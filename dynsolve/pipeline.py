@@ -745,7 +745,18 @@ class _View:
 
     # ---- helpers
     def used(self, given: GivenInfo) -> bool:
-        return given.given is not None or given.shown or given.symbol in self.equation_symbols
+        return (
+            given.given is not None
+            or given.shown
+            or given.symbol in self.equation_symbols
+            or given.symbol in self.formula_symbols
+        )
+
+    @cached_property
+    def formula_symbols(self) -> frozenset[sympy.Symbol]:
+        """Every symbol a derived quantity's formula is written with (ρ in a_n = v²/ρ)."""
+        formulas = [g.formula for g in self.problem.givens if g.formula is not None]
+        return frozenset().union(*((sympy.Integer(0) + f).free_symbols for f in formulas))
 
     @cached_property
     def equation_symbols(self) -> frozenset[sympy.Symbol]:

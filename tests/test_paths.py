@@ -224,3 +224,19 @@ def test_the_newcomers_car_through_a_dip_at_constant_speed():
     assert N.value == pytest.approx(1500 * (9.81 * math.cos(beta) + a_n), rel=1e-12)
     assert F.value == pytest.approx(1500 * 9.81 * math.sin(beta), rel=1e-12)
     assert a.value == pytest.approx(a_n, rel=1e-12)
+
+
+def test_the_radius_of_curvature_is_shown_before_a_n(tmp_path):
+    # the textbook computes ρ = [1 + (dy/dx)²]^(3/2) / |d²y/dx²| first (Hibbeler 13.5), then
+    # a_n = v²/ρ: for y = −x²/(2c) at x_1 = 20 m, c = 50 m, ρ = c (1 + (x_1/c)²)^(3/2)
+    # = 50 · 1.16^1.5 = 62.47 m and a_n = 15²/62.47 = 3.602 m/s² (hand)
+    file = tmp_path / "hump.dyn"
+    file.write_text(CONSTANT)
+    solution = solve_file(file)
+    rows = {row.name: row for row in solution.givens}
+    assert "rho" in rows and "a_n" in rows
+    names = [row.name for row in solution.givens]
+    assert names.index("rho") < names.index("a_n")
+    assert rows["rho"].base.startswith("62.47 m")
+    assert rows["a_n"].written.startswith("= v^2/ρ = 15^2/62.47")
+    assert 50 * (1 + 0.4**2) ** 1.5 == pytest.approx(62.47, abs=5e-3)

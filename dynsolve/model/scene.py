@@ -107,6 +107,8 @@ class Support:
     friction_sense: int | None = None  # ±1 along the tangent when sliding: opposes ``slides``
     normal_acceleration: sympy.Expr | int = 0  # a_P·n on a curved path: v²(K·n)
     constant_speed: bool = False  # a particle driven along its path at constant speed
+    speed: sympy.Expr | None = None  # on a curved path: the particle's speed v
+    rho: sympy.Expr | None = None  # on a curved path: its radius of curvature at G
     at: str = ""  # the point's own name when ``name`` carries the body too (two ``at G``)
 
     @property
@@ -1212,7 +1214,14 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
         two_sided=True,
         normal_acceleration=tidy(-(mover.speed**2) * tHt / size),
         constant_speed=mover.constant,
+        speed=mover.speed,
+        rho=None if _is_zero_number(tHt) else tidy(size / sympy.Abs(tHt)),
     )
+
+
+def _is_zero_number(expr: sympy.Expr) -> bool:
+    """A curvature term that is surely 0 (a straight stretch: no radius of curvature)."""
+    return (sympy.Integer(0) + expr).is_zero is True
 
 
 def _assumption(builder: _Builder, stmt: SceneStmt) -> sympy.core.relational.Relational:

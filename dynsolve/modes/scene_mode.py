@@ -138,11 +138,14 @@ def build_scene_problem(
     dims = given_dims | {s.name: d for s, d in formulation.unknowns.items()}
     dims |= {s.name: d for s, (_, d, _) in formulation.derived.items()}
     givens = givens + _inertia_rows(scene, formulation, symbols, given_values)
+    resolved: dict[sympy.Symbol, sympy.Expr] = {}  # one may be written with earlier ones
+    for s, (value, _dim, _meaning) in formulation.derived.items():
+        resolved[s] = value.xreplace(resolved)
     givens = givens + [
         GivenInfo(
             s.name,
             s,
-            value.xreplace(given_values) if given_values else value,
+            resolved[s].xreplace(given_values) if given_values else resolved[s],
             dim,
             None,
             meaning,

@@ -465,9 +465,9 @@ class _Writer:
         taken = self.derived.get(sympy.Symbol(name, positive=True))
         if name in self.symbols or (taken is not None and tidy(taken[0] - beta_value) != 0):
             name = f"beta_{first.name}"
-        meaning = f"incline angle at {first.point_name}, from its normal (rad)"
+        meaning = f"incline angle at {first.point_name}, from its normal"
         if curved:
-            meaning = f"slope of the path {first.name} at {body.name}, from its normal (rad)"
+            meaning = f"slope of the path {first.name} at {body.name}, from its normal"
         beta = self.name_quantity(name, beta_value, Dim(), meaning)
         t_beta = (side * sympy.cos(beta), -sympy.sin(beta))
         perp = _perp(t)  # n is t turned ±90°: the sense that points out of the surface
@@ -501,9 +501,20 @@ class _Writer:
             return None
         n = (tidy(toward * path.normal[0]), tidy(toward * path.normal[1]))
         n_beta = (tidy(toward * n_beta[0]), tidy(toward * n_beta[1]))
+        a_n_value = tidy(toward * path.normal_acceleration)
+        if path.rho is not None and path.speed is not None:  # ρ first, as the textbook
+            rho = self.name_quantity(
+                self.suffix("rho", path.body),
+                path.rho,
+                LENGTH,
+                f"radius of curvature of the path {path.name} at {path.body}: "
+                "ρ = [1 + (dy/dx)²]^(3/2) / |d²y/dx²|",
+            )
+            if _is_zero(path.speed**2 / path.rho - a_n_value):  # a_n = v²/ρ, as it must
+                a_n_value = path.speed**2 / rho
         a_n = self.name_quantity(
             self.suffix("a_n", path.body),
-            tidy(toward * path.normal_acceleration),
+            a_n_value,
             ACCELERATION,
             f"a_n = v²/ρ on the path {path.name}, toward its centre of curvature",
         )
