@@ -207,11 +207,17 @@ def _stop(worker: Any) -> None:
     worker.join()
 
 
+SIMULATING = "integrating the motion in time (solve_ivp)"
+
+
 def _over_time(budget: Budget, step: str) -> OverBudget:
+    hint = (
+        "try a looser --rtol, a shorter --t-end, or a larger --time-budget"
+        if step == SIMULATING
+        else "try --mode numeric, or a larger --time-budget"
+    )
     return OverBudget(
-        f"stopped after the time budget of {budget.seconds:g} s, while {step}",
-        step,
-        hint="try --mode numeric, or a larger --time-budget",
+        f"stopped after the time budget of {budget.seconds:g} s, while {step}", step, hint=hint
     )
 
 

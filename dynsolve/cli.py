@@ -542,6 +542,8 @@ def simulate(
     plot: Annotated[
         Path | None, typer.Option(help="Plot q(t) and the energy: .png, .pdf or .svg.")
     ] = None,
+    time_budget: TimeBudget = DEFAULT_SECONDS,
+    memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
 ) -> None:
     """Integrate a scene's motion in time from its state (one coordinate, or a chain of bars).
 
@@ -552,33 +554,66 @@ def simulate(
     Exit code 0 when simulated, 2 for bad input, a scene it cannot simulate, or an
     --until event not met by the end time (the history is still written).
     """
+    for path, suffixes in ((output, (".csv", ".json")), (plot, (".png", ".pdf", ".svg"))):
+        if path is not None and path.suffix.lower() not in suffixes:
+            _fail(f"cannot write {path}: use {' or '.join(suffixes)}", "choose another name")
+        if path is not None:
+            _refuse_overwriting_input(file, path)
+    options = (until, t_end, method.value, rtol, atol, samples)
+    suffixes = (
+        output.suffix.lower() if output is not None else "",
+        plot.suffix.lower() if plot is not None else "",
+    )
+    budget = Budget(time_budget, memory_budget)
+    outcome = _in_worker(simulate_and_render, (str(file), options, suffixes), budget)
+    if isinstance(outcome, _Refused):
+        _report(outcome.errors, OutputFormat.text)
+        raise typer.Exit(ExitCode.BAD_INPUT)
+    stdout.print(outcome.text, markup=False, soft_wrap=True)
+    if output is not None and outcome.history is not None:
+        _write_output(output, outcome.history)
+    if plot is not None and outcome.plot is not None:
+        _write_output(plot, outcome.plot)
+    if outcome.missed:
+        _fail(outcome.missed, "check the start state, or give a longer --t-end")
+    raise typer.Exit(ExitCode.OK)
+
+
+@dataclass(frozen=True)
+class _Simulated:
+    """A simulation's summary text, its history (CSV or JSON text) and plot, and the
+    --until event it missed ("" when met or not asked)."""
+
+    text: str
+    history: str | None
+    plot: bytes | None
+    missed: str
+
+
+def simulate_and_render(
+    file: str, options: tuple, suffixes: tuple[str, str]
+) -> _Simulated | _Refused:
+    """The worker's job for ``simulate``: integrate the spec's scene and render the summary,
+    the history (``suffixes[0]``: .csv or .json) and the plot (``suffixes[1]``), under the
+    run's budget like a solve."""
     from dynsolve.errors import DynsolveError
     from dynsolve.simulate.output import history_csv, history_json, history_plot
     from dynsolve.simulate.run import parse_quantity, simulate_spec
     from dynsolve.spec.parser import parse_file
     from dynsolve.units import Dim
 
-    for path, suffixes in ((output, (".csv", ".json")), (plot, (".png", ".pdf", ".svg"))):
-        if path is not None and path.suffix.lower() not in suffixes:
-            _fail(f"cannot write {path}: use {' or '.join(suffixes)}", "choose another name")
-        if path is not None:
-            _refuse_overwriting_input(file, path)
+    until, t_end, method, rtol, atol, samples = options
     try:
         spec = parse_file(file)
         end = parse_quantity(t_end, Dim(0, 0, 1), spec.system, "--t-end")
-        history = simulate_spec(spec, until, end, method.value, rtol, atol, samples)
+        history = simulate_spec(spec, until, end, method, rtol, atol, samples)
     except DynsolveError as error:
-        _fail_with(error)
-    stdout.print(_simulation_text(history), markup=False, soft_wrap=True)
-    if output is not None:
-        text = history_json(history) if output.suffix.lower() == ".json" else history_csv(history)
-        _write_output(output, text)
-    if plot is not None:
-        _write_output(plot, history_plot(history, plot.suffix.lower()))
-    missed = getattr(history, "missed", "")
-    if missed:
-        _fail(missed, "check the start state, or give a longer --t-end")
-    raise typer.Exit(ExitCode.OK)
+        return _Refused(_reports(error))
+    written = None
+    if suffixes[0]:
+        written = history_json(history) if suffixes[0] == ".json" else history_csv(history)
+    picture = history_plot(history, suffixes[1]) if suffixes[1] else None
+    return _Simulated(_simulation_text(history), written, picture, getattr(history, "missed", ""))
 
 
 def _simulation_text(history: object) -> str:

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from dynsolve.budget import SIMULATING, step
 from dynsolve.errors import Position, SpecError
 from dynsolve.linkage.model import read_linkage
 from dynsolve.linkage.position import place
@@ -169,16 +170,17 @@ def integrate_chain(
     conditions = None
     if event:
         conditions = [_not_at_start(event[1], chain.right_hand_side(), y0, 1e-7 * t_end)]
-    solution = solve_ivp(
-        chain.right_hand_side(),
-        (0.0, t_end),
-        y0,
-        method=method,
-        rtol=rtol,
-        atol=atol,
-        t_eval=np.linspace(0.0, t_end, samples) if samples else None,
-        events=conditions,
-    )
+    with step(SIMULATING):
+        solution = solve_ivp(
+            chain.right_hand_side(),
+            (0.0, t_end),
+            y0,
+            method=method,
+            rtol=rtol,
+            atol=atol,
+            t_eval=np.linspace(0.0, t_end, samples) if samples else None,
+            events=conditions,
+        )
     if solution.status == -1:
         raise ValueError(f"the integration failed: {solution.message}")
     t, y = solution.t, solution.y

@@ -54,6 +54,7 @@ class OneDof:
     bodies: tuple[str, ...]
     terms: tuple[sympy.Expr, ...]
     place_terms: tuple[sympy.Expr, ...]
+    hold: sympy.Expr | int = 0  # Σ μs N |dr_C/dq|: the most static friction can hold at rest
 
     @property
     def frictionless(self) -> bool:
@@ -143,6 +144,23 @@ class OneDof:
         """q'' and the friction's power at (q, q'), from one evaluation."""
         M, dM, Qc, friction = self._dynamics(q)
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M, -friction * abs(qd)
+
+    @functools.cached_property
+    def _hold(self) -> Callable[[float], float]:
+        return sympy.lambdify([Q], sympy.Integer(0) + self.hold, "math")
+
+    def holds(self, q: float) -> bool:
+        """At rest at q, static friction can hold the body there: |Q_c(q)| ≤ Σ μs N |dr_C/dq|
+        (Coulomb; μs taken as μk where it is not given). Never without friction.
+
+        >>> block = OneDof("x", "m", ("b",), (2, 0, -200 * Q, 1.962, 100 * Q**2), (), 1.962)
+        >>> block.holds(0.0019), block.holds(0.0215)  # k |x| against μs m g = 1.962 N
+        (True, False)
+        """
+        if self.frictionless:
+            return False
+        Qc = self._dynamics(q)[2]
+        return abs(Qc) <= self._hold(q) * (1 + 1e-12)
 
     def friction_power(self, q: float, qd: float) -> float:
         """The (negative) power of kinetic friction at (q, q')."""
@@ -384,8 +402,10 @@ def _friction(
     placements: Mapping[str, Placement],
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    static: bool = False,
 ) -> sympy.Expr:
-    """Σ μk N |dr_C/dq| over the rough contacts that slide (its sign is set by q')."""
+    """Σ μk N |dr_C/dq| over the rough contacts that slide (its sign is set by q'); with
+    ``static``, Σ μs N |dr_C/dq|, the most friction can hold at rest (μk where no μs)."""
     total = sympy.Integer(0)
     for support in scene.supports:
         if support.body not in placements or support.kind in ("pin", "rolls"):
@@ -398,8 +418,9 @@ def _friction(
             continue
         if support.mu_k is None:
             raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
+        mu = support.mu_s if static and support.mu_s is not None else support.mu_k
         total += (
-            support.mu_k
+            mu
             * _normal(scene, placements, support, symbols, values)
             * sympy.sqrt(_dot(slip, slip))
         )
@@ -463,7 +484,11 @@ def _build(
     V = _potential(scene, placements, link_turns, symbols)
     terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
     terms += [_friction(scene, placements, symbols, values), V]
-    numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places]]
+    hold = _friction(scene, placements, symbols, values, static=True) if terms[3] != 0 else 0
+    numeric = [
+        (sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]
+    ]
+    hold = numeric.pop()
     if simplify:  # a long run: a leaner right-hand side is worth sympy's simplify once
         numeric[:3] = [min(t, sympy.simplify(t), key=sympy.count_ops) for t in numeric[:3]]
     left = set().union(*(t.free_symbols for t in numeric)) - {Q}
@@ -472,4 +497,4 @@ def _build(
     M0 = float(sympy.N(numeric[0].subs(Q, 0)))
     if not M0 > 0:
         raise NotSimulable("the scene has no inertia along its motion (M = 0)")
-    return OneDof(coordinate, unit, names, tuple(numeric[:5]), tuple(numeric[5:]))
+    return OneDof(coordinate, unit, names, tuple(numeric[:5]), tuple(numeric[5:]), hold)

@@ -81,10 +81,15 @@ def integrate(
     max_step: float = np.inf,
     t_eval: np.ndarray | None = None,
 ) -> Run:
-    """Integrate from (q0, q'0) at t = 0 until ``t_end`` or a terminal event."""
+    """Integrate from (q0, q'0) at t = 0 until ``t_end`` or a terminal event.
+
+    With kinetic friction the run goes from one stop (q' = 0) to the next: there the
+    friction force changes sense, and where static friction can hold the body
+    (:meth:`OneDof.holds`) it stays at rest to the end (the event "at rest"), instead of
+    chattering about q' = 0 with ever smaller steps.
+    """
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
-
     fast = motion.right_hand_side() if motion.frictionless else None
     jac = motion.jacobian() if method in IMPLICIT and fast is not None else None
     if fast is not None:  # (q, q') only: U_f stays 0
@@ -96,8 +101,81 @@ def integrate(
             qdd, power = motion.rates(float(y[0]), qd)
             return [qd, qdd, power]
 
-    # the start is never an event: a condition that is 0 there takes the sign it has
-    # just after (a pendulum released from rest is not at a maximum of its swing)
+    state = [q0, qd0] if fast is not None else [q0, qd0, 0.0]
+    t0, evaluations = 0.0, 0
+    pieces: list[tuple[np.ndarray, np.ndarray]] = []
+    met: list[tuple[str, float, float, float]] = []
+    stopped, last = "", None
+    stop = Event(_STOP, lambda q, qd: qd, 0, True)
+    for _ in range(MAX_STOPS):
+        if fast is None and state[1] == 0 and motion.holds(state[0]):
+            met.append((AT_REST, t0, state[0], 0.0))
+            pieces.append(_at_rest(state, t0, t_end, t_eval))
+            break
+        watched = [*events, stop] if fast is None else list(events)
+        grid = None if t_eval is None else t_eval[t_eval >= t0]
+        solution = solve_ivp(
+            rhs,
+            (t0, t_end),
+            state,
+            method=method,
+            rtol=rtol,
+            atol=atol,
+            events=_conditions(watched, motion, t0, state, t_end) or None,
+            max_step=max_step,
+            t_eval=grid,
+            dense_output=False,
+            **({"jac": jac} if jac is not None else {}),
+        )
+        if solution.status == -1:
+            raise ValueError(f"the integration failed: {solution.message}")
+        evaluations += int(solution.nfev)
+        pieces.append((solution.t, solution.y))
+        at_stop = None
+        for event, times, states in zip(
+            watched, solution.t_events or [], solution.y_events or [], strict=False
+        ):
+            for t, y in zip(times, states, strict=True):
+                if event.name == _STOP:
+                    at_stop = (float(t), y)
+                    continue
+                met.append((event.name, float(t), float(y[0]), float(y[1])))
+                if event.terminal and solution.status == 1:
+                    stopped = event.name
+                    last = (float(t), float(y[0]), float(y[1]), float(y[2]) if len(y) > 2 else 0.0)
+        if stopped or solution.status != 1 or at_stop is None:
+            break
+        t0, y = at_stop  # friction changes sense here, or holds the body
+        before = float(solution.y[1][-1]) if solution.y.shape[1] else 0.0
+        met += _turns(events, met, t0, float(y[0]), before)
+        state = [float(y[0]), 0.0, float(y[2])]
+        pieces.append((np.array([t0]), np.array([[state[0]], [0.0], [state[2]]])))
+    met.sort(key=lambda item: item[1])
+    t = np.concatenate([p[0] for p in pieces])
+    ys = np.concatenate([p[1] for p in pieces], axis=1)
+    order = np.argsort(t, kind="stable")
+    t, ys = t[order], ys[:, order]
+    q, qd = ys[0], ys[1]
+    uf = ys[2] if ys.shape[0] > 2 else np.zeros_like(t)
+    T, V = motion.energies(q, qd)
+    invariant = T + V - uf
+    scale = max(float(T.max()), float(np.ptp(V)), float(np.abs(uf).max()), 1e-300)
+    drift = float(np.max(np.abs(invariant - invariant[0]))) / scale
+    return Run(t, q, qd, uf, tuple(met), stopped, method, rtol, atol, evaluations, drift, last)
+
+
+_STOP = "q' = 0 (friction turns)"
+AT_REST = "at rest"  # static friction holds the body where it stopped
+MAX_STOPS = 100_000  # stops of a body under friction in one run (each a new solve_ivp)
+
+
+def _conditions(
+    events: Sequence[Event], motion: OneDof, t0: float, state: Sequence[float], t_end: float
+) -> list[Callable[[float, np.ndarray], float]]:
+    """solve_ivp's event functions, each never an event at the start ``t0``: a condition
+    that is 0 there takes the sign it has just after (a pendulum released from rest is
+    not at a maximum of its swing)."""
+    q0, qd0 = state[0], state[1]
     h = 1e-7 * t_end
     a0 = motion.acceleration(q0, qd0)
     ahead = (q0 + h * qd0 + 0.5 * h * h * a0, qd0 + h * a0)
@@ -108,44 +186,44 @@ def integrate(
         def condition(
             t: float, y: np.ndarray, f: Callable = event.function, at_start: float = start
         ) -> float:
-            return at_start if t == 0 else f(float(y[0]), float(y[1]))
+            return at_start if t == t0 else f(float(y[0]), float(y[1]))
 
         condition.terminal = event.terminal  # type: ignore[attr-defined]
         condition.direction = event.direction  # type: ignore[attr-defined]
         wrapped.append(condition)
-    solution = solve_ivp(
-        rhs,
-        (0.0, t_end),
-        [q0, qd0] if fast is not None else [q0, qd0, 0.0],
-        method=method,
-        rtol=rtol,
-        atol=atol,
-        events=wrapped or None,
-        max_step=max_step,
-        t_eval=t_eval,
-        dense_output=False,
-        **({"jac": jac} if jac is not None else {}),
-    )
-    if solution.status == -1:
-        raise ValueError(f"the integration failed: {solution.message}")
-    met: list[tuple[str, float, float, float]] = []
-    stopped = ""
-    last = None
-    for event, times, states in zip(
-        events, solution.t_events or [], solution.y_events or [], strict=False
-    ):
-        for t, y in zip(times, states, strict=True):
-            met.append((event.name, float(t), float(y[0]), float(y[1])))
-            if event.terminal and solution.status == 1:
-                stopped = event.name
-                last = (float(t), float(y[0]), float(y[1]), float(y[2]) if len(y) > 2 else 0.0)
-    met.sort(key=lambda item: item[1])
-    t, q, qd = solution.t, solution.y[0], solution.y[1]
-    uf = solution.y[2] if len(solution.y) > 2 else np.zeros_like(t)
-    T, V = motion.energies(q, qd)
-    invariant = T + V - uf
-    scale = max(float(T.max()), float(np.ptp(V)), float(np.abs(uf).max()), 1e-300)
-    drift = float(np.max(np.abs(invariant - invariant[0]))) / scale
-    return Run(
-        t, q, qd, uf, tuple(met), stopped, method, rtol, atol, int(solution.nfev), drift, last
-    )
+    return wrapped
+
+
+def _turns(
+    events: Sequence[Event],
+    met: Sequence[tuple[str, float, float, float]],
+    t: float,
+    q: float,
+    before: float,
+) -> list[tuple[str, float, float, float]]:
+    """The events of q' = 0 (a maximum, a minimum) at a stop under friction that solve_ivp
+    may have left out beside the stop itself: each once."""
+    crossing = -1 if before > 0 else 1  # q' falls to 0 from above: a maximum of q
+    out = []
+    for event in events:
+        if event.direction not in (0, crossing) or event.function(q, 0.0) != 0:
+            continue
+        if any(
+            name == event.name and abs(time - t) <= 1e-9 * max(1.0, t) for name, time, *_ in met
+        ):
+            continue
+        out.append((event.name, t, q, 0.0))
+    return out
+
+
+def _at_rest(
+    state: Sequence[float], t0: float, t_end: float, t_eval: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The samples of a body held at rest from ``t0`` to the end."""
+    times = np.array([t0, t_end]) if t_eval is None else t_eval[t_eval >= t0]
+    if times.size == 0 or times[0] != t0:
+        times = np.concatenate([[t0], times])
+    rows = [np.full(times.shape, state[0]), np.zeros(times.shape)]
+    if len(state) > 2:
+        rows.append(np.full(times.shape, state[2]))
+    return times, np.vstack(rows)

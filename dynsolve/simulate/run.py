@@ -29,6 +29,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from dynsolve.budget import SIMULATING, step
 from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import Scene, Travel, build_scene
 from dynsolve.modes.equation_mode import givens_of
@@ -372,7 +373,8 @@ def simulate_spec(
         events.append(Event(f"{contact.name} = 0", contact.normal, 0, False))
     grid = np.linspace(0.0, t_end, samples)
     try:
-        run = integrate(motion, 0.0, qd0, t_end, events, method, rtol, atol, t_eval=grid)
+        with step(SIMULATING):
+            run = integrate(motion, 0.0, qd0, t_end, events, method, rtol, atol, t_eval=grid)
     except ValueError as exc:
         raise SpecError(str(exc), Position("--method", 1, 1), hint="see docs/simulate.md") from None
     run = _with_last(run)
