@@ -388,6 +388,10 @@ def sympy_dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, Dim]) -> Dim:
     >>> m, a = sympy.symbols("m a")
     >>> sympy_dimension(m * a, {m: Dim.of("mass"), a: Dim.of("acceleration")}).name
     'force'
+    >>> R, x = sympy.symbols("R x")  # an angle from two lengths (numeric mode's untidied form)
+    >>> angle = sympy.atan2(R * sympy.cos(x), R)
+    >>> sympy_dimension(angle, {R: Dim.of("length"), x: Dim()}).dimensionless
+    True
     """
     if expr.is_Number or expr.is_NumberSymbol or expr == 0:
         return Dim()
@@ -417,6 +421,16 @@ def sympy_dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, Dim]) -> Dim:
         if not exponent.is_Rational:
             raise DimensionError(f"'{expr}' raises a dimensional quantity to a symbolic power")
         return base ** Fraction(int(exponent.p), int(exponent.q))
+    if isinstance(expr, sympy.atan2):  # atan2(y, x): any dimension, the same for both
+        y_dim, x_dim = (sympy_dimension(a, dims) for a in expr.args)
+        if y_dim != x_dim and not (expr.args[0] == 0 or expr.args[1] == 0):
+            raise DimensionError(
+                f"the arguments of atan2 in '{expr}' differ: {y_dim.name} vs {x_dim.name}"
+            )
+        return Dim()
+    if isinstance(expr, sympy.sign):
+        sympy_dimension(expr.args[0], dims)
+        return Dim()
     if isinstance(expr, sympy.Function):
         for arg in expr.args:
             if expr.func is not sympy.Abs and not sympy_dimension(arg, dims).dimensionless:
