@@ -916,3 +916,43 @@ def test_random_spec_like_lines_only_raise_dynsolve_errors(text: str):
 )
 def test_random_section_bodies_only_raise_dynsolve_errors(header: str, bodies: list[str]):
     _parse_or_spec_error(header + "\n" + "".join(f"  {b}\n" for b in bodies))
+
+
+def test_a_unit_in_a_scene_line_is_told_to_become_a_given():
+    # newcomer report: 'velocity ball: 20 m/s, right' got the hint "write an operator
+    # before 'm'", which sends a newcomer the wrong way
+    text = spec(
+        "given:",
+        "  m = 2 kg",
+        "scene:",
+        "  body ball: particle, mass m, at (0, 0)",
+        "  velocity ball: 20 m/s, right",
+        "  gravity",
+        "find: a = a_G(ball)",
+    )
+    with pytest.raises(SpecError) as info:
+        parse_spec(text, "units.dyn")
+    assert (info.value.position.line, info.value.position.column) == (5, 21)
+    assert "scene lines take no units" in info.value.hint and "given:" in info.value.hint
+
+
+@pytest.mark.parametrize("kind", ["omega", "alpha"])
+def test_a_rotation_without_its_sense_is_refused(kind):
+    # newcomer report: 'omega AB: 3' was taken ccw without a word, so a cw drive came out
+    # mirrored with every check green; 0 needs no sense
+    text = spec(
+        "given:",
+        "  w = 3 rad/s",
+        "scene:",
+        "  point O: (0, 0)",
+        "  body rod: mass 2, rod 1, at (0.5, 0)",
+        "  pin rod at O",
+        f"  {kind} rod: w",
+        "find: O_n",
+    )
+    with pytest.raises(SpecError) as info:
+        parse_spec(text, "sense.dyn")
+    assert f"the sense of {kind} rod is missing" in info.value.message
+    assert (info.value.position.line, info.value.position.column) == (7, len(kind) + 4)
+    assert "cw" in info.value.hint
+    parse_spec(text.replace(f"{kind} rod: w", f"{kind} rod: 0"), "zero.dyn")  # no sense needed

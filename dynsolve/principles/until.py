@@ -196,7 +196,7 @@ def circle_until(
         "eq. 1",
         1,
         f"T{state - 1} + ΣU({state - 1}→{state}) = T{state} ({name}: ½ m v₁² + W·Δr = ½ m v₂²; "
-        f"the {circle.force} does no "
+        f"{circle.force} does no "
         "work, being normal to the path)",
     )
     inward = (-e[0], -e[1])

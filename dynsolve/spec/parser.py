@@ -535,7 +535,24 @@ def _syntax_error(
     return SpecError(
         f"unexpected '{token}' in {what}; expected {words}",
         position,
-        hint=_token_hint(str(token), token.type, expected, form),
+        hint=_unit_hint(str(token), start) or _token_hint(str(token), token.type, expected, form),
+    )
+
+
+# unit symbols a newcomer writes after a number in a scene line
+_UNIT_WORDS = frozenset(
+    {"m", "s", "kg", "N", "deg", "degree", "degrees", "rad", "ft", "lb", "lbf", "slug", "in"}
+    | {"mm", "cm", "km", "rpm", "Hz", "J", "W", "h", "min", "rev", "g", "kN", "ms", "mph"}
+)
+
+
+def _unit_hint(token: str, start: str) -> str:
+    """The hint for a unit written in a scene line, which takes none, else ""."""
+    if start != "scene_line" or token not in _UNIT_WORDS:
+        return ""
+    return (
+        "scene lines take no units: give the quantity a name under 'given:' (e.g. "
+        f"'v_0 = 20 m/s') and write its name here; for a product write '*' (e.g. '2*{token}')"
     )
 
 
@@ -890,11 +907,8 @@ class _Builder(Transformer_NonRecursive):
         return SceneStmt("gravity", direction=direction, line=self.line, column=self.offset + 1)
 
     def omega_stmt(self, c: list[Any]) -> SceneStmt:
-        body, value, *sense = c
-        word = str(sense[0]) if sense else "ccw"
-        if sense:
-            self._sense(sense[0])
-        return self._stmt("omega", body, body=str(body), value=value, word=word)
+        body, value, *_ = c
+        return self._stmt("omega", body, body=str(body), value=value, word=self._turn("omega", c))
 
     def pivot_stmt(self, c: list[Any]) -> SceneStmt:
         body, point, restitution, *line = c
@@ -1070,11 +1084,23 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("slider", name, name=str(name), body=str(bar))
 
     def alpha_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value, *_ = c
+        return self._stmt("alpha", body, body=str(body), value=value, word=self._turn("alpha", c))
+
+    def _turn(self, kind: str, c: list[Any]) -> str:
+        """The sense of an ``omega``/``alpha`` line: cw or ccw, required unless the value is
+        a literal 0 (left out, ccw was taken silently and a cw drive came out mirrored)."""
         body, value, *sense = c
         if sense:
             self._sense(sense[0])
-        word = str(sense[0]) if sense else "ccw"
-        return self._stmt("alpha", body, body=str(body), value=value, word=word)
+            return str(sense[0])
+        if isinstance(value, Num) and value.value == 0:
+            return "ccw"
+        raise SpecError(
+            f"the sense of {kind} {body} is missing",
+            self._at(body),
+            f"write '{kind} {body}: {value} cw' or '… ccw' (the figure's arrow)",
+        )
 
     def acceleration_stmt(self, c: list[Any]) -> SceneStmt:
         point, value, direction = c
