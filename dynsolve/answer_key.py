@@ -30,6 +30,7 @@ from dynsolve.units import Dim, System
 DEFAULT_RELATIVE = Fraction(1, 200)  # 0.5 %: three significant figures
 ZERO_ABSOLUTE = Fraction(1, 10**9)  # for an expected zero, in the answer's unit
 NEGATIVE = ("cw", "down", "left")
+_PAIRS = (("ccw", "cw"), ("up", "down"), ("right", "left"))  # positive, negative
 EQUIVALENCE_POINTS = 4
 EQUIVALENCE_RTOL = 1e-9  # two formulas agree at a point within this relative difference
 EQUIVALENCE_SIMPLIFY_OPS = 80  # larger differences are not given to sympy.simplify
@@ -85,6 +86,10 @@ def compare(
     tolerance = _tolerance(answer, target, dim, spec.system, spec.file)
     error = abs(value - target)
     got = format_quantity(convert(value, unit, spec.system), unit, 4)
+    if answer.direction and value != 0:  # as the key reads: a magnitude and its word
+        pair = next(p for p in _PAIRS if answer.direction in p)
+        word = pair[0] if value > 0 else pair[1]
+        got = f"{format_quantity(convert(abs(value), unit, spec.system), unit, 4)} {word}"
     if error <= tolerance:
         return Verdict(True, shown, f"got {got}{_relative(error, target)}")
     hint = ""

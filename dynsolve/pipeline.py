@@ -672,6 +672,9 @@ def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]
     )
 
 
+_SENSE_PAIRS = {
+    word: pair for pair in (("ccw", "cw"), ("up", "down"), ("right", "left")) for word in pair
+}  # a key's direction word: the words for a positive and a negative signed value
 _ANGLE_UNITS = frozenset({"deg", "degree", "degrees", "°", "rad", "radian", "radians"})
 _TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
 
@@ -1062,6 +1065,12 @@ class _View:
             return overflow
         if target.kind != "signed" and number is not None:
             direction = self.direction(target, number) or direction
+            text, latex, number = self.shown(target.name, abs(value))
+        elif direction in _SENSE_PAIRS and number is not None:
+            # a signed answer keyed with a word (A_y = 2251 N down): shown as the key reads,
+            # a magnitude and its word, not "-2251 N down"
+            positive, negative = _SENSE_PAIRS[direction]
+            direction = "" if number == 0 else positive if number > 0 else negative
             text, latex, number = self.shown(target.name, abs(value))
         if number is None:
             value, sense = self.sensed(target, value)

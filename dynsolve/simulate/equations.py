@@ -420,9 +420,7 @@ def _friction(
             raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
         mu = support.mu_s if static and support.mu_s is not None else support.mu_k
         total += (
-            mu
-            * _normal(scene, placements, support, symbols, values)
-            * sympy.sqrt(_dot(slip, slip))
+            mu * _normal(scene, placements, support, symbols, values) * sympy.sqrt(_dot(slip, slip))
         )
     return total
 
@@ -485,9 +483,7 @@ def _build(
     terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
     terms += [_friction(scene, placements, symbols, values), V]
     hold = _friction(scene, placements, symbols, values, static=True) if terms[3] != 0 else 0
-    numeric = [
-        (sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]
-    ]
+    numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]]
     hold = numeric.pop()
     if simplify:  # a long run: a leaner right-hand side is worth sympy's simplify once
         numeric[:3] = [min(t, sympy.simplify(t), key=sympy.count_ops) for t in numeric[:3]]
