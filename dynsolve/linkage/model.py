@@ -259,6 +259,7 @@ def read_linkage(spec: Spec) -> Linkage:
     meshes: list[Mesh] = []
     branch = method = ""
     declared: dict[str, tuple[int, int]] = {}
+    mentioned: dict[str, tuple[int, int]] = {}  # a joint's first bar line
     statements = tuple(spec.scene or ())
     for stmt in statements:
         where = Position(spec.file, stmt.line, stmt.column)
@@ -283,6 +284,8 @@ def read_linkage(spec: Spec) -> Linkage:
         elif stmt.kind == "bar":
             _new(stmt.name, declared, where, "bar")
             bars[stmt.name] = _bar(stmt, reader, where)
+            for joint in bars[stmt.name].points:  # for errors about a joint no line places
+                mentioned.setdefault(joint, (stmt.line, stmt.column))
     for stmt in statements:
         where = Position(spec.file, stmt.line, stmt.column)
         if stmt.kind == "joint":
@@ -356,7 +359,7 @@ def read_linkage(spec: Spec) -> Linkage:
         branch,
         symbols,
         values,
-        declared,
+        {**mentioned, **declared},
         tuple(loads),
         wheels,
         tuple(meshes),
