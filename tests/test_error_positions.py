@@ -52,3 +52,20 @@ def test_too_many_degrees_of_freedom_for_work_energy_points_at_the_travel():
         solve_text(FREE_BAR, "free.dyn")
     assert "degrees of freedom" in info.value.message
     assert info.value.position.line == 8
+
+
+def test_a_start_read_off_a_figure_is_told_how_far_it_is_from_the_circle():
+    # newcomer report: G at (0.513, 1.40954) m, 1.5e-5 m inside R = 1.5 m, got only
+    # "needs a circular path through G"; |G| = √(0.513² + 1.40954²) = 1.499991 m (hand)
+    from pathlib import Path
+
+    text = (
+        (Path(__file__).parent.parent / "problems" / "scenes")
+        .joinpath("cylinder_block_released_off_top.dyn")
+        .read_text()
+    )
+    text = text.replace("at (R*sin(phi_0), R*cos(phi_0))", "at (x_0, y_0)")
+    text = text.replace("  phi_0 = 20 deg", "  phi_0 = 20 deg\n  x_0 = 0.513 m\n  y_0 = 1.40954 m")
+    with pytest.raises(SpecError) as info:
+        solve_text(text, "off.dyn")
+    assert "1.499991 from its centre" in info.value.message and "R = 1.5" in info.value.message
