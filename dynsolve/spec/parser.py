@@ -1031,13 +1031,17 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def slider_stmt(self, c: list[Any]) -> SceneStmt:
-        name, direction, *through = c
+        """``slider C: along DIR [, through A] [, mass m]``: joint C slides in a fixed
+        straight guide; with a mass, C carries a block (a piston) of that mass."""
+        name, direction, *rest = c
+        through = [t for t in rest if isinstance(t, Token)]
         return self._stmt(
             "slider",
             name,
             name=str(name),
             direction=direction,
             other=str(through[0]) if through else "",
+            props=tuple(p for p in rest if isinstance(p, Prop)),
         )
 
     def rolls_wheel_stmt(self, c: list[Any]) -> SceneStmt:
@@ -1065,9 +1069,9 @@ class _Builder(Transformer_NonRecursive):
 
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
         """``slider B: along bar CD``: joint B slides along the (moving) bar CD, a pin
-        in a slot or a collar on a rod."""
-        name, bar = c
-        return self._stmt("slider", name, name=str(name), body=str(bar))
+        in a slot or a collar on a rod (``, mass m``: a collar of that mass)."""
+        name, bar, *props = c
+        return self._stmt("slider", name, name=str(name), body=str(bar), props=tuple(props))
 
     def alpha_stmt(self, c: list[Any]) -> SceneStmt:
         body, value, *sense = c
