@@ -15,8 +15,11 @@ normal (k × the guide's direction); a pin in the slot of a moving bar pushes th
 with ``N_P`` along its left normal and the pin with the opposite. A load's magnitude is
 a given or an unknown (the couple that drives the linkage, a force needed). Gears in
 mesh push on each other at their pitch point with the tooth force ``F_A_B`` along the
-common tangent t = k × e (e from A's centre to B's), on A, and its opposite on B (ideal
-teeth: no pressure angle, so no push along the line of centres).
+common tangent t = k × e (e from A's centre to B's), on A, and its opposite on B. With
+a pressure angle φ the teeth push along the line of action: besides F along t, a radial
+part |F| tan φ through the centres that pushes the gears apart (each toward its own
+centre; a ring gear outward), written with the sense of F assumed (positive unless named
+in ``reversed_teeth``) and checked after the solve; ideal teeth (no φ) push along t only.
 
 A slider with a mass carries a block (a piston, a collar): a particle at its joint and
 a free body of its own. The pin forces ``P_x``, ``P_y`` act on the bar and their
@@ -84,10 +87,12 @@ def free_bodies(
     g: sympy.Symbol,
     givens: set[str],
     released: int = 0,
+    reversed_teeth: frozenset[str] = frozenset(),
 ) -> FreeBodies:
     """Newton–Euler for every bar at the positions ``r``, with the motion of the two
     levels; ``givens`` are the names whose magnitude is known; ``released`` bars' α are
-    unknowns of the acceleration level that these equations decide."""
+    unknowns of the acceleration level that these equations decide; ``reversed_teeth``
+    names the tooth forces taken negative for their radial push (pressure angle)."""
     forces: dict[str, list[tuple[Vec, str]]] = {b: [] for b in linkage.bars}  # (F, at)
     unknowns: dict[sympy.Symbol, Dim] = {}
     at_joint: dict[str, Vec] = {}
@@ -150,6 +155,12 @@ def free_bodies(
         # −F t at r₂ e₂ from its centre: −r₂ F (e₂·e₁), so r₂ F (ccw) in external mesh
         forces[mesh.first].append(((tooth * t[0], tooth * t[1]), "G"))
         forces[mesh.second].append(((-tooth * t[0], -tooth * t[1]), "G"))
+        if mesh.pressure is not None:  # the radial push |F| tan φ along the line of centres
+            size = (-1 if name in reversed_teeth else 1) * tooth * sympy.tan(mesh.pressure)
+            out = 1 if mesh.internal and mesh.ring_first(linkage.values, linkage.file) else -1
+            radial = (out * size * e[0], out * size * e[1])  # on the first gear, through G
+            forces[mesh.first].append((radial, "G"))
+            forces[mesh.second].append(((-radial[0], -radial[1]), "G"))
         teeth[mesh.first] += mesh.radii[0] * tooth
         teeth[mesh.second] += -side * mesh.radii[1] * tooth
     for wheel in linkage.wheels.values():  # the ground's friction and normal push at K

@@ -135,6 +135,12 @@ class Mesh:
     line: int = 0
     column: int = 0
     internal: bool = False
+    pressure: sympy.Expr | None = None  # the pressure angle φ; None: ideal teeth (φ = 0)
+
+    @property
+    def tooth(self) -> str:
+        """The name of the tooth force's tangential component, ``F_A_B``."""
+        return f"F_{self.first}_{self.second}"
 
     def pitch(
         self, centres: tuple[Vec, Vec], values: Mapping[sympy.Symbol, sympy.Expr], file: str = ""
@@ -331,7 +337,10 @@ def read_linkage(spec: Spec) -> Linkage:
             _bar_named(stmt.other, bars, where)
             radii = tuple(reader.value(e, LENGTH, "a gear's radius") for e in stmt.vectors[0])
             internal = stmt.word == "internal"
-            meshes.append(Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column, internal))  # type: ignore[arg-type]
+            pressure = reader.value(stmt.value, Dim(), "a pressure angle") if stmt.value else None
+            meshes.append(
+                Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column, internal, pressure)  # type: ignore[arg-type]
+            )
     for stmt in pending:
         where = Position(spec.file, stmt.line, stmt.column)
         loads.append(_load(stmt, reader, bars, where, sliders))

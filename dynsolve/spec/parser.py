@@ -1053,18 +1053,21 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def mesh_stmt(self, c: list[Any]) -> SceneStmt:
-        """``mesh A with B: radii r_A, r_B[, internal]``: gears A and B (bars centred on
-        their first points) in mesh, their pitch circles rolling on each other: outside each
-        other, or (``internal``) the smaller inside the larger, a ring gear."""
-        first, second, r_first, r_second, *internal = c
-        word = "internal" if internal and internal[0] is not None else ""
+        """``mesh A with B: radii r_A, r_B[, internal][, pressure angle phi]``: gears A and
+        B (bars centred on their first points) in mesh, their pitch circles rolling on each
+        other: outside each other, or (``internal``) the smaller inside the larger, a ring
+        gear; the teeth push along the line of action at ``phi`` to the common tangent."""
+        first, second, r_first, r_second, *rest = c
+        internal = any(isinstance(t, Token) and t.type == "INTERNAL" for t in rest)
+        pressure = [e for e in rest if e is not None and not isinstance(e, Token)]
         return self._stmt(
             "mesh",
             first,
             body=str(first),
             other=str(second),
             vectors=((r_first, r_second),),
-            word=word,
+            word="internal" if internal else "",
+            value=pressure[0] if pressure else None,
         )
 
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
