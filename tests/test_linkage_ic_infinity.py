@@ -140,3 +140,25 @@ def test_parallel_crank_and_rocker_at_any_angle(degrees, L_AB, L_CD, w):
     assert found["w_CD"][1] == "ccw"
     assert found["v_C"][0] == pytest.approx(w * L_AB / 100, rel=1e-9)
     assert math.isfinite(found["v_C"][0])
+
+
+def test_the_heavy_block_linkage_by_instantaneous_centres():
+    """problems/linkages/piston_vertical_guide.dyn (its header's hand derivation) with
+    `method ic`: the rod BC translates at the instant (crank square to the guide), and the
+    forces come out as by relative velocity: M = 0.15 B_y, B_y = 2 (3.6 + 9.81) + C_y,
+    C_y = 3 (9.81 + 7.2)."""
+    text = (PROBLEMS / "piston_vertical_guide.dyn").read_text()
+    solution = solve_text(text.replace("  gravity\n", "  gravity\n  method ic\n"), "ic.dyn")
+    assert all(c.passed for c in solution.checks)
+    found = values(solution)
+    C_y = 3 * (9.81 + 7.2)
+    assert found["M"][0] == pytest.approx(0.15 * (2 * (3.6 + 9.81) + C_y), rel=1e-9)
+    assert found["alpha_BC"] == (pytest.approx(48, rel=1e-12), "cw")
+
+
+def test_the_centre_of_a_translating_bar_is_not_asked_for_a_number():
+    text = (PROBLEMS / "ic_translating_coupler.dyn").read_text().split("find:")[0]
+    with pytest.raises(SpecError) as error:
+        solve_text(text + "find: x = x_IC(BC)\n", "centre.dyn")
+    assert "at infinity" in str(error.value)
+    assert error.value.position.column > 1

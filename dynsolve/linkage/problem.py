@@ -172,6 +172,16 @@ def build_linkage_problem(
     notes += _toggle_notes(linkage, levels["velocity"], r, knowns)
     symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
+    for item in spec.finds:
+        centre = item.ref and item.ref.function in ("x_IC", "y_IC") and item.ref.args
+        if centre and item.ref.args[0] in translating:  # type: ignore[union-attr]
+            raise SpecError(
+                f"{item.ref.args[0]} translates at the instant: its instantaneous centre is at "
+                "infinity",
+                Position(spec.file, item.line, item.column),
+                hint=f"ask for omega({item.ref.args[0]}) (zero) or the velocity of one of its "
+                "points (they are all the same)",
+            )
     targets = tuple(
         _target(item, spec, linkage, levels, r, dims, slots, free) for item in spec.finds
     )
@@ -735,8 +745,10 @@ def _power_check(
     error = abs(supplied - stored) / scale
     unit = natural_unit(Dim(2, 1, -3), problem.spec.system)
     shown = format_quantity(convert(supplied, unit, problem.spec.system), unit)
+    heavy = [s.point for s in problem.linkage.sliders.values() if s.mass is not None]
+    blocks = f" + m v·a of block{'s' * (len(heavy) > 1)} {', '.join(heavy)}" if heavy else ""
     detail = (
-        f"power of the loads {shown} = dT/dt = Σ (m v_G·a_G + I_G ω α) "
+        f"power of the loads {shown} = dT/dt = Σ (m v_G·a_G + I_G ω α){blocks} "
         f"{format_quantity(convert(stored, unit, problem.spec.system), unit)} "
         f"(relative difference {error:.1e})"
     )
