@@ -311,7 +311,7 @@ def _consistent(
     raise SpecError(
         f"{bar} translates at the instant (the normals to its points' velocities are "
         f"parallel, so its IC is at infinity), so its points move alike; but its given "
-        f"motion makes them {abs(lhs):.4g} and {abs(rhs):.4g} m/s "
+        f"motion gives them the speeds {abs(lhs):.4g} and {abs(rhs):.4g} "
         f"({equation.note}): inconsistent",
         where,
         hint="check the drives and the positions at the instant",
@@ -379,11 +379,9 @@ def _centres(
             size = real_value(across, values)
             scale = (_size(n1, values) or 1.0) * (_size(n2, values) or 1.0)
             d = _minus(r[Q], r[P])
-            if size is not None and abs(size) < PARALLEL * scale and scale > PARALLEL:
-                apart = real_value(d[0] * n1[1] - d[1] * n1[0], values)  # d × n₁
-                if apart is not None and abs(apart) > PARALLEL * _size(d, values) * _size(
-                    n1, values
-                ):  # two parallel lines: the IC is at infinity (Hibbeler 16.6)
+            lengths = (_size(n1, values), _size(n2, values))
+            if size is not None and abs(size) < PARALLEL * scale and min(lengths) > PARALLEL:
+                if _apart(d, n1, values):  # two parallel lines: the IC is at infinity
                     translating[name] = (P, Q, n1)
                     progress = True
                     continue
@@ -416,6 +414,12 @@ def _centres(
             hint="solve without 'method ic' (relative velocity)",
         )
     return centres, exact, rows, translating
+
+
+def _apart(d: Vec, n: Vec, values: Mapping) -> bool:
+    """Whether the lines along ``n`` through two points ``d`` apart are distinct (d × n ≠ 0)."""
+    across = real_value(d[0] * n[1] - d[1] * n[0], values)
+    return across is not None and abs(across) > PARALLEL * _size(d, values) * _size(n, values)
 
 
 def _normal(
