@@ -237,3 +237,33 @@ def test_a_loaded_slotted_link_solves_and_its_collar_can_have_mass():
         for t in (text, text.replace("along bar CD\n", "along bar CD, mass m_B\n"))
     )
     assert light != pytest.approx(heavy, rel=1e-6)  # the collar's mass is not ignored
+
+
+SI_ENGINE = FPS_ENGINE.replace("units: FPS", "units: SI").replace(" in\n", " m\n")
+SI_ENGINE = SI_ENGINE.replace("W_P = {W} lb", "m_P = {W} kg").replace("W_P/g", "m_P")
+SI_ENGINE = SI_ENGINE.replace("P = {P} lb", "P = {P} N")
+
+
+@settings(max_examples=5, deadline=None)
+@given(
+    r=st.integers(50, 150),
+    ratio=st.integers(3, 5),
+    theta=st.integers(5, 175),
+    n=st.integers(300, 3000),
+    m=st.integers(1, 10),
+    P=st.integers(1000, 30000),
+)
+def test_si_and_us_units_give_the_same_engine(r, ratio, theta, n, m, P):
+    """The same engine written in SI (mm → m, kg, N) and in FPS (inches, a weight in lb
+    over g = 32.2 ft/s² chosen to give the same mass, lb): the rod force and the couple
+    agree after conversion (1 in = 0.0254 m, 1 lb = 4.4482216152605 N exactly)."""
+    lb, inch = 4.4482216152605, 0.0254
+    si = SI_ENGINE.format(r=r / 1000, l=ratio * r / 1000, theta=theta, n=n, W=m, P=P)
+    slug = lb / (32.2 * 0.3048)  # kg per lb of weight over g = 32.2 ft/s²
+    fps = FPS_ENGINE.format(
+        r=r / 1000 / inch, l=ratio * r / 1000 / inch, theta=theta, n=n, W=m / slug, P=P / lb
+    )
+    a = answers(solve_text(si, "si.dyn", NUMERIC))
+    b = answers(solve_text(fps, "fps.dyn", NUMERIC))
+    assert b["F_C"].value * lb == pytest.approx(a["F_C"].value, rel=1e-8)
+    assert b["M"].value * lb * 0.3048 == pytest.approx(a["M"].value, rel=1e-8)
