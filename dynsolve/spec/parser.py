@@ -1045,13 +1045,17 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def slider_stmt(self, c: list[Any]) -> SceneStmt:
-        name, direction, *through = c
+        """``slider C: along DIR [, through A] [, mass m]``: joint C slides in a fixed
+        straight guide; with a mass, C carries a block (a piston) of that mass."""
+        name, direction, *rest = c
+        through = [t for t in rest if isinstance(t, Token)]
         return self._stmt(
             "slider",
             name,
             name=str(name),
             direction=direction,
             other=str(through[0]) if through else "",
+            props=tuple(p for p in rest if isinstance(p, Prop)),
         )
 
     def rolls_wheel_stmt(self, c: list[Any]) -> SceneStmt:
@@ -1063,25 +1067,28 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def mesh_stmt(self, c: list[Any]) -> SceneStmt:
-        """``mesh A with B: radii r_A, r_B[, internal]``: gears A and B (bars centred on
-        their first points) in mesh, their pitch circles rolling on each other: outside each
-        other, or (``internal``) the smaller inside the larger, a ring gear."""
-        first, second, r_first, r_second, *internal = c
-        word = "internal" if internal and internal[0] is not None else ""
+        """``mesh A with B: radii r_A, r_B[, internal][, pressure angle phi]``: gears A and
+        B (bars centred on their first points) in mesh, their pitch circles rolling on each
+        other: outside each other, or (``internal``) the smaller inside the larger, a ring
+        gear; the teeth push along the line of action at ``phi`` to the common tangent."""
+        first, second, r_first, r_second, *rest = c
+        internal = any(isinstance(t, Token) and t.type == "INTERNAL" for t in rest)
+        pressure = [e for e in rest if e is not None and not isinstance(e, Token)]
         return self._stmt(
             "mesh",
             first,
             body=str(first),
             other=str(second),
             vectors=((r_first, r_second),),
-            word=word,
+            word="internal" if internal else "",
+            value=pressure[0] if pressure else None,
         )
 
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
         """``slider B: along bar CD``: joint B slides along the (moving) bar CD, a pin
-        in a slot or a collar on a rod."""
-        name, bar = c
-        return self._stmt("slider", name, name=str(name), body=str(bar))
+        in a slot or a collar on a rod (``, mass m``: a collar of that mass)."""
+        name, bar, *props = c
+        return self._stmt("slider", name, name=str(name), body=str(bar), props=tuple(props))
 
     def alpha_stmt(self, c: list[Any]) -> SceneStmt:
         body, value, *_ = c
