@@ -32,7 +32,7 @@ import sympy
 from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import SceneReader, Vec, scene_reader
 from dynsolve.modes.equation_mode import givens_of
-from dynsolve.spec.ast import SceneStmt, Spec
+from dynsolve.spec.ast import Prop, SceneStmt, Spec
 from dynsolve.units import Dim
 
 LENGTH = Dim.of("length")
@@ -308,11 +308,7 @@ def read_linkage(spec: Spec) -> Linkage:
             _joint_named(stmt.name, bars, fixed, where)
             if stmt.name in sliders:
                 raise SpecError(f"joint {stmt.name} has two sliders", where, "keep one")
-            mass = (
-                reader.value(stmt.props[0].values[0], Dim.of("mass"), "a slider's mass")
-                if stmt.props
-                else None
-            )
+            mass = _mass(stmt.props[0], reader, symbols, where) if stmt.props else None
             if stmt.body:
                 sliders[stmt.name] = replace(_on_bar(stmt, bars, where), mass=mass)
                 continue
@@ -410,10 +406,13 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
             hint="place each point with 'joint P: (x, y)' instead of a length or angle",
         )
     length = angle = mass = gyration = None
-    if "mass" in props:
-        mass = reader.value(props["mass"].values[0], Dim.of("mass"), "a bar's mass")
+    if "mass" in props and "weight" in props:
+        raise SpecError(f"bar {stmt.name} has a mass and a weight", where, "keep one")
+    for key in ("mass", "weight"):
+        if key in props:
+            mass = _mass(props[key], reader, reader.symbols, where)
     if "gyration" in props:
-        if "mass" not in props:
+        if mass is None:
             raise SpecError(f"bar {stmt.name}: a gyration needs a mass", where, "add 'mass m'")
         gyration = reader.value(props["gyration"].values[0], LENGTH, "a radius of gyration")
     if "length" in props:
@@ -421,6 +420,16 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
     if "angle" in props:
         angle = reader.value(props["angle"].values[0], Dim(), "a bar's angle")
     return Bar(stmt.name, points, length, angle, stmt.line, stmt.column, mass, gyration)
+
+
+def _mass(prop: Prop, reader: SceneReader, symbols: Mapping, where: Position) -> sympy.Expr:
+    """A bar's or a block's mass: ``mass m``, or ``weight W`` (m = W/g, as a body's)."""
+    if prop.key == "mass":
+        return reader.value(prop.values[0], Dim.of("mass"), "a mass")
+    g = symbols.get("g")
+    if g is None:
+        raise SpecError("a weight needs g", where, "give 'g' or write the mass ('mass m')")
+    return reader.value(prop.values[0], Dim.of("force"), "a weight") / g
 
 
 def _joint_named(
