@@ -74,6 +74,8 @@ SCENE_LINES = (
     "spins B: about (0, 0, 1), through (0, 0, 0), omega 0, alpha a_s",
     "bearing A: at (0, 0, r), ball",
     "bearing B: at (0, 0, 0), pin",
+    "nutates B: about (0, 0, 1), through (0, 0, 0), omega w, alpha a_n",
+    "bearing O: at (0, 0, 0), fixed",
     "torque M on B",
     "assume T >= 0",
 )

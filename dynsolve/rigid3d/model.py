@@ -61,6 +61,7 @@ LINES_3D = frozenset(
         "inertia3",
         "rotates",
         "spins",
+        "nutates",
         "bearing",
         "torque",
         "gravity",
@@ -70,7 +71,18 @@ LINES_3D = frozenset(
     }
 )
 KINDS_3D = frozenset(
-    {"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "rolls3", "travel3"}
+    {
+        "axis",
+        "axes",
+        "inertia3",
+        "rotates",
+        "spins",
+        "nutates",
+        "bearing",
+        "torque",
+        "rolls3",
+        "travel3",
+    }
 )
 
 
@@ -101,9 +113,10 @@ class Spin:
 
 @dataclass(frozen=True)
 class SpinOf:
-    """The body's turn about ``axis`` through ``through`` (G when not given: a rotor's
-    spin) relative to the frame that turns with the ``rotates`` line, which carries the
-    axis (the precession; a shaft carrying the pin of a bar)."""
+    """A turn about ``axis`` through ``through`` (G when not given: a rotor's spin)
+    relative to the frame before it, which carries the axis: the body's spin relative to
+    the ``rotates`` frame (the precession; a shaft carrying the pin of a bar), or a
+    ``nutates`` line's turn of the body's axis (then the spin is relative to it)."""
 
     axis: Vec3
     omega: sympy.Expr
@@ -115,7 +128,9 @@ class SpinOf:
 class Bearing:
     """A bearing on the shaft: a journal carries loads across the shaft, a thrust also
     along it; a ball joint (``ball``), anywhere, carries loads every way; a ``pin``
-    (hinge) carries loads every way and couples across its axis (the shaft's)."""
+    (hinge) carries loads every way and couples across its axis (the shaft's); a
+    ``fixed`` support (the arm or motor that holds and drives the body) carries loads and
+    couples every way: its couple is the moment needed."""
 
     name: str
     at: Vec3
@@ -163,6 +178,7 @@ class Scene3D:
     travel: Travel3D | None = None
     angles: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown, in positions
     assumptions: tuple[Constraint, ...] = ()  # 'assume' lines: which root of an angle
+    nutation: SpinOf | None = None  # the body's axis turning in the precessing frame
 
     @property
     def shaft(self) -> Vec3:
@@ -218,6 +234,7 @@ def read_scene3d(spec: Spec) -> Scene3D:
         )
     rates: dict[sympy.Symbol, Dim] = {}
     spin = _spin(spins[0], reader, spec, rates)
+    nutation = _nutation(statements, body, reader, spec, rates)
     spin_of = None
     own = [s for s in statements if s.kind == "spins"]
     if own:
@@ -246,6 +263,15 @@ def read_scene3d(spec: Spec) -> Scene3D:
         if s.kind == "rolls3"
     )
     travel = _travel(statements, spin, reader, spec)
+    shaft = spin_of.axis if spin_of is not None else spin.axis
+    _check_shaft(shaft, bearings, own[0] if own else spins[0], spec)
+    if nutation is not None and (travel is not None or rolling):
+        stmt = next(s for s in statements if s.kind == "nutates")
+        raise SpecError(
+            "a nutating body is solved at an instant: not between two states (yet)",
+            Position(spec.file, stmt.line, stmt.column),
+            hint="leave out the travel and rolls lines, or the nutates line",
+        )
     assumptions = tuple(_assumption(s, reader, spec) for s in statements if s.kind == "assume")
     return Scene3D(
         spec.file,
@@ -262,10 +288,11 @@ def read_scene3d(spec: Spec) -> Scene3D:
         travel,
         angles,
         assumptions,
+        nutation,
     )
 
 
-POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins"})
+POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins", "nutates"})
 
 
 def _unknown_angles(
@@ -514,12 +541,58 @@ def _spin_of(
     where = Position(spec.file, stmt.line, stmt.column)
     if stmt.body != body.name:
         raise SpecError(f"there is no body '{stmt.body}'", where, hint=f"the body is {body.name}")
-    axis = _along_an_axis(_direction3(reader, stmt.vectors[0], where), where)
+    axis = _direction3(reader, stmt.vectors[0], where)
     through = (
         _vector3(reader, stmt.vectors[1], "a point of the axis") if len(stmt.vectors) > 1 else None
     )
     omega, alpha = _rates(stmt, reader, rates)
     return SpinOf(axis, omega, alpha, through)
+
+
+def _nutation(
+    statements: Sequence[SceneStmt],
+    body: Body3D,
+    reader: SceneReader,
+    spec: Spec,
+    rates: dict[sympy.Symbol, Dim],
+) -> SpinOf | None:
+    """The scene's one ``nutates B: about (n), through (P), omega w [, alpha a]`` line:
+    the body's axis turns about n through P, which the precessing frame carries (Hibbeler
+    20.1: ω = φ̇ K + θ̇ i' + ψ̇ k, the nutation θ̇ about i')."""
+    lines = [s for s in statements if s.kind == "nutates"]
+    if not lines:
+        return None
+    stmt = lines[-1]
+    where = Position(spec.file, stmt.line, stmt.column)
+    if len(lines) > 1:
+        raise SpecError(
+            "a 3D scene has one nutates line", where, hint="keep one 'nutates B: about (n), …'"
+        )
+    if stmt.body != body.name:
+        raise SpecError(
+            f"there is no body '{stmt.body}'",
+            where,
+            hint=f"the body is {body.name}" + _did_you_mean(stmt.body, [body.name]),
+        )
+    axis = _direction3(reader, stmt.vectors[0], where)
+    through = _vector3(reader, stmt.vectors[1], "a point of the axis")
+    omega, alpha = _rates(stmt, reader, rates)
+    return SpinOf(axis, omega, alpha, through)
+
+
+def _check_shaft(shaft: Vec3, bearings: Sequence[Bearing], stmt: SceneStmt, spec: Spec) -> None:
+    """A journal, thrust or pin bearing names its reactions across the shaft (the spin's
+    axis, else the turn's), which must then lie along x, y or z; a ball or fixed support
+    takes any axis (a top's tilted spin axis)."""
+    named = [b for b in bearings if b.kind in ("journal", "thrust", "pin")]
+    if named and sum(1 for c in shaft if c != 0) != 1:
+        raise SpecError(
+            f"bearing {named[0].name} ({named[0].kind}) lies on a shaft that is not along x, "
+            "y or z: its reactions are named across the shaft by those axes",
+            Position(spec.file, stmt.line, stmt.column),
+            hint="choose the scene axes with the shaft along one of them, or hold the body "
+            "by a 'ball' or 'fixed' support",
+        )
 
 
 def _along_an_axis(axis: Vec3, where: Position) -> Vec3:

@@ -1191,6 +1191,18 @@ class _Builder(Transformer_NonRecursive):
             "spins", body, body=str(body), vectors=(axis, through), value=omega, props=props
         )
 
+    def nutates_stmt(self, c: list[Any]) -> SceneStmt:
+        """``nutates B: about (n), through (P), omega w_n [, alpha a_n]``: B's axis turns
+        about n through P, both carried by the frame that ``rotates`` (a top's nutation,
+        an arm being raised while it precesses)."""
+        body, axis, through, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt(
+            "nutates", body, body=str(body), vectors=(axis, through), value=omega, props=props
+        )
+
     def bearing_stmt(self, c: list[Any]) -> SceneStmt:
         name, at, kind = c
         return self._stmt("bearing", name, name=str(name), vectors=(at,), word=str(kind))
