@@ -257,3 +257,12 @@ def test_a_nutating_body_between_two_states_is_refused(tmp_path):
     assert result.exit_code == 2
     assert "arm.dyn:15" in result.output and "two states" in result.output
     assert "Traceback" not in result.output
+
+
+def test_a_nutating_body_is_not_simulated(tmp_path):
+    text = ARM.format(theta=30, w_p=4, a_p=0, w_n=2, a_n=0, w_s=50, a_s=0)
+    path = tmp_path / "arm.dyn"
+    path.write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(app, ["simulate", str(path)])
+    assert result.exit_code == 2
+    assert "nutating body" in result.output and "Traceback" not in result.output
