@@ -58,7 +58,8 @@ def composition_notes(
     chain = compose(scene)
     name = scene.body.name
     parts, axes = _parts(scene)
-    omega = " + ".join(f"{rate} {axis}" for (rate, _), axis in zip(parts, axes, strict=True))
+    terms = zip(parts, axes, strict=True)
+    omega = " + ".join(f"{rate} {axis}" for (rate, _), axis in terms if rate != "0") or "0"
     named = zip(axes, _units(scene), strict=True)
     where = ", ".join(f"{axis} = {_direction(u)}" for axis, u in named)
     system = spec.system

@@ -300,7 +300,8 @@ def _unknown_angles(
 ) -> dict[sympy.Symbol, Dim]:
     """Names in the scene's positions and directions that are not givens but are asked
     for in find: unknown angles of the position (a bar's steady angle on a turning
-    shaft). Any other name that is not a given stays an error (a typo)."""
+    shaft), and the names of ``steady(theta)`` finds (the scene drawn at a given angle).
+    Any other name that is not a given stays an error (a typo)."""
     asked = {
         item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
     }
@@ -317,6 +318,9 @@ def _unknown_angles(
                     if text in symbols or text == "pi" or text not in asked:
                         continue
                     found[sympy.Symbol(text, real=True)] = Dim()
+    for item in spec.finds:  # 'theta_s = steady(theta)': the angle at rest in the frame
+        if item.ref is not None and item.ref.function == "steady":
+            found[sympy.Symbol(item.name, real=True)] = Dim()
     return found
 
 

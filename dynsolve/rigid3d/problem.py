@@ -55,6 +55,7 @@ from dynsolve.rigid3d.energy import EnergyTerms, build_energy_problem, fixed_poi
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
+from dynsolve.rigid3d.steady import steady_angles, steady_equations
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -177,9 +178,11 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
     equations: list[Equation] = []
     label = "G"
+    steady = steady_angles(spec, scene, tuple(unknowns))
     if loads:
         forces = Loads(reactions, couples, torque)
         equations, label = _newton_euler(scene, forces, set(unknowns), a_G, H_dot, where)
+        equations += steady_equations(steady, equations, tuple(unknowns))
         _check_determined(equations, unknowns, scene, body.name, where)
     symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
@@ -212,6 +215,14 @@ def build_3d_problem(spec: Spec) -> Problem3D:
                     "signed",
                     onset.value,
                 )
+            )
+            continue
+        if item.ref is not None and item.ref.function == "steady":
+            at = Position(spec.file, item.line, item.column)
+            unit, dim = _unit(item, Dim(), spec, at)
+            steady = sympy.Symbol(item.name, real=True)
+            targets_found.append(
+                Target(item.name, steady, dim, unit, item.unit is not None, False, "signed", steady)
             )
             continue
         vectors = {"omega_": omega, "alpha_": alpha, "v_G": v_G, "a_G": a_G, "H_": H}
