@@ -45,6 +45,7 @@ SCENE_LINES = (
     "omega B: omega ccw",
     "velocity B: v, right",
     "travel B: turns theta ccw",
+    "travel B: turns n about (0, 1, 0), from omega w",
     "travel B: by d, right",
     "travel B: for t",
     "impact B with A: e 0.5, line up",

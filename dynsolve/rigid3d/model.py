@@ -4,11 +4,14 @@ Lines (docs/scene-mode.md, *Rigid bodies in 3D*): ``body`` with a mass and a sha
 the 3D table (or ``inertia B: I_x, I_y, I_z``) at a 3D position; ``axis B: (x, y, z)``
 (the body's z axis: a disk's or rod's axis) or ``axes B: (x-axis), (y-axis)``;
 ``rotates B: about (ux, uy, uz), through (x, y, z), omega EXPR [, alpha EXPR]`` (ω and α
-along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrust``;
+along the axis by the right-hand rule); ``spins`` and ``nutates`` lines (the body's turns
+relative to that frame: ω = φ̇ K + θ̇ i' + ψ̇ k); ``bearing A: at (x, y, z),
+journal|thrust|ball|pin|fixed``;
 ``torque M on B`` (about the axis); ``gravity`` (−y: y is up). Between two states:
 ``rolls B at (x, y, z)`` (B's point there is at rest: it rolls on a fixed gear) and
 ``travel B: turns EXPR about (ux, uy, uz)`` (state 2: the turning frame has turned
-through EXPR; state 1 at rest, the rates those of state 2). A name in a position that
+through EXPR; state 1 at rest or, with ``, from omega W``, turning at W; the rates
+those of state 2). A name in a position that
 is not a given but is in find is an unknown angle (a steady angle), its root chosen by
 ``assume`` lines (``assume theta_s > 0``).
 
@@ -152,12 +155,14 @@ class Rolling:
 @dataclass(frozen=True)
 class Travel3D:
     """State 2 of a two-state 3D scene: the turning frame has turned through ``angle``
-    about ``axis`` (a unit vector along the ``rotates`` axis, either way)."""
+    about ``axis`` (a unit vector along the ``rotates`` axis, either way); in state 1 the
+    frame turns at ``omega_1`` (None: at rest)."""
 
     angle: sympy.Expr
     axis: Vec3
     line: int = 0
     column: int = 0
+    omega_1: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -381,7 +386,13 @@ def _travel(
             where,
             hint=f"write 'about ({', '.join(sympy.sstr(c) for c in spin.axis)})'",
         )
-    return Travel3D(angle, axis, stmt.line, stmt.column)
+    start = [p for p in stmt.props if p.key == "from"]
+    omega_1 = (
+        reader.value(start[0].values[0], Dim(0, 0, -1), "the frame's rate in state 1")
+        if start
+        else None
+    )
+    return Travel3D(angle, axis, stmt.line, stmt.column, omega_1)
 
 
 def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:
