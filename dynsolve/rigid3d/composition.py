@@ -80,18 +80,23 @@ def compose(scene: Scene3D) -> Composition:
     return Composition(omega, alpha, v_G, a_G, frame)
 
 
-def by_rotations(scene: Scene3D) -> tuple[Vec3, Vec3, Vec3]:
-    """ω, α and a_G by differentiating the chain of rotations at t = 0: each turn k
-    through its angle q_k(t) = ω_k t + α_k t²/2 about its axis (as drawn, in the frame
-    before it), G(t) = T_0(T_1(T_2(G))) with T_k(x) = P_k + R_k(t)(x − P_k), and
-    ω = vee(Ṙ Rᵀ), α = d/dt vee(Ṙ Rᵀ) for R = R_0 R_1 R_2."""
+def by_rotations(
+    scene: Scene3D, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Vec3, Vec3, Vec3]:
+    """ω, α and a_G by differentiating the chain of rotations at t = 0, with ``values``
+    put in first: each turn k through its angle q_k(t) = ω_k t + α_k t²/2 about its axis
+    (as drawn, in the frame before it), G(t) = T_0(T_1(T_2(G))) with
+    T_k(x) = P_k + R_k(t)(x − P_k), and ω = vee(Ṙ Rᵀ), α = d/dt vee(Ṙ Rᵀ) for
+    R = R_0 R_1 R_2."""
     t = sympy.Symbol("t", real=True)
     spin, body = scene.spin, scene.body
     chain = [(spin.axis, spin.through, spin.omega, spin.alpha)]
     chain += [(u.axis, u.through or body.G, u.omega, u.alpha) for u in turns(scene)]
     R = sympy.eye(3)
-    G = sympy.Matrix(body.G)
+    G = sympy.Matrix(body.G).xreplace(values)
     for axis, P, w, a in reversed(chain):
+        axis, P = _put(axis, values), _put(P, values)
+        w, a = (sympy.Integer(0) + w).xreplace(values), (sympy.Integer(0) + a).xreplace(values)
         R_k = _rotation(axis, w * t + a * t**2 / 2)
         G = sympy.Matrix(P) + R_k * (G - sympy.Matrix(P))
         R = R_k * R
@@ -121,6 +126,20 @@ def frame_form(scene: Scene3D, chain: Composition) -> Vec3 | None:
     return _plus(tuple(I_G * relative), cross(chain.frame, tuple(H)))  # type: ignore[arg-type]
 
 
+def filled(
+    vectors: Sequence[Sequence[sympy.Expr]], values: Mapping[sympy.Symbol, sympy.Expr]
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """``values`` and a random positive number for each other symbol in ``vectors`` (a
+    symbolic problem: the identity is then tested at a point)."""
+    rng = random.Random(7)
+    left = set().union(
+        *((sympy.Integer(0) + c).xreplace(values).free_symbols for v in vectors for c in v)
+    )
+    extra = {s: sympy.Float(rng.uniform(0.5, 2.0)) for s in sorted(left, key=str)}
+    # a solved value may hold the symbols left (a symbolic angle): put them in it too
+    return {**{k: (sympy.Integer(0) + v).xreplace(extra) for k, v in values.items()}, **extra}
+
+
 def agree(
     first: Sequence[sympy.Expr],
     second: Sequence[sympy.Expr],
@@ -146,6 +165,10 @@ def agree(
     worst = max(abs(a - b) for a, b in numbers)
     scale = max(max(abs(a), abs(b)) for a, b in numbers)
     return worst / scale if scale else 0.0
+
+
+def _put(vector: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr]) -> Vec3:
+    return tuple((sympy.Integer(0) + c).xreplace(values) for c in vector)  # type: ignore[return-value]
 
 
 def _rotation(axis: Vec3, angle: sympy.Expr) -> sympy.Matrix:

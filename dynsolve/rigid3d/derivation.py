@@ -40,7 +40,15 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.numbers import tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check
-from dynsolve.rigid3d.composition import Composition, agree, by_rotations, compose, frame_form
+from dynsolve.rigid3d.composition import (
+    Composition,
+    agree,
+    by_rotations,
+    compose,
+    filled,
+    frame_form,
+    turns,
+)
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D
 from dynsolve.spec.ast import Spec
@@ -89,11 +97,15 @@ def composition_checks(
     """ω, α, a_G by differentiating the rotations; Ḣ_G in the Ω-frame form, when the body
     spins in a frame and is symmetric about its spin axis."""
     chain = compose(scene)
-    omega, alpha, a_G = by_rotations(scene)
+    spin = scene.spin
+    parts = [spin.axis, spin.through, (spin.omega, spin.alpha), scene.body.G]
+    parts += [(*t.axis, *(t.through or ()), t.omega, t.alpha) for t in turns(scene)]
+    point = filled([*parts, chain.omega, chain.alpha, chain.a_G], values)
+    omega, alpha, a_G = by_rotations(scene, point)
     kinematic = max(
-        _gap(chain.omega, omega, values),
-        _gap(chain.alpha, alpha, values),
-        _gap(chain.a_G, a_G, values),
+        _gap(chain.omega, omega, point),
+        _gap(chain.alpha, alpha, point),
+        _gap(chain.a_G, a_G, point),
     )
     checks = [
         Check(
