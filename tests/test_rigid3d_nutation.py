@@ -248,6 +248,16 @@ def test_a_bad_nutation_gets_a_positioned_error(change, message):
     assert error.value.position.line > 1
 
 
+def test_a_pin_on_a_nutating_body_is_refused():
+    # the arm horizontal (θ = 0): the spin axis is x, yet the pin at O turns about z (the
+    # nutation): which axis it carries no couple about is ambiguous, so it is refused
+    text = ARM.format(theta=0, w_p=4, a_p=0, w_n=2, a_n=0, w_s=50, a_s=0)
+    text = text.replace("about (cos(theta), sin(theta), 0)", "about (1, 0, 0)")
+    with pytest.raises(SpecError, match="turns about two") as error:
+        solve_text(text.replace("), fixed", "), pin"), "arm.dyn")
+    assert error.value.position.line == 17
+
+
 def test_a_nutating_body_between_two_states_is_refused(tmp_path):
     text = ARM.format(theta=30, w_p=4, a_p=0, w_n=2, a_n=0, w_s=50, a_s=0)
     text = text.replace("  gravity\n", "  gravity\n  travel disk: turns 1 about (0, 1, 0)\n")

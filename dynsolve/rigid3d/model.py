@@ -270,6 +270,15 @@ def read_scene3d(spec: Spec) -> Scene3D:
     travel = _travel(statements, spin, reader, spec)
     shaft = spin_of.axis if spin_of is not None else spin.axis
     _check_shaft(shaft, bearings, own[0] if own else spins[0], spec)
+    named = [b for b in bearings if b.kind in ("journal", "thrust", "pin")]
+    if nutation is not None and named:
+        raise SpecError(
+            f"bearing {named[0].name} ({named[0].kind}) is named across one shaft, but a "
+            "nutating body turns about two (the nutation's and the spin's)",
+            Position(spec.file, named[0].line, named[0].column),
+            hint="hold the body by a 'fixed' support (force and couple every way: the moment "
+            "needed) or a 'ball' joint",
+        )
     if nutation is not None and (travel is not None or rolling):
         stmt = next(s for s in statements if s.kind == "nutates")
         raise SpecError(
