@@ -127,6 +127,9 @@ def test_the_rotor_on_a_raised_arm_matches_the_omega_frame_equations():
         assert found[f"M_O{axis}"] == pytest.approx(mo, rel=1e-12)
     assert M_O[2] == pytest.approx(10.0771, rel=1e-5)  # the header's hand figure
     assert solution.passed
+    shown = checks(solution)
+    for name in ("Euler's equations in the principal axes", "Ḣ_G in the Ω frame"):
+        assert shown[name].passed
 
 
 @settings(max_examples=4, deadline=None)

@@ -26,8 +26,8 @@ differentiating the chain of rotations in time, and Ḣ_G again in the Ω-frame 
 >>> scene = read_scene3d(spec)
 >>> print(composition_notes(scene, scene.values, spec)[1][1])  # 15 i + (−15, 26.0, −43.3)
 α = w_p K × w_n i' + (w_p K + w_n i') × w_s k = (0, 26.0, -43.3) rad/s^2
->>> [c.passed for c in composition_checks(scene, scene.values, spec)]
-[True, True]
+>>> [(c.name, c.passed) for c in composition_checks(scene, scene.values, spec)][1:]
+[('Ḣ_G in the Ω frame', True), ("Euler's equations in the principal axes", True)]
 """
 
 from __future__ import annotations
@@ -119,7 +119,55 @@ def composition_checks(
     framed = frame_form(scene, chain)
     if framed is not None:
         checks.append(_frame_check(scene, chain, framed, values, spec))
-    return tuple(checks)
+    euler = _euler_check(scene, chain, values, point, spec)
+    return tuple(checks) + euler
+
+
+def _euler_check(
+    scene: Scene3D,
+    chain: Composition,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    point: Mapping[sympy.Symbol, sympy.Expr],
+    spec: Spec,
+) -> tuple[Check, ...]:
+    """Euler's equations in the body's principal axes (Hibbeler Eq. 21-25),
+    ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z and cyclic, with ω̇_x = α·x (the axes turn with the
+    body), set against I_G α + ω × H_G in scene axes; none when products of inertia are
+    given (the body axes are not principal)."""
+    body = scene.body
+    if body.products is not None and any(p != 0 for p in body.products):
+        return ()
+    w = [_dot(chain.omega, e) for e in body.axes]
+    a = [_dot(chain.alpha, e) for e in body.axes]
+    I_x, I_y, I_z = body.principal
+    M = (
+        I_x * a[0] - (I_y - I_z) * w[1] * w[2],
+        I_y * a[1] - (I_z - I_x) * w[2] * w[0],
+        I_z * a[2] - (I_x - I_y) * w[0] * w[1],
+    )
+    in_scene = tuple(
+        sum((m * e[i] for m, e in zip(M, body.axes, strict=True)), sympy.Integer(0))
+        for i in range(3)
+    )
+    H = tuple(body.I_G * sympy.Matrix(chain.omega))
+    I_alpha = body.I_G * sympy.Matrix(chain.alpha)
+    matrix = tuple(p + q for p, q in zip(I_alpha, cross(chain.omega, H), strict=True))
+    gap = _gap(in_scene, matrix, point)
+    unit = natural_unit(Dim(2, 1, -2), spec.system)
+    return (
+        Check(
+            "Euler's equations in the principal axes",
+            gap < TOLERANCE,
+            "ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z, ΣM_y = I_y ω̇_y − (I_z − I_x) ω_z ω_x, "
+            "ΣM_z = I_z ω̇_z − (I_x − I_y) ω_x ω_y in the body's x, y, z = "
+            f"{_vector(M, values, unit, spec.system)}; turned into scene axes, as "
+            f"I_G α + ω × H_G (relative difference {gap:.1e})",
+        ),
+    )
+
+
+def _dot(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> sympy.Expr:
+    return sum((x * y for x, y in zip(a, b, strict=True)), sympy.Integer(0))
 
 
 def _frame_check(
