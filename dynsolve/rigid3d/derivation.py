@@ -160,7 +160,8 @@ def _euler_check(
             gap < TOLERANCE,
             "ΣM_x = I_x ω̇_x − (I_y − I_z) ω_y ω_z, ΣM_y = I_y ω̇_y − (I_z − I_x) ω_z ω_x, "
             "ΣM_z = I_z ω̇_z − (I_x − I_y) ω_x ω_y in the body's x, y, z = "
-            f"{_vector(M, values, unit, spec.system)}; turned into scene axes, as "
+            f"{_vector(M, values, unit, spec.system, formulas=False)}; turned into scene "
+            "axes, as "
             f"I_G α + ω × H_G (relative difference {gap:.1e})",
         ),
     )
@@ -182,14 +183,15 @@ def _frame_check(
     euler = tuple(a + b for a, b in zip(I_alpha, cross(chain.omega, H), strict=True))
     gap = _gap(euler, framed, values)
     assert chain.frame is not None
-    unit = natural_unit(Dim(2, 1, -2), spec.system)
+    unit, rate = natural_unit(Dim(2, 1, -2), spec.system), natural_unit(Dim(0, 0, -1), spec.system)
     return Check(
         "Ḣ_G in the Ω frame",
         gap < TOLERANCE,
         "(Ḣ_G)_xyz + Ω × H_G with (Ḣ_G)_xyz = I_G (α − Ω × ω) and Ω = "
-        f"{_vector(chain.frame, values, natural_unit(Dim(0, 0, -1), spec.system), spec.system)}, "
+        f"{_vector(chain.frame, values, rate, spec.system, formulas=False)}, "
         "the frame that carries the spin axis (I_G is constant in it) = "
-        f"{_vector(framed, values, unit, spec.system)}; Euler's I_G α + ω × H_G agrees "
+        f"{_vector(framed, values, unit, spec.system, formulas=False)}; Euler's I_G α + "
+        "ω × H_G agrees "
         f"(relative difference {gap:.1e})",
     )
 
@@ -248,12 +250,19 @@ def _direction(u: Vec3) -> str:
 
 
 def _vector(
-    vector: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr], unit: str, system: str
+    vector: Sequence[sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    unit: str,
+    system: str,
+    formulas: bool = True,
 ) -> str:
-    """A vector in numbers with its unit where the values give them, else as formulas."""
+    """A vector in numbers with its unit where the values give them, else as formulas (or
+    'in letters', for a check's detail)."""
     try:
         numbers = [float(sympy.N((sympy.Integer(0) + c).xreplace(values), 15)) for c in vector]
     except TypeError:
+        if not formulas:
+            return "(in letters)"
         return "(" + ", ".join(sympy.sstr(tidy(sympy.Integer(0) + c)) for c in vector) + ")"
     shown = [format_quantity(convert(n, unit, system), unit).rsplit(" ", 1)[0] for n in numbers]
     return f"({', '.join(shown)}) {unit}"
