@@ -279,3 +279,23 @@ def test_a_nutating_body_is_not_simulated(tmp_path):
     result = CliRunner().invoke(app, ["simulate", str(path)])
     assert result.exit_code == 2
     assert "nutating body" in result.output and "Traceback" not in result.output
+
+
+def test_a_scene_asked_only_for_its_motion_writes_no_equations():
+    # the gyroscope with Ω given (2.4525 rad/s) and only H_G, v_G asked: H_G = I_G ω with
+    # ω = (w_s, Ω, 0), I_s = m r²/2 about the spin axis x, I_t = m r²/4 across it:
+    # H_G = (m r² w_s/2, m r² Ω/4, 0); v_G = Ω j × d i = (0, 0, −Ω d)
+    text = GYRO.replace("omega Omega", "omega W").replace(
+        "  w_s = 300 rad/s\n", "  w_s = 300 rad/s\n  W = 2.4525 rad/s\n"
+    )
+    text = text.replace("  nutates rotor: about (0, 0, 1), through (0, 0, 0), omega 0\n", "")
+    text = text.replace(
+        "find: Omega, O_x, O_y", "find: H_x = H_x(rotor), H_y = H_y(rotor), v_z = v_Gz(rotor)"
+    )
+    solution = solve_text(text, "gyro.dyn")
+    found = answers(solution)
+    m, r, d = 0.5, 0.04, 0.06
+    assert found["H_x"] == pytest.approx(m * r**2 * 300 / 2, rel=1e-12)
+    assert found["H_y"] == pytest.approx(m * r**2 * 2.4525 / 4, rel=1e-12)
+    assert found["v_z"] == pytest.approx(-2.4525 * d, rel=1e-12)
+    assert solution.equations == () and solution.passed
