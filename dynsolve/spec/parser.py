@@ -1003,10 +1003,16 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("travel", body, body=str(body), value=angle, word=str(sense), props=stops)
 
     def travel_turns3_stmt(self, c: list[Any]) -> SceneStmt:
-        """``travel B: turns EXPR about (ux, uy, uz)``: in a 3D scene, state 2 is reached
-        when the frame that ``rotates`` has turned through EXPR about u (right-hand)."""
-        body, angle, axis = c
-        return self._stmt("travel3", body, body=str(body), value=angle, vectors=(axis,))
+        """``travel B: turns EXPR about (ux, uy, uz) [, from omega W]``: in a 3D scene,
+        state 2 is reached when the frame that ``rotates`` has turned through EXPR about u
+        (right-hand); state 1 is at rest, or has the frame turning at W."""
+        body, angle, axis, *start = c
+        props = tuple(
+            Prop("from", values=(w,), line=self.line, column=self.offset + 1) for w in start
+        )
+        return self._stmt(
+            "travel3", body, body=str(body), value=angle, vectors=(axis,), props=props
+        )
 
     def prop_guide(self, c: list[Any]) -> Prop:
         return self._prop("guide", c)
@@ -1222,6 +1228,18 @@ class _Builder(Transformer_NonRecursive):
         )
         return self._stmt(
             "spins", body, body=str(body), vectors=(axis, through), value=omega, props=props
+        )
+
+    def nutates_stmt(self, c: list[Any]) -> SceneStmt:
+        """``nutates B: about (n), through (P), omega w_n [, alpha a_n]``: B's axis turns
+        about n through P, both carried by the frame that ``rotates`` (a top's nutation,
+        an arm being raised while it precesses)."""
+        body, axis, through, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt(
+            "nutates", body, body=str(body), vectors=(axis, through), value=omega, props=props
         )
 
     def bearing_stmt(self, c: list[Any]) -> SceneStmt:
