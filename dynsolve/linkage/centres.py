@@ -78,7 +78,7 @@ def by_centres(
         """r_P/IC of ``bar``, named the first time it is used."""
         if (point, bar) not in distances:
             rho = _minus(r[point], exact[bar])  # the IC's own formula: r_A/IC = x_B
-            formula = abs_resolved(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2), values)
+            formula = abs_resolved(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2), values, light=False)
             distances[(point, bar)] = _named(
                 f"r_{point}_{bar}", formula, values, rows, f"{point} to the IC of {bar}"
             )
@@ -173,8 +173,8 @@ def _centres(
             wheel = linkage.wheels[name]
             hub = r[bar.points[0]]
             contact = (
-                tidy(hub[0] - wheel.radius * wheel.normal[0]),
-                tidy(hub[1] - wheel.radius * wheel.normal[1]),
+                tidy(hub[0] - wheel.radius * wheel.normal[0], light=False),
+                tidy(hub[1] - wheel.radius * wheel.normal[1], light=False),
             )
             exact[name] = contact
             centres[name] = _located(name, contact, values, rows, "its contact with the ground")
@@ -200,7 +200,7 @@ def _centres(
                 )
             d = _minus(r[Q], r[P])
             s = (d[0] * n2[1] - d[1] * n2[0]) / across
-            meet = (tidy(r[P][0] + s * n1[0]), tidy(r[P][1] + s * n1[1]))
+            meet = (tidy(r[P][0] + s * n1[0], light=False), tidy(r[P][1] + s * n1[1], light=False))
             how = f"where the normals to v_{P} and v_{Q} meet"
             exact[name] = meet
             centres[name] = _located(name, meet, values, rows, how)
