@@ -105,12 +105,9 @@ def _tidied(expr: sympy.Expr, light: bool) -> sympy.Expr:
     return best
 
 
-def abs_resolved(
-    expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], light: bool = True
-) -> sympy.Expr:
+def abs_resolved(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
     """``expr`` with each |x| written as x or −x by the sign of x in ``values`` (a length
-    |E − P| = L_0 − δ where L_0 > δ), then tidied (``light`` as for :func:`tidy`); an |x|
-    whose sign is not known is kept.
+    |E − P| = L_0 − δ where L_0 > δ), then tidied; an |x| whose sign is not known is kept.
 
     >>> L, d = sympy.symbols("L_0 delta", positive=True)
     >>> abs_resolved(sympy.Abs(L - d) - L, {L: 1, d: sympy.Rational(1, 5)})
@@ -123,7 +120,7 @@ def abs_resolved(
             return sympy.Abs(argument)
         return argument if value > 0 else -argument
 
-    return tidy((sympy.Integer(0) + expr).replace(sympy.Abs, signed), light)
+    return tidy((sympy.Integer(0) + expr).replace(sympy.Abs, signed))
 
 
 _LIGHT: ContextVar[bool] = ContextVar("light_tidy", default=False)

@@ -78,7 +78,7 @@ def by_centres(
         """r_P/IC of ``bar``, named the first time it is used."""
         if (point, bar) not in distances:
             rho = _minus(r[point], exact[bar])  # the IC's own formula: r_A/IC = x_B
-            formula = abs_resolved(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2), values, light=False)
+            formula = abs_resolved(sympy.sqrt(rho[0] ** 2 + rho[1] ** 2), values)
             distances[(point, bar)] = _named(
                 f"r_{point}_{bar}", formula, values, rows, f"{point} to the IC of {bar}"
             )
