@@ -393,9 +393,8 @@ def solve_linear_in_floats(
     or so ill-conditioned that the guard digits would not cover what it loses.
 
     The matrix is equilibrated (rows, then columns, scaled to a largest entry of 1; then,
-    while the condition is too large, up to :data:`EQUILIBRATION_SWEEPS` sweeps by
-    geometric means, :func:`_equilibrated`), so
-    unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
+    while the condition is too large, sweeps by geometric means: :func:`_equilibrated`),
+    so unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
     value is below the working precision next to the terms it is the sum of is exactly 0
     (a sum that cancels exactly, as exact arithmetic would find).
 
