@@ -88,7 +88,14 @@ def tidy(expr: sympy.Expr | int, light: bool = True) -> sympy.Expr:
     expr = sympy.Integer(0) + expr
     if expr.is_Atom or sympy.count_ops(expr) <= 3:
         return expr
-    if light and _LIGHT.get() and _surely_nonzero(expr):
+    return _tidied(expr, light and _LIGHT.get())
+
+
+@cacheit  # the model tidies the same form again and again (half of the calls are repeats)
+def _tidied(expr: sympy.Expr, light: bool) -> sympy.Expr:
+    """:func:`tidy`'s search for the tidiest form of ``expr``, once per form and ``light``
+    (numeric mode, where a form surely not 0 is left as it is); sympy's cache, cleared with it."""
+    if light and _surely_nonzero(expr):
         return expr
     best = min(_cheap_forms(expr), key=_size)
     if _worth_simplifying(best):
@@ -173,6 +180,7 @@ def _surely_nonzero(expr: sympy.Expr) -> bool:
     return any(f._prec > 10 and f != 0 for f in value.atoms(sympy.Float))
 
 
+@cacheit  # the same candidate forms come back (an expression and its factor_terms)
 def _size(expr: sympy.Expr) -> tuple[int, int]:
     """How long a form prints, then how many operations it has: the smaller, the tidier."""
     return len(sympy.sstr(expr)), sympy.count_ops(expr)

@@ -139,3 +139,27 @@ def test_numeric_mode_equations_read_as_exact_modes(name: str) -> None:
     assert [row.text for row in numeric.second_moments] == [
         row.text for row in exact.second_moments
     ]
+
+
+def test_numeric_mode_locates_instantaneous_centres_as_exact_mode() -> None:
+    """The IC of the connecting rod of ``linkages/ic_slider_crank`` by hand: the normal to
+    v_B is the line AB (y = x y_B/x_B), the normal to v_C the vertical x = x_C, so the IC
+    is at (x_C, x_C y_B/x_B) and r_C/IC = x_C y_B/x_B. Numeric mode writes these rows as
+    exact mode does (it wrote y_B + y_B (x_C − x_B)/x_B and took longer than exact mode)."""
+    path = ROOT / "problems" / "linkages" / "ic_slider_crank.dyn"
+    exact = {g.name: g.written for g in solve_file(path, SolveOptions(mode="exact")).givens}
+    numeric = {g.name: g.written for g in solve_file(path, SolveOptions(mode="numeric")).givens}
+    for name in ("y_IC_BC", "r_C_BC"):
+        assert numeric[name].startswith("= x_C*y_B/x_B =")
+        assert numeric[name] == exact[name]
+
+
+def test_tidy_once_per_form_and_mode() -> None:
+    """``tidy`` remembers a form's tidiest form per solve, apart for numeric mode's light
+    tidying (where a form surely not 0 is kept as written)."""
+    untidy = a * b * sympy.sin(u) ** 2 + a * b * sympy.cos(u) ** 2 + a
+    assert tidy(untidy) == a * (b + 1)  # sin² + cos² = 1, then a taken out
+    with light_tidying():
+        assert tidy(untidy) == untidy  # not 0 at a point: kept as written
+        assert tidy(untidy, light=False) == a * (b + 1)
+    assert tidy(untidy) == a * (b + 1)  # exact mode's tidy, not numeric mode's remembered one

@@ -5,11 +5,18 @@ from __future__ import annotations
 import math
 import signal
 
+import mpmath
 import pytest
 import sympy
 from sympy import Rational
 
-from dynsolve.solver.blocks import Candidate, solve_block, time_budget
+from dynsolve.solver.blocks import (
+    Candidate,
+    _equilibrated,
+    solve_block,
+    solve_linear_in_floats,
+    time_budget,
+)
 from dynsolve.solver.residuals import equation_residual
 from dynsolve.solver.roots import AMBIGUOUS, choose_root, enters_only_squared, truth
 from dynsolve.system import Constraint, Equation, SolveOptions
@@ -282,3 +289,35 @@ def test_numeric_mode_polishes_a_tiny_root_beside_a_large_one() -> None:
     x = sympy.Symbol("x")
     roots = sorted(_univariate_roots(x**2 + x - sympy.Rational(1, 10**100), x), key=abs)
     assert float(roots[0]) == pytest.approx(1e-100, rel=1e-12)
+
+
+def test_float_linear_solve_undoes_a_change_of_units() -> None:
+    """The acceleration block of ``linkages/double_pendulum_swinging`` with masses and
+    lengths scaled by 1e9 (entries from 1 to 4e25): scaling rows and columns by their
+    largest entries leaves it 1e17-conditioned, so numeric mode solved it exactly (5x its
+    time at k = 0); sweeps by geometric means bring it to k = 0's condition. The floats
+    must agree with the exact rational solution (sympy's LU, another method) to 1e-14."""
+    e = sympy.Integer(10)
+    big = -sympy.Rational(125, 3) * e**24
+    rows = [
+        [0, 0, 1, 0, 0, 0, 0, 0],
+        [-5 * e**8, 0, 0, 1, 0, 0, 0, 0],
+        [0, 0, 0, 0, 1, 0, 1, 0],
+        [-5 * e**17, 0, 0, 0, 0, 1, 0, 1],
+        [big, 0, 0, 0, 0, -25 * e**7, 0, 25 * e**7],
+        [0, -5 * e**17, -2 * e**9, 0, 0, 0, -1, 0],
+        [0, 0, 0, -2 * e**9, 0, 0, 0, -1],
+        [0, big, 0, 0, 0, 0, 25 * e**7, 0],
+    ]
+    matrix = sympy.Matrix(rows)
+    rhs = sympy.Matrix([-8 * e**9, 0, -8 * e**18, 1962 * e**16, 0, 0, 1962 * e**16, 0])
+    unknowns = sympy.symbols("alpha_OA alpha_AB a_Ax a_Ay O_x O_y A_x A_y")
+    with mpmath.workdps(35):
+        A = [[mpmath.mpf(int(v.p)) / int(v.q) for v in map(sympy.Rational, r)] for r in rows]
+        once = mpmath.matrix(_equilibrated(A, [mpmath.mpf(1)] * 8, [1] * 8, False)[0])
+        assert mpmath.mnorm(once, 1) * mpmath.mnorm(mpmath.inverse(once), 1) > 1e15
+    found = solve_linear_in_floats(matrix, rhs, unknowns)
+    assert found is not None
+    exact = matrix.LUsolve(rhs)
+    for unknown, value in zip(unknowns, exact, strict=True):
+        assert float(found.candidates[0].values[unknown]) == pytest.approx(float(value), rel=1e-14)

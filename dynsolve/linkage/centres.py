@@ -356,8 +356,8 @@ def _centres(
             wheel = linkage.wheels[name]
             hub = r[bar.points[0]]
             contact = (
-                tidy(hub[0] - wheel.radius * wheel.normal[0]),
-                tidy(hub[1] - wheel.radius * wheel.normal[1]),
+                tidy(hub[0] - wheel.radius * wheel.normal[0], light=False),
+                tidy(hub[1] - wheel.radius * wheel.normal[1], light=False),
             )
             exact[name] = contact
             centres[name] = _located(name, contact, values, rows, "its contact with the ground")
@@ -400,7 +400,7 @@ def _centres(
                     hint="solve without 'method ic' (relative velocity)",
                 )
             s = (d[0] * n2[1] - d[1] * n2[0]) / across
-            meet = (tidy(r[P][0] + s * n1[0]), tidy(r[P][1] + s * n1[1]))
+            meet = (tidy(r[P][0] + s * n1[0], light=False), tidy(r[P][1] + s * n1[1], light=False))
             how = f"where the normals to v_{P} and v_{Q} meet"
             exact[name] = meet
             centres[name] = _located(name, meet, values, rows, how)

@@ -412,8 +412,9 @@ def solve_linear_in_floats(
     when an entry is a letter or not real, the block is large, or the matrix is singular
     or so ill-conditioned that the guard digits would not cover what it loses.
 
-    The matrix is equilibrated (rows, then columns, scaled to a largest entry of 1), so
-    unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
+    The matrix is equilibrated (rows, then columns, scaled to a largest entry of 1; then,
+    while the condition is too large, sweeps by geometric means: :func:`_equilibrated`),
+    so unknowns of sizes 1e9 and 1 side by side are not "ill-conditioned". An unknown whose
     value is below the working precision next to the terms it is the sum of is exactly 0
     (a sum that cancels exactly, as exact arithmetic would find).
 
@@ -437,18 +438,18 @@ def solve_linear_in_floats(
             b = [_mp_real(rhs[i], digits) for i in range(n)]
         except (TypeError, ValueError):
             return None  # a complex or non-finite entry: the exact path says what it is
-        rows = [max(abs(a) for a in row) or mpmath.mpf(1) for row in A]
-        A = [[a / rows[i] for a in A[i]] for i in range(n)]
-        b = [b[i] / rows[i] for i in range(n)]
-        columns = [max(abs(A[i][j]) for i in range(n)) or mpmath.mpf(1) for j in range(n)]
-        scaled = mpmath.matrix([[A[i][j] / columns[j] for j in range(n)] for i in range(n)])
-        try:
-            inverse = mpmath.inverse(scaled)
-        except ZeroDivisionError:
-            return None
-        if mpmath.mnorm(scaled, 1) * mpmath.mnorm(inverse, 1) > mpmath.mpf(10) ** (
-            GUARD_DIGITS - 5
-        ):
+        columns = [mpmath.mpf(1)] * n
+        for sweep in range(EQUILIBRATION_SWEEPS):
+            A, b, columns = _equilibrated(A, b, columns, geometric=sweep > 0)
+            scaled = mpmath.matrix(A)
+            try:
+                inverse = mpmath.inverse(scaled)
+            except ZeroDivisionError:
+                return None
+            condition = mpmath.mnorm(scaled, 1) * mpmath.mnorm(inverse, 1)
+            if condition <= mpmath.mpf(10) ** (GUARD_DIGITS - 5):
+                break
+        else:
             return None  # (nearly) singular: dependent or contradictory equations, exactly
         tiny = mpmath.mpf(10) ** (3 - digits)
         values: dict[sympy.Symbol, sympy.Expr] = {}
@@ -461,6 +462,41 @@ def solve_linear_in_floats(
                 values[unknown] = sympy.Float(total / columns[j], numeric_digits())
     candidate = Candidate(values)
     return BlockSolution(unknowns, "linear", (candidate,), note=FLOAT_LINEAR_NOTE)
+
+
+EQUILIBRATION_SWEEPS = 12  # a matrix scaled by 1e9 (a change of units) needs 5 to 10
+
+
+def _equilibrated(
+    A: list[list[mpmath.mpf]], b: list[mpmath.mpf], columns: list[mpmath.mpf], geometric: bool
+) -> tuple[list[list[mpmath.mpf]], list[mpmath.mpf], list[mpmath.mpf]]:
+    """One sweep of equilibration of ``A x = b``: each row, then each column divided by its
+    largest entry, or with ``geometric`` by the geometric mean of its nonzero entries (the
+    sweeps of Curtis and Reid's scaling, which undo a change of units where scaling by the
+    largest entries stops at a matrix still 1e17-conditioned); ``columns`` gathers the
+    column factors (x_j = y_j / columns[j]). A diagonal scaling: it changes the condition,
+    not the solution, and keeps each entry's relative rounding error.
+
+    >>> A, b, c = _equilibrated([[4, 0], [0, 1e-8]], [8, 1e-8], [1, 1], geometric=False)
+    >>> A, b, c
+    ([[1.0, 0.0], [0.0, 1.0]], [2.0, 1.0], [1.0, 1.0])
+    """
+    n = len(A)
+    rows = [_scale([a for a in row if a], geometric) for row in A]
+    A = [[a / rows[i] for a in A[i]] for i in range(n)]
+    b = [b[i] / rows[i] for i in range(n)]
+    scale = [_scale([A[i][j] for i in range(n) if A[i][j]], geometric) for j in range(n)]
+    A = [[A[i][j] / scale[j] for j in range(n)] for i in range(n)]
+    return A, b, [columns[j] * scale[j] for j in range(n)]
+
+
+def _scale(entries: list[mpmath.mpf], geometric: bool) -> mpmath.mpf:
+    """The largest of |entries|, or their geometric mean; 1 for none."""
+    if not entries:
+        return mpmath.mpf(1)
+    if not geometric:
+        return max(abs(a) for a in entries)
+    return mpmath.exp(mpmath.fsum(mpmath.log(abs(a)) for a in entries) / len(entries))
 
 
 def _mp_real(entry: sympy.Expr, digits: int) -> mpmath.mpf:
