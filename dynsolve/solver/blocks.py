@@ -8,7 +8,7 @@ knowns and earlier unknowns kept as symbols. Choosing among the candidates is
 
 * linear blocks: ``linear_eq_to_matrix`` + ``linsolve`` — exact, method ``linear``;
   a singular matrix leaves the dependent unknowns *free* (under-determined);
-* nonlinear blocks: ``sympy.solve`` under ``options.time_budget`` seconds (SIGALRM,
+* nonlinear blocks: ``sympy.solve`` under ``options.time_budget`` CPU seconds (SIGPROF,
   else a cooperative clock check; a budget <= 0 skips it), method ``symbolic``; when it times
   out, cannot solve or finds nothing: Newton/secant root finding (mpmath, as
   ``sympy.nsolve`` does) from several starting points, method ``numeric``.
@@ -138,10 +138,12 @@ def as_expr(value: object) -> sympy.Expr:
 def time_budget(seconds: float) -> Iterator[None]:
     """Raise a private exception inside the ``with`` body once ``seconds`` have passed.
 
-    Uses ``SIGALRM``/``setitimer`` in the main thread where it exists (the previous
+    The seconds are the process's CPU time (a budget that does not shrink when the machine
+    is busy, so the path a solve takes is the same on a loaded machine). Uses
+    ``SIGPROF``/``setitimer(ITIMER_PROF)`` in the main thread where it exists (the previous
     handler and timer are always restored); elsewhere (Windows, other threads) a
-    cooperative check of the clock at each Python function call. The whole run has
-    its own budget besides (:mod:`dynsolve.budget`).
+    cooperative check of the CPU clock at each Python function call. The whole run has
+    its own wall-clock budget besides (:mod:`dynsolve.budget`).
 
     >>> with time_budget(5.0):
     ...     total = sum(range(10))
@@ -161,7 +163,9 @@ def time_budget(seconds: float) -> Iterator[None]:
 
 @contextmanager
 def _alarm(seconds: float) -> Iterator[None]:
-    """The budget by ``SIGALRM``/``setitimer`` (POSIX, main thread)."""
+    """The budget by ``SIGPROF``/``setitimer(ITIMER_PROF)`` (POSIX, main thread): seconds of
+    the process's CPU time, not of the wall clock, so that which path a solve takes (a
+    brief symbolic attempt, or the numeric fallback) does not depend on the machine's load."""
     armed = [True]
 
     def expire(signum: int, frame: object) -> None:
@@ -169,29 +173,29 @@ def _alarm(seconds: float) -> Iterator[None]:
             armed[0] = False
             raise BudgetExceeded
 
-    previous_handler = signal.signal(signal.SIGALRM, expire)
-    previous_delay, previous_interval = signal.setitimer(signal.ITIMER_REAL, seconds)
-    started = time.monotonic()
+    previous_handler = signal.signal(signal.SIGPROF, expire)
+    previous_delay, previous_interval = signal.setitimer(signal.ITIMER_PROF, seconds)
+    started = time.process_time()
     try:
         yield
     finally:
         armed[0] = False
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous_handler or signal.SIG_DFL)
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous_handler or signal.SIG_DFL)
         if previous_delay > 0:
-            left = max(previous_delay - (time.monotonic() - started), 1e-6)
-            signal.setitimer(signal.ITIMER_REAL, left, previous_interval)
+            left = max(previous_delay - (time.process_time() - started), 1e-6)
+            signal.setitimer(signal.ITIMER_PROF, left, previous_interval)
 
 
 @contextmanager
 def _cooperative(seconds: float) -> Iterator[None]:
-    """The budget without signals (Windows, other threads): a profile hook checks the clock
-    at each Python function call and raises once the deadline has passed."""
-    deadline = time.monotonic() + seconds
+    """The budget without signals (Windows, other threads): a profile hook checks the
+    process's CPU time at each Python function call and raises once it is spent."""
+    deadline = time.process_time() + seconds
     previous = sys.getprofile()
 
     def check(frame: object, event: str, argument: object) -> None:
-        if event == "call" and time.monotonic() > deadline:
+        if event == "call" and time.process_time() > deadline:
             sys.setprofile(previous)
             raise BudgetExceeded
 
