@@ -332,3 +332,22 @@ def test_float_linear_solve_undoes_a_change_of_units() -> None:
     exact = matrix.LUsolve(rhs)
     for unknown, value in zip(unknowns, exact, strict=True):
         assert float(found.candidates[0].values[unknown]) == pytest.approx(float(value), rel=1e-14)
+
+
+def test_a_root_search_keeps_angles_in_one_turn():
+    # regression (numeric helper): with the symbolic attempt skipped (as when its budget ran
+    # out), the bar-on-shaft block returned θ = −2016.9 rad, a root many turns away. By
+    # hand: sin θ (L Ω² cos θ/3 − g/2) = 0 → θ = 0 or cos θ = 3g/(2 L Ω²), each once in (−π, π]
+    theta = sympy.Symbol("theta_s", real=True)
+    L, W, g, m = sympy.symbols("L Omega g m", positive=True)
+    residual = (
+        L**2 * W**2 * m * sympy.sin(theta) * sympy.cos(theta) / 3 - L * g * m * sympy.sin(theta) / 2
+    )
+    given = {L: sympy.Rational(6, 5), W: 4, g: sympy.Rational(981, 100), m: 3}
+    found = solve_block([residual], [theta], given, SolveOptions(mode="numeric", time_budget=0))
+    values = sorted(float(c.values[theta]) for c in found.candidates)
+    assert all(-math.pi - 1e-12 < v <= math.pi for v in values)
+    assert len(values) == 4  # 0, π (the bar up) and ±acos(3g/(2LΩ²)), once each
+    steady = math.acos(3 * 9.81 / (2 * 1.2 * 16))
+    for expected in (-steady, steady):
+        assert any(v == pytest.approx(expected, rel=1e-12) for v in values)

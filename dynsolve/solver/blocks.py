@@ -940,7 +940,65 @@ def numeric_roots(
             continue
         if _converged(function, size, jacobian, root):
             found.append(root)
+    periodic = [_periodic(u, residuals) for u in unknowns]
+    if any(periodic):  # an angle seen only in sin, cos, tan of whole multiples: (−π, π]
+        reduced: list[list[mpmath.mpc | mpmath.mpf]] = []
+        for root in found:
+            root = [_principal(x) if p else x for x, p in zip(root, periodic, strict=True)]
+            if not any(_same_angles(root, old, periodic) for old in reduced):
+                reduced.append(root)
+        found = reduced
     return [tuple(_to_sympy(x) for x in root) for root in found]
+
+
+def _periodic(unknown: sympy.Symbol, residuals: Sequence[sympy.Expr]) -> bool:
+    """Whether ``unknown`` enters ``residuals`` only as whole multiples inside sin, cos and
+    tan (its roots repeat every 2π: a root search may land a period away).
+
+    >>> t, x = sympy.symbols("t x")
+    >>> _periodic(t, [sympy.sin(2 * t) - x]), _periodic(t, [sympy.sin(t / 2)]), _periodic(t, [t])
+    (True, False, False)
+    """
+    trig = (sympy.sin, sympy.cos, sympy.tan)
+    calls = [
+        c
+        for r in residuals
+        for c in (sympy.Integer(0) + r).atoms(*trig)
+        if unknown in c.free_symbols
+    ]
+    if not calls:
+        return False
+    for call in calls:
+        for term in sympy.Add.make_args(call.args[0]):
+            if unknown in term.free_symbols:
+                coefficient, rest = term.as_coeff_Mul()
+                if rest != unknown or not coefficient.is_Integer:
+                    return False
+    exprs = [sympy.Integer(0) + r for r in residuals]
+    bare = [e.xreplace({c: sympy.Dummy() for c in e.atoms(*trig)}) for e in exprs]
+    return not any(unknown in b.free_symbols for b in bare)
+
+
+def _same_angles(a: Sequence[object], b: Sequence[object], periodic: Sequence[bool]) -> bool:
+    """Two roots alike: an angle to 1e-9 rad round the circle (−π is π, −1e-14 is 0), any
+    other unknown to about nine digits (relative)."""
+    for x, y, angle in zip(a, b, periodic, strict=True):
+        gap = abs(x - y)
+        if angle and not isinstance(gap, mpmath.mpc):
+            if min(gap, 2 * mpmath.pi - gap) > 1e-9:
+                return False
+        elif gap > 1e-9 * max(abs(x), abs(y)):
+            return False
+    return True
+
+
+def _principal(angle: mpmath.mpc | mpmath.mpf) -> mpmath.mpc | mpmath.mpf:
+    """A real angle in (−π, π]; anything else as it is."""
+    if isinstance(angle, mpmath.mpc) and angle.imag != 0:
+        return angle
+    turn = 2 * mpmath.pi
+    value = mpmath.re(angle) % turn
+    return value - turn if value > mpmath.pi else value
 
 
 def finite_guard(
