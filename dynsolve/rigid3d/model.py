@@ -44,12 +44,13 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from dynsolve.dimensions import check_dimensions
 from dynsolve.errors import DimensionError, Position, SpecError
-from dynsolve.expressions import relation
+from dynsolve.expressions import relation, to_sympy
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.rigid3d.inertia import Vec3, body_axes, physical_problem, principal, tensor, unit
-from dynsolve.spec.ast import Expr, Name, SceneStmt, Spec
+from dynsolve.spec.ast import EquationStmt, Expr, Name, SceneStmt, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import Constraint
 from dynsolve.units import Dim
@@ -286,7 +287,17 @@ def read_scene3d(spec: Spec) -> Scene3D:
             Position(spec.file, stmt.line, stmt.column),
             hint="leave out the travel and rolls lines, or the nutates line",
         )
-    assumptions = tuple(_assumption(s, reader, spec) for s in statements if s.kind == "assume")
+    if any(s.kind == "assume" for s in statements):  # an unknown rate may be bounded too
+        reader = scene_reader(
+            spec,
+            {**symbols, **{a.name: a for a in angles}, **{r.name: r for r in rates}},
+            dims | {r.name: d for r, d in rates.items()},
+            values,
+        )
+    unknowns = {*angles, *rates}
+    assumptions = tuple(
+        _assumption(s, reader, spec, unknowns) for s in statements if s.kind == "assume"
+    )
     return Scene3D(
         spec.file,
         body,
@@ -338,25 +349,29 @@ def _unknown_angles(
     return found
 
 
-def _assumption(stmt: SceneStmt, reader: SceneReader, spec: Spec) -> Constraint:
-    """An ``assume`` line of a 3D scene: a range of an unknown angle (which root is meant:
-    ``assume theta_s > 0``, ``assume theta_s < pi/2``)."""
+def _assumption(
+    stmt: SceneStmt, reader: SceneReader, spec: Spec, unknowns: set[sympy.Symbol]
+) -> Constraint:
+    """An ``assume`` line of a 3D scene: a range of an unknown angle or rate (which root is
+    meant: ``assume theta_s > 0``, ``assume theta_s < pi/2``, or a top's slow precession
+    ``assume W_p < w_s``), both sides of one dimension."""
     where = Position(spec.file, stmt.line, stmt.column)
     lhs_text, rhs_text = stmt.vectors[0]
+    probe = EquationStmt(lhs_text, stmt.word, rhs_text, "", "", stmt.line, stmt.column)  # type: ignore[arg-type]
     try:
-        lhs = reader.value(lhs_text, Dim(), "an assumed bound")
-        rhs = reader.value(rhs_text, Dim(), "an assumed bound")
+        check_dimensions((probe,), {**reader.dims, "pi": Dim()}, spec.file)
     except DimensionError as error:
         raise DimensionError(
-            error.message, error.position, "an assume line of a 3D scene bounds an angle"
+            error.message, error.position, "both sides of an assume line have one dimension"
         ) from None
+    lhs, rhs = (to_sympy(text, reader.symbols) for text in (lhs_text, rhs_text))
     try:
         built = relation(stmt.word, lhs, rhs)
     except TypeError:
         raise SpecError("this assumption compares a value that is not real", where, "") from None
-    if built in (sympy.true, sympy.false) or not built.free_symbols:
+    if built in (sympy.true, sympy.false) or not built.free_symbols & unknowns:
         raise SpecError(
-            "an assume line of a 3D scene bounds an unknown angle of the scene",
+            "an assume line of a 3D scene bounds an unknown of the scene (an angle or a rate)",
             where,
             hint="e.g. 'assume theta_s > 0' with theta_s in a position and in find",
         )
