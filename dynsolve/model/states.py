@@ -33,8 +33,8 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
-from dynsolve.numbers import float_functions, tidy
+from dynsolve.model.scene import Body, Cord, Scene, Support, Travel, Vec
+from dynsolve.numbers import float_functions, real_value, tidy
 from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -150,6 +150,131 @@ def _cross_k(omega: sympy.Expr, r: Vec) -> Vec:
     return (-omega * r[1], omega * r[0])
 
 
+def _minus(a: Vec, b: Vec) -> Vec:
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _cross(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[1] - a[1] * b[0]
+
+
+def is_wound(body: Body, P: Vec, direction: Vec) -> bool:
+    """Whether a cord leaving ``body`` at ``P`` along ``direction`` is wound on it: a rigid
+    body's point off G where the cord is tangent to the circle about G through it (a drum's
+    rim). Its end then moves like :func:`wound_after`; any other end is a material point.
+
+    >>> import sympy
+    >>> r = sympy.Symbol("r", positive=True)
+    >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (r,), {}, False, "", 0, 0)
+    >>> is_wound(drum, (r, 0), (0, -1)), is_wound(drum, (r, 0), (1, 0))
+    (True, False)
+    """
+    rho = _minus(P, body.G)
+    if body.particle or (tidy(rho[0]) == 0 and tidy(rho[1]) == 0):
+        return False
+    return tidy(_dot(rho, direction)) == 0
+
+
+def cord_end_shifts(
+    scene: Scene,
+    cord: Cord,
+    shift: Callable[[str, Vec], Vec],
+    turn: Mapping[str, sympy.Expr],
+) -> tuple[Vec, Vec]:
+    """How far each end of ``cord`` moves between the states: Δr_P of the end on
+    ``cord.body`` and Δr_Q of the other (zero when fixed). ``shift(body, P)`` is the
+    displacement of a material point; an end wound on a body moves like
+    :func:`wound_after`, Δr_G + Δθ k × (P − G). The same with velocities (v_G, ω) for
+    ``shift`` and ``turn`` gives the ends' velocities.
+
+    >>> import sympy
+    >>> r, phi = sympy.symbols("r phi")
+    >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (r,), {}, False, "", 0, 0)
+    >>> block = Body("block", 1, 0, (r, -2), (r, -2), "particle", (), {}, True, "", 0, 0)
+    >>> cord = Cord("T", "drum", (r, 0), (0, -1), "block", (r, -2))
+    >>> scene = Scene({"drum": drum, "block": block}, {}, (), (), (), None, {})
+    >>> cord_end_shifts(scene, cord, lambda b, P: (0, 0), {"drum": phi, "block": 0})
+    ((0, phi*r), (0, 0))
+    """
+
+    def end(name: str, P: Vec, direction: Vec) -> Vec:
+        body = scene.bodies[name]
+        if not is_wound(body, P, direction):
+            return shift(name, P)
+        base = shift(name, body.G)
+        spin = _cross_k(turn[name], _minus(P, body.G))
+        return (base[0] + spin[0], base[1] + spin[1])
+
+    near = end(cord.body, cord.point, cord.direction)
+    if not cord.other:
+        return near, ZERO
+    assert cord.other_point is not None
+    back = (-cord.direction[0], -cord.direction[1])
+    return near, end(cord.other, cord.other_point, back)
+
+
+def _refuse_swing(scene: Scene, cord: Cord) -> None:
+    """A cord from a fixed point to a point of a body (not wound on it) lets that point
+    move only across the cord: it swings, its direction changing between the states."""
+    body = scene.bodies[cord.body]
+    if cord.other or is_wound(body, cord.point, cord.direction):
+        return
+    raise _at_cord(
+        cord,
+        f"the cord {cord.name} ties a point of {cord.body} to a fixed point, so between the "
+        "states it swings about it and its direction changes: write it as a link to that "
+        f"point ('link {cord.name}: {cord.body} at … to O'), which turns with it (then "
+        f"travel along the circle, or 'travel {cord.body}: until {cord.name} slack')",
+    )
+
+
+def _at_cord(cord: Cord, message: str) -> ValueError:
+    """A ValueError pointing at the cord's line in the spec."""
+    error = ValueError(message)
+    error.line, error.column = cord.line, cord.column  # type: ignore[attr-defined]
+    return error
+
+
+def _check_cord_lines(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> None:
+    """Each cord keeps its direction between the states (its two ends move alike across
+    it); one that would swing is refused."""
+    turns = {n: p.turn for n, p in placements.items()}
+
+    def shift(body: str, P: Vec) -> Vec:
+        return _minus(point_after(scene.bodies[body], placements[body], P), P)
+
+    for cord in scene.cords:
+        near, far = cord_end_shifts(scene, cord, shift, turns)
+        gap = _minus(far, near)
+        across = real_value(_cross(gap, cord.direction), values)
+        size = real_value(sympy.sqrt(_dot(near, near) + _dot(far, far)), values)
+        if across is None or size is None or abs(across) <= 1e-9 * max(size, 1e-300):
+            continue
+        raise _at_cord(
+            cord,
+            f"the cord {cord.name} would change direction between the states (its ends move "
+            "apart across it: it swings); a cord between two states must keep its "
+            f"direction: hold its ends on its line, or write it as a link ('link {cord.name}: "
+            "… to …') that may turn",
+        )
+
+
+def _held_only_by_cords(scene: Scene, cord: Cord) -> bool:
+    """Whether an end of ``cord`` is on a body that only cords hold (no support or link):
+    nothing but the cord keeps it from moving across the cord's line."""
+    held = {s.body for s in scene.supports}
+    held |= {n for link in scene.links for n in (link.body, link.other)}
+    return any(b and b not in held for b in (cord.body, cord.other))
+
+
 class _Unknowns:
     """The position and velocity unknowns of every body and link."""
 
@@ -230,8 +355,15 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
         )
         pair((start[0] - end[0], start[1] - end[1]), arm)
         relations.append(f"the link {link.name} keeps its length")
-    if scene.cords:
-        raise ValueError("cords between two states are not supported yet; use a link")
+    for cord in scene.cords:
+        _refuse_swing(scene, cord)
+        start, end = cord_end_shifts(scene, cord, lambda b, P: _minus(after(b, P), P), x.phi)
+        gap = _minus(end, start)  # how much the cord's far end moved relative to the near
+        equations.append(_dot(gap, cord.direction))
+        relations.append(f"the cord {cord.name} keeps its length: (Δr_Q − Δr_P)·d = 0")
+        if _held_only_by_cords(scene, cord):
+            equations.append(_cross(gap, cord.direction))
+            relations.append(f"the cord {cord.name} keeps its direction")
     for travel in scene.travels.values():
         b = travel.body
         if travel.kind == "to":
@@ -337,6 +469,12 @@ def _velocity_constraints(
             end, v_end = link.other_point, ZERO
         spin = _cross_k(x.om[link.name], (start[0] - end[0], start[1] - end[1]))
         equations += [v_start[0] - v_end[0] - spin[0], v_start[1] - v_end[1] - spin[1]]
+    for cord in scene.cords:  # a wound end leaves at the same P − G in state 2
+        v_P, v_Q = cord_end_shifts(scene, cord, lambda b, P: velocity(b, at(b, P)), x.om)
+        gap = _minus(v_Q, v_P)
+        equations.append(_dot(gap, cord.direction))
+        if _held_only_by_cords(scene, cord):
+            equations.append(_cross(gap, cord.direction))
     return [sympy.expand(e) for e in equations if e != 0]
 
 
@@ -394,6 +532,8 @@ def state_change(
     if len(scene.travels) != 1:
         raise ValueError("describe state 2 with one travel line (the scene moves as one)")
     values = dict(given_values or {})
+    for cord in scene.cords:
+        _refuse_swing(scene, cord)
     initial = initial_rates(scene, values)  # refuses a scene without one degree of freedom
     x = _Unknowns(scene)
     equations, relations = _position_constraints(scene, x)
@@ -409,6 +549,7 @@ def state_change(
         n: Placement((known[x.u[n]], known[x.w[n]]), known[x.phi[n]], known[x.c[n]], known[x.s[n]])
         for n in x.bodies
     }
+    _check_cord_lines(scene, placements, {**scene.values, **values})
     link_turns = {n: known[x.phi[n]] for n in x.links}
     rates, rate_name = _rates(scene, x, placements, values)
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)

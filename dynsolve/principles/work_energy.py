@@ -304,6 +304,12 @@ class _Work:
             for s in self.scene.springs
             if body.name in (s.body, s.other) and not self._along_the_motion(s, step)
         ]
+        pulls += [  # a cord pulling across the surface changes N as much as a spring
+            c
+            for c in self.scene.cords
+            if body.name in (c.body, c.other)
+            and not _is_zero(dot(c.direction, n), self.values, _norm(c.direction))
+        ]
         if others or pulls or any(link.body == body.name for link in self.scene.links):
             what = others[0].name if others else pulls[0].name if pulls else "a link"
             error = ValueError(
@@ -340,6 +346,16 @@ class _Work:
             names = ", ".join(link.name for link in self.scene.links)
             self.idle.append(f"the forces in {names} (pin-jointed: no net work on the system)")
 
+    def tensions(self) -> None:
+        for cord in self.scene.cords:
+            self.idle.append(
+                f"{cord.name} (inextensible and taut: its pulls on the two ends do equal and "
+                "opposite work)"
+                if cord.other
+                else f"{cord.name} (inextensible and taut, to a fixed point: its end does not "
+                "move along it)"
+            )
+
 
 def _work(
     scene: Scene,
@@ -354,6 +370,7 @@ def _work(
     work.loads()
     work.supports()
     work.links()
+    work.tensions()
     return work
 
 
@@ -391,7 +408,7 @@ def energy_equations(
     """T1 + ΣU = T2 for the scene's travel: one per travelling particle, or one for a
     rigid body or linkage moving as a whole."""
     values = dict(given_values or {})
-    if all(b.particle for b in scene.bodies.values()) and not scene.links:
+    if all(b.particle for b in scene.bodies.values()) and not scene.links and not scene.cords:
         return tuple(_particle(scene, t, symbols, values) for t in scene.travels.values())
     return (_mechanism(scene, symbols, values),)
 
@@ -476,6 +493,13 @@ def _mechanism(
         ratio = real_value(rates.omega.get(body, 0), values)
         if omega is not None and ratio:  # the rate of travel per unit |ω|
             second = (omega / abs(ratio), CONSTANT_ALPHA, change.rate_name)
+        elif scene.cords:  # blocks and drums on cords: constant accelerations
+            from dynsolve.principles.constant_motion import HOW, state_one
+
+            motion = state_one(scene, symbols, values)
+            found = None if motion is None else motion.rate(scene)
+            if found is not None:
+                second = (found, HOW, change.rate_name)
     return Energy(
         equation,
         rate,
