@@ -213,3 +213,26 @@ find: v = speed(two), v_1 = speed(one)
     assert assumption(solution, "cord T taut").detail == "T = 20 ≥ 0"
     assert next(c for c in solution.checks if c.name == "simulation").passed
     assert solution.passed
+
+
+def test_a_cord_tied_to_the_end_of_a_turning_bar_is_refused(tmp_path):
+    # the bar's end goes round the pin, so the hanging cord would lean: not a wound drum
+    text = """\
+given:
+  m = 6 kg
+  L = 1 m
+  m_b = 2 kg
+  h = 0.1 m
+scene:
+  point O: (0, 0)
+  body bar: mass m, rod L, at (L/2, 0)
+  body block: particle, mass m_b, at (L, -L)
+  pin bar at O
+  cord T: bar at (L/2, 0) to block, down
+  gravity
+  travel block: by h, down
+find: v = speed(block)
+"""
+    with pytest.raises(SpecError, match="tied to a point of bar, which turns") as error:
+        solve_file(write(tmp_path, text))
+    assert error.value.position.line == 11

@@ -162,19 +162,42 @@ def _cross(a: Vec, b: Vec) -> sympy.Expr:
     return a[0] * b[1] - a[1] * b[0]
 
 
-def is_wound(body: Body, P: Vec, direction: Vec) -> bool:
-    """Whether a cord leaving ``body`` at ``P`` along ``direction`` is wound on it: a rigid
-    body's point off G where the cord is tangent to the circle about G through it (a drum's
-    rim). Its end then moves like :func:`wound_after`; any other end is a material point.
+ROUND = ("disk", "ring", "hollow", "sphere", "shell")  # the table's shapes a cord winds on
+
+
+def is_wound(scene: Scene, name: str, P: Vec, direction: Vec) -> bool:
+    """Whether a cord leaving the body ``name`` at ``P`` along ``direction`` is wound on
+    it: a round body (a drum given by its gyration or inertia, a disk, a ring …) that turns
+    about its G (no pin elsewhere), the cord tangent at P to the circle about G through it
+    (the rim). Its end then moves like :func:`wound_after`; any other end is a material
+    point of the body.
 
     >>> import sympy
     >>> r = sympy.Symbol("r", positive=True)
     >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (r,), {}, False, "", 0, 0)
-    >>> is_wound(drum, (r, 0), (0, -1)), is_wound(drum, (r, 0), (1, 0))
+    >>> bar = Body("bar", 1, 1, (0, 0), (0, 0), "rod", (2 * r,), {}, False, "", 0, 0)
+    >>> scene = Scene({"drum": drum, "bar": bar}, {}, (), (), (), None, {})
+    >>> is_wound(scene, "drum", (r, 0), (0, -1)), is_wound(scene, "drum", (r, 0), (1, 0))
     (True, False)
+    >>> is_wound(scene, "bar", (r, 0), (0, -1))  # a bar's end is a point of the bar
+    False
     """
+    from dynsolve.model.inertia import shape_named
+
+    body = scene.bodies[name]
     rho = _minus(P, body.G)
     if body.particle or (tidy(rho[0]) == 0 and tidy(rho[1]) == 0):
+        return False
+    if body.shape not in ("", "body"):  # "body": given by its gyration or inertia, a drum
+        try:
+            if shape_named(body.shape).key not in ROUND:
+                return False
+        except ValueError:  # a composite
+            return False
+    if any(
+        s.body == name and s.kind == "pin" and _minus(s.point, body.G) != ZERO
+        for s in scene.supports
+    ):
         return False
     return tidy(_dot(rho, direction)) == 0
 
@@ -203,7 +226,7 @@ def cord_end_shifts(
 
     def end(name: str, P: Vec, direction: Vec) -> Vec:
         body = scene.bodies[name]
-        if not is_wound(body, P, direction):
+        if not is_wound(scene, name, P, direction):
             return shift(name, P)
         base = shift(name, body.G)
         spin = _cross_k(turn[name], _minus(P, body.G))
@@ -217,19 +240,42 @@ def cord_end_shifts(
     return near, end(cord.other, cord.other_point, back)
 
 
+def cord_ends(cord: Cord) -> list[tuple[str, Vec, Vec]]:
+    """Each end of ``cord`` on a body: (body, point, the direction the cord pulls it)."""
+    ends = [(cord.body, cord.point, cord.direction)]
+    if cord.other and cord.other_point is not None:
+        ends.append((cord.other, cord.other_point, (-cord.direction[0], -cord.direction[1])))
+    return ends
+
+
 def _refuse_swing(scene: Scene, cord: Cord) -> None:
-    """A cord from a fixed point to a point of a body (not wound on it) lets that point
-    move only across the cord: it swings, its direction changing between the states."""
-    body = scene.bodies[cord.body]
-    if cord.other or is_wound(body, cord.point, cord.direction):
-        return
-    raise _at_cord(
-        cord,
-        f"the cord {cord.name} ties a point of {cord.body} to a fixed point, so between the "
-        "states it swings about it and its direction changes: write it as a link to that "
-        f"point ('link {cord.name}: {cord.body} at … to O'), which turns with it (then "
-        f"travel along the circle, or 'travel {cord.body}: until {cord.name} slack')",
-    )
+    """A cord whose direction would change between the states: from a fixed point to a
+    point of a body (it swings about the fixed point), or tied to a point off G of a body
+    that turns (the point goes round G), not wound on it."""
+    for name, P, d in cord_ends(cord):
+        body = scene.bodies[name]
+        if is_wound(scene, name, P, d):
+            continue
+        if not cord.other:
+            raise _at_cord(
+                cord,
+                f"the cord {cord.name} ties a point of {name} to a fixed point, so between "
+                "the states it swings about it and its direction changes: write it as a "
+                f"link to that point ('link {cord.name}: {name} at … to O'), which turns "
+                f"with it (then travel along the circle, or 'travel {name}: until "
+                f"{cord.name} slack')",
+            )
+        turns = not body.particle and scene.motions.get(name) != "translation"
+        turns = turns and not any(s.body == name and s.kind == "base" for s in scene.supports)
+        if turns and _minus(P, body.G) != ZERO:
+            raise _at_cord(
+                cord,
+                f"the cord {cord.name} is tied to a point of {name}, which turns: the point "
+                "goes round G, so the cord's direction would change between the states; "
+                "between two states a cord must be wound on a round body turning about its "
+                f"G (leaving the rim tangentially), or tied at G or to a body that does not "
+                f"turn (or write it as a link, 'link {cord.name}: … to …', which may turn)",
+            )
 
 
 def _at_cord(cord: Cord, message: str) -> ValueError:

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.model.scene import Scene
-from dynsolve.model.states import is_wound, placements_of
+from dynsolve.model.states import cord_ends, is_wound, placements_of
 from dynsolve.numbers import real_value, tidy
 
 HOW = (
@@ -64,12 +64,8 @@ def unsteady(scene: Scene) -> str | None:
             if load.body == name and load.kind == "force" and not _same(load.point, body.G):
                 return f"{load.name} acts on the turning {name} away from its G"
         for cord in scene.cords:
-            ends = [(cord.body, cord.point, cord.direction)]
-            if cord.other and cord.other_point is not None:
-                back = (-cord.direction[0], -cord.direction[1])
-                ends.append((cord.other, cord.other_point, back))
-            for end, P, d in ends:
-                if end == name and not is_wound(body, P, d):
+            for end, P, d in cord_ends(cord):
+                if end == name and not is_wound(scene, name, P, d):
                     return f"the cord {cord.name} is tied to a point of the turning {name}"
     return None
 
@@ -137,7 +133,10 @@ def state_one(
         slide = real_value(dot(placement.shift, support.tangent), values)
         if slide:  # friction opposes the slide
             slipping[support.name] = -1 if slide > 0 else 1
-    formulation = formulate(scene, symbols, slipping, inclines=False)
+    try:
+        formulation = formulate(scene, symbols, slipping, inclines=False)
+    except ValueError:  # the instant cannot be written (a cord across the motion …)
+        return None
     residuals = [sympy.N((e.lhs - e.rhs).xreplace(dict(values))) for e in formulation.equations]
     unknowns = list(formulation.unknowns)
     found = sympy.linsolve(residuals, unknowns)
