@@ -3,8 +3,9 @@
 Each body's state-2 placement is its displacement Δr_G and rotation Δθ from the scene
 as described (state 1); each link's is its rotation. The supports, links and motions
 of the scene give the position constraints (a pin's point stays put, a rolling disk's
-centre moves r Δθ, a contact point stays on its surface, a link keeps its length), and
-the ``travel`` lines fix the state. Writing cos Δθ and sin Δθ as unknowns of their own
+centre moves r Δθ, a contact point stays on its surface, a link keeps its length, a cord
+keeps its length and its direction: :func:`cord_end_shifts`), and the ``travel`` lines
+fix the state. Writing cos Δθ and sin Δθ as unknowns of their own
 makes every constraint linear; they are solved together and each angle recovered from
 its sine and cosine. A rotation that only the closure of a loop would fix (a general
 four-bar linkage: circle conditions, several assemblies) is refused with a hint.
@@ -162,6 +163,10 @@ def _cross(a: Vec, b: Vec) -> sympy.Expr:
     return a[0] * b[1] - a[1] * b[0]
 
 
+def _same(a: Vec, b: Vec) -> bool:
+    return tidy(a[0] - b[0]) == 0 and tidy(a[1] - b[1]) == 0
+
+
 ROUND = ("disk", "ring", "hollow", "sphere", "shell")  # the table's shapes a cord winds on
 
 
@@ -186,7 +191,7 @@ def is_wound(scene: Scene, name: str, P: Vec, direction: Vec) -> bool:
 
     body = scene.bodies[name]
     rho = _minus(P, body.G)
-    if body.particle or (tidy(rho[0]) == 0 and tidy(rho[1]) == 0):
+    if body.particle or _same(P, body.G):
         return False
     if body.shape not in ("", "body"):  # "body": given by its gyration or inertia, a drum
         try:
@@ -195,8 +200,7 @@ def is_wound(scene: Scene, name: str, P: Vec, direction: Vec) -> bool:
         except ValueError:  # a composite
             return False
     if any(
-        s.body == name and s.kind == "pin" and _minus(s.point, body.G) != ZERO
-        for s in scene.supports
+        s.body == name and s.kind == "pin" and not _same(s.point, body.G) for s in scene.supports
     ):
         return False
     return tidy(_dot(rho, direction)) == 0
@@ -232,12 +236,8 @@ def cord_end_shifts(
         spin = _cross_k(turn[name], _minus(P, body.G))
         return (base[0] + spin[0], base[1] + spin[1])
 
-    near = end(cord.body, cord.point, cord.direction)
-    if not cord.other:
-        return near, ZERO
-    assert cord.other_point is not None
-    back = (-cord.direction[0], -cord.direction[1])
-    return near, end(cord.other, cord.other_point, back)
+    shifts = [end(*e) for e in cord_ends(cord)]
+    return shifts[0], shifts[1] if len(shifts) > 1 else ZERO
 
 
 def cord_ends(cord: Cord) -> list[tuple[str, Vec, Vec]]:
@@ -267,7 +267,7 @@ def _refuse_swing(scene: Scene, cord: Cord) -> None:
             )
         turns = not body.particle and scene.motions.get(name) != "translation"
         turns = turns and not any(s.body == name and s.kind == "base" for s in scene.supports)
-        if turns and _minus(P, body.G) != ZERO:
+        if turns and not _same(P, body.G):
             raise _at_cord(
                 cord,
                 f"the cord {cord.name} is tied to a point of {name}, which turns: the point "
