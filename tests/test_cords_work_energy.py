@@ -236,3 +236,19 @@ find: v = speed(block)
     with pytest.raises(SpecError, match="tied to a point of bar, which turns") as error:
         solve_file(write(tmp_path, text))
     assert error.value.position.line == 11
+
+
+def test_a_block_pushed_across_the_cord_it_hangs_on_is_refused(tmp_path):
+    # a horizontal push would swing the hanging block: its cord would lean
+    text = DRUM.format(extra="  P = 50 N\n", load="  force P on block at G: right\n")
+    with pytest.raises(SpecError, match="acts across the cord: it would swing"):
+        solve_file(write(tmp_path, text))
+
+
+def test_a_push_along_the_cord_adds_its_work(tmp_path):
+    # P = 50 N down on the block: (m_b g + P) h = ½ (m_b + I_O/r²) v²:
+    # (196.2 + 50)(2) = 21.71875 v² → v = √(492.4/21.71875) = 4.761476 m/s
+    text = DRUM.format(extra="  P = 50 N\n", load="  force P on block at G: down\n")
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(492.4 / 21.71875), rel=1e-9)
+    assert solution.passed

@@ -313,12 +313,17 @@ def _check_cord_lines(
         )
 
 
-def _held_only_by_cords(scene: Scene, cord: Cord) -> bool:
-    """Whether an end of ``cord`` is on a body that only cords hold (no support or link):
-    nothing but the cord keeps it from moving across the cord's line."""
+def held_only_by_cords(scene: Scene, name: str) -> bool:
+    """Whether only cords hold the body ``name`` (no support or link): nothing but a cord
+    keeps it from moving across the cord's line."""
     held = {s.body for s in scene.supports}
     held |= {n for link in scene.links for n in (link.body, link.other)}
-    return any(b and b not in held for b in (cord.body, cord.other))
+    return name not in held
+
+
+def _held_only_by_cords(scene: Scene, cord: Cord) -> bool:
+    """Whether an end of ``cord`` is on a body that only cords hold."""
+    return any(held_only_by_cords(scene, name) for name, _, _ in cord_ends(cord))
 
 
 class _Unknowns:

@@ -27,10 +27,12 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.model.scene import CordState, Scene, Spring, Support, Travel, Vec
+from dynsolve.model.scene import Cord, CordState, Scene, Spring, Support, Travel, Vec
 from dynsolve.model.states import (
     Placement,
     Rates,
+    cord_ends,
+    held_only_by_cords,
     particle_shift,
     point_after,
     state_change,
@@ -85,6 +87,10 @@ def _side_kept(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr]) -> sy
 def _length(a: Vec, b: Vec) -> sympy.Expr:
     d = (a[0] - b[0], a[1] - b[1])
     return tidy(sympy.sqrt(dot(d, d)))
+
+
+def _cross(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[1] - a[1] * b[0]
 
 
 def _norm(v: Vec) -> sympy.Expr:
@@ -341,6 +347,29 @@ class _Work:
         scale = _norm(reach) * _norm(step)
         return _is_zero(reach[0] * step[1] - reach[1] * step[0], self.values, scale)
 
+    def along_the_cord(self, name: str, cord: Cord, d: Vec) -> None:
+        """A body that only cords hold stays on the cord's line only if nothing pushes it
+        across: its weight, loads and velocity at state 1 lie along the cord (else it
+        swings, and the cord's direction changes)."""
+        body = self.scene.bodies[name]
+        across = sympy.Integer(0)
+        if self.scene.gravity is not None:
+            across += body.mass * self.symbols["g"] * _cross(self.scene.gravity, d)
+        for load in self.scene.loads:
+            if load.body == name and load.kind == "force":
+                across += self.magnitude(load.name) * _cross(load.direction, d)
+        drift = _cross(self.scene.velocities.get(name, ZERO), d)
+        if _is_zero(across, self.values) and _is_zero(drift, self.values):
+            return
+        error = ValueError(
+            f"{name} hangs on the cord {cord.name} alone, but its weight, a load or its "
+            "velocity acts across the cord: it would swing, and the cord's direction "
+            "change between the states (hold it on the cord's line with a support, or "
+            "write the cord as a link)"
+        )
+        error.line, error.column = cord.line, cord.column  # type: ignore[attr-defined]
+        raise error
+
     def links(self) -> None:
         if self.scene.links:
             names = ", ".join(link.name for link in self.scene.links)
@@ -348,6 +377,9 @@ class _Work:
 
     def tensions(self) -> None:
         for cord in self.scene.cords:
+            for name, _, d in cord_ends(cord):
+                if held_only_by_cords(self.scene, name):
+                    self.along_the_cord(name, cord, d)
             self.idle.append(
                 f"{cord.name} (inextensible and taut: its pulls on the two ends do equal and "
                 "opposite work)"
