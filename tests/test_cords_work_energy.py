@@ -252,3 +252,13 @@ def test_a_push_along_the_cord_adds_its_work(tmp_path):
     solution = solve_file(write(tmp_path, text))
     assert by_name(solution, "v").value == pytest.approx(math.sqrt(492.4 / 21.71875), rel=1e-9)
     assert solution.passed
+
+
+def test_the_block_moving_down_at_state_1_counts_in_T1(tmp_path):
+    # v_1 = 2 m/s down, the drum turning at v_1/r: T1 = 21.71875 (2²) = 86.875 J;
+    # T2 = T1 + m_b g h → v = √((86.875 + 392.4)/21.71875) = 4.697589 m/s
+    text = DRUM.format(extra="  v_1 = 2 m/s\n", load="  velocity block: v_1, down\n")
+    solution = solve_file(write(tmp_path, text))
+    expected = math.sqrt((86.875 + 392.4) / 21.71875)
+    assert by_name(solution, "v").value == pytest.approx(expected, rel=1e-9)
+    assert solution.passed
