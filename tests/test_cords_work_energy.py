@@ -262,3 +262,35 @@ def test_the_block_moving_down_at_state_1_counts_in_T1(tmp_path):
     expected = math.sqrt((86.875 + 392.4) / 21.71875)
     assert by_name(solution, "v").value == pytest.approx(expected, rel=1e-9)
     assert solution.passed
+
+
+def test_a_drum_winds_a_block_up_a_smooth_incline(tmp_path):
+    # a couple M = 100 N·m cw on the drum (I_O = 30(0.2)² = 1.2 kg·m², r = 0.25 m) winds
+    # in the cord tied to a 20-kg block on a smooth 30° incline; the block moves s = 1.5 m
+    # up: Δθ = s/r = 6 rad. M Δθ − m g s sin θ = ½ (m + I_O/r²) v²:
+    # 600 − 147.15 = 452.85 J = ½ (20 + 19.2) v² → v = √(452.85/19.6) = 4.806715 m/s
+    text = """\
+given:
+  m_d = 30 kg
+  k_O = 0.2 m
+  r = 0.25 m
+  m = 20 kg
+  theta = 30 deg
+  M = 100 N*m
+  s = 1.5 m
+scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m, at (-r*sin(theta) - 4*r*cos(theta), r*cos(theta) - 4*r*sin(theta))
+  pin drum at O
+  contact block at G: normal (-sin(theta), cos(theta))
+  cord T: drum at (-r*sin(theta), r*cos(theta)) to block, (-cos(theta), -sin(theta))
+  couple M on drum: cw
+  gravity
+  travel block: by s, angle theta
+find: v = speed(block)
+"""
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(452.85 / 19.6), rel=1e-9)
+    assert solution.passed
+    assert "U_M = M Δθ" in solution.equations[0].note
