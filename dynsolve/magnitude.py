@@ -26,6 +26,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+import mpmath
 import sympy
 
 from dynsolve.errors import Position, SpecError
@@ -107,6 +108,9 @@ def bound(expr: sympy.Basic, known: Mapping[sympy.Symbol, Bound]) -> Bound:
         return known.get(expr, UNKNOWN)
     if isinstance(expr, sympy.Rational):
         return _rational(expr)
+    if isinstance(expr, sympy.Float) and expr.is_finite and expr != 0:
+        # its size by its logarithm: float() of 1e36683 is inf, and "10^inf" says nothing
+        _check_log(float(mpmath.log10(abs(mpmath.mpf(expr._mpf_)))), True)
     if isinstance(expr, sympy.Number | sympy.NumberSymbol):
         return _float(float(expr)) if expr.is_finite else UNKNOWN
     if expr is sympy.I:

@@ -172,11 +172,15 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
             second_moments=moment_rows_3d(problem3d),
         )
     if is_linkage(spec):
-        from dynsolve.linkage.problem import build_linkage_problem, figure
+        from dynsolve.linkage.problem import build_linkage_problem, figure, reversed_teeth
         from dynsolve.linkage.problem import cross_checks as linkage_checks
 
         linkage = build_linkage_problem(spec)
         solved = solve_system(linkage.system, options)
+        flipped = reversed_teeth(linkage, solved.values)
+        if flipped:  # a tooth force came out the other way: its radial push is |F| tan φ
+            linkage = build_linkage_problem(spec, flipped)
+            solved = solve_system(linkage.system, options)
         checks = linkage_checks(linkage, solved.values)
         solution = solve_problem(linkage, options, solved, second_methods=checks)
         return replace(solution, linkage=figure(linkage))

@@ -249,6 +249,8 @@ class SceneSketch:
     couples: tuple[tuple[str, float, float, int], ...]  # name, where (G), sense (+1 ccw)
     paths: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]  # name, sampled points
     gravity: bool
+    # a two-sided guide (a collar's rod, a slot): name, x, y, its normal, half its length
+    guides: tuple[tuple[str, float, float, float, float, float], ...] = ()
 
 
 @dataclass(frozen=True)

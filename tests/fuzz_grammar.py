@@ -45,6 +45,7 @@ SCENE_LINES = (
     "omega B: omega ccw",
     "velocity B: v, right",
     "travel B: turns theta ccw",
+    "travel B: turns n about (0, 1, 0), from omega w",
     "travel B: by d, right",
     "travel B: for t",
     "impact B with A: e 0.5, line up",
@@ -74,6 +75,8 @@ SCENE_LINES = (
     "spins B: about (0, 0, 1), through (0, 0, 0), omega 0, alpha a_s",
     "bearing A: at (0, 0, r), ball",
     "bearing B: at (0, 0, 0), pin",
+    "nutates B: about (0, 0, 1), through (0, 0, 0), omega w, alpha a_n",
+    "bearing O: at (0, 0, 0), fixed",
     "torque M on B",
     "assume T >= 0",
 )

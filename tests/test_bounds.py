@@ -229,3 +229,15 @@ def test_an_underflowing_coefficient_does_not_reach_math_log() -> None:
     x = sympy.Symbol("x")
     roots = numeric_roots([x**3 + x - sympy.Float("1e-400")], [x])
     assert roots and abs(float(sympy.re(roots[0][0]))) < 1e-12
+
+
+def test_a_decimal_beyond_a_float_is_reported_by_its_size_not_as_inf():
+    # regression: float() of a 30-digit Float 1.5e36683 is inf, and the message read
+    # "a value of about 10^inf"
+    import sympy
+
+    from dynsolve.magnitude import OutOfRange, value_bound
+
+    with pytest.raises(OutOfRange) as info:
+        value_bound(sympy.Float("1.5e36683", 30))
+    assert "1.5e36683" in info.value.message and "inf" not in info.value.message

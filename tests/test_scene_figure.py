@@ -97,3 +97,15 @@ find: alpha = alpha(disk)
     solution = solve_text(spec)
     assert solution.sketch is None
     assert "The scene" not in render_latex(solution)
+
+
+def test_a_collars_rod_is_drawn_as_a_guide():
+    # newcomer report: a 'contact … guide' (two-sided) was not drawn at all. The seed
+    # collar slides on a horizontal smooth rod: one guide at the collar, normal (0, 1)
+    solution = solve_file(PROBLEMS / "seed" / "we_seed_collar.dyn")
+    assert solution.sketch is not None
+    ((_, _x, _y, nx, ny, _half),) = solution.sketch.guides
+    assert (nx, ny) == (pytest.approx(0.0), pytest.approx(1.0))
+    scene = render_latex(solution)
+    scene = scene[scene.index("\\subsection*{The scene}") : scene.index("Free-body diagrams")]
+    assert scene.count("\\draw[thin]") >= 2  # the guide's two lines

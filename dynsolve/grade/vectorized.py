@@ -219,6 +219,13 @@ def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
             raise NotClosedForm(
                 "a linkage placed by loop closure (numerically) is solved per variant"
             )
+        if linkage.linkage.method == "ic" or any(
+            m.pressure is not None for m in linkage.linkage.meshes
+        ):
+            raise NotClosedForm(  # a geometry or a force's sense the givens may change
+                "instantaneous centres (where each IC lies, or at infinity) and a tooth "
+                "force's radial push are decided per variant"
+            )
         return [_Phase(linkage, _constraints)]
     from dynsolve.modes.scene_mode import assess, build_scene_problem
     from dynsolve.solver import solve_system

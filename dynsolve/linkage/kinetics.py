@@ -15,8 +15,16 @@ normal (k × the guide's direction); a pin in the slot of a moving bar pushes th
 with ``N_P`` along its left normal and the pin with the opposite. A load's magnitude is
 a given or an unknown (the couple that drives the linkage, a force needed). Gears in
 mesh push on each other at their pitch point with the tooth force ``F_A_B`` along the
-common tangent t = k × e (e from A's centre to B's), on A, and its opposite on B (ideal
-teeth: no pressure angle, so no push along the line of centres).
+common tangent t = k × e (e from A's centre to B's), on A, and its opposite on B. With
+a pressure angle φ the teeth push along the line of action: besides F along t, a radial
+part |F| tan φ through the centres that pushes the gears apart (each toward its own
+centre; a ring gear outward), written with the sense of F assumed (positive unless named
+in ``reversed_teeth``) and checked after the solve; ideal teeth (no φ) push along t only.
+
+A slider with a mass carries a block (a piston, a collar): a particle at its joint and
+a free body of its own. The pin forces ``P_x``, ``P_y`` act on the bar and their
+opposites on the block; the guide pushes the block; in a fixed guide ΣF along it = m a
+and ΣF across it = 0, on a moving bar ΣF_x = m a_x, ΣF_y = m a_y.
 
 >>> import sympy
 >>> from dynsolve.linkage.model import Bar, Drive, Linkage, Load
@@ -64,7 +72,11 @@ class FreeBodies:
 
 def has_kinetics(linkage: Linkage) -> bool:
     """Whether the linkage carries loads or masses (its forces are to be found)."""
-    return bool(linkage.loads) or any(b.mass is not None for b in linkage.bars.values())
+    return (
+        bool(linkage.loads)
+        or any(b.mass is not None for b in linkage.bars.values())
+        or bool(massive_sliders(linkage))
+    )
 
 
 def free_bodies(
@@ -75,10 +87,12 @@ def free_bodies(
     g: sympy.Symbol,
     givens: set[str],
     released: int = 0,
+    reversed_teeth: frozenset[str] = frozenset(),
 ) -> FreeBodies:
     """Newton–Euler for every bar at the positions ``r``, with the motion of the two
     levels; ``givens`` are the names whose magnitude is known; ``released`` bars' α are
-    unknowns of the acceleration level that these equations decide."""
+    unknowns of the acceleration level that these equations decide; ``reversed_teeth``
+    names the tooth forces taken negative for their radial push (pressure angle)."""
     forces: dict[str, list[tuple[Vec, str]]] = {b: [] for b in linkage.bars}  # (F, at)
     unknowns: dict[sympy.Symbol, Dim] = {}
     at_joint: dict[str, Vec] = {}
@@ -95,6 +109,8 @@ def free_bodies(
         unknowns[symbol] = dim
         return symbol
 
+    blocks = massive_sliders(linkage)
+    forces |= {block_key(p): [] for p in blocks}
     for point in linkage.joints:
         bars = [b.name for b in linkage.bars.values() if point in b.points]
         slider = linkage.sliders.get(point)
@@ -104,26 +120,27 @@ def free_bodies(
                 forces[bar].append((pair, point))
             at_joint[point] = forces[bars[0]][-1][0]
             continue
-        if point in linkage.fixed or len(bars) == 2:
+        bodies = bars + [block_key(point)] * (point in blocks)  # a block: the last body
+        if point in linkage.fixed or len(bodies) == 2:
             pair = (unknown(f"{point}_x", FORCE), unknown(f"{point}_y", FORCE))
-            forces[bars[0]].append((pair, point))
-            if len(bars) == 2:
-                forces[bars[1]].append(((-pair[0], -pair[1]), point))
+            forces[bodies[0]].append((pair, point))
+            if len(bodies) == 2:
+                forces[bodies[1]].append(((-pair[0], -pair[1]), point))
             at_joint[point] = pair
-        elif len(bars) > 2:
+        elif len(bodies) > 2:
             total = (ZERO, ZERO)
-            for bar in bars[:-1]:
+            for bar in bodies[:-1]:
                 pair = (unknown(f"{point}_x_{bar}", FORCE), unknown(f"{point}_y_{bar}", FORCE))
                 forces[bar].append((pair, point))
                 total = (total[0] + pair[0], total[1] + pair[1])
-            forces[bars[-1]].append(((-total[0], -total[1]), point))
+            forces[bodies[-1]].append(((-total[0], -total[1]), point))
         if slider is not None:
             axis = slider.axis if slider.axis is not None else _slot(linkage, r, slider.bar)
             normal = (-axis[1], axis[0])
             push = unknown(f"N_{point}", FORCE)
             normals[push.name] = normal
             on_pin = (push * normal[0], push * normal[1])
-            forces[bars[0]].append((on_pin, point))
+            forces[bodies[-1] if point in blocks else bars[0]].append((on_pin, point))
             if slider.bar:
                 forces[slider.bar].append(((-on_pin[0], -on_pin[1]), point))
     teeth: dict[str, sympy.Expr] = {b: ZERO for b in linkage.bars}  # their moments about G
@@ -138,6 +155,12 @@ def free_bodies(
         # −F t at r₂ e₂ from its centre: −r₂ F (e₂·e₁), so r₂ F (ccw) in external mesh
         forces[mesh.first].append(((tooth * t[0], tooth * t[1]), "G"))
         forces[mesh.second].append(((-tooth * t[0], -tooth * t[1]), "G"))
+        if mesh.pressure is not None:  # the radial push |F| tan φ along the line of centres
+            size = (-1 if name in reversed_teeth else 1) * tooth * sympy.tan(mesh.pressure)
+            out = 1 if mesh.internal and mesh.ring_first(linkage.values, linkage.file) else -1
+            radial = (out * size * e[0], out * size * e[1])  # on the first gear, through G
+            forces[mesh.first].append((radial, "G"))
+            forces[mesh.second].append(((-radial[0], -radial[1]), "G"))
         teeth[mesh.first] += mesh.radii[0] * tooth
         teeth[mesh.second] += -side * mesh.radii[1] * tooth
     for wheel in linkage.wheels.values():  # the ground's friction and normal push at K
@@ -165,13 +188,14 @@ def free_bodies(
         else:
             assert load.direction is not None
             vector = (magnitude * load.direction[0], magnitude * load.direction[1])
-            forces[load.bar].append((vector, load.point))
+            body = load.bar if load.bar in linkage.bars else block_key(load.bar)
+            forces[body].append((vector, load.point))
     gravity = next((load for load in linkage.loads if load.kind == "gravity"), None)
     equations: list[Equation] = []
     for bar in linkage.bars.values():
         first = bar.points[0]
         G, I_G = mass_centre(linkage, bar.name, r)
-        where = {p: r[p] for p in bar.points} | {"G": G}
+        where = dict(r) | {"G": G}  # a slot's push acts at the pin riding in it
         if bar.name in linkage.wheels:
             wheel = linkage.wheels[bar.name]
             where["K"] = (
@@ -201,8 +225,54 @@ def free_bodies(
             equations.append(Equation(lhs, rhs, note, bar.line, note))
         note = f"ΣM_G = I_G α ({bar.name})"
         equations.append(Equation(moment, I_G * alpha, note, bar.line, note))
+    for point, m in blocks.items():  # a block (piston, collar): a particle at its joint
+        applied = list(forces[block_key(point)])
+        if gravity is not None:
+            assert gravity.direction is not None
+            applied.append(((m * g * gravity.direction[0], m * g * gravity.direction[1]), point))
+        equations += _block_equations(linkage, point, m, applied, acceleration)
     _check_count(linkage, unknowns, equations, released)
     return FreeBodies(tuple(equations), unknowns, at_joint, dims, normals)
+
+
+def massive_sliders(linkage: Linkage) -> dict[str, sympy.Expr]:
+    """Each slider joint that carries a block with mass (a piston, a collar): its mass."""
+    return {p: s.mass for p, s in linkage.sliders.items() if s.mass is not None}
+
+
+def block_key(point: str) -> str:
+    """The free body of the block at slider ``point`` (a name no bar can have)."""
+    return f"block {point}"
+
+
+def _block_equations(
+    linkage: Linkage,
+    point: str,
+    m: sympy.Expr,
+    applied: list[tuple[Vec, str]],
+    acceleration: Level,
+) -> list[Equation]:
+    """Newton's law for the block at ``point`` (Hibbeler 17.2, a particle in translation):
+    in a fixed guide, ΣF along it = m a and ΣF normal to it = 0 (the guide does not move);
+    on a moving bar, ΣF_x = m a_x and ΣF_y = m a_y with a the joint's acceleration."""
+    slider = linkage.sliders[point]
+    line = slider.line
+    total = [sum((F[k] for F, _ in applied), ZERO) for k in (0, 1)]
+    if slider.axis is not None:
+        e = slider.axis
+        along = sympy.expand(total[0] * e[0] + total[1] * e[1])
+        across = sympy.expand(-total[0] * e[1] + total[1] * e[0])
+        notes = (
+            f"ΣF along the guide = m a_{point} (block {point})",
+            f"ΣF across the guide = 0 (block {point})",
+        )
+        return [
+            Equation(along, m * acceleration.along[point], notes[0], line, notes[0]),
+            Equation(across, ZERO, notes[1], line, notes[1]),
+        ]
+    a = acceleration.rate[point]
+    notes = [f"ΣF_{axis} = m (a_{point})_{axis} (block {point})" for axis in "xy"]
+    return [Equation(total[k], m * a[k], notes[k], line, notes[k]) for k in (0, 1)]
 
 
 def mass_centre(linkage: Linkage, name: str, r: Mapping[str, Vec]) -> tuple[Vec, sympy.Expr]:
@@ -266,7 +336,7 @@ def _check_count(
     )
     raise SpecError(
         f"the linkage's forces {what}: {len(unknowns)} unknown forces and couples "
-        f"({named}) for {len(equations)} equations (three per bar)",
+        f"({named}) for {len(equations)} equations (three per bar, two per block)",
         linkage.where(next(iter(linkage.bars))),
         hint="name the load that drives it as an unknown (e.g. 'couple M on AB: ccw' and find M)"
         if fewer
@@ -315,6 +385,18 @@ def power_balance(
                 assert load.direction is not None
                 v = v_G if load.point == "G" else velocity.rate[load.point]
                 supplied += size * (load.direction[0] * v[0] + load.direction[1] * v[1])
+    for point, m in massive_sliders(linkage).items():  # each block: ½ m v² and its loads
+        v, a = velocity.rate[point], acceleration.rate[point]
+        stored += m * (v[0] * a[0] + v[1] * a[1])
+        pushes = [(m * g, gravity.direction)] if gravity is not None else []
+        for load in linkage.loads:
+            if load.kind == "force" and load.bar == point and point not in linkage.bars:
+                size = sympy.Symbol(load.name, real=True)
+                size = size if size in values else linkage.symbols.get(load.name, size)
+                pushes.append((size, load.direction))
+        for size, direction in pushes:
+            assert direction is not None
+            supplied += size * (direction[0] * v[0] + direction[1] * v[1])
     numbers = []
     for side in (supplied, stored):
         value = (sympy.Integer(0) + side).xreplace(dict(values))

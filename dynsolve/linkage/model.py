@@ -25,14 +25,14 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import sympy
 
 from dynsolve.errors import Position, SpecError
 from dynsolve.model.scene import SceneReader, Vec, scene_reader
 from dynsolve.modes.equation_mode import givens_of
-from dynsolve.spec.ast import SceneStmt, Spec
+from dynsolve.spec.ast import Prop, SceneStmt, Spec
 from dynsolve.units import Dim
 
 LENGTH = Dim.of("length")
@@ -69,7 +69,9 @@ class Bar:
 class Slider:
     """A joint that slides in a fixed straight guide along ``axis`` through ``through``
     (a fixed point or given joint; empty: through the joint's own given position), or,
-    when ``bar`` is set, along that moving bar (a pin in its slot, a collar on it)."""
+    when ``bar`` is set, along that moving bar (a pin in its slot, a collar on it).
+    With a ``mass``, the joint carries a block of that mass (a piston, a collar): a
+    particle at the joint, its own free body."""
 
     point: str
     axis: Vec | None
@@ -77,6 +79,7 @@ class Slider:
     line: int = 0
     column: int = 0
     bar: str = ""
+    mass: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -132,6 +135,12 @@ class Mesh:
     line: int = 0
     column: int = 0
     internal: bool = False
+    pressure: sympy.Expr | None = None  # the pressure angle φ; None: ideal teeth (φ = 0)
+
+    @property
+    def tooth(self) -> str:
+        """The name of the tooth force's tangential component, ``F_A_B``."""
+        return f"F_{self.first}_{self.second}"
 
     def pitch(
         self, centres: tuple[Vec, Vec], values: Mapping[sympy.Symbol, sympy.Expr], file: str = ""
@@ -259,7 +268,9 @@ def read_linkage(spec: Spec) -> Linkage:
     meshes: list[Mesh] = []
     branch = method = ""
     declared: dict[str, tuple[int, int]] = {}
+    mentioned: dict[str, tuple[int, int]] = {}  # a joint's first bar line
     statements = tuple(spec.scene or ())
+    pending: list[SceneStmt] = []
     for stmt in statements:
         where = Position(spec.file, stmt.line, stmt.column)
         if stmt.kind not in LINKAGE_LINES:
@@ -283,6 +294,8 @@ def read_linkage(spec: Spec) -> Linkage:
         elif stmt.kind == "bar":
             _new(stmt.name, declared, where, "bar")
             bars[stmt.name] = _bar(stmt, reader, where)
+            for joint in bars[stmt.name].points:  # for errors about a joint no line places
+                mentioned.setdefault(joint, (stmt.line, stmt.column))
     for stmt in statements:
         where = Position(spec.file, stmt.line, stmt.column)
         if stmt.kind == "joint":
@@ -295,12 +308,14 @@ def read_linkage(spec: Spec) -> Linkage:
             _joint_named(stmt.name, bars, fixed, where)
             if stmt.name in sliders:
                 raise SpecError(f"joint {stmt.name} has two sliders", where, "keep one")
+            mass = _mass(stmt.props[0], reader, symbols, where) if stmt.props else None
             if stmt.body:
-                sliders[stmt.name] = _on_bar(stmt, bars, where)
+                sliders[stmt.name] = replace(_on_bar(stmt, bars, where), mass=mass)
                 continue
             assert stmt.direction is not None
+            axis = reader.direction(stmt.direction)
             sliders[stmt.name] = Slider(
-                stmt.name, reader.direction(stmt.direction), stmt.other, stmt.line, stmt.column
+                stmt.name, axis, stmt.other, stmt.line, stmt.column, mass=mass
             )
         elif stmt.kind in RATES:
             drives.append(_drive(stmt, reader, bars, fixed, where))
@@ -309,7 +324,7 @@ def read_linkage(spec: Spec) -> Linkage:
         elif stmt.kind == "method":
             method = stmt.word
         elif stmt.kind in ("gravity", "couple", "force"):
-            loads.append(_load(stmt, reader, bars, where))
+            pending.append(stmt)  # read once every slider is known (a load on a block)
         elif stmt.kind == "wheel":
             _bar_named(stmt.body, bars, where)
             assert stmt.value is not None
@@ -321,7 +336,13 @@ def read_linkage(spec: Spec) -> Linkage:
             _bar_named(stmt.other, bars, where)
             radii = tuple(reader.value(e, LENGTH, "a gear's radius") for e in stmt.vectors[0])
             internal = stmt.word == "internal"
-            meshes.append(Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column, internal))  # type: ignore[arg-type]
+            pressure = reader.value(stmt.value, Dim(), "a pressure angle") if stmt.value else None
+            meshes.append(
+                Mesh(stmt.body, stmt.other, radii, stmt.line, stmt.column, internal, pressure)  # type: ignore[arg-type]
+            )
+    for stmt in pending:
+        where = Position(spec.file, stmt.line, stmt.column)
+        loads.append(_load(stmt, reader, bars, where, sliders))
     for bar in bars.values():
         round_bar = bar.name in wheels or any(bar.name in (m.first, m.second) for m in meshes)
         if bar.mass is not None and len(bar.points) != 2 and not round_bar:
@@ -356,7 +377,7 @@ def read_linkage(spec: Spec) -> Linkage:
         branch,
         symbols,
         values,
-        declared,
+        {**mentioned, **declared},
         tuple(loads),
         wheels,
         tuple(meshes),
@@ -385,10 +406,13 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
             hint="place each point with 'joint P: (x, y)' instead of a length or angle",
         )
     length = angle = mass = gyration = None
-    if "mass" in props:
-        mass = reader.value(props["mass"].values[0], Dim.of("mass"), "a bar's mass")
+    if "mass" in props and "weight" in props:
+        raise SpecError(f"bar {stmt.name} has a mass and a weight", where, "keep one")
+    for key in ("mass", "weight"):
+        if key in props:
+            mass = _mass(props[key], reader, reader.symbols, where)
     if "gyration" in props:
-        if "mass" not in props:
+        if mass is None:
             raise SpecError(f"bar {stmt.name}: a gyration needs a mass", where, "add 'mass m'")
         gyration = reader.value(props["gyration"].values[0], LENGTH, "a radius of gyration")
     if "length" in props:
@@ -396,6 +420,16 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
     if "angle" in props:
         angle = reader.value(props["angle"].values[0], Dim(), "a bar's angle")
     return Bar(stmt.name, points, length, angle, stmt.line, stmt.column, mass, gyration)
+
+
+def _mass(prop: Prop, reader: SceneReader, symbols: Mapping, where: Position) -> sympy.Expr:
+    """A bar's or a block's mass: ``mass m``, or ``weight W`` (m = W/g, as a body's)."""
+    if prop.key == "mass":
+        return reader.value(prop.values[0], Dim.of("mass"), "a mass")
+    g = symbols.get("g")
+    if g is None:
+        raise SpecError("a weight needs g", where, "give 'g' or write the mass ('mass m')")
+    return reader.value(prop.values[0], Dim.of("force"), "a weight") / g
 
 
 def _joint_named(
@@ -415,11 +449,32 @@ def _joint_named(
     raise SpecError(f"no bar has a joint '{name}'", where, hint)
 
 
-def _load(stmt: SceneStmt, reader: SceneReader, bars: Mapping[str, Bar], where: Position) -> Load:
-    """``gravity [: DIR]``, ``couple M on BAR: cw|ccw`` or ``force P on BAR at JOINT: DIR``."""
+def _load(
+    stmt: SceneStmt,
+    reader: SceneReader,
+    bars: Mapping[str, Bar],
+    where: Position,
+    sliders: Mapping[str, Slider],
+) -> Load:
+    """``gravity [: DIR]``, ``couple M on BAR: cw|ccw``, ``force P on BAR at JOINT: DIR``
+    or ``force P on C at C: DIR`` (on the block of the massive slider C)."""
     if stmt.kind == "gravity":
         direction = reader.direction(stmt.direction) if stmt.direction else (0, -1)
         return Load("gravity", "g", direction=direction, line=stmt.line, column=stmt.column)
+    block = sliders.get(stmt.body)
+    if stmt.kind == "force" and stmt.body not in bars and block is not None:
+        assert stmt.location is not None and stmt.direction is not None
+        if block.mass is None or stmt.location.point != stmt.body:
+            raise SpecError(
+                f"force {stmt.name} on {stmt.body}: a force on a slider acts on its block, at "
+                "the joint, and needs the block's mass",
+                where,
+                hint=f"write 'force {stmt.name} on {stmt.body} at {stmt.body}: DIR' and give "
+                f"the block a mass ('slider {stmt.body}: …, mass m'), or put the force on a "
+                "bar at the joint",
+            )
+        direction = reader.direction(stmt.direction)
+        return Load("force", stmt.name, stmt.body, stmt.body, direction, 1, stmt.line, stmt.column)
     if stmt.body not in bars:
         close = difflib.get_close_matches(stmt.body, sorted(bars), n=1)
         raise SpecError(

@@ -95,10 +95,16 @@ class LinkageProblem:
     r: Mapping[str, Vec] = field(default_factory=dict)
     free: FreeBodies | None = None
     released: tuple[str, ...] = ()  # bars whose α the loads decide (omega given, no alpha)
+    reversed_teeth: frozenset[str] = frozenset()  # tooth forces taken negative (pressure angle)
+    translating: tuple[str, ...] = ()  # bars whose IC is at infinity at the instant (method ic)
 
 
-def build_linkage_problem(spec: Spec) -> LinkageProblem:
-    """Read, place and relate the linkage of ``spec``; resolve its find list."""
+def build_linkage_problem(
+    spec: Spec, reversed_teeth: frozenset[str] = frozenset()
+) -> LinkageProblem:
+    """Read, place and relate the linkage of ``spec``; resolve its find list.
+    ``reversed_teeth``: the tooth forces (``F_A_B``) whose radial push (a pressure angle)
+    is written for F < 0, after a first solve found them so (:func:`reversed_teeth`)."""
     where = Position(spec.file, 1, 1)
     if not spec.finds:
         raise SpecError("nothing to find", where, hint="add a 'find:' line")
@@ -122,6 +128,7 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
     slots, directions = _slot_directions(linkage, r, taken, placed)
     givens += directions
     asked = {item.ref.function if item.ref else item.name for item in spec.finds}
+    translating: tuple[str, ...] = ()
     if linkage.method == "ic":  # velocities by instantaneous centres (Hibbeler 16.6)
         from dynsolve.linkage.centres import by_centres
 
@@ -131,6 +138,7 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
         givens = [replace(g, shown=True) if g.symbol in named else g for g in givens]
         givens += centres
         taken |= {g.name for g in centres}
+        translating = tuple(g.name.removeprefix("omega_") for g in centres if g.dim != LENGTH)
         levels = {"velocity": velocity}
     else:
         levels = {"velocity": relative_motion(linkage, r, "velocity", slots=slots)}
@@ -149,9 +157,8 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
     free = None
     if kinetics:
         g = next(g.symbol for g in givens if g.name == "g")
-        free = free_bodies(
-            linkage, r, levels["velocity"], levels["acceleration"], g, taken, len(released)
-        )
+        motion = (levels["velocity"], levels["acceleration"])
+        free = free_bodies(linkage, r, *motion, g, taken, len(released), reversed_teeth)
         unknowns |= dict(free.unknowns)
     clash = sorted({s.name for s in unknowns} & taken)
     if clash:
@@ -165,6 +172,16 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
     notes += _toggle_notes(linkage, levels["velocity"], r, knowns)
     symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
+    for item in spec.finds:
+        centre = item.ref and item.ref.function in ("x_IC", "y_IC") and item.ref.args
+        if centre and item.ref.args[0] in translating:  # type: ignore[union-attr]
+            raise SpecError(
+                f"{item.ref.args[0]} translates at the instant: its instantaneous centre is at "
+                "infinity",
+                Position(spec.file, item.line, item.column),
+                hint=f"ask for omega({item.ref.args[0]}) (zero) or the velocity of one of its "
+                "points (they are all the same)",
+            )
     targets = tuple(
         _target(item, spec, linkage, levels, r, dims, slots, free) for item in spec.finds
     )
@@ -206,6 +223,8 @@ def build_linkage_problem(spec: Spec) -> LinkageProblem:
         r=r,
         free=free,
         released=released,
+        reversed_teeth=reversed_teeth,
+        translating=translating,
     )
 
 
@@ -539,7 +558,70 @@ def cross_checks(
         + _relative_velocity_check(problem, values)
         + _power_check(problem, values)
         + _lagrange_check(problem, values)
+        + _pressure_checks(problem, values)
     )
+
+
+def _tooth_values(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> dict[str, float | None]:
+    """Each tooth force with a pressure angle, as solved (None where not a number)."""
+    known = {**problem.system.knowns, **values}
+    found: dict[str, float | None] = {}
+    for mesh in problem.linkage.meshes:
+        if mesh.pressure is None:
+            continue
+        value = _full(sympy.Symbol(mesh.tooth, real=True), known)
+        found[mesh.tooth] = None if value.free_symbols else float(sympy.N(value, 20))
+    return found
+
+
+def reversed_teeth(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> frozenset[str]:
+    """The tooth forces whose solved sign contradicts the sense their radial push
+    |F| tan φ was written with: the linkage is to be rebuilt with them reversed.
+
+    The radial push always parts the gears, so it is |F| tan φ, written as ±F tan φ with
+    a sense assumed (F ≥ 0 first); a solve that gives the other sign is redone."""
+    flipped = set(problem.reversed_teeth)
+    for name, value in _tooth_values(problem, values).items():
+        sense = -1 if name in problem.reversed_teeth else 1
+        if value is not None and sense * value < 0:
+            flipped ^= {name}
+    return frozenset(flipped)
+
+
+def _force(problem: LinkageProblem, value: float) -> str:
+    """A force in base units, shown in the problem's unit system."""
+    unit = natural_unit(Dim.of("force"), problem.spec.system)
+    return format_quantity(convert(value, unit, problem.spec.system), unit)
+
+
+def _pressure_checks(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """The sense each tooth force's radial push was written with, against its answer."""
+    checks = []
+    for name, value in _tooth_values(problem, values).items():
+        sense = -1 if name in problem.reversed_teeth else 1
+        mesh = next(m for m in problem.linkage.meshes if m.tooth == name)
+        assert mesh.pressure is not None
+        taken = "F < 0" if sense < 0 else "F ≥ 0"
+        if value is None:
+            detail = f"the radial push |F| tan φ parting the gears is written for {taken} (assumed)"
+            checks.append(Check(f"pressure angle ({name})", True, detail))
+            continue
+        phi = float(sympy.N(_full(mesh.pressure, dict(problem.system.knowns)), 20))
+        again = " (re-solved: the first solve found F the other way)" if sense < 0 else ""
+        detail = (
+            f"the teeth push along the line of action at φ = {math.degrees(phi):.4g}°: "
+            f"{name} = {_force(problem, value)} along the common tangent, radial push "
+            f"|F| tan φ = {_force(problem, abs(value) * math.tan(phi))} parting the gears, "
+            f"written for {taken}{again}"
+        )
+        checks.append(Check(f"pressure angle ({name})", sense * value >= 0, detail))
+    return tuple(checks)
 
 
 def _relative_velocity_check(
@@ -663,8 +745,10 @@ def _power_check(
     error = abs(supplied - stored) / scale
     unit = natural_unit(Dim(2, 1, -3), problem.spec.system)
     shown = format_quantity(convert(supplied, unit, problem.spec.system), unit)
+    heavy = [s.point for s in problem.linkage.sliders.values() if s.mass is not None]
+    blocks = f" + m v·a of block{'s' * (len(heavy) > 1)} {', '.join(heavy)}" if heavy else ""
     detail = (
-        f"power of the loads {shown} = dT/dt = Σ (m v_G·a_G + I_G ω α) "
+        f"power of the loads {shown} = dT/dt = Σ (m v_G·a_G + I_G ω α){blocks} "
         f"{format_quantity(convert(stored, unit, problem.spec.system), unit)} "
         f"(relative difference {error:.1e})"
     )

@@ -128,8 +128,12 @@ def build_scene_problem(
             and not any(t.kind in ("for", "until") for t in scene.travels.values())
         ):
             formulation = _with_energy(formulation, scene, symbols, given_values)
-    except ValueError as exc:  # a stage's error names its line
-        where = Position(spec.file, getattr(exc, "line", 0) or 1, getattr(exc, "column", 0) or 1)
+    except ValueError as exc:  # a stage's error names its line; else the travel's, if any
+        line, column = getattr(exc, "line", 0), getattr(exc, "column", 0)
+        if not line:
+            travel = next(iter(scene.travels.values()), None)
+            line, column = (travel.line, travel.column) if travel else (spec.scene[0].line, 1)
+        where = Position(spec.file, line or 1, column or 1)
         raise SpecError(str(exc), where, hint="check the scene") from None
     if state_unknowns:
         formulation = replace(formulation, unknowns={**formulation.unknowns, **state_unknowns})

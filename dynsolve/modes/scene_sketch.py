@@ -58,6 +58,11 @@ def sketch_of(scene: Scene) -> SceneSketch | None:
             for s in scene.supports
             if s.kind in ("contact", "rolls", "base") and not s.two_sided
         )
+        guides = tuple(
+            _surface(s, scene, values)
+            for s in scene.supports
+            if s.kind == "contact" and s.two_sided and _is_straight(s)
+        )
         cords = tuple(_cord(c, values) for c in scene.cords)
         springs = tuple(
             (s.name, *_point(s.point, values), *_point(s.other_point, values))
@@ -85,8 +90,13 @@ def sketch_of(scene: Scene) -> SceneSketch | None:
     )
     return SceneSketch(
         bodies, pins, surfaces, cords, springs, links, forces, couples, paths,
-        scene.gravity is not None,
+        scene.gravity is not None, guides,
     )  # fmt: skip
+
+
+def _is_straight(support: Support) -> bool:
+    """A guide along a straight line (a collar's rod, a slot), not a curved path."""
+    return (sympy.Integer(0) + support.normal_acceleration) == 0
 
 
 class NoNumber(Exception):

@@ -266,6 +266,7 @@ def _circle(scene: Scene, travel: Travel) -> Circle:
         C0 = link.other_point
         R = tidy(sympy.sqrt((body.G[0] - C0[0]) ** 2 + (body.G[1] - C0[1]) ** 2))
         return Circle(C0, R, 1, link.name, f"the tension in {link.name}")
+    missed: list[str] = []  # circles G is not on, with how far off
     for path in scene.paths.values():
         circle = _circle_of(path.curve, path.x, path.y)
         if circle is None:
@@ -273,6 +274,14 @@ def _circle(scene: Scene, travel: Travel) -> Circle:
         C0, R = circle
         on = tidy((body.G[0] - C0[0]) ** 2 + (body.G[1] - C0[1]) ** 2 - R**2)
         if on != 0:
+            distance = real_value(
+                sympy.sqrt((body.G[0] - C0[0]) ** 2 + (body.G[1] - C0[1]) ** 2), scene.values
+            )
+            radius = real_value(R, scene.values)
+            if distance is not None and radius is not None:
+                missed.append(
+                    f"{path.name} (G is {distance:.7g} from its centre, R = {radius:.7g})"
+                )
             continue
         r1 = (body.G[0] - C0[0], body.G[1] - C0[1])
         assert scene.gravity is not None
@@ -285,10 +294,16 @@ def _circle(scene: Scene, travel: Travel) -> Circle:
             )
         side = 1 if pressed > 0 else -1  # weight away from O: on the inside of a loop
         return Circle(C0, R, side, f"the surface {path.name}", f"N_{path.name}")
+    off = (
+        f"; off the circle: {'; '.join(missed)}: place G on it with a formula, e.g. "
+        "'at (R*sin(phi_0), R*cos(phi_0))'"
+        if missed
+        else ""
+    )
     raise UntilError(
         travel,
         f"'until contact lost' needs a circular path through {travel.body}'s G "
-        "(e.g. 'path dome: x^2 + y^2 = R^2')",
+        f"(e.g. 'path dome: x^2 + y^2 = R^2'){off}",
     )
 
 

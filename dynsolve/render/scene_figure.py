@@ -29,6 +29,7 @@ Point = tuple[float, float]
 WIDTH_MM, HEIGHT_MM = 90.0, 45.0
 SURFACE_MM = 18.0  # a contact's ground line, this long
 HATCH_MM = 2.0  # the hatched band under it
+GUIDE_MM = 1.5  # a guide's two lines, this far either side of its contact point
 PIN_MM = 1.2
 ARROW_MM = 10.0
 CORD_MM = 14.0
@@ -47,6 +48,8 @@ def scene_picture(sketch: SceneSketch) -> str:
     for _name, x, y, nx, ny, half in sketch.surfaces:
         half_mm = half * scale if half > 0 else 0.35 * WIDTH_MM  # a particle: a long floor
         lines += _surface(at((x, y)), (nx, ny), max(SURFACE_MM / 2, half_mm))
+    for _name, x, y, nx, ny, half in sketch.guides:
+        lines += _guide(at((x, y)), (nx, ny), max(SURFACE_MM / 2, half * scale))
     for body in sketch.bodies:
         lines += _body(body, at, scale)
     for name, x, y in sketch.pins:
@@ -100,7 +103,7 @@ def _frame(sketch: SceneSketch) -> tuple[Callable[[Point], Point], float]:
             r = _extent(shape_, sizes_)
             reach += [(x_ - r, y_ - r), (x_ + r, y_ + r)]
     reach += [(x, y) for _, x, y in sketch.pins]
-    reach += [(x, y) for _, x, y, _, _, _ in sketch.surfaces]
+    reach += [(x, y) for _, x, y, _, _, _ in (*sketch.surfaces, *sketch.guides)]
     for _, x1, y1, x2, y2 in (*sketch.springs, *sketch.links):
         reach += [(x1, y1), (x2, y2)]
     for _, curve in sketch.paths:
@@ -150,6 +153,19 @@ def _surface(point: Point, normal: Point, half: float) -> list[str]:
         f"\\fill[pattern=north east lines] {_xy(a)} -- {_xy(b)} -- {_xy(c)} -- {_xy(d)} -- cycle;",
         f"\\draw[thick] {_xy(a)} -- {_xy(b)};",
     ]
+
+
+def _guide(point: Point, normal: Point, half: float) -> list[str]:
+    """A two-sided guide (a slot, a collar's rod): two thin lines either side of the
+    contact point, ``half`` mm along the guide each way."""
+    t = (normal[1], -normal[0])
+    lines = []
+    for side in (-GUIDE_MM, GUIDE_MM):
+        o = (point[0] + side * normal[0], point[1] + side * normal[1])
+        a = (o[0] - half * t[0], o[1] - half * t[1])
+        b = (o[0] + half * t[0], o[1] + half * t[1])
+        lines.append(f"\\draw[thin] {_xy(a)} -- {_xy(b)};")
+    return lines
 
 
 def _pin(point: Point, name: str) -> list[str]:

@@ -1,8 +1,9 @@
 """Work and energy between two 3D states: T1 + ΣU1-2 = T2 for a body in a turning frame.
 
-State 1 is the scene at rest; state 2 is reached when the frame that ``rotates`` has
-turned through the ``travel`` line's angle, and the scene's rates (ω of ``rotates`` and
-``spins``) are those of state 2. The body's angular velocity is composed from the
+State 1 is the scene at rest, or (``travel …, from omega W``) with the frame turning at W
+and the body's spin what its rolling points allow; state 2 is reached when the frame that
+``rotates`` has turned through the ``travel`` line's angle, and the scene's rates (ω of
+``rotates`` and ``spins``) are those of state 2. The body's angular velocity is composed from the
 frame's turn and its own spin, ω = Ω u + ω_s s (Hibbeler 20.1); a ``rolls B at (x, y, z)``
 point is at rest, v_H = v_G + ω × r_H/G = 0, which ties the spin to the turn (a gear
 rolling on a fixed gear). The kinetic energy is T = ½ m v_G² + ½ ωᵀ I_G ω (Hibbeler
@@ -37,7 +38,7 @@ the rolling contact do none.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import sympy
@@ -73,6 +74,7 @@ class EnergyTerms:
     work: tuple[tuple[str, sympy.Expr], ...]  # (what does it, U1-2)
     omega: Vec3
     v_G: Vec3
+    omega_1: Vec3 | None = None  # ω in state 1 when it moves
 
     @property
     def U(self) -> sympy.Expr:
@@ -154,7 +156,7 @@ def build_energy_problem(
 
     notes = (
         _inertia_note(scene, knowns, spec),
-        ("state 1", "at rest: T1 = 0"),
+        _state_1_note(terms, travel, knowns, spec),
         *(_work_note(what, u, knowns, spec) for what, u in terms.work),
         *_no_work(scene),
         *_unused(spec),
@@ -179,13 +181,15 @@ def build_energy_problem(
 def energy_terms(
     scene: Scene3D, omega: Vec3, v_G: Vec3, travel: Travel3D, taken: set[str]
 ) -> EnergyTerms:
-    """T1 = 0, T2 = ½ m v_G·v_G + ½ ωᵀ I_G ω and the work of the couples and the weight
-    over the frame's turn Δθ = ± the travel's angle (+ along the ``rotates`` axis)."""
+    """T1 (0 from rest), T2 = ½ m v_G·v_G + ½ ωᵀ I_G ω and the work of the couples and
+    the weight over the frame's turn Δθ = ± the travel's angle (+ along the ``rotates``
+    axis)."""
     body, spin = scene.body, scene.spin
-    I_w = body.I_G * sympy.Matrix(omega)
-    rotation = sum((w * h for w, h in zip(omega, I_w, strict=True)), ZERO) / 2
-    translation = body.mass * sum((v**2 for v in v_G), ZERO) / 2
-    T2 = sympy.expand(translation + rotation)
+    T2 = kinetic(scene, omega, v_G)
+    T1, omega_1 = ZERO, None
+    if travel.omega_1 is not None:
+        omega_1, v_G1 = _state_1(scene, travel.omega_1)
+        T1 = kinetic(scene, omega_1, v_G1)
     turn = _turn(travel, spin.axis)
     work: list[tuple[str, sympy.Expr]] = []
     for name in scene.torques:
@@ -196,7 +200,44 @@ def energy_terms(
         end = _rotated(r, spin.axis, turn)
         rise = sympy.simplify(end[1] - r[1])
         work.append(("the weight", -body.mass * scene.symbols["g"] * rise))  # −W Δy_G
-    return EnergyTerms(ZERO, T2, tuple(work), omega, v_G)
+    return EnergyTerms(T1, T2, tuple(work), omega, v_G, omega_1)
+
+
+def kinetic(scene: Scene3D, omega: Vec3, v_G: Vec3) -> sympy.Expr:
+    """T = ½ m v_G·v_G + ½ ωᵀ I_G ω (Hibbeler 21.3)."""
+    body = scene.body
+    I_w = body.I_G * sympy.Matrix(omega)
+    rotation = sum((w * h for w, h in zip(omega, I_w, strict=True)), ZERO) / 2
+    translation = body.mass * sum((v**2 for v in v_G), ZERO) / 2
+    return sympy.expand(translation + rotation)
+
+
+def _state_1(scene: Scene3D, rate: sympy.Expr) -> tuple[Vec3, Vec3]:
+    """ω and v_G in state 1: the frame turning at ``rate``, the body's spin (if any) the one
+    its rolling points allow (v_H = 0 solved for it)."""
+    from dynsolve.rigid3d.problem import motion
+
+    first = replace(scene, spin=replace(scene.spin, omega=rate))
+    own = scene.spin_of
+    if own is None:
+        omega, _, v_G, _ = motion(first)
+        return omega, v_G
+    spin = sympy.Dummy("spin_1", real=True)
+    first = replace(first, spin_of=replace(own, omega=spin))
+    omega, _, v_G, _ = motion(first)
+    body = scene.body
+    no_slip = [
+        sympy.expand(v + c)
+        for contact in scene.rolling
+        for v, c in zip(
+            v_G, cross(omega, tuple(contact.at[i] - body.G[i] for i in range(3))), strict=True
+        )
+    ]
+    found = sympy.solve([e for e in no_slip if e != 0], [spin], dict=True)
+    value = found[0][spin] if found else ZERO
+    return tuple(c.xreplace({spin: value}) for c in omega), tuple(  # type: ignore[return-value]
+        c.xreplace({spin: value}) for c in v_G
+    )
 
 
 def _turn(travel: Travel3D, axis: Vec3) -> sympy.Expr:
@@ -227,6 +268,14 @@ def _check_two_state_scene(scene: Scene3D, spec: Spec, at: Position) -> None:
             "between two states the rates are those of state 2: an alpha has no place here",
             Position(spec.file, spin.line, 1),
             hint="drop ', alpha …' from the rotates and spins lines",
+        )
+    travel = scene.travel
+    if travel is not None and travel.omega_1 is not None and own is not None and not scene.rolling:
+        raise SpecError(
+            "from a moving state 1 the body's spin is taken from its rolling points: a body "
+            "that spins freely in the frame has no known spin in state 1",
+            at,
+            hint="add the 'rolls' line that ties the spin to the turn, or start from rest",
         )
     if own is None:
         return
@@ -299,8 +348,11 @@ def _check_work(
     spec: Spec,
     at: Position,
 ) -> None:
-    """From rest, state 2 is reached only if ΣU1-2 > 0 (T2 = T1 + ΣU ≥ 0, and T2 = 0
-    would leave the body at rest)."""
+    """State 2 is reached only if T1 + ΣU1-2 > 0 (T2 = 0 would leave the body at rest);
+    from rest, ΣU1-2 > 0 and something must do work."""
+    if terms.T1 != 0:
+        _check_reached(terms, scene, at)
+        return
     U = terms.U.xreplace(dict(scene.values))
     if not terms.work or U == 0:
         raise SpecError(
@@ -320,6 +372,32 @@ def _check_work(
         )
 
 
+def _check_reached(terms: EnergyTerms, scene: Scene3D, at: Position) -> None:
+    """From a moving state 1: the frame turns in the sense of the travel, and
+    T2 = T1 + ΣU1-2 must be positive (else the body stops first)."""
+    assert scene.travel is not None and scene.travel.omega_1 is not None
+    start = (scene.travel.omega_1 * _turn(scene.travel, scene.spin.axis)).xreplace(
+        dict(scene.values)
+    )
+    if not start.free_symbols and start < 0:
+        raise SpecError(
+            "in state 1 the frame turns against the travel: it would stop and turn back",
+            at,
+            hint="give the rate in state 1 in the sense of the travel's axis (right-hand)",
+        )
+    T2 = (terms.T1 + terms.U).xreplace(dict(scene.values))
+    if T2.free_symbols:  # an unknown torque, or symbolic givens: the solve decides
+        return
+    value = float(sympy.N(T2))
+    if value <= 0:
+        raise SpecError(
+            f"T1 + ΣU1-2 = {value:.4g} J is not positive: the body stops before it has "
+            "turned that far",
+            at,
+            hint="check the sense of the torque, the travel's angle and the rate in state 1",
+        )
+
+
 def _sense(
     scene: Scene3D, travel: Travel3D, unknowns: Mapping[sympy.Symbol, Dim]
 ) -> tuple[Constraint, ...]:
@@ -334,6 +412,25 @@ def _sense(
     word = ">" if relation.lhs == frame else "<"
     text = f"{frame.name} {word} 0 (the frame turns in the sense of the travel)"
     return (Constraint(relation, text, travel.line),)
+
+
+def _state_1_note(
+    terms: EnergyTerms, travel: Travel3D, knowns: Mapping[sympy.Symbol, sympy.Expr], spec: Spec
+) -> tuple[str, str]:
+    """State 1: at rest, or moving with its T1 as formula and value."""
+    if travel.omega_1 is None:
+        return ("state 1", "at rest: T1 = 0")
+    shown = _plain(tidy(terms.T1))
+    value = terms.T1.xreplace(dict(knowns))
+    if not value.free_symbols:
+        unit = natural_unit(ENERGY, spec.system, "E")
+        shown += " = " + format_quantity(convert(float(sympy.N(value)), unit, spec.system), unit)
+    rate = _plain(travel.omega_1)
+    return (
+        "state 1",
+        f"the frame turns at {rate} (the spin as the rolling points allow): "
+        f"T1 = ½ m v_G² + ½ ωᵀ I_G ω = {shown}",
+    )
 
 
 def _work_note(
@@ -444,7 +541,19 @@ def fixed_point_check(
     unit = natural_unit(ENERGY, system, "E")
     shown = format_quantity(convert(b, unit, system), unit)
     detail = f"{lead} = {shown}, as ½ m v_G² + ½ ωᵀ I_G ω (relative difference {error:.1e})"
-    return (Check("T about the fixed point", error < 1e-9, detail),)
+    checks = [Check("T about the fixed point", error < 1e-9, detail)]
+    if terms.omega_1 is not None:
+        w_1 = sympy.Matrix(terms.omega_1)
+        a = float(sympy.N(((w_1.T * I_O * w_1)[0] / 2).xreplace(values), 20))
+        b = float(sympy.N(terms.T1.xreplace(values), 20))
+        error = abs(a - b) / max(abs(a), abs(b), 1e-300)
+        shown = format_quantity(convert(b, unit, system), unit)
+        detail = (
+            f"T1 = ½ ω1ᵀ I_O ω1 = {shown}, as ½ m v_G1² + ½ ω1ᵀ I_G ω1 "
+            f"(relative difference {error:.1e})"
+        )
+        checks.append(Check("T1 about the fixed point", error < 1e-9, detail))
+    return tuple(checks)
 
 
 EnergyRow = tuple[str, sympy.Expr, str]  # ("name = meaning", formula, unit)
@@ -463,7 +572,11 @@ def energy_table(
     ½ ωᵀ I_G ω. Returns the rows and the values of the names they define (I_xx …)."""
     energy = natural_unit(ENERGY, system, "E")
     rows = [
-        ("T1 = kinetic energy in state 1 (at rest)", terms.T1, energy),
+        (
+            f"T1 = kinetic energy in state 1 ({'moving' if terms.T1 != 0 else 'at rest'})",
+            terms.T1,
+            energy,
+        ),
         *_work_rows(terms, energy),
     ]
     I_O = fixed_point_inertia(scene, terms, values)

@@ -4,11 +4,14 @@ Lines (docs/scene-mode.md, *Rigid bodies in 3D*): ``body`` with a mass and a sha
 the 3D table (or ``inertia B: I_x, I_y, I_z``) at a 3D position; ``axis B: (x, y, z)``
 (the body's z axis: a disk's or rod's axis) or ``axes B: (x-axis), (y-axis)``;
 ``rotates B: about (ux, uy, uz), through (x, y, z), omega EXPR [, alpha EXPR]`` (ω and α
-along the axis by the right-hand rule); ``bearing A: at (x, y, z), journal|thrust``;
+along the axis by the right-hand rule); ``spins`` and ``nutates`` lines (the body's turns
+relative to that frame: ω = φ̇ K + θ̇ i' + ψ̇ k); ``bearing A: at (x, y, z),
+journal|thrust|ball|pin|fixed``;
 ``torque M on B`` (about the axis); ``gravity`` (−y: y is up). Between two states:
 ``rolls B at (x, y, z)`` (B's point there is at rest: it rolls on a fixed gear) and
 ``travel B: turns EXPR about (ux, uy, uz)`` (state 2: the turning frame has turned
-through EXPR; state 1 at rest, the rates those of state 2). A name in a position that
+through EXPR; state 1 at rest or, with ``, from omega W``, turning at W; the rates
+those of state 2). A name in a position that
 is not a given but is in find is an unknown angle (a steady angle), its root chosen by
 ``assume`` lines (``assume theta_s > 0``).
 
@@ -61,6 +64,7 @@ LINES_3D = frozenset(
         "inertia3",
         "rotates",
         "spins",
+        "nutates",
         "bearing",
         "torque",
         "gravity",
@@ -70,7 +74,18 @@ LINES_3D = frozenset(
     }
 )
 KINDS_3D = frozenset(
-    {"axis", "axes", "inertia3", "rotates", "spins", "bearing", "torque", "rolls3", "travel3"}
+    {
+        "axis",
+        "axes",
+        "inertia3",
+        "rotates",
+        "spins",
+        "nutates",
+        "bearing",
+        "torque",
+        "rolls3",
+        "travel3",
+    }
 )
 
 
@@ -101,9 +116,10 @@ class Spin:
 
 @dataclass(frozen=True)
 class SpinOf:
-    """The body's turn about ``axis`` through ``through`` (G when not given: a rotor's
-    spin) relative to the frame that turns with the ``rotates`` line, which carries the
-    axis (the precession; a shaft carrying the pin of a bar)."""
+    """A turn about ``axis`` through ``through`` (G when not given: a rotor's spin)
+    relative to the frame before it, which carries the axis: the body's spin relative to
+    the ``rotates`` frame (the precession; a shaft carrying the pin of a bar), or a
+    ``nutates`` line's turn of the body's axis (then the spin is relative to it)."""
 
     axis: Vec3
     omega: sympy.Expr
@@ -115,7 +131,9 @@ class SpinOf:
 class Bearing:
     """A bearing on the shaft: a journal carries loads across the shaft, a thrust also
     along it; a ball joint (``ball``), anywhere, carries loads every way; a ``pin``
-    (hinge) carries loads every way and couples across its axis (the shaft's)."""
+    (hinge) carries loads every way and couples across its axis (the shaft's); a
+    ``fixed`` support (the arm or motor that holds and drives the body) carries loads and
+    couples every way: its couple is the moment needed."""
 
     name: str
     at: Vec3
@@ -137,12 +155,14 @@ class Rolling:
 @dataclass(frozen=True)
 class Travel3D:
     """State 2 of a two-state 3D scene: the turning frame has turned through ``angle``
-    about ``axis`` (a unit vector along the ``rotates`` axis, either way)."""
+    about ``axis`` (a unit vector along the ``rotates`` axis, either way); in state 1 the
+    frame turns at ``omega_1`` (None: at rest)."""
 
     angle: sympy.Expr
     axis: Vec3
     line: int = 0
     column: int = 0
+    omega_1: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -163,6 +183,7 @@ class Scene3D:
     travel: Travel3D | None = None
     angles: Mapping[sympy.Symbol, Dim] = field(default_factory=dict)  # unknown, in positions
     assumptions: tuple[Constraint, ...] = ()  # 'assume' lines: which root of an angle
+    nutation: SpinOf | None = None  # the body's axis turning in the precessing frame
 
     @property
     def shaft(self) -> Vec3:
@@ -218,6 +239,7 @@ def read_scene3d(spec: Spec) -> Scene3D:
         )
     rates: dict[sympy.Symbol, Dim] = {}
     spin = _spin(spins[0], reader, spec, rates)
+    nutation = _nutation(statements, body, reader, spec, rates)
     spin_of = None
     own = [s for s in statements if s.kind == "spins"]
     if own:
@@ -246,6 +268,24 @@ def read_scene3d(spec: Spec) -> Scene3D:
         if s.kind == "rolls3"
     )
     travel = _travel(statements, spin, reader, spec)
+    shaft = spin_of.axis if spin_of is not None else spin.axis
+    _check_shaft(shaft, bearings, own[0] if own else spins[0], spec)
+    named = [b for b in bearings if b.kind in ("journal", "thrust", "pin")]
+    if nutation is not None and named:
+        raise SpecError(
+            f"bearing {named[0].name} ({named[0].kind}) is named across one shaft, but a "
+            "nutating body turns about two (the nutation's and the spin's)",
+            Position(spec.file, named[0].line, named[0].column),
+            hint="hold the body by a 'fixed' support (force and couple every way: the moment "
+            "needed) or a 'ball' joint",
+        )
+    if nutation is not None and (travel is not None or rolling):
+        stmt = next(s for s in statements if s.kind == "nutates")
+        raise SpecError(
+            "a nutating body is solved at an instant: not between two states (yet)",
+            Position(spec.file, stmt.line, stmt.column),
+            hint="leave out the travel and rolls lines, or the nutates line",
+        )
     assumptions = tuple(_assumption(s, reader, spec) for s in statements if s.kind == "assume")
     return Scene3D(
         spec.file,
@@ -262,10 +302,11 @@ def read_scene3d(spec: Spec) -> Scene3D:
         travel,
         angles,
         assumptions,
+        nutation,
     )
 
 
-POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins"})
+POSITIONED = frozenset({"body", "axis", "axes", "bearing", "rotates", "spins", "nutates"})
 
 
 def _unknown_angles(
@@ -273,7 +314,8 @@ def _unknown_angles(
 ) -> dict[sympy.Symbol, Dim]:
     """Names in the scene's positions and directions that are not givens but are asked
     for in find: unknown angles of the position (a bar's steady angle on a turning
-    shaft). Any other name that is not a given stays an error (a typo)."""
+    shaft), and the names of ``steady(theta)`` finds (the scene drawn at a given angle).
+    Any other name that is not a given stays an error (a typo)."""
     asked = {
         item.ref.function if item.ref and not item.ref.args else item.name for item in spec.finds
     }
@@ -290,6 +332,9 @@ def _unknown_angles(
                     if text in symbols or text == "pi" or text not in asked:
                         continue
                     found[sympy.Symbol(text, real=True)] = Dim()
+    for item in spec.finds:  # 'theta_s = steady(theta)': the angle at rest in the frame
+        if item.ref is not None and item.ref.function == "steady":
+            found[sympy.Symbol(item.name, real=True)] = Dim()
     return found
 
 
@@ -350,7 +395,13 @@ def _travel(
             where,
             hint=f"write 'about ({', '.join(sympy.sstr(c) for c in spin.axis)})'",
         )
-    return Travel3D(angle, axis, stmt.line, stmt.column)
+    start = [p for p in stmt.props if p.key == "from"]
+    omega_1 = (
+        reader.value(start[0].values[0], Dim(0, 0, -1), "the frame's rate in state 1")
+        if start
+        else None
+    )
+    return Travel3D(angle, axis, stmt.line, stmt.column, omega_1)
 
 
 def _vector3(reader: SceneReader, vector: Sequence[Expr], what: str) -> Vec3:
@@ -514,12 +565,58 @@ def _spin_of(
     where = Position(spec.file, stmt.line, stmt.column)
     if stmt.body != body.name:
         raise SpecError(f"there is no body '{stmt.body}'", where, hint=f"the body is {body.name}")
-    axis = _along_an_axis(_direction3(reader, stmt.vectors[0], where), where)
+    axis = _direction3(reader, stmt.vectors[0], where)
     through = (
         _vector3(reader, stmt.vectors[1], "a point of the axis") if len(stmt.vectors) > 1 else None
     )
     omega, alpha = _rates(stmt, reader, rates)
     return SpinOf(axis, omega, alpha, through)
+
+
+def _nutation(
+    statements: Sequence[SceneStmt],
+    body: Body3D,
+    reader: SceneReader,
+    spec: Spec,
+    rates: dict[sympy.Symbol, Dim],
+) -> SpinOf | None:
+    """The scene's one ``nutates B: about (n), through (P), omega w [, alpha a]`` line:
+    the body's axis turns about n through P, which the precessing frame carries (Hibbeler
+    20.1: ω = φ̇ K + θ̇ i' + ψ̇ k, the nutation θ̇ about i')."""
+    lines = [s for s in statements if s.kind == "nutates"]
+    if not lines:
+        return None
+    stmt = lines[-1]
+    where = Position(spec.file, stmt.line, stmt.column)
+    if len(lines) > 1:
+        raise SpecError(
+            "a 3D scene has one nutates line", where, hint="keep one 'nutates B: about (n), …'"
+        )
+    if stmt.body != body.name:
+        raise SpecError(
+            f"there is no body '{stmt.body}'",
+            where,
+            hint=f"the body is {body.name}" + _did_you_mean(stmt.body, [body.name]),
+        )
+    axis = _direction3(reader, stmt.vectors[0], where)
+    through = _vector3(reader, stmt.vectors[1], "a point of the axis")
+    omega, alpha = _rates(stmt, reader, rates)
+    return SpinOf(axis, omega, alpha, through)
+
+
+def _check_shaft(shaft: Vec3, bearings: Sequence[Bearing], stmt: SceneStmt, spec: Spec) -> None:
+    """A journal, thrust or pin bearing names its reactions across the shaft (the spin's
+    axis, else the turn's), which must then lie along x, y or z; a ball or fixed support
+    takes any axis (a top's tilted spin axis)."""
+    named = [b for b in bearings if b.kind in ("journal", "thrust", "pin")]
+    if named and sum(1 for c in shaft if c != 0) != 1:
+        raise SpecError(
+            f"bearing {named[0].name} ({named[0].kind}) lies on a shaft that is not along x, "
+            "y or z: its reactions are named across the shaft by those axes",
+            Position(spec.file, stmt.line, stmt.column),
+            hint="choose the scene axes with the shaft along one of them, or hold the body "
+            "by a 'ball' or 'fixed' support",
+        )
 
 
 def _along_an_axis(axis: Vec3, where: Position) -> Vec3:

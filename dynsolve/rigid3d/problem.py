@@ -49,16 +49,28 @@ from dynsolve.modes.scene_mode import _row, _unit, _unused
 from dynsolve.numbers import light_tidying, tidy
 from dynsolve.quantities import convert
 from dynsolve.results import Check, EquationRow, Step
+from dynsolve.rigid3d.composition import compose
+from dynsolve.rigid3d.derivation import composition_checks, composition_notes
 from dynsolve.rigid3d.energy import EnergyTerms, build_energy_problem, fixed_point_check
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
+from dynsolve.rigid3d.steady import steady_angles, steady_equations
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
 
 FORCE, MOMENT, ENERGY = Dim.of("force"), Dim(2, 1, -2), Dim(2, 1, -2)
 AXES = "xyz"
+VECTORS = {  # find functions of the body's motion, per scene axis: their dimensions
+    "omega_": Dim(0, 0, -1),
+    "alpha_": Dim(0, 0, -2),
+    "v_G": Dim(1, 0, -1),
+    "a_G": Dim(1, 0, -2),
+    "H_": Dim(2, 1, -1),
+    "Hdot_": MOMENT,
+}
+MOTION_FINDS = frozenset({"T"} | {f"{q}{a}" for q in VECTORS for a in AXES})
 
 
 @dataclass(frozen=True)
@@ -136,84 +148,42 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         unknown(angle.name, dim)
     if scene.travel is not None or scene.rolling:
         return build_energy_problem(spec, scene, unknowns)
+    # only ω, α, H_G, … asked: the motion is given and no load is asked for
+    loads = bool(unknowns) or not all(_of_the_motion(item) for item in spec.finds)
     along = next(i for i, c in enumerate(scene.shaft) if c != 0)
     reactions: dict[str, tuple[Vec3, Vec3]] = {}
     couples: dict[str, Vec3] = {}
-    for bearing in scene.bearings:
+    for bearing in scene.bearings if loads else ():
         force = tuple(
             unknown(f"{bearing.name}_{AXES[i]}", FORCE)
-            if i != along or bearing.kind in ("thrust", "ball", "pin")
+            if i != along or bearing.kind in ("thrust", "ball", "pin", "fixed")
             else sympy.Integer(0)
             for i in range(3)
         )
         reactions[bearing.name] = (force, bearing.at)  # type: ignore[assignment]
-        if bearing.kind == "pin":  # a hinge: a couple across its axis, none about it
+        if bearing.kind in ("pin", "fixed"):  # a hinge: a couple across its axis only
             couples[bearing.name] = tuple(  # type: ignore[assignment]
-                unknown(f"M_{bearing.name}{AXES[i]}", MOMENT) if i != along else sympy.Integer(0)
+                unknown(f"M_{bearing.name}{AXES[i]}", MOMENT)
+                if i != along or bearing.kind == "fixed"
+                else sympy.Integer(0)
                 for i in range(3)
             )
     torque = sympy.Integer(0)
-    for name in scene.torques:
+    for name in scene.torques if loads else ():
         size = scene.symbols[name] if name in taken else unknown(name, MOMENT)
         torque += size
     omega, alpha, v_G, a_G = motion(scene)
-    H = tuple(body.I_G * sympy.Matrix(omega))
+    H: Vec3 = tuple(body.I_G * sympy.Matrix(omega))  # type: ignore[assignment]
     I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
     H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
-    weight = (
-        tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
-        if scene.gravity
-        else (sympy.Integer(0),) * 3
-    )
     equations: list[Equation] = []
-    for i, axis in enumerate(AXES):
-        total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
-        note = f"ΣF_{axis} = m (a_G)_{axis}"
-        equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
-    # about G; about the one bearing when an angle of the position is unknown, so that its
-    # reactions drop out of the moments and the angle comes from one equation
-    pivot = scene.bearings[0] if scene.angles and len(scene.bearings) == 1 else None
-    point = pivot.at if pivot is not None else body.G
-    label = pivot.name if pivot is not None else "G"
-    r_G = tuple(body.G[i] - point[i] for i in range(3))
-    moment = [sympy.Integer(0)] * 3
-    for force, at in reactions.values():
-        arm = tuple(at[i] - point[i] for i in range(3))
-        moment = [m + c for m, c in zip(moment, cross(arm, force), strict=True)]
-    moment = [m + c for m, c in zip(moment, cross(r_G, weight), strict=True)]
-    moment = [m + torque * c for m, c in zip(moment, spin.axis, strict=True)]
-    for couple in couples.values():
-        moment = [m + c for m, c in zip(moment, couple, strict=True)]
-    m_a_moment = cross(r_G, tuple(body.mass * a for a in a_G))
-    for i, axis in enumerate(AXES):
-        if pivot is None:
-            note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
-        else:
-            note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
-        lhs, rhs = moment[i], tidy(H_dot[i] + m_a_moment[i])  # factored where shorter
-        if not (set(unknowns) & (lhs - rhs).free_symbols):
-            if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
-                continue  # holds whatever the reactions: nothing to solve for
-            raise SpecError(
-                f"the moments about the {axis} axis cannot balance: (Ḣ_G)_{axis} = "
-                f"{sympy.sstr(rhs)} but no unknown load acts about it",
-                where,
-                hint="a driving torque is missing: add 'torque M on "
-                f"{body.name}' (M unknown) or check α",
-            )
-        equations.append(Equation(lhs, rhs, note, spin.line, note))
-    if scene.angles:  # sin 2θ from I_G's entries as 2 sin θ cos θ: one factor sin θ to solve
-        equations = [
-            Equation(
-                sympy.expand_trig(e.lhs),
-                sympy.expand(sympy.expand_trig(e.rhs)),
-                e.label,
-                e.line,
-                e.note,
-            )
-            for e in equations
-        ]
-    _check_determined(equations, unknowns, scene, body.name, where)
+    label = "G"
+    steady = steady_angles(spec, scene, tuple(unknowns))
+    if loads:
+        forces = Loads(reactions, couples, torque)
+        equations, label = _newton_euler(scene, forces, set(unknowns), a_G, H_dot, where)
+        equations += steady_equations(steady, equations, tuple(unknowns))
+        _check_determined(equations, unknowns, scene, body.name, where)
     symbols = {g.name: g.symbol for g in givens} | {s.name: s for s in unknowns}
     dims = {g.name: g.dim for g in givens} | {s.name: d for s, d in unknowns.items()}
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
@@ -247,7 +217,17 @@ def build_3d_problem(spec: Spec) -> Problem3D:
                 )
             )
             continue
-        targets_found.append(_target(item, spec, scene, unknowns, dims, omega, v_G, a_G, H_dot))
+        if item.ref is not None and item.ref.function == "steady":
+            at = Position(spec.file, item.line, item.column)
+            unit, dim = _unit(item, Dim(), spec, at)
+            steady = sympy.Symbol(item.name, real=True)
+            targets_found.append(
+                Target(item.name, steady, dim, unit, item.unit is not None, False, "signed", steady)
+            )
+            continue
+        vectors = {"omega_": omega, "alpha_": alpha, "v_G": v_G, "a_G": a_G, "H_": H}
+        vectors["Hdot_"] = H_dot
+        targets_found.append(_target(item, spec, scene, unknowns, dims, vectors))
     targets = tuple(targets_found)
     check_answers_in_find(spec)
     # every reaction is solved: the second moment point checks them all
@@ -259,7 +239,8 @@ def build_3d_problem(spec: Spec) -> Problem3D:
         rows = tuple(_row(e, symbol_dims, spec) for e in equations)
     except DimensionError as error:
         raise DimensionError(error.message, where, error.hint) from None
-    notes = (_inertia_note(scene, knowns, spec), *_unused(spec))
+    notes = (_inertia_note(scene, knowns, spec), *composition_notes(scene, knowns, spec))
+    notes += tuple(_unused(spec))
     return Problem3D(
         spec,
         tuple(givens),
@@ -279,6 +260,85 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     )
 
 
+@dataclass(frozen=True)
+class Loads:
+    """The loads on the body other than its weight: bearing reactions (force, where it
+    acts), couples of pins and fixed supports, and the torque about the turn's axis."""
+
+    reactions: Mapping[str, tuple[Vec3, Vec3]]
+    couples: Mapping[str, Vec3]
+    torque: sympy.Expr
+
+
+def _newton_euler(
+    scene: Scene3D,
+    loads: Loads,
+    unknowns: set[sympy.Symbol],
+    a_G: Vec3,
+    H_dot: Vec3,
+    where: Position,
+) -> tuple[list[Equation], str]:
+    """ΣF = m a_G and ΣM = Ḣ_G (about G, or about the one bearing when an angle of the
+    position is unknown), with the moment point's label; a moment component that no
+    unknown load can balance is refused."""
+    body, spin = scene.body, scene.spin
+    weight = (
+        tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
+        if scene.gravity
+        else (sympy.Integer(0),) * 3
+    )
+    equations: list[Equation] = []
+    reactions, couples, torque = loads.reactions, loads.couples, loads.torque
+    for i, axis in enumerate(AXES):
+        total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
+        note = f"ΣF_{axis} = m (a_G)_{axis}"
+        equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
+    # about G; about the one bearing when an angle of the position is unknown, so that its
+    # reactions drop out of the moments and the angle comes from one equation
+    pivot = scene.bearings[0] if scene.angles and len(scene.bearings) == 1 else None
+    point = pivot.at if pivot is not None else body.G
+    label = pivot.name if pivot is not None else "G"
+    r_G = tuple(body.G[i] - point[i] for i in range(3))
+    moment = [sympy.Integer(0)] * 3
+    for force, at in reactions.values():
+        arm = tuple(at[i] - point[i] for i in range(3))
+        moment = [m + c for m, c in zip(moment, cross(arm, force), strict=True)]
+    moment = [m + c for m, c in zip(moment, cross(r_G, weight), strict=True)]
+    moment = [m + torque * c for m, c in zip(moment, spin.axis, strict=True)]
+    for couple in couples.values():
+        moment = [m + c for m, c in zip(moment, couple, strict=True)]
+    m_a_moment = cross(r_G, tuple(body.mass * a for a in a_G))
+    for i, axis in enumerate(AXES):
+        if pivot is None:
+            note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
+        else:
+            note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
+        lhs, rhs = moment[i], tidy(H_dot[i] + m_a_moment[i])  # factored where shorter
+        if not (unknowns & (lhs - rhs).free_symbols):
+            if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
+                continue  # holds whatever the reactions: nothing to solve for
+            raise SpecError(
+                f"the moments about the {axis} axis cannot balance: (Ḣ_G)_{axis} = "
+                f"{sympy.sstr(rhs)} but no unknown load acts about it",
+                where,
+                hint="a driving torque is missing: add 'torque M on "
+                f"{body.name}' (M unknown) or check α",
+            )
+        equations.append(Equation(lhs, rhs, note, spin.line, note))
+    if scene.angles:  # sin 2θ from I_G's entries as 2 sin θ cos θ: one factor sin θ to solve
+        equations = [
+            Equation(
+                sympy.expand_trig(e.lhs),
+                sympy.expand(sympy.expand_trig(e.rhs)),
+                e.label,
+                e.line,
+                e.note,
+            )
+            for e in equations
+        ]
+    return equations, label
+
+
 def motion(scene: Scene3D) -> tuple[Vec3, Vec3, Vec3, Vec3]:
     """ω, α (absolute), v_G and a_G of the scene's body.
 
@@ -286,7 +346,8 @@ def motion(scene: Scene3D) -> tuple[Vec3, Vec3, Vec3, Vec3]:
     relative to it about s through P (a point the frame carries: G for a rotor's spin),
     so ω = Ω u + ω_s s, α = Ω' u + α_s s + Ω u × ω_s s, v_P = Ω × r_P/O,
     a_P = Ω' u × r_P/O + Ω × (Ω × r_P/O), and v_G = v_P + ω × r_G/P,
-    a_G = a_P + α × r_G/P + ω × (ω × r_G/P) (Hibbeler 20.4).
+    a_G = a_P + α × r_G/P + ω × (ω × r_G/P) (Hibbeler 20.4); with a ``nutates`` line
+    the same step is taken once more (:func:`~dynsolve.rigid3d.composition.compose`).
 
     >>> from dynsolve.rigid3d.model import Body3D, Scene3D, Spin
     >>> z, one = sympy.Integer(0), sympy.Integer(1)
@@ -296,27 +357,8 @@ def motion(scene: Scene3D) -> tuple[Vec3, Vec3, Vec3, Vec3]:
     >>> v_G, a_G  # G 1 m from the axis at 2 rad/s: 2 m/s, 4 m/s² toward the axis
     ((0, 0, -2), (-4, 0, 0))
     """
-    spin, body = scene.spin, scene.body
-    frame = tuple(spin.omega * c for c in spin.axis)
-    frame_alpha = tuple(spin.alpha * c for c in spin.axis)
-    own = scene.spin_of
-    P = spin.through if own is None else (own.through or body.G)
-    r_P = tuple(P[i] - spin.through[i] for i in range(3))
-    v_P = cross(frame, r_P)
-    a_P = tuple(a + b for a, b in zip(cross(frame_alpha, r_P), cross(frame, v_P), strict=True))
-    omega, alpha = frame, frame_alpha
-    if own is not None:
-        relative = tuple(own.omega * c for c in own.axis)
-        omega = tuple(w + c for w, c in zip(frame, relative, strict=True))
-        turning = cross(frame, relative)  # the frame turns the relative ω: Ω × ω_s s
-        alpha = tuple(
-            a + own.alpha * c + t for a, c, t in zip(frame_alpha, own.axis, turning, strict=True)
-        )
-    r = tuple(body.G[i] - P[i] for i in range(3))
-    w_r = cross(omega, r)
-    v_G = tuple(v + c for v, c in zip(v_P, w_r, strict=True))
-    a_G = tuple(a + b + c for a, b, c in zip(a_P, cross(alpha, r), cross(omega, w_r), strict=True))
-    return omega, alpha, v_G, a_G  # type: ignore[return-value]
+    chain = compose(scene)
+    return chain.omega, chain.alpha, chain.v_G, chain.a_G
 
 
 def _check_determined(
@@ -400,10 +442,7 @@ def _target(
     scene: Scene3D,
     unknowns: Mapping[sympy.Symbol, Dim],
     dims: Mapping[str, Dim],
-    omega: tuple[sympy.Expr, ...],
-    v_G: tuple[sympy.Expr, ...],
-    a_G: tuple[sympy.Expr, ...],
-    H_dot: tuple[sympy.Expr, ...],
+    vectors: Mapping[str, Vec3],
 ) -> Target:
     hint = "ask for a bearing reaction (A_x, A_y, A_z), a torque, T(B) or Hdot_x(B)"
     found = named_target(item, spec, unknowns, dims, hint)
@@ -420,19 +459,17 @@ def _target(
             hint=f"e.g. T({body.name})",
         )
     if function == "T":
-        I_w = body.I_G * sympy.Matrix(omega)
-        energy = sum(w * h for w, h in zip(omega, I_w, strict=True)) / 2
-        energy += body.mass * sum(v**2 for v in v_G) / 2
+        omega, H = vectors["omega_"], vectors["H_"]
+        energy = sum(w * h for w, h in zip(omega, H, strict=True)) / 2
+        energy += body.mass * sum(v**2 for v in vectors["v_G"]) / 2
         unit, dim = _unit(item, ENERGY, spec, where)
         unit = unit if item.unit is not None else natural_unit(ENERGY, spec.system, "E")
         return Target(
             item.name, symbol, dim, unit, item.unit is not None, False, "signed", tidy(energy)
         )
-    components = {f"Hdot_{a}": H_dot[i] for i, a in enumerate(AXES)}
-    components |= {f"a_G{a}": a_G[i] for i, a in enumerate(AXES)}
-    if function in components:
-        dim = MOMENT if function.startswith("Hdot") else Dim.of("acceleration")
-        unit, dim = _unit(item, dim, spec, where)
+    if function in MOTION_FINDS:
+        quantity, axis = function[:-1], AXES.index(function[-1])
+        unit, dim = _unit(item, VECTORS[quantity], spec, where)
         return Target(
             item.name,
             symbol,
@@ -441,12 +478,13 @@ def _target(
             item.unit is not None,
             False,
             "signed",
-            components[function],
+            vectors[quantity][axis],
         )
     raise SpecError(
         f"'{function}({args[0]})' is not a quantity of the 3D scene",
         where,
-        hint="ask for T(B), Hdot_x(B), Hdot_y(B), Hdot_z(B), a_Gx(B), … or a reaction by name",
+        hint="ask for T(B), omega_x(B), alpha_x(B), H_x(B), Hdot_x(B), v_Gx(B), a_Gx(B), … "
+        "or a reaction by name",
     )
 
 
@@ -461,9 +499,15 @@ def moment_check(
         return fixed_point_check(problem.scene, problem.energy, known, problem.spec.system)
     known = {**problem.system.knowns, **values}
     onsets = tuple(c for o in problem.onsets for c in onset_check(o, problem.system.knowns))
-    if not problem.scene.bearings:
-        return onsets
-    return _second_point(problem, known) + onsets
+    motion_checks = composition_checks(problem.scene, known, problem.spec)
+    if not problem.reactions:
+        return motion_checks + onsets
+    return _second_point(problem, known) + motion_checks + onsets
+
+
+def _of_the_motion(item: FindItem) -> bool:
+    """Whether a find is a quantity of the body's motion alone (ω, α, H_G, T, …)."""
+    return item.ref is not None and len(item.ref.args) == 1 and item.ref.function in MOTION_FINDS
 
 
 def named_target(
@@ -542,7 +586,7 @@ def second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     M ω² ab(a² − b²)/(12(a² + b²)) here (seed 002, (9.33)); about G, ΣM_G = Ḣ_G. A check,
     not used to solve (the 'second moment point' check verifies it with the solved values);
     a component that holds whatever the reactions is left out."""
-    if problem.energy is not None or not problem.scene.bearings:
+    if problem.energy is not None or not problem.reactions:
         return ()
     with light_tidying(False):  # shown as exact mode shows it, in every mode
         return _second_moment_rows(problem)

@@ -75,6 +75,7 @@ class Loop:
     start: dict[str, np.ndarray]  # every joint as drawn
     constraints: list[tuple[str, tuple[object, ...]]]
     masses: list[tuple[float, str, str, float, float]]  # m, first, second, I_G, t along
+    # (a slider's block: first = second = its joint, I_G = 0)
     forces: list[tuple[np.ndarray, str, str, float]]  # F, bar's first, second, t along
     couple: float  # the ccw couple on the input bar
     size: int = 1
@@ -197,13 +198,17 @@ class Loop:
         for m, one, two, I_G, t in self.masses:
             G1 = (1 - t) * d1[one] + t * d1[two]
             G2 = (1 - t) * d2[one] + t * d2[two]
+            M += m * float(G1 @ G1)
+            h += m * float(G1 @ G2)
+            if one == two:  # a slider's block: a particle, no turn
+                continue
             d = r[two] - r[one]
             dd, ddd = d1[two] - d1[one], d2[two] - d2[one]
             size = float(d @ d)
             w = (d[0] * dd[1] - d[1] * dd[0]) / size  # θ_b'
             w2 = (d[0] * ddd[1] - d[1] * ddd[0]) / size - 2 * float(d @ dd) * w / size
-            M += m * float(G1 @ G1) + I_G * w * w
-            h += m * float(G1 @ G2) + I_G * w * w2
+            M += I_G * w * w
+            h += I_G * w * w2
         for F, one, two, t in self.forces:
             Q += float(F @ ((1 - t) * d1[one] + t * d1[two]))
         Q += self.couple
@@ -290,8 +295,23 @@ def loop_from(linkage: Linkage, placement: Placement) -> Loop:
             assert gravity.direction is not None
             weight = m * number(g, "g") * np.array([float(c) for c in gravity.direction])
             forces.append((weight, one, two, 0.5))
+    for point, block in linkage.sliders.items():  # a block (piston, collar) at its joint
+        if block.mass is None:
+            continue
+        m = number(block.mass, f"the mass of slider {point}")
+        masses.append((m, point, point, 0.0, 0.0))
+        if gravity is not None and g is not None:
+            assert gravity.direction is not None
+            weight = m * number(g, "g") * np.array([float(c) for c in gravity.direction])
+            forces.append((weight, point, point, 0.0))
     for load in linkage.loads:
         if load.kind == "gravity":
+            continue
+        if load.bar not in linkage.bars:  # on a slider's block, at its joint
+            assert load.direction is not None
+            size = number(linkage.symbols.get(load.name, sympy.Symbol(load.name)), load.name)
+            push = size * np.array([float(c) for c in load.direction])
+            forces.append((push, load.bar, load.bar, 0.0))
             continue
         size = number(linkage.symbols.get(load.name, sympy.Symbol(load.name)), load.name)
         if load.kind == "couple":

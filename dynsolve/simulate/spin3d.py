@@ -117,6 +117,11 @@ def spin_of(spec: Spec) -> Spin3D:
     problem = build_3d_problem(replace(spec, finds=(*spec.finds, *extra)))
     scene = problem.scene
     own = scene.spin_of
+    if scene.nutation is not None:
+        raise NotSimulable(
+            "a nutating body is solved at an instant; a simulation follows one turn relative "
+            "to the turning frame (leave out the nutates line)"
+        )
     if own is None or own.through is None:
         raise NotSimulable(
             "a 3D scene is simulated when its body turns relative to the turning frame about "

@@ -276,8 +276,9 @@ def _solve_linear(
 
     Numeric mode solves a block whose entries are all numbers once the knowns are put in
     in floating point (:func:`solve_linear_in_floats`), without formulas."""
-    if options.mode == "numeric":
-        floats = solve_linear_in_floats(matrix.xreplace(given), rhs.xreplace(given), unknowns)
+    numbers = matrix.xreplace(given), rhs.xreplace(given)
+    if options.mode == "numeric" or _inexact(*numbers, unknowns):
+        floats = solve_linear_in_floats(*numbers, unknowns)
         if floats is not None:
             return floats
     if options.show_formulas and len(unknowns) <= FORMULA_MAX_UNKNOWNS:
@@ -289,7 +290,26 @@ def _solve_linear(
             if all(is_finite(v) for v in values.values()):
                 candidate = Candidate(_in_mode(values, options), shown_formulas(formulas))
                 return BlockSolution(unknowns, "linear", (candidate,))
-    return _solve_linear_values(matrix.xreplace(given), rhs.xreplace(given), unknowns, options)
+    return _solve_linear_values(*numbers, unknowns, options)
+
+
+INEXACT_FORMULA_UNKNOWNS = 3  # a larger block with decimals in it is solved in floats
+
+
+def _inexact(matrix: sympy.Matrix, rhs: sympy.Matrix, unknowns: tuple[sympy.Symbol, ...]) -> bool:
+    """A block too large for formulas whose entries hold decimals already (a linkage placed
+    by loop closure): its formulas would be long sums of 30-digit numbers, and eliminating
+    them exactly grows their exponents without bound (10^36683 seen in a loaded four-bar),
+    so it is solved in floating point with guard digits, as numeric mode does.
+
+    >>> x, y, z, w = sympy.symbols("x y z w")
+    >>> eye = sympy.eye(4) * sympy.Float(0.5)
+    >>> _inexact(eye, sympy.zeros(4, 1), (x, y, z, w)), _inexact(sympy.eye(4), eye[:, 0], (x,))
+    (True, False)
+    """
+    if len(unknowns) <= INEXACT_FORMULA_UNKNOWNS:
+        return False
+    return matrix.has(sympy.Float) or rhs.has(sympy.Float)
 
 
 def _unique_linear_solution(

@@ -1003,10 +1003,16 @@ class _Builder(Transformer_NonRecursive):
         return self._stmt("travel", body, body=str(body), value=angle, word=str(sense), props=stops)
 
     def travel_turns3_stmt(self, c: list[Any]) -> SceneStmt:
-        """``travel B: turns EXPR about (ux, uy, uz)``: in a 3D scene, state 2 is reached
-        when the frame that ``rotates`` has turned through EXPR about u (right-hand)."""
-        body, angle, axis = c
-        return self._stmt("travel3", body, body=str(body), value=angle, vectors=(axis,))
+        """``travel B: turns EXPR about (ux, uy, uz) [, from omega W]``: in a 3D scene,
+        state 2 is reached when the frame that ``rotates`` has turned through EXPR about u
+        (right-hand); state 1 is at rest, or has the frame turning at W."""
+        body, angle, axis, *start = c
+        props = tuple(
+            Prop("from", values=(w,), line=self.line, column=self.offset + 1) for w in start
+        )
+        return self._stmt(
+            "travel3", body, body=str(body), value=angle, vectors=(axis,), props=props
+        )
 
     def prop_guide(self, c: list[Any]) -> Prop:
         return self._prop("guide", c)
@@ -1045,13 +1051,17 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def slider_stmt(self, c: list[Any]) -> SceneStmt:
-        name, direction, *through = c
+        """``slider C: along DIR [, through A] [, mass m]``: joint C slides in a fixed
+        straight guide; with a mass, C carries a block (a piston) of that mass."""
+        name, direction, *rest = c
+        through = [t for t in rest if isinstance(t, Token)]
         return self._stmt(
             "slider",
             name,
             name=str(name),
             direction=direction,
             other=str(through[0]) if through else "",
+            props=tuple(p for p in rest if isinstance(p, Prop)),
         )
 
     def rolls_wheel_stmt(self, c: list[Any]) -> SceneStmt:
@@ -1063,25 +1073,28 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def mesh_stmt(self, c: list[Any]) -> SceneStmt:
-        """``mesh A with B: radii r_A, r_B[, internal]``: gears A and B (bars centred on
-        their first points) in mesh, their pitch circles rolling on each other: outside each
-        other, or (``internal``) the smaller inside the larger, a ring gear."""
-        first, second, r_first, r_second, *internal = c
-        word = "internal" if internal and internal[0] is not None else ""
+        """``mesh A with B: radii r_A, r_B[, internal][, pressure angle phi]``: gears A and
+        B (bars centred on their first points) in mesh, their pitch circles rolling on each
+        other: outside each other, or (``internal``) the smaller inside the larger, a ring
+        gear; the teeth push along the line of action at ``phi`` to the common tangent."""
+        first, second, r_first, r_second, *rest = c
+        internal = any(isinstance(t, Token) and t.type == "INTERNAL" for t in rest)
+        pressure = [e for e in rest if e is not None and not isinstance(e, Token)]
         return self._stmt(
             "mesh",
             first,
             body=str(first),
             other=str(second),
             vectors=((r_first, r_second),),
-            word=word,
+            word="internal" if internal else "",
+            value=pressure[0] if pressure else None,
         )
 
     def slider_bar_stmt(self, c: list[Any]) -> SceneStmt:
         """``slider B: along bar CD``: joint B slides along the (moving) bar CD, a pin
-        in a slot or a collar on a rod."""
-        name, bar = c
-        return self._stmt("slider", name, name=str(name), body=str(bar))
+        in a slot or a collar on a rod (``, mass m``: a collar of that mass)."""
+        name, bar, *props = c
+        return self._stmt("slider", name, name=str(name), body=str(bar), props=tuple(props))
 
     def alpha_stmt(self, c: list[Any]) -> SceneStmt:
         body, value, *_ = c
@@ -1215,6 +1228,18 @@ class _Builder(Transformer_NonRecursive):
         )
         return self._stmt(
             "spins", body, body=str(body), vectors=(axis, through), value=omega, props=props
+        )
+
+    def nutates_stmt(self, c: list[Any]) -> SceneStmt:
+        """``nutates B: about (n), through (P), omega w_n [, alpha a_n]``: B's axis turns
+        about n through P, both carried by the frame that ``rotates`` (a top's nutation,
+        an arm being raised while it precesses)."""
+        body, axis, through, omega, *alpha = c
+        props = tuple(
+            Prop("alpha", values=(a,), line=self.line, column=self.offset + 1) for a in alpha
+        )
+        return self._stmt(
+            "nutates", body, body=str(body), vectors=(axis, through), value=omega, props=props
         )
 
     def bearing_stmt(self, c: list[Any]) -> SceneStmt:
