@@ -294,3 +294,37 @@ find: v = speed(block)
     assert by_name(solution, "v").value == pytest.approx(math.sqrt(452.85 / 19.6), rel=1e-9)
     assert solution.passed
     assert "U_M = M Δθ" in solution.equations[0].note
+
+
+def test_a_cord_wound_on_top_of_a_rolling_wheel_moves_twice_as_far_as_its_centre(tmp_path):
+    # the cord leaves the top of the wheel (disk, m = 8 kg, R = 0.3 m) rolling without
+    # slip; block B (5 kg, smooth table) is pulled by P = 30 N through s = 1 m. The top
+    # moves 2 s_G, so v_G = v/2, ω = v/(2R): P s = ½ v² (m_B + m/4 + ½ m R²/(4R²)) = 4 v²
+    # → v = √7.5 = 2.738613 m/s, v_G = 1.369306 m/s; a = v²/(2s) = 3.75 m/s² and
+    # T = P − m_B a = 11.25 N (taut)
+    text = """\
+given:
+  m = 8 kg
+  R = 0.3 m
+  m_B = 5 kg
+  P = 30 N
+  s = 1 m
+  L = 2 m
+scene:
+  point C: (0, 0)
+  body wheel: mass m, disk R, at (0, R)
+  body B: particle, mass m_B, at (L, 2*R)
+  rolls wheel at C: normal up
+  contact B at G: normal up
+  cord T: wheel at (0, R) to B, right
+  force P on B at G: right
+  gravity
+  travel B: by s, right
+find: v = speed(B), v_G = speed(wheel)
+"""
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(7.5), rel=1e-9)
+    assert by_name(solution, "v_G").value == pytest.approx(math.sqrt(7.5) / 2, rel=1e-9)
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and taut.detail.startswith("T = 11.25 ≥ 0")
+    assert solution.passed
