@@ -328,3 +328,23 @@ find: v = speed(B), v_G = speed(wheel)
     taut = assumption(solution, "cord T taut between the states")
     assert taut.holds and taut.detail.startswith("T = 11.25 ≥ 0")
     assert solution.passed
+
+
+@pytest.mark.parametrize(("E", "swings"), [("(r, -2*r - L_0)", False), ("(r + L_0, -2*r)", True)])
+def test_a_spring_on_the_hanging_block_along_or_across_its_cord(tmp_path, E, swings):
+    # along (E below the block, spring unstretched at state 1, k = 50 N/m): it is
+    # compressed by h = 2 m on the way down, U_S = −½ k h² = −100 J:
+    # 392.4 − 100 = 21.71875 v² → v = √(292.4/21.71875) = 3.669202 m/s.
+    # Across (E to the right): the block would be pulled off the cord's line: refused.
+    text = DRUM.format(
+        extra="  k = 50 N/m\n  L_0 = 3 m\n",
+        load=f"  point E: {E}\n  spring S: block at G to E, k k, unstretched L_0\n",
+    )
+    if swings:
+        with pytest.raises(SpecError, match="a spring or its velocity acts across the cord"):
+            solve_file(write(tmp_path, text))
+        return
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(292.4 / 21.71875), rel=1e-9)
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and "checked there only" in taut.detail  # the spring's force changes

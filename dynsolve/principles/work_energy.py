@@ -349,8 +349,8 @@ class _Work:
 
     def along_the_cord(self, name: str, cord: Cord, d: Vec) -> None:
         """A body that only cords hold stays on the cord's line only if nothing pushes it
-        across: its weight, loads and velocity at state 1 lie along the cord (else it
-        swings, and the cord's direction changes)."""
+        across: its weight, loads, springs and velocity at state 1 lie along the cord (else
+        it swings, and the cord's direction changes)."""
         body = self.scene.bodies[name]
         across = sympy.Integer(0)
         if self.scene.gravity is not None:
@@ -359,11 +359,19 @@ class _Work:
             if load.body == name and load.kind == "force":
                 across += self.magnitude(load.name) * _cross(load.direction, d)
         drift = _cross(self.scene.velocities.get(name, ZERO), d)
+        for spring in self.scene.springs:  # a spring pulls along its line, which must be d's
+            if name in (spring.body, spring.other):
+                line = (
+                    spring.other_point[0] - spring.point[0],
+                    spring.other_point[1] - spring.point[1],
+                )
+                if not _is_zero(_norm(line), self.values):
+                    drift += _cross(line, d) / _norm(line)
         if _is_zero(across, self.values) and _is_zero(drift, self.values):
             return
         error = ValueError(
-            f"{name} hangs on the cord {cord.name} alone, but its weight, a load or its "
-            "velocity acts across the cord: it would swing, and the cord's direction "
+            f"{name} hangs on the cord {cord.name} alone, but its weight, a load, a spring "
+            "or its velocity acts across the cord: it would swing, and the cord's direction "
             "change between the states (hold it on the cord's line with a support, or "
             "write the cord as a link)"
         )
