@@ -3,8 +3,9 @@
 Each body's state-2 placement is its displacement Δr_G and rotation Δθ from the scene
 as described (state 1); each link's is its rotation. The supports, links and motions
 of the scene give the position constraints (a pin's point stays put, a rolling disk's
-centre moves r Δθ, a contact point stays on its surface, a link keeps its length), and
-the ``travel`` lines fix the state. Writing cos Δθ and sin Δθ as unknowns of their own
+centre moves r Δθ, a contact point stays on its surface, a link keeps its length, a cord
+keeps its length and its direction: :func:`cord_end_shifts`), and the ``travel`` lines
+fix the state. Writing cos Δθ and sin Δθ as unknowns of their own
 makes every constraint linear; they are solved together and each angle recovered from
 its sine and cosine. A rotation that only the closure of a loop would fix (a general
 four-bar linkage: circle conditions, several assemblies) is refused with a hint.
@@ -33,8 +34,8 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
-from dynsolve.numbers import float_functions, tidy
+from dynsolve.model.scene import Body, Cord, Scene, Support, Travel, Vec
+from dynsolve.numbers import float_functions, real_value, tidy
 from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -150,6 +151,181 @@ def _cross_k(omega: sympy.Expr, r: Vec) -> Vec:
     return (-omega * r[1], omega * r[0])
 
 
+def _minus(a: Vec, b: Vec) -> Vec:
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def _dot(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _cross(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[1] - a[1] * b[0]
+
+
+def _same(a: Vec, b: Vec) -> bool:
+    return tidy(a[0] - b[0]) == 0 and tidy(a[1] - b[1]) == 0
+
+
+ROUND = ("disk", "ring", "hollow", "sphere", "shell")  # the table's shapes a cord winds on
+
+
+def is_wound(scene: Scene, name: str, P: Vec, direction: Vec) -> bool:
+    """Whether a cord leaving the body ``name`` at ``P`` along ``direction`` is wound on
+    it: a round body (a drum given by its gyration or inertia, a disk, a ring …) that turns
+    about its G (no pin elsewhere), the cord tangent at P to the circle about G through it
+    (the rim). Its end then moves like :func:`wound_after`; any other end is a material
+    point of the body.
+
+    >>> import sympy
+    >>> r = sympy.Symbol("r", positive=True)
+    >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (r,), {}, False, "", 0, 0)
+    >>> bar = Body("bar", 1, 1, (0, 0), (0, 0), "rod", (2 * r,), {}, False, "", 0, 0)
+    >>> scene = Scene({"drum": drum, "bar": bar}, {}, (), (), (), None, {})
+    >>> is_wound(scene, "drum", (r, 0), (0, -1)), is_wound(scene, "drum", (r, 0), (1, 0))
+    (True, False)
+    >>> is_wound(scene, "bar", (r, 0), (0, -1))  # a bar's end is a point of the bar
+    False
+    """
+    from dynsolve.model.inertia import shape_named
+
+    body = scene.bodies[name]
+    rho = _minus(P, body.G)
+    if body.particle or _same(P, body.G):
+        return False
+    if body.shape not in ("", "body"):  # "body": given by its gyration or inertia, a drum
+        try:
+            if shape_named(body.shape).key not in ROUND:
+                return False
+        except ValueError:  # a composite
+            return False
+    if any(
+        s.body == name and s.kind == "pin" and not _same(s.point, body.G) for s in scene.supports
+    ):
+        return False
+    return tidy(_dot(rho, direction)) == 0
+
+
+def cord_end_shifts(
+    scene: Scene,
+    cord: Cord,
+    shift: Callable[[str, Vec], Vec],
+    turn: Mapping[str, sympy.Expr],
+) -> tuple[Vec, Vec]:
+    """How far each end of ``cord`` moves between the states: Δr_P of the end on
+    ``cord.body`` and Δr_Q of the other (zero when fixed). ``shift(body, P)`` is the
+    displacement of a material point; an end wound on a body moves like
+    :func:`wound_after`, Δr_G + Δθ k × (P − G). The same with velocities (v_G, ω) for
+    ``shift`` and ``turn`` gives the ends' velocities.
+
+    >>> import sympy
+    >>> r, phi = sympy.symbols("r phi")
+    >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (r,), {}, False, "", 0, 0)
+    >>> block = Body("block", 1, 0, (r, -2), (r, -2), "particle", (), {}, True, "", 0, 0)
+    >>> cord = Cord("T", "drum", (r, 0), (0, -1), "block", (r, -2))
+    >>> scene = Scene({"drum": drum, "block": block}, {}, (), (), (), None, {})
+    >>> cord_end_shifts(scene, cord, lambda b, P: (0, 0), {"drum": phi, "block": 0})
+    ((0, phi*r), (0, 0))
+    """
+
+    def end(name: str, P: Vec, direction: Vec) -> Vec:
+        body = scene.bodies[name]
+        if not is_wound(scene, name, P, direction):
+            return shift(name, P)
+        base = shift(name, body.G)
+        spin = _cross_k(turn[name], _minus(P, body.G))
+        return (base[0] + spin[0], base[1] + spin[1])
+
+    shifts = [end(*e) for e in cord_ends(cord)]
+    return shifts[0], shifts[1] if len(shifts) > 1 else ZERO
+
+
+def cord_ends(cord: Cord) -> list[tuple[str, Vec, Vec]]:
+    """Each end of ``cord`` on a body: (body, point, the direction the cord pulls it)."""
+    ends = [(cord.body, cord.point, cord.direction)]
+    if cord.other and cord.other_point is not None:
+        ends.append((cord.other, cord.other_point, (-cord.direction[0], -cord.direction[1])))
+    return ends
+
+
+def _refuse_swing(scene: Scene, cord: Cord) -> None:
+    """A cord whose direction would change between the states: from a fixed point to a
+    point of a body (it swings about the fixed point), or tied to a point off G of a body
+    that turns (the point goes round G), not wound on it."""
+    for name, P, d in cord_ends(cord):
+        body = scene.bodies[name]
+        if is_wound(scene, name, P, d):
+            continue
+        if not cord.other:
+            raise _at_cord(
+                cord,
+                f"the cord {cord.name} ties a point of {name} to a fixed point, so between "
+                "the states it swings about it and its direction changes: write it as a "
+                f"link to that point ('link {cord.name}: {name} at … to O'), which turns "
+                f"with it (then travel along the circle, or 'travel {name}: until "
+                f"{cord.name} slack')",
+            )
+        turns = not body.particle and scene.motions.get(name) != "translation"
+        turns = turns and not any(s.body == name and s.kind == "base" for s in scene.supports)
+        if turns and not _same(P, body.G):
+            raise _at_cord(
+                cord,
+                f"the cord {cord.name} is tied to a point of {name}, which turns: the point "
+                "goes round G, so the cord's direction would change between the states; "
+                "between two states a cord must be wound on a round body turning about its "
+                f"G (leaving the rim tangentially), or tied at G or to a body that does not "
+                f"turn (or write it as a link, 'link {cord.name}: … to …', which may turn)",
+            )
+
+
+def _at_cord(cord: Cord, message: str) -> ValueError:
+    """A ValueError pointing at the cord's line in the spec."""
+    error = ValueError(message)
+    error.line, error.column = cord.line, cord.column  # type: ignore[attr-defined]
+    return error
+
+
+def _check_cord_lines(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> None:
+    """Each cord keeps its direction between the states (its two ends move alike across
+    it); one that would swing is refused."""
+    turns = {n: p.turn for n, p in placements.items()}
+
+    def shift(body: str, P: Vec) -> Vec:
+        return _minus(point_after(scene.bodies[body], placements[body], P), P)
+
+    for cord in scene.cords:
+        near, far = cord_end_shifts(scene, cord, shift, turns)
+        gap = _minus(far, near)
+        across = real_value(_cross(gap, cord.direction), values)
+        size = real_value(sympy.sqrt(_dot(near, near) + _dot(far, far)), values)
+        if across is None or size is None or abs(across) <= 1e-9 * max(size, 1e-300):
+            continue
+        raise _at_cord(
+            cord,
+            f"the cord {cord.name} would change direction between the states (its ends move "
+            "apart across it: it swings); a cord between two states must keep its "
+            f"direction: hold its ends on its line, or write it as a link ('link {cord.name}: "
+            "… to …') that may turn",
+        )
+
+
+def held_only_by_cords(scene: Scene, name: str) -> bool:
+    """Whether only cords hold the body ``name`` (no support or link): nothing but a cord
+    keeps it from moving across the cord's line."""
+    held = {s.body for s in scene.supports}
+    held |= {n for link in scene.links for n in (link.body, link.other)}
+    return name not in held
+
+
+def _held_only_by_cords(scene: Scene, cord: Cord) -> bool:
+    """Whether an end of ``cord`` is on a body that only cords hold."""
+    return any(held_only_by_cords(scene, name) for name, _, _ in cord_ends(cord))
+
+
 class _Unknowns:
     """The position and velocity unknowns of every body and link."""
 
@@ -230,8 +406,15 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
         )
         pair((start[0] - end[0], start[1] - end[1]), arm)
         relations.append(f"the link {link.name} keeps its length")
-    if scene.cords:
-        raise ValueError("cords between two states are not supported yet; use a link")
+    for cord in scene.cords:
+        _refuse_swing(scene, cord)
+        start, end = cord_end_shifts(scene, cord, lambda b, P: _minus(after(b, P), P), x.phi)
+        gap = _minus(end, start)  # how much the cord's far end moved relative to the near
+        equations.append(_dot(gap, cord.direction))
+        relations.append(f"the cord {cord.name} keeps its length: (Δr_Q − Δr_P)·d = 0")
+        if _held_only_by_cords(scene, cord):
+            equations.append(_cross(gap, cord.direction))
+            relations.append(f"the cord {cord.name} keeps its direction")
     for travel in scene.travels.values():
         b = travel.body
         if travel.kind == "to":
@@ -337,6 +520,12 @@ def _velocity_constraints(
             end, v_end = link.other_point, ZERO
         spin = _cross_k(x.om[link.name], (start[0] - end[0], start[1] - end[1]))
         equations += [v_start[0] - v_end[0] - spin[0], v_start[1] - v_end[1] - spin[1]]
+    for cord in scene.cords:  # a wound end leaves at the same P − G in state 2
+        v_P, v_Q = cord_end_shifts(scene, cord, lambda b, P: velocity(b, at(b, P)), x.om)
+        gap = _minus(v_Q, v_P)
+        equations.append(_dot(gap, cord.direction))
+        if _held_only_by_cords(scene, cord):
+            equations.append(_cross(gap, cord.direction))
     return [sympy.expand(e) for e in equations if e != 0]
 
 
@@ -394,6 +583,8 @@ def state_change(
     if len(scene.travels) != 1:
         raise ValueError("describe state 2 with one travel line (the scene moves as one)")
     values = dict(given_values or {})
+    for cord in scene.cords:
+        _refuse_swing(scene, cord)
     initial = initial_rates(scene, values)  # refuses a scene without one degree of freedom
     x = _Unknowns(scene)
     equations, relations = _position_constraints(scene, x)
@@ -409,6 +600,7 @@ def state_change(
         n: Placement((known[x.u[n]], known[x.w[n]]), known[x.phi[n]], known[x.c[n]], known[x.s[n]])
         for n in x.bodies
     }
+    _check_cord_lines(scene, placements, {**scene.values, **values})
     link_turns = {n: known[x.phi[n]] for n in x.links}
     rates, rate_name = _rates(scene, x, placements, values)
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)

@@ -1728,6 +1728,11 @@ def _between_states(
                     "the states is not computed",
                 )
             )
+    if problem.scene.cords and len(problem.scene.travels) == 1:
+        from dynsolve.principles.constant_motion import taut_details
+
+        found = taut_details(problem.scene, problem.symbols, substitution)
+        checks += [Assumption(*taut) for taut in found]
     if any(t.stops for t in problem.scene.travels.values()):
         return tuple(checks)
     checks.append(

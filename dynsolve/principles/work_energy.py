@@ -27,10 +27,12 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from dynsolve.model.scene import CordState, Scene, Spring, Support, Travel, Vec
+from dynsolve.model.scene import Cord, CordState, Scene, Spring, Support, Travel, Vec
 from dynsolve.model.states import (
     Placement,
     Rates,
+    cord_ends,
+    held_only_by_cords,
     particle_shift,
     point_after,
     state_change,
@@ -85,6 +87,10 @@ def _side_kept(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr]) -> sy
 def _length(a: Vec, b: Vec) -> sympy.Expr:
     d = (a[0] - b[0], a[1] - b[1])
     return tidy(sympy.sqrt(dot(d, d)))
+
+
+def _cross(a: Vec, b: Vec) -> sympy.Expr:
+    return a[0] * b[1] - a[1] * b[0]
 
 
 def _norm(v: Vec) -> sympy.Expr:
@@ -304,6 +310,12 @@ class _Work:
             for s in self.scene.springs
             if body.name in (s.body, s.other) and not self._along_the_motion(s, step)
         ]
+        pulls += [  # a cord pulling across the surface changes N as much as a spring
+            c
+            for c in self.scene.cords
+            if body.name in (c.body, c.other)
+            and not _is_zero(dot(c.direction, n), self.values, _norm(c.direction))
+        ]
         if others or pulls or any(link.body == body.name for link in self.scene.links):
             what = others[0].name if others else pulls[0].name if pulls else "a link"
             error = ValueError(
@@ -335,10 +347,54 @@ class _Work:
         scale = _norm(reach) * _norm(step)
         return _is_zero(reach[0] * step[1] - reach[1] * step[0], self.values, scale)
 
+    def along_the_cord(self, name: str, cord: Cord, d: Vec) -> None:
+        """A body that only cords hold stays on the cord's line only if nothing pushes it
+        across: its weight, loads, springs and velocity at state 1 lie along the cord (else
+        it swings, and the cord's direction changes)."""
+        body = self.scene.bodies[name]
+        across = sympy.Integer(0)
+        if self.scene.gravity is not None:
+            across += body.mass * self.symbols["g"] * _cross(self.scene.gravity, d)
+        for load in self.scene.loads:
+            if load.body == name and load.kind == "force":
+                across += self.magnitude(load.name) * _cross(load.direction, d)
+        drift = _cross(self.scene.velocities.get(name, ZERO), d)
+        for spring in self.scene.springs:  # a spring pulls along its line, which must be d's
+            if name in (spring.body, spring.other):
+                line = (
+                    spring.other_point[0] - spring.point[0],
+                    spring.other_point[1] - spring.point[1],
+                )
+                if not _is_zero(_norm(line), self.values):
+                    drift += _cross(line, d) / _norm(line)
+        if _is_zero(across, self.values) and _is_zero(drift, self.values):
+            return
+        error = ValueError(
+            f"{name} hangs on the cord {cord.name} alone, but its weight, a load, a spring "
+            "or its velocity acts across the cord: it would swing, and the cord's direction "
+            "change between the states (hold it on the cord's line with a support, or "
+            "write the cord as a link)"
+        )
+        error.line, error.column = cord.line, cord.column  # type: ignore[attr-defined]
+        raise error
+
     def links(self) -> None:
         if self.scene.links:
             names = ", ".join(link.name for link in self.scene.links)
             self.idle.append(f"the forces in {names} (pin-jointed: no net work on the system)")
+
+    def tensions(self) -> None:
+        for cord in self.scene.cords:
+            for name, _, d in cord_ends(cord):
+                if held_only_by_cords(self.scene, name):
+                    self.along_the_cord(name, cord, d)
+            self.idle.append(
+                f"{cord.name} (inextensible and taut: its pulls on the two ends do equal and "
+                "opposite work)"
+                if cord.other
+                else f"{cord.name} (inextensible and taut, to a fixed point: its end does not "
+                "move along it)"
+            )
 
 
 def _work(
@@ -354,6 +410,7 @@ def _work(
     work.loads()
     work.supports()
     work.links()
+    work.tensions()
     return work
 
 
@@ -391,7 +448,7 @@ def energy_equations(
     """T1 + ΣU = T2 for the scene's travel: one per travelling particle, or one for a
     rigid body or linkage moving as a whole."""
     values = dict(given_values or {})
-    if all(b.particle for b in scene.bodies.values()) and not scene.links:
+    if all(b.particle for b in scene.bodies.values()) and not scene.links and not scene.cords:
         return tuple(_particle(scene, t, symbols, values) for t in scene.travels.values())
     return (_mechanism(scene, symbols, values),)
 
@@ -476,6 +533,13 @@ def _mechanism(
         ratio = real_value(rates.omega.get(body, 0), values)
         if omega is not None and ratio:  # the rate of travel per unit |ω|
             second = (omega / abs(ratio), CONSTANT_ALPHA, change.rate_name)
+        elif scene.cords:  # blocks and drums on cords: constant accelerations
+            from dynsolve.principles.constant_motion import HOW, state_one
+
+            motion = state_one(scene, symbols, values)
+            found = None if motion is None else motion.rate(scene)
+            if found is not None:
+                second = (found, HOW, change.rate_name)
     return Energy(
         equation,
         rate,

@@ -100,7 +100,7 @@ def travel_motion(
     at the end (> 0); ``simplify`` for a long run (see :func:`~.equations.mechanism`)."""
     scene = numeric_scene(replace(scene, travels={travel.body: travel}), values)
     travel = scene.travels[travel.body]
-    lone = all(b.particle for b in scene.bodies.values()) and not scene.links
+    lone = all(b.particle for b in scene.bodies.values()) and not scene.links and not scene.cords
     if lone:
         if travel.kind not in ("to", "by"):
             raise NotSimulable(f"{travel.body} is a particle: it travels to or by, not turns")

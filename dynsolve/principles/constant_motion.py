@@ -1,0 +1,201 @@
+"""Scenes whose accelerations stay constant between two states, and the cords they keep taut.
+
+Drums pinned at their centres, wheels rolling on flat ground and blocks that translate on
+straight surfaces, joined by cords that keep their direction and pulled by constant loads,
+have the same geometry of forces at every position: the accelerations that Newton–Euler
+gives at state 1 hold all the way, so v₂² = v₁² + 2 a s (ω₂² = ω₁² + 2 α Δθ) is a second
+method for the work–energy answer, and each cord's tension at state 1 is its tension
+throughout (its "taut between the states" is then checked, not assumed).
+
+>>> import sympy
+>>> from dynsolve.model.scene import Body, Cord, Scene, Support, Travel
+>>> drum = Body("drum", 60, sympy.Rational(15, 4), (0, 0), (0, 0), "", (), {}, False, "", 0, 0)
+>>> block = Body("block", 20, 0, (0.4, -0.8), (0.4, -0.8), "particle", (), {}, True, "", 0, 0)
+>>> pin = Support("pin", "O", "drum", (0, 0), (0, 1))
+>>> cord = Cord("T", "drum", (0.4, 0), (0, -1), "block", (0.4, -0.8))
+>>> down = Travel("block", "by", distance=2, direction=(0, -1))
+>>> scene = Scene({"drum": drum, "block": block}, {}, (pin,), (cord,), (), (0, -1), {},
+...               travels={"block": down})
+>>> motion = state_one(scene, {"g": 9.81}, {})
+>>> round(motion.rate(scene), 6)  # m_b g h = ½ (m_b + I_O/r²) v²
+4.250569
+>>> round(motion.tensions["T"], 2)
+105.86
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from dynsolve.model.scene import Scene
+from dynsolve.model.states import cord_ends, is_wound, placements_of
+from dynsolve.numbers import real_value, tidy
+
+HOW = (
+    "ΣF = m a_G, ΣM = I α at state 1: every acceleration is constant (constant loads, "
+    "cords that keep their direction, drums turning about G), from rest v₂² = 2 a s "
+    "(ω₂² = 2 α Δθ)"
+)
+
+
+def unsteady(scene: Scene) -> str | None:
+    """Why the accelerations of ``scene`` may change between the states (None: they do not).
+
+    A turning body keeps the geometry of its forces only when each acts at G, through a
+    pin at G, at a flat rolling contact, or along a cord wound on it; springs, links and
+    impacts change with the position.
+    """
+    if scene.springs or scene.links or scene.pivots:
+        return "springs, links or impacts change the forces along the way"
+    for name, body in scene.bodies.items():
+        if body.particle or scene.motions.get(name) == "translation":
+            continue
+        supports = [s for s in scene.supports if s.body == name]
+        if any(s.kind == "base" for s in supports):
+            continue
+        for support in supports:
+            at_G = support.kind == "pin" and _same(support.point, body.G)
+            if not (at_G or support.kind == "rolls"):
+                return f"{name} turns about {support.name}, away from its G"
+        for load in scene.loads:
+            if load.body == name and load.kind == "force" and not _same(load.point, body.G):
+                return f"{load.name} acts on the turning {name} away from its G"
+        for cord in scene.cords:
+            for end, P, d in cord_ends(cord):
+                if end == name and not is_wound(scene, name, P, d):
+                    return f"the cord {cord.name} is tied to a point of the turning {name}"
+    return None
+
+
+def _same(a: tuple[sympy.Expr, sympy.Expr], b: tuple[sympy.Expr, sympy.Expr]) -> bool:
+    return tidy(a[0] - b[0]) == 0 and tidy(a[1] - b[1]) == 0
+
+
+@dataclass(frozen=True)
+class StateOne:
+    """The accelerations and cord tensions that Newton–Euler gives at state 1 (numbers)."""
+
+    a_G: Mapping[str, tuple[float, float]]
+    alpha: Mapping[str, float]
+    tensions: Mapping[str, float]
+    steady: str | None  # why they may change along the way (None: constant)
+
+    def rate(self, scene: Scene) -> float | None:
+        """The rate of travel in state 2 from rest, by v² = 2 a s along a straight travel
+        (ω² = 2 α Δθ for a turn); None if the motion is not constant or runs the other way.
+        """
+        if self.steady is not None or scene.velocities or scene.omegas:
+            return None
+        (travel,) = scene.travels.values()
+        placements, _ = placements_of(scene)
+        placement = placements[travel.body]
+        if travel.kind == "turns":
+            step = real_value(placement.turn, scene.values)
+            rate = self.alpha.get(travel.body)
+        else:
+            shift = [real_value(c, scene.values) for c in placement.shift]
+            if None in shift:
+                return None
+            sx, sy = shift  # type: ignore[misc]
+            step = (sx**2 + sy**2) ** 0.5
+            a = self.a_G.get(travel.body)
+            rate = None if a is None or step == 0 else (a[0] * sx + a[1] * sy) / step
+        if step is None or rate is None:
+            return None
+        squared = 2 * rate * step
+        return squared**0.5 if squared >= 0 else None
+
+
+def state_one(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> StateOne | None:
+    """Newton–Euler at state 1, solved with numbers; a contact that slides between the
+    states (its point moving along the surface) has kinetic friction against the motion.
+    None where the instant has no unique solution.
+    """
+    from dynsolve.principles.newton_euler import dot, formulate
+
+    values = {**scene.values, **values}
+    try:
+        placements, _ = placements_of(scene)
+    except ValueError:
+        return None
+    slipping = {}
+    for support in scene.supports:
+        if support.smooth or support.kind not in ("contact", "base"):
+            continue
+        placement = placements[support.body]
+        slide = real_value(dot(placement.shift, support.tangent), values)
+        if slide:  # friction opposes the slide
+            slipping[support.name] = -1 if slide > 0 else 1
+    try:
+        formulation = formulate(scene, symbols, slipping, inclines=False)
+    except ValueError:  # the instant cannot be written (a cord across the motion …)
+        return None
+    residuals = [sympy.N((e.lhs - e.rhs).xreplace(dict(values))) for e in formulation.equations]
+    unknowns = list(formulation.unknowns)
+    found = sympy.linsolve(residuals, unknowns)
+    if len(found) != 1:
+        return None
+    (solution,) = tuple(found)
+    if any(v.free_symbols for v in solution):
+        return None
+    solved = dict(zip(unknowns, solution, strict=True))
+
+    def number(expr: sympy.Expr) -> float | None:
+        return real_value((sympy.Integer(0) + expr).xreplace(solved), values)
+
+    a_G, alpha = {}, {}
+    for name, kinematics in formulation.kinematics.items():
+        ax, ay = (number(c) for c in kinematics.a_G)
+        if ax is not None and ay is not None:
+            a_G[name] = (ax, ay)
+        turning = number(kinematics.alpha)
+        if turning is not None:
+            alpha[name] = turning
+    tensions = {}
+    for cord in scene.cords:
+        tension = number(formulation.reactions[cord.name][0])
+        if tension is not None:
+            tensions[cord.name] = tension
+    return StateOne(a_G, alpha, tensions, unsteady(scene))
+
+
+def taut_details(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> list[tuple[str, bool, str]]:
+    """``(name, holds, detail)`` for each cord assumed taut between the states: its tension
+    at state 1 from Newton–Euler, which is its tension throughout when the accelerations are
+    constant, and only its tension at the start otherwise (said so)."""
+    if not scene.cords:
+        return []
+    motion = state_one(scene, symbols, values)
+    found = []
+    for cord in scene.cords:
+        name = f"cord {cord.name} taut between the states"
+        T = None if motion is None else motion.tensions.get(cord.name)
+        if T is None:
+            detail = (
+                "assumed (inextensible, its tension doing no net work): Newton–Euler at "
+                "state 1 does not give its tension, so it is not checked"
+            )
+            found.append((name, True, detail))
+            continue
+        holds = T >= 0
+        detail = f"{cord.name} = {T:.4g} {'≥' if holds else '<'} 0 at state 1 (Newton–Euler)"
+        assert motion is not None
+        if not holds:
+            detail += ": the cord goes slack, and the scene does not move as one"
+        elif motion.steady is None:
+            detail += "; the accelerations are constant, so it stays so to state 2"
+        else:
+            detail += f"; checked there only ({motion.steady})"
+        found.append((name, holds, detail))
+    return found

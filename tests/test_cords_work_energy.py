@@ -1,0 +1,350 @@
+"""Inextensible cords between two states: work and energy of drums, pulleys and blocks.
+
+Every expected number is derived by hand in the comments (T1 + ΣU = T2 with the cord's
+kinematics v = ω r), never taken from dynsolve's output.
+"""
+
+import math
+from pathlib import Path
+
+import pytest
+
+from dynsolve.errors import SpecError
+from dynsolve.pipeline import solve_file
+from dynsolve.system import SolveOptions
+
+G = 9.81
+SCENES = Path(__file__).resolve().parent.parent / "problems" / "scenes"
+
+# the newcomer's spec, as the brief gives it (Hibbeler 12e Example 17.11's drum, ch. 18)
+DRUM = """\
+problem: Drum and block, work-energy
+units: SI
+given:
+  m_d = 60 kg
+  k_O = 0.25 m
+  r = 0.4 m
+  m_b = 20 kg
+  h = 2 m
+{extra}scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m_b, at (r, -2*r)
+  point A on drum: (r, 0)
+  pin drum at O
+  cord T: drum at A to block, down
+{load}  gravity
+  travel block: by h, down
+find: v = speed(block), omega_2 = omega2(drum)
+"""
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "cords.dyn"
+    path.write_text(text)
+    return path
+
+
+def by_name(solution, name: str):
+    return next(a for a in solution.answers if a.name == name)
+
+
+def assumption(solution, name: str):
+    return next(a for a in solution.assumptions if a.name == name)
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_the_newcomers_drum_and_block(tmp_path, mode):
+    # I_O = m_d k_O² = 3.75 kg·m²; m_b g h = ½ (m_b + I_O/r²) v²:
+    # 392.4 = ½ (20 + 23.4375) v² → v = √(392.4/21.71875) = 4.250569 m/s; ω = v/r, cw
+    solution = solve_file(write(tmp_path, DRUM.format(extra="", load="")), SolveOptions(mode))
+    v = math.sqrt(20 * G * 2 / (0.5 * (20 + 60 * 0.25**2 / 0.4**2)))
+    assert v == pytest.approx(4.250569, rel=1e-6)
+    assert by_name(solution, "v").value == pytest.approx(v, rel=1e-9)
+    omega = by_name(solution, "omega_2")
+    assert omega.value == pytest.approx(v / 0.4, rel=1e-9)
+    assert omega.direction == "cw"  # the block falls on the drum's right
+    assert solution.passed
+    note = solution.equations[0].note
+    assert "T (inextensible and taut" in note and "O (the pin does not move)" in note
+
+
+def test_the_drum_is_checked_by_its_constant_acceleration_and_its_tension(tmp_path):
+    # at state 1: a = m_b g r²/(I_O + m_b r²) = 20(9.81)(0.16)/6.95 = 4.51683 m/s², and
+    # T = m_b (g − a) = 20(9.81 − 4.51683) = 105.863 N, both constant: v = √(2 a h)
+    solution = solve_file(write(tmp_path, DRUM.format(extra="", load="")))
+    second = next(c for c in solution.checks if c.name.startswith("second method"))
+    assert second.passed and "v₂² = 2 a s" in second.detail
+    a = 20 * G * 0.16 / 6.95
+    assert second.detail.startswith("ΣF = m a_G") and f"{math.sqrt(2 * a * 2):.7g}" in second.detail
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and f"T = {20 * (G - a):.4g} ≥ 0" in taut.detail
+    assert "constant" in taut.detail
+
+
+def test_a_couple_that_unwinds_the_drum_faster_than_the_block_falls_slackens_the_cord(
+    tmp_path,
+):
+    # M = 2000 N·m cw on the drum: as one, α = (M + m_b g r)/(I_O + m_b r²) = 2078.48/6.95
+    # = 299.06 rad/s², a = α r = 119.6 m/s² > g, so T = m_b (g − a) = −2196 N < 0: the
+    # work–energy answer (block and drum moving as one) does not hold, and says so
+    text = DRUM.format(extra="  M = 2000 N*m\n", load="  couple M on drum: cw\n")
+    solution = solve_file(write(tmp_path, text))
+    taut = assumption(solution, "cord T taut between the states")
+    T = 20 * (G - 0.4 * (2000 + 20 * G * 0.4) / 6.95)
+    assert not taut.holds and f"T = {T:.4g} < 0" in taut.detail
+    assert not solution.passed
+
+
+def test_a_cord_between_two_drums_each_wound(tmp_path):
+    # drum 1 (I_1 = ½ 15 (0.2)² = 0.3 kg·m², r_1 = 0.2 m) lowers a 10-kg block from its right
+    # side and winds a horizontal cord from its top onto the top of drum 2 (I_2 = ½ 8 (0.1)²
+    # = 0.04 kg·m², r_2 = 0.1 m): ω_1 r_1 = v = ω_2 r_2, both cw.
+    # m g h = ½ (m + I_1/r_1² + I_2/r_2²) v² = ½ (10 + 7.5 + 4) v² → v = √(98.1/10.75)
+    text = """\
+given:
+  m = 10 kg
+  m_1 = 15 kg
+  m_2 = 8 kg
+  r_1 = 0.2 m
+  r_2 = 0.1 m
+  d = 1 m
+  h = 1 m
+scene:
+  point O_1: (0, 0)
+  point O_2: (-d, r_1 - r_2)
+  body one: mass m_1, disk r_1, at (0, 0)
+  body two: mass m_2, disk r_2, at (-d, r_1 - r_2)
+  body block: particle, mass m, at (r_1, -d)
+  pin one at O_1
+  pin two at O_2
+  cord T_1: one at (r_1, 0) to block, down   # points relative to each body's G
+  cord T_2: one at (0, r_1) to two at (0, r_2), left
+  gravity
+  travel block: by h, down
+find: v = speed(block), w_1 = omega2(one), w_2 = omega2(two)
+"""
+    solution = solve_file(write(tmp_path, text))
+    v = math.sqrt(98.1 / 10.75)
+    assert by_name(solution, "v").value == pytest.approx(v, rel=1e-9)
+    assert by_name(solution, "w_1").value == pytest.approx(v / 0.2, rel=1e-9)
+    assert by_name(solution, "w_2").value == pytest.approx(v / 0.1, rel=1e-9)
+    assert by_name(solution, "w_1").direction == by_name(solution, "w_2").direction == "cw"
+    # T_2 = I_2 α_2/r_2 with α_2 = a/r_2, a = v²/(2h): 0.04 (v²/2)/0.01 = 4·v²/2
+    taut = assumption(solution, "cord T_2 taut between the states")
+    assert taut.holds and f"T_2 = {0.04 * (v**2 / 2) / 0.01:.4g} ≥ 0" in taut.detail
+    assert solution.passed
+
+
+@pytest.mark.parametrize(
+    ("name", "answers"),
+    [
+        # m_b g h = ½ (m_b + I_O/r²) v², above: 4.250569 m/s, ω = v/0.4
+        ("drum_block_cord_energy", {"v": 4.250569, "omega_2": 10.62642}),
+        # (m_B − m_A sin θ − μk m_A cos θ) g s = ½ (m_A + m_B + ½ m_p) v²:
+        # (20 − 5 − 1.732051)(9.81)(1.5) = 195.2379 J = 16.5 v² → v = 3.439854, ω = v/0.15
+        ("incline_pulley_hanging_block", {"v": 3.439854, "v_A": 3.439854, "omega_2": 22.93236}),
+        # (m_B − m_A) g h = ½ (m_A + m_B + ½ m_p) v²: 70.632 = 10 v² → v = 2.657668, ω = v/0.15
+        ("pulley_two_blocks_energy", {"v": 2.657668, "v_A": 2.657668, "omega_2": 17.71779}),
+        # m g h = ¾ m v² → v = √(4 g h/3) = √(7.848) = 2.801428, ω = v/0.03
+        ("yoyo_cord_fixed_energy", {"v": 2.801428, "omega_2": 93.38094}),
+    ],
+)
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_the_bundled_cord_problems(name, answers, mode):
+    solution = solve_file(SCENES / f"{name}.dyn", SolveOptions(mode))
+    for answer, value in answers.items():
+        assert by_name(solution, answer).value == pytest.approx(value, rel=1e-6)
+    assert solution.passed
+    assert any(c.name.startswith("second method") and c.passed for c in solution.checks)
+
+
+def test_a_cord_tied_to_a_fixed_point_swings_and_is_refused(tmp_path):
+    text = """\
+given:
+  m = 2 kg
+  L = 1 m
+scene:
+  point O: (0, 0)
+  body bob: particle, mass m, at (L, 0)
+  cord T: bob at G, left, fixed
+  gravity
+  travel bob: to (0, -L)
+find: v = speed(bob)
+"""
+    with pytest.raises(SpecError, match="swings about it") as error:
+        solve_file(write(tmp_path, text))
+    assert error.value.position.line == 7
+
+
+def test_a_cord_whose_ends_would_move_apart_across_it_is_refused(tmp_path):
+    # the block slides right on the floor under the drum: the vertical cord would lean over
+    text = DRUM.format(extra="", load="  contact block at G: normal up\n").replace(
+        "travel block: by h, down", "travel block: by h, right"
+    )
+    with pytest.raises(SpecError, match="would change direction between the states"):
+        solve_file(write(tmp_path, text))
+
+
+def test_two_blocks_tied_by_a_cord_and_pulled_along_a_smooth_floor(tmp_path):
+    # P s = ½ (m_1 + m_2) v²: 50(2) = 5 v² → v = √20 = 4.472136 m/s, both blocks;
+    # a = P/(m_1 + m_2) = 5 m/s², T = m_1 a = 20 N (taut); the simulation follows both
+    text = """\
+given:
+  m_1 = 4 kg
+  m_2 = 6 kg
+  P = 50 N
+  s = 2 m
+  L = 1 m
+scene:
+  body one: particle, mass m_1, at (0, 0)
+  body two: particle, mass m_2, at (L, 0)
+  contact one at G: normal up
+  contact two at G: normal up
+  cord T: one at G to two, right
+  force P on two at G: right
+  gravity
+  travel two: by s, right
+find: v = speed(two), v_1 = speed(one)
+"""
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(20), rel=1e-9)
+    assert by_name(solution, "v_1").value == pytest.approx(math.sqrt(20), rel=1e-9)
+    assert assumption(solution, "cord T taut").detail == "T = 20 ≥ 0"
+    assert next(c for c in solution.checks if c.name == "simulation").passed
+    assert solution.passed
+
+
+def test_a_cord_tied_to_the_end_of_a_turning_bar_is_refused(tmp_path):
+    # the bar's end goes round the pin, so the hanging cord would lean: not a wound drum
+    text = """\
+given:
+  m = 6 kg
+  L = 1 m
+  m_b = 2 kg
+  h = 0.1 m
+scene:
+  point O: (0, 0)
+  body bar: mass m, rod L, at (L/2, 0)
+  body block: particle, mass m_b, at (L, -L)
+  pin bar at O
+  cord T: bar at (L/2, 0) to block, down
+  gravity
+  travel block: by h, down
+find: v = speed(block)
+"""
+    with pytest.raises(SpecError, match="tied to a point of bar, which turns") as error:
+        solve_file(write(tmp_path, text))
+    assert error.value.position.line == 11
+
+
+def test_a_block_pushed_across_the_cord_it_hangs_on_is_refused(tmp_path):
+    # a horizontal push would swing the hanging block: its cord would lean
+    text = DRUM.format(extra="  P = 50 N\n", load="  force P on block at G: right\n")
+    with pytest.raises(SpecError, match="acts across the cord: it would swing"):
+        solve_file(write(tmp_path, text))
+
+
+def test_a_push_along_the_cord_adds_its_work(tmp_path):
+    # P = 50 N down on the block: (m_b g + P) h = ½ (m_b + I_O/r²) v²:
+    # (196.2 + 50)(2) = 21.71875 v² → v = √(492.4/21.71875) = 4.761476 m/s
+    text = DRUM.format(extra="  P = 50 N\n", load="  force P on block at G: down\n")
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(492.4 / 21.71875), rel=1e-9)
+    assert solution.passed
+
+
+def test_the_block_moving_down_at_state_1_counts_in_T1(tmp_path):
+    # v_1 = 2 m/s down, the drum turning at v_1/r: T1 = 21.71875 (2²) = 86.875 J;
+    # T2 = T1 + m_b g h → v = √((86.875 + 392.4)/21.71875) = 4.697589 m/s
+    text = DRUM.format(extra="  v_1 = 2 m/s\n", load="  velocity block: v_1, down\n")
+    solution = solve_file(write(tmp_path, text))
+    expected = math.sqrt((86.875 + 392.4) / 21.71875)
+    assert by_name(solution, "v").value == pytest.approx(expected, rel=1e-9)
+    assert solution.passed
+
+
+def test_a_drum_winds_a_block_up_a_smooth_incline(tmp_path):
+    # a couple M = 100 N·m cw on the drum (I_O = 30(0.2)² = 1.2 kg·m², r = 0.25 m) winds
+    # in the cord tied to a 20-kg block on a smooth 30° incline; the block moves s = 1.5 m
+    # up: Δθ = s/r = 6 rad. M Δθ − m g s sin θ = ½ (m + I_O/r²) v²:
+    # 600 − 147.15 = 452.85 J = ½ (20 + 19.2) v² → v = √(452.85/19.6) = 4.806715 m/s
+    text = """\
+given:
+  m_d = 30 kg
+  k_O = 0.2 m
+  r = 0.25 m
+  m = 20 kg
+  theta = 30 deg
+  M = 100 N*m
+  s = 1.5 m
+scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m, at (-r*sin(theta) - 4*r*cos(theta), r*cos(theta) - 4*r*sin(theta))
+  pin drum at O
+  contact block at G: normal (-sin(theta), cos(theta))
+  cord T: drum at (-r*sin(theta), r*cos(theta)) to block, (-cos(theta), -sin(theta))
+  couple M on drum: cw
+  gravity
+  travel block: by s, angle theta
+find: v = speed(block)
+"""
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(452.85 / 19.6), rel=1e-9)
+    assert solution.passed
+    assert "U_M = M Δθ" in solution.equations[0].note
+
+
+def test_a_cord_wound_on_top_of_a_rolling_wheel_moves_twice_as_far_as_its_centre(tmp_path):
+    # the cord leaves the top of the wheel (disk, m = 8 kg, R = 0.3 m) rolling without
+    # slip; block B (5 kg, smooth table) is pulled by P = 30 N through s = 1 m. The top
+    # moves 2 s_G, so v_G = v/2, ω = v/(2R): P s = ½ v² (m_B + m/4 + ½ m R²/(4R²)) = 4 v²
+    # → v = √7.5 = 2.738613 m/s, v_G = 1.369306 m/s; a = v²/(2s) = 3.75 m/s² and
+    # T = P − m_B a = 11.25 N (taut)
+    text = """\
+given:
+  m = 8 kg
+  R = 0.3 m
+  m_B = 5 kg
+  P = 30 N
+  s = 1 m
+  L = 2 m
+scene:
+  point C: (0, 0)
+  body wheel: mass m, disk R, at (0, R)
+  body B: particle, mass m_B, at (L, 2*R)
+  rolls wheel at C: normal up
+  contact B at G: normal up
+  cord T: wheel at (0, R) to B, right
+  force P on B at G: right
+  gravity
+  travel B: by s, right
+find: v = speed(B), v_G = speed(wheel)
+"""
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(7.5), rel=1e-9)
+    assert by_name(solution, "v_G").value == pytest.approx(math.sqrt(7.5) / 2, rel=1e-9)
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and taut.detail.startswith("T = 11.25 ≥ 0")
+    assert solution.passed
+
+
+@pytest.mark.parametrize(("E", "swings"), [("(r, -2*r - L_0)", False), ("(r + L_0, -2*r)", True)])
+def test_a_spring_on_the_hanging_block_along_or_across_its_cord(tmp_path, E, swings):
+    # along (E below the block, spring unstretched at state 1, k = 50 N/m): it is
+    # compressed by h = 2 m on the way down, U_S = −½ k h² = −100 J:
+    # 392.4 − 100 = 21.71875 v² → v = √(292.4/21.71875) = 3.669202 m/s.
+    # Across (E to the right): the block would be pulled off the cord's line: refused.
+    text = DRUM.format(
+        extra="  k = 50 N/m\n  L_0 = 3 m\n",
+        load=f"  point E: {E}\n  spring S: block at G to E, k k, unstretched L_0\n",
+    )
+    if swings:
+        with pytest.raises(SpecError, match="a spring or its velocity acts across the cord"):
+            solve_file(write(tmp_path, text))
+        return
+    solution = solve_file(write(tmp_path, text))
+    assert by_name(solution, "v").value == pytest.approx(math.sqrt(292.4 / 21.71875), rel=1e-9)
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and "checked there only" in taut.detail  # the spring's force changes
