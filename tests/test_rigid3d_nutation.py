@@ -299,3 +299,26 @@ def test_a_scene_asked_only_for_its_motion_writes_no_equations():
     assert found["H_y"] == pytest.approx(m * r**2 * 2.4525 / 4, rel=1e-12)
     assert found["v_z"] == pytest.approx(-2.4525 * d, rel=1e-12)
     assert solution.equations == () and solution.passed
+
+
+def test_a_tilted_top_precesses_slowly_or_fast_as_the_assume_line_says():
+    # newcomer report: a top tilted 60° could not be written, nor its slow precession chosen.
+    # Hand (Hibbeler eq. 21-30, problems/rigid3d/top_steady_precession.dyn):
+    # −0.00039375 ω_p² + 0.10125 ω_p − 0.24525 = 0 → 2.445479 or 254.6974 rad/s
+    from pathlib import Path
+
+    from dynsolve.pipeline import solve_text
+
+    path = Path(__file__).parent.parent / "problems" / "rigid3d" / "top_steady_precession.dyn"
+    text = path.read_text().split("answers:")[0]
+    a, b, c = -0.00039375, 0.10125, -0.24525
+    slow = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
+    fast = (-b - math.sqrt(b * b - 4 * a * c)) / (2 * a)
+    for bound, expected in (("W_p < w_s", slow), ("W_p > w_s", fast)):
+        solution = solve_text(text.replace("W_p < w_s", bound), "top.dyn")
+        assert all(check.passed for check in solution.checks)
+        W_p, O_x, O_y = solution.answers
+        assert W_p.value == pytest.approx(expected, rel=1e-6)
+        # signed (no key words here): O_x = m a_Gx = −m ω_p² r_G sin θ, toward the axis
+        assert O_x.value == pytest.approx(-0.5 * expected**2 * 0.05 * math.sin(math.pi / 3))
+        assert O_y.value == pytest.approx(0.5 * 9.81)
