@@ -53,3 +53,14 @@ def test_nothing_is_cut(path: Path, width: int) -> None:
     for equation in solution.equations:
         for word in words(equation.text, 8):
             assert word in out, (equation.line, word)
+
+
+def test_a_scene_without_equations_says_so_instead_of_an_empty_table():
+    # Hibbeler 12e Example 20.2 asks only for ω and α: every value is a formula of the
+    # givens, so there is no equation to show (was an empty table header)
+    path = Path(__file__).parent.parent / "problems" / "rigid3d" / "gyrotop_nutation.dyn"
+    console = Console(file=io.StringIO(), width=100, color_system=None)
+    console.print(solution_renderable(solve_file(path)))
+    text = console.file.getvalue()
+    assert "No equations: every value asked follows from the givens." in text
+    assert "line  equation  units" not in text

@@ -138,7 +138,9 @@ def _energy(solution: Solution) -> Table:
     return table
 
 
-def _equations(solution: Solution) -> Table:
+def _equations(solution: Solution) -> RenderableType:
+    if not solution.equations:  # a kinematics-only scene: its values come from formulas
+        return Text("No equations: every value asked follows from the givens.")
     return _equation_table(solution.equations)
 
 
