@@ -708,7 +708,7 @@ def test_a_bad_onset_or_angle_gets_a_positioned_error(find, message):
 
 def test_an_assume_line_must_bound_an_unknown():
     text = steady_bar().replace("assume theta_s < pi/2", "assume pi > 3")
-    with pytest.raises(SpecError, match="bounds an unknown angle") as error:
+    with pytest.raises(SpecError, match="bounds an unknown of the scene") as error:
         solve_text(text, "s.dyn")
     assert error.value.position is not None and error.value.position.line == 13
 
