@@ -8,9 +8,11 @@ n-unknown linear system with n-term sums built from a known solution. Each size 
 after a warm-up, sympy's cache cleared, ``--repeat`` times (1 by default); the figure is the
 least CPU time (``process_time``) of parse + build + solve + checks (on a shared machine a
 single run can be slowed by the others' load), and the growth exponent is the log-log
-slope between the two largest sizes. The baseline, in the same run, is
-``numpy.linalg.solve`` of the same linear system (what a hand-written numeric script would
-do).
+slope between the two largest sizes. The solver is imported as the CLI's worker imports
+it (:func:`dynsolve.startup.import_solver`: the import's objects frozen out of the garbage
+collector's passes), so the figure is the work a `dynsolve solve` of the spec does. The
+baseline, in the same run, is ``numpy.linalg.solve`` of the same linear system (what a
+hand-written numeric script would do).
 
     python bench/scaling.py [--repeat N] [--no-write]
 """
@@ -26,6 +28,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
+
+from dynsolve.startup import import_solver  # noqa: E402
+
+import_solver()  # as the CLI's worker does, before anything else of dynsolve
 
 import numpy as np  # noqa: E402
 import sympy  # noqa: E402

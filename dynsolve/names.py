@@ -9,6 +9,7 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 GREEK = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -23,6 +24,7 @@ _ACCENTS = {"dot": "\\dot", "ddot": "\\ddot", "hat": "\\hat", "bar": "\\bar"}
 _TRAILING_DIGITS = re.compile(r"^([A-Za-z]+?)(\d+)$")
 
 
+@lru_cache(maxsize=8192)  # a scene's few hundred names, asked for by every row they are in
 def pretty(name: str) -> str:
     """The name with Greek words replaced by letters (``omega_CD`` → ``ω_CD``)."""
     head, *rest = name.split("_")
@@ -34,6 +36,7 @@ def pretty(name: str) -> str:
     return "_".join([head + digits, *(GREEK.get(part, part) for part in rest)])
 
 
+@lru_cache(maxsize=8192)
 def latex_name(name: str) -> str:
     """The name as LaTeX math: ``k_G`` → ``k_{G}``, ``theta_dot`` → ``\\dot{\\theta}``."""
     head, *rest = name.split("_")

@@ -223,12 +223,41 @@ def _symbolic_denominator(expr: sympy.Expr) -> bool:
 
 def _worth_simplifying(expr: sympy.Expr) -> bool:
     """A small form with a sine and a cosine of the same angle, where ``simplify`` may still
-    find an identity the cheap forms miss (``sin(u)*cos(u) = sin(2*u)/2``). Elsewhere it
-    hardly ever finds a shorter form in the bundled problems (8 of 98 calls, 2026-11-24)."""
+    find an identity the cheap forms miss (``sin(u)*cos(u) = sin(2*u)/2``), unless every
+    sine and cosine stands alone in its term, of a plain angle (``a*sin(u) + b*cos(u)``):
+    no identity shortens that (a spring on an incline spent 0.3 s in it, 2026-11-25).
+    Elsewhere it hardly ever finds a shorter form in the bundled problems (8 of 98 calls,
+    2026-11-24).
+
+    >>> u, v, a, b = sympy.symbols("u v a b")
+    >>> _worth_simplifying(a * sympy.sin(u) * sympy.cos(u) + b)
+    True
+    >>> _worth_simplifying(sympy.sin(u + v) - sympy.sin(u) * sympy.cos(v) + sympy.cos(u))
+    True
+    >>> _worth_simplifying(sympy.sqrt(a * sympy.sin(u) + b * sympy.cos(u)))
+    False
+    """
     if sympy.count_ops(expr) > SIMPLIFY_OPS:
         return False
     sines = {f.args[0] for f in expr.atoms(sympy.sin)}
-    return any(f.args[0] in sines for f in expr.atoms(sympy.cos))
+    if not any(f.args[0] in sines for f in expr.atoms(sympy.cos)):
+        return False
+    return any(_trigonometric_interplay(node) for node in sympy.preorder_traversal(expr))
+
+
+def _is_trig(expr: sympy.Expr) -> bool:
+    return isinstance(expr, sympy.sin | sympy.cos)
+
+
+def _trigonometric_interplay(node: sympy.Expr) -> bool:
+    """A sine or cosine of a sum, a power of one (not the first), or a product of two."""
+    if _is_trig(node):
+        return node.args[0].is_Add
+    if node.is_Pow:
+        return _is_trig(node.base) and node.exp != 1
+    if node.is_Mul:
+        return sum(_is_trig(factor.as_base_exp()[0]) for factor in node.args) >= 2
+    return False
 
 
 def mpmath_function(

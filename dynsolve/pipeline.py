@@ -749,6 +749,8 @@ class _View:
         self.dims = problem.dims.dims
         self.pretty_symbols = {s: sympy.Symbol(pretty(n)) for n, s in problem.symbols.items()}
         self.latex_symbols = {s: latex_name(n) for n, s in problem.symbols.items()}
+        self._prints: dict[tuple[str, sympy.Expr], str] = {}
+        self._substituted: dict[sympy.Expr, tuple[str, str] | None] = {}
 
     # ---- helpers
     def used(self, given: GivenInfo) -> bool:
@@ -804,10 +806,24 @@ class _View:
         return natural_unit(dim, self.system, name)
 
     def text(self, expr: sympy.Expr) -> str:
-        return sympy.sstr(expr.xreplace(self.pretty_symbols)).replace("**", "^")
+        return self._printed("text", expr)
 
     def latex(self, expr: sympy.Expr) -> str:
-        return sympy.latex(expr, symbol_names=self.latex_symbols)
+        return self._printed("latex", expr)
+
+    def _printed(self, kind: str, expr: sympy.Expr) -> str:
+        """``expr`` printed as text or LaTeX, each form once: a big scene shows the same
+        formula for many rows (every block's I_G = m w²/6, every cord's P/(n m)). (Floats
+        of other precisions are other keys: sympy's Float(0.5, 15) != Float(0.5, 30).)"""
+        key = (kind, expr)
+        printed = self._prints.get(key)
+        if printed is None:
+            if kind == "text":
+                printed = sympy.sstr(expr.xreplace(self.pretty_symbols)).replace("**", "^")
+            else:
+                printed = sympy.latex(expr, symbol_names=self.latex_symbols)
+            self._prints[key] = printed
+        return printed
 
     def number(self, expr: sympy.Expr) -> float | None:
         return real_value(expr)
@@ -951,7 +967,17 @@ class _View:
         the work M θ of a couple, in radians)."""
         if isinstance(formula, sympy.Symbol):
             return None
-        values = {**self.solved, **extra} if extra else self.solved
+        if extra:
+            return self._hand_calculation(formula, {**self.solved, **extra})
+        if formula in self._substituted:  # a form shown for many rows: written once
+            return self._substituted[formula]
+        written = self._hand_calculation(formula, self.solved)
+        self._substituted[formula] = written
+        return written
+
+    def _hand_calculation(
+        self, formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]
+    ) -> tuple[str, str] | None:
         numbers: dict[sympy.Symbol, float] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None

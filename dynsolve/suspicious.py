@@ -92,6 +92,8 @@ def _one_slip(a: str, b: str) -> bool:
 
 def _bare_angles(spec: Spec) -> Iterator[tuple[str, str]]:
     bare = {g.name: g for g in spec.givens if g.quantity is not None and g.quantity.unit is None}
+    if not bare:  # no given without a unit: no walk of the whole spec
+        return
     seen: set[str] = set()
     for reader, expr in _angle_uses(spec):
         for name in iter_names(expr):

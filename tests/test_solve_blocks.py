@@ -41,6 +41,32 @@ def test_linear_block_gives_exact_rationals_and_symbolic_formulas():
     assert sympy.simplify(candidate.formulas[a] - g * m / (k + m)) == 0
 
 
+@pytest.mark.parametrize(
+    ("coefficient", "rhs", "by_hand"),
+    [
+        # N - m g - m a = 0 for N: N = a m + g m (a block of one contact's normal force)
+        (1, g * m + m * h, g * m + h * m),
+        # 2 x = m (g + h)**2 / 3: x = m (g² + 2 g h + h²)/6, distributed as monomials
+        (2, m * (g + h) ** 2 / 3, g**2 * m / 6 + g * h * m / 3 + h**2 * m / 6),
+        # -3/7 x = 0: x = 0
+        (Rational(-3, 7), 0, 0),
+    ],
+)
+def test_a_block_of_one_unknown_is_the_fields_reduced_form(coefficient, rhs, by_hand):
+    # a number times x = a polynomial: solved without building the polynomial field, the
+    # formula must be the very expression (not only an equal one) the field's RREF gives
+    from sympy.polys.matrices import DomainMatrix
+
+    from dynsolve.solver.blocks import linear_solution
+
+    matrix, column = sympy.Matrix([[coefficient]]), sympy.Matrix([rhs])
+    (found,) = linear_solution(matrix, column, (x,))
+    reduced, _ = DomainMatrix.from_Matrix(matrix.row_join(column)).to_field().rref()
+    by_field = reduced.to_Matrix()[0, 1]
+    assert sympy.srepr(found) == sympy.srepr(by_field)
+    assert sympy.expand(found - by_hand) == 0
+
+
 def test_numeric_mode_linear_block_gives_floats():
     solution = solve_block([3 * x - 1], [x], {}, SolveOptions(mode="numeric"))
     value = solution.candidates[0].values[x]

@@ -753,7 +753,7 @@ def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> Equa
 
     assert isinstance(equation, Equation)
     used = equation.residual.free_symbols  # not every symbol: n² for n bodies
-    pretty_names = {s: sympy.Symbol(pretty(s.name)) for s in used}
+    pretty_names = {s: sympy.Symbol(pretty(s.name)) for s in used if pretty(s.name) != s.name}
     latex_names = {s: latex_name(s.name) for s in used}
     try:
         dim = sympy_dimension(equation.residual, dims)
@@ -763,8 +763,12 @@ def _row(equation: object, dims: Mapping[sympy.Symbol, Dim], spec: Spec) -> Equa
             f"{equation.note}: {exc.message}", Position(spec.file, 1, 1), exc.hint
         ) from None
     lhs, rhs = equation.lhs, equation.rhs
-    text = f"{sympy.sstr(lhs.xreplace(pretty_names))} = {sympy.sstr(rhs.xreplace(pretty_names))}"
-    latex = sympy.latex(sympy.Eq(lhs, rhs, evaluate=False), symbol_names=latex_names)
+    if pretty_names:  # Greek letters: the terms reorder as the new names sort
+        lhs, rhs = lhs.xreplace(pretty_names), rhs.xreplace(pretty_names)
+    text = f"{sympy.sstr(lhs)} = {sympy.sstr(rhs)}"
+    latex = sympy.latex(
+        sympy.Eq(equation.lhs, equation.rhs, evaluate=False), symbol_names=latex_names
+    )
     unit = natural_unit(dim, spec.system) or "1"
     return EquationRow(
         equation.line,
