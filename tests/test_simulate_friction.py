@@ -78,3 +78,34 @@ def test_a_simulation_over_its_time_budget_stops_with_the_step_named(tmp_path):
     assert result.exit_code == 2
     assert "time budget of 2 s, while integrating the motion in time" in result.output
     assert "--t-end" in result.output  # the hint fits a simulation
+
+
+def test_a_block_that_stops_on_the_side_it_came_from_does_not_hang():
+    # regression (newcomer, round 3): 10 lb, k = 20 lb/ft, μs = μk = 0.2, released 0.93 ft
+    # stretched. By hand the amplitude drops by 2 μ W/k = 0.2 ft per half swing: x = 0.93,
+    # −0.73, 0.53, −0.33, 0.13; from 0.13 the block swings about +0.1 ft (the friction's
+    # offset μ W/k) and stops at 0.07 ft, on the side it came from, where k x = 1.4 lb ≤
+    # μs W = 2 lb holds it: at rest from t = 5 π √(m/k) = 1.957388 s. The integrator used to
+    # creep toward q' = 0 there with ever smaller steps (minutes, then the budget).
+    text = """\
+units: FPS
+given:
+  W = 10 lb
+  k = 20 lb/ft
+  mu = 0.2
+  x_0 = 0.93 ft
+  L_0 = 2 ft
+scene:
+  point A: (-L_0, 0)
+  body block: particle, weight W, at (x_0, 0)
+  contact block at G: normal up, mu_s mu, mu_k mu
+  spring S: block at G to A, k k, unstretched L_0
+  gravity
+"""
+    history = simulate_spec(parse_spec(text, "fps.dyn"), None, 2.5)
+    half = math.pi * math.sqrt(10 / 32.2 / 20)
+    stops = [e for e in history.events if e[0] in ("max", "min")]
+    x = [0.93 + e[2] for e in stops]
+    assert x == pytest.approx([-0.73, 0.53, -0.33, 0.13, 0.07], abs=1e-8)
+    (rest,) = [e for e in history.events if e[0] == AT_REST]
+    assert rest[1] == pytest.approx(5 * half, rel=1e-8)

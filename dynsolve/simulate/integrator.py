@@ -106,13 +106,16 @@ def integrate(
     pieces: list[tuple[np.ndarray, np.ndarray]] = []
     met: list[tuple[str, float, float, float]] = []
     stopped, last = "", None
-    stop = Event(_STOP, lambda q, qd: qd, 0, True)
+    peak = [0.0]  # the segment's largest speed (friction: its stop is judged against it)
     for _ in range(MAX_STOPS):
         if fast is None and state[1] == 0 and motion.holds(state[0]):
             met.append((AT_REST, t0, state[0], 0.0))
             pieces.append(_at_rest(state, t0, t_end, t_eval))
             break
-        watched = [*events, stop] if fast is None else list(events)
+        watched = list(events)
+        if fast is None:  # friction: this segment ends where it slows to nearly q' = 0
+            peak[0] = abs(state[1])
+            watched.append(_stop_event(motion, state, peak))
         grid = None if t_eval is None else t_eval[t_eval >= t0]
         solution = solve_ivp(
             rhs,
@@ -145,11 +148,16 @@ def integrate(
                     last = (float(t), float(y[0]), float(y[1]), float(y[2]) if len(y) > 2 else 0.0)
         if stopped or solution.status != 1 or at_stop is None:
             break
-        t0, y = at_stop  # friction changes sense here, or holds the body
-        before = float(solution.y[1][-1]) if solution.y.shape[1] else 0.0
-        met += _turns(events, met, t0, float(y[0]), before)
+        t0, y = _stopped(motion, *at_stop)  # friction changes sense here, or holds the body
+        before = float(at_stop[1][1])
+        turns = _turns(events, met, t0, float(y[0]), before)
+        met += turns
         state = [float(y[0]), 0.0, float(y[2])]
         pieces.append((np.array([t0]), np.array([[state[0]], [0.0], [state[2]]])))
+        terminal = [e.name for e in events if e.terminal and e.name in {n for n, *_ in turns}]
+        if terminal:  # the --until event is this stop (a maximum of q)
+            stopped, last = terminal[0], (t0, state[0], 0.0, state[2])
+            break
     met.sort(key=lambda item: item[1])
     t = np.concatenate([p[0] for p in pieces])
     ys = np.concatenate([p[1] for p in pieces], axis=1)
@@ -165,6 +173,39 @@ def integrate(
 
 
 _STOP = "q' = 0 (friction turns)"
+SLOW = 1e-7  # a segment under friction ends at this fraction of its largest speed
+
+
+def _stop_event(motion: OneDof, state: Sequence[float], peak: list[float]) -> Event:
+    """Where a segment under friction stops: its speed falls to :data:`SLOW` of its largest.
+
+    Not at q' = 0 itself: there kinetic friction's sense flips, and where static friction
+    holds the body the right-hand side jumps back and forth across q' = 0, so an
+    integrator's steps shrink toward it without end (a block on a spring that stops on
+    the side it came from ran for minutes). The last bit, at the constant deceleration
+    there, is added in closed form (:func:`_stopped`).
+    """
+    q0, qd0 = state[0], state[1]
+    sense = math.copysign(1.0, qd0 if qd0 else motion.acceleration(q0, 0.0))
+
+    def slowing(q: float, qd: float) -> float:  # at accepted steps (not trial stages)
+        peak[0] = max(peak[0], abs(qd))
+        return sense * qd - SLOW * peak[0]
+
+    return Event(_STOP, slowing, -1, True)
+
+
+def _stopped(motion: OneDof, t: float, y: np.ndarray) -> tuple[float, np.ndarray]:
+    """The time and state where a body slowed to ``y`` at ``t`` comes to rest, at the
+    deceleration a it has there: Δt = |q'|/|a|, Δq = q'²/(2a) (with the friction's work)."""
+    q, qd = float(y[0]), float(y[1])
+    qdd, power = motion.rates(q, qd)
+    if qd == 0 or qdd == 0 or qd * qdd > 0:
+        return t, np.array([q, 0.0, float(y[2])])
+    dt = -qd / qdd
+    return t + dt, np.array([q + 0.5 * qd * dt, 0.0, float(y[2]) + 0.5 * power * dt])
+
+
 AT_REST = "at rest"  # static friction holds the body where it stopped
 MAX_STOPS = 100_000  # stops of a body under friction in one run (each a new solve_ivp)
 
