@@ -109,3 +109,17 @@ scene:
     assert x == pytest.approx([-0.73, 0.53, -0.33, 0.13, 0.07], abs=1e-8)
     (rest,) = [e for e in history.events if e[0] == AT_REST]
     assert rest[1] == pytest.approx(5 * half, rel=1e-8)
+
+
+def test_a_travel_of_unknown_extent_gets_a_hint_that_fits_a_simulation(tmp_path):
+    # newcomer report (round 3): "'d' in the scene is not a given (hint: declare it under
+    # given:)" sent them to declare what `solve` finds
+    file = tmp_path / "drop.dyn"
+    file.write_text(
+        "given:\n  m = 2 kg\n  k = 100 N/m\n  L = 1 m\nscene:\n  point A: (0, L)\n"
+        "  body b: particle, mass m, at (0, 0)\n  spring S: b at G to A, k k, unstretched L\n"
+        "  gravity\n  travel b: by d, down, stops\nfind: d\n"
+    )
+    result = CliRunner().invoke(app, ["simulate", str(file)])
+    assert result.exit_code == 2
+    assert "leave the travel line out" in result.output and "--until" in result.output

@@ -346,7 +346,10 @@ def simulate_spec(
     givens = givens_of(spec)
     symbols = {g.name: g.symbol for g in givens}
     values = {g.symbol: g.value for g in givens if g.value is not None}
-    scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
+    try:
+        scene = build_scene(spec, symbols, {g.name: g.dim for g in givens}, values)
+    except SpecError as error:
+        raise _travel_hint(error, spec) from None
     contact = None
     try:
         guided = any(t.kind not in ("for", "until") for t in scene.travels.values())
@@ -396,6 +399,21 @@ def simulate_spec(
         constant,
         contact,
         missed,
+    )
+
+
+def _travel_hint(error: SpecError, spec: Spec) -> SpecError:
+    """A name that is not a given on a travel line: a simulation has nothing to put there
+    (``solve`` finds it), so the hint says what to do instead."""
+    line = error.position.line if error.position is not None else 0
+    on_travel = any(s.kind == "travel" and s.line == line for s in spec.scene or ())
+    if not on_travel or "is not a given" not in error.message:
+        return error
+    return SpecError(
+        error.message,
+        error.position,
+        hint="a simulation starts from the scene's state and needs no travel: leave the "
+        "travel line out (or give its extent a value), and stop the run with --until",
     )
 
 
