@@ -377,3 +377,28 @@ def test_a_root_search_keeps_angles_in_one_turn():
     steady = math.acos(3 * 9.81 / (2 * 1.2 * 16))
     for expected in (-steady, steady):
         assert any(v == pytest.approx(expected, rel=1e-12) for v in values)
+
+
+def test_an_angle_inside_one_cosine_is_solved_through_the_cosine():
+    # regression (scale helper): a particle leaving a cylinder from 20° off its top waited
+    # out the 5 s symbolic budget on cos(θ + φ0), twice, then searched numerically (5.2 s).
+    # By hand (energy and N = 0): v² = 2 g R (cos φ0 − cos(θ+φ0)) and v² = g R cos(θ+φ0), so
+    # cos(θ + φ0) = (2/3) cos φ0 and θ = acos(2 cos φ0 / 3) − φ0 (or −acos(…) − φ0)
+    v = sympy.Symbol("v", positive=True)
+    t = sympy.Symbol("theta", real=True)
+    R, gg, p = sympy.symbols("R g phi_0", positive=True)
+    residuals = [
+        R * gg * (sympy.cos(p) - sympy.cos(t + p)) - v**2 / 2,
+        gg * sympy.cos(t + p) - v**2 / R,
+    ]
+    given = {R: sympy.Rational(3, 2), gg: sympy.Rational(981, 100), p: sympy.pi / 9}
+    solution = solve_block(residuals, [v, t], given, SolveOptions(time_budget=5.0))
+    assert solution.method == "symbolic"
+    angles = sorted(float(c.values[t]) for c in solution.candidates)
+    phi = math.pi / 9
+    expected = sorted(
+        (math.acos(2 * math.cos(phi) / 3) - phi, -math.acos(2 * math.cos(phi) / 3) - phi)
+    )
+    assert angles == pytest.approx(expected, rel=1e-12)
+    formulas = {sympy.sstr(c.formulas[t]) for c in solution.candidates if t in c.formulas}
+    assert "-phi_0 + acos(2*cos(phi_0)/3)" in formulas

@@ -767,7 +767,7 @@ def _solve_symbolically(
     as letters; if that fails, the rest to solving with the numbers substituted (a
     block without knowns gets one attempt with the whole budget).
     """
-    deadline = time.monotonic() + options.time_budget
+    deadline = time.process_time() + options.time_budget  # CPU seconds, as the budget
     reasons: list[str] = []
     nothing_given = substituted == residuals  # then one symbolic attempt says it all
     if options.show_formulas:
@@ -777,7 +777,7 @@ def _solve_symbolically(
             return attempt, ""
         reasons.append(reason)
     if not (reasons and nothing_given):
-        seconds = deadline - time.monotonic()
+        seconds = deadline - time.process_time()
         attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None)
         if attempt is not None:
             return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else ""), ""
@@ -806,11 +806,16 @@ def _symbolic_candidates(
         targets: object = unknowns[0]
     else:
         problem, targets = residuals, list(unknowns)
+    reduced = _one_trig_atom(residuals, unknowns)
+    if reduced is not None:  # cos(θ + φ0) as one unknown c: an algebraic block, then θ
+        problem, targets = reduced.residuals, list(reduced.unknowns)
     try:
         # sympy's own simplify of every root costs more than the solve; tidy() does it cheaply
         roots, timed_out = _within_budget(
             lambda: _tidy_roots(
-                sympy.solve(problem, targets, dict=True, simplify=False, check=check)
+                _back(
+                    reduced, sympy.solve(problem, targets, dict=True, simplify=False, check=check)
+                )
             ),
             seconds,
         )
@@ -880,6 +885,78 @@ def _holds(
         if not math.isfinite(size) or size > UNCHECKED_RESIDUAL * scale:
             return False
     return True
+
+
+@dataclass(frozen=True)
+class _TrigReduced:
+    """A block whose unknown ``angle`` enters only through one atom cos/sin/tan(angle + c),
+    with that atom replaced by the unknown ``atom``."""
+
+    residuals: list[sympy.Expr]
+    unknowns: tuple[sympy.Symbol, ...]
+    angle: sympy.Symbol
+    atom: sympy.Symbol
+    call: sympy.Expr  # the replaced cos(angle + c)
+
+
+def _one_trig_atom(
+    residuals: Sequence[sympy.Expr], unknowns: Sequence[sympy.Symbol]
+) -> _TrigReduced | None:
+    """The block with an angle that enters only as one cos, sin or tan of itself plus a
+    constant (a particle leaving a circle from off its top: cos(θ + φ0)) rewritten with
+    that function's value as the unknown: sympy solves the algebraic block at once where
+    it spends seconds on the trigonometric one. None when there is no such angle.
+
+    >>> t, v, p = sympy.symbols("theta v phi", real=True)
+    >>> r = _one_trig_atom([v**2 - 2 * (1 - sympy.cos(t + p)), v**2 - sympy.cos(t + p)], [v, t])
+    >>> r.angle, r.call
+    (theta, cos(phi + theta))
+    """
+    exprs = [sympy.Integer(0) + r for r in residuals]
+    for angle in unknowns:
+        calls = {
+            c
+            for e in exprs
+            for c in e.atoms(sympy.cos, sympy.sin, sympy.tan)
+            if angle in c.free_symbols
+        }
+        if len(calls) != 1:
+            continue
+        (call,) = calls
+        rest = call.args[0] - angle
+        if angle in rest.free_symbols or set(unknowns) & rest.free_symbols:
+            continue
+        atom = sympy.Dummy(f"{call.func.__name__}_{angle.name}", real=True)
+        replaced = [e.xreplace({call: atom}) for e in exprs]
+        if any(angle in e.free_symbols for e in replaced):
+            continue
+        others = tuple(u for u in unknowns if u != angle)
+        return _TrigReduced(replaced, (*others, atom), angle, atom, call)
+    return None
+
+
+def _back(
+    reduced: _TrigReduced | None, roots: list[dict[sympy.Symbol, sympy.Expr]]
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """The roots of a reduced block in its own unknowns: each value of the function gives
+    the angle's roots within one turn (cos: ±acos; sin: asin and π − asin; tan: atan)."""
+    if reduced is None:
+        return roots
+    shift = reduced.call.args[0] - reduced.angle
+    out = []
+    for root in roots:
+        if reduced.atom not in root:
+            continue
+        value = root[reduced.atom]
+        inverse = {
+            sympy.cos: (sympy.acos(value), -sympy.acos(value)),
+            sympy.sin: (sympy.asin(value), sympy.pi - sympy.asin(value)),
+            sympy.tan: (sympy.atan(value),),
+        }[reduced.call.func]
+        rest = {u: x for u, x in root.items() if u != reduced.atom}
+        for branch in dict.fromkeys(inverse):
+            out.append({**rest, reduced.angle: branch - shift})
+    return out
 
 
 def _tidy_roots(roots: list[dict[sympy.Symbol, sympy.Expr]]) -> list[dict]:
