@@ -461,3 +461,31 @@ find: v = speed(A)
 """
     with pytest.raises(SpecError, match=r"cord T2 between pulley and B would be -1.75 long"):
         solve_file(write(tmp_path, text))
+
+
+def test_a_spring_on_the_drums_rim_is_carried_round_when_the_tension_is_sampled(tmp_path):
+    # the spring from the drum's left rim point A = (−r, 0) to F = (−r, −L_0) (unstretched at
+    # state 1) turns with the drum: after the block falls x, θ = x/r cw, A = (−r cos θ, r sin θ),
+    # V_S = ½ k (ℓ − L_0)², ℓ = |A − F|. Block: m_b a = m_b g − T; energy:
+    # (m_b + I_O/r²) a = m_b g − dV_S/dx, dV_S/dx = k (ℓ − L_0) ((A − F)·dA/dθ)/(ℓ r). At x = h
+    # = 0.3 m: θ = 1.5 rad, ℓ = 0.723768 m, dV_S/dx = 7.2615 N, a = 2.78590 m/s², T = 35.12 N
+    text = SPRING_BELOW.replace("k = 500 N/m", "k = 100 N/m").replace("h = 0.15 m", "h = 0.3 m")
+    text = text.replace("(r, -3*r - L_0)", "(-r, -L_0)").replace(
+        "block at G to F", "drum at (-r, 0) to F"
+    )
+    r, k, L_0, h = 0.2, 100, 0.5, 0.3
+    theta = h / r
+    A, F = (-r * math.cos(theta), r * math.sin(theta)), (-r, -L_0)
+    AF = (A[0] - F[0], A[1] - F[1])
+    ell = math.hypot(*AF)
+    dA = (r * math.sin(theta), r * math.cos(theta))
+    dV_dx = k * (ell - L_0) * (AF[0] * dA[0] + AF[1] * dA[1]) / (ell * r)
+    T_2 = 5 * (G - (5 * G - dV_dx) / 15)
+    assert (round(ell, 6), round(T_2, 2)) == (0.723768, 35.12)
+    solution = solve_file(write(tmp_path, text))
+    taut = assumption(solution, "cord T taut between the states")
+    assert taut.holds and f"T = {T_2:.4g} at state 2" in taut.detail
+    # ½ (m_b + I_O/r²) v² = m_b g h − V_S(h)
+    v = math.sqrt((5 * G * h - k * (ell - L_0) ** 2 / 2) / 7.5)
+    assert by_name(solution, "v").value == pytest.approx(v, rel=1e-9)
+    assert solution.passed

@@ -1,11 +1,12 @@
 """Cord tensions along a travel whose accelerations change: Newton–Euler at sampled states.
 
-Where springs, links or off-G pivots change the forces between the states, a cord's
+Where springs or links change the forces between the states, a cord's
 tension at state 1 says nothing about the rest of the way. Each sampled state is the
 travel cut short at a fraction λ of its length: its placements (:func:`placements_of`)
 move every body, point and spring end there; its rate of travel comes from T1 + ΣU = T2
 over the shortened travel; Newton–Euler at that instant, with those velocities, gives the
-cords' tensions. Where one falls below zero the cord goes slack, found by bisection.
+cords' tensions. Where one falls below zero the cord goes slack, found by bisection. The
+givens' values are put in first (as floats), so no sample needs symbolic tidying.
 
 >>> from dynsolve.model.scene import Body, Cord, Scene, Spring, Support, Travel
 >>> drum = Body("drum", 10, 0.4, (0, 0), (0, 0), "", (), {}, False, "", 0, 0)
@@ -40,7 +41,7 @@ BISECTIONS = 20
 
 def shortened(travel: Travel, fraction: float) -> Travel | None:
     """``travel`` cut short at ``fraction`` of its length (None: a travel not by a
-    distance, angle or to a position)."""
+    distance or an angle, which is not sampled)."""
     if travel.kind == "by" and travel.distance is not None:
         return replace(travel, distance=travel.distance * fraction, stops=False)
     if travel.kind == "turns" and travel.angle is not None:
@@ -117,6 +118,7 @@ def tensions_at(
     the scene stops before it, or the instant has no unique solution)."""
     from dynsolve.principles.newton_euler import formulate
     from dynsolve.principles.work_energy import energy_equations
+    from dynsolve.simulate.equations import numeric_scene
 
     (travel,) = scene.travels.values()
     part = shortened(travel, fraction)
@@ -124,8 +126,9 @@ def tensions_at(
         return None
     if scene.velocities or scene.omegas:  # T1 ≠ 0: not written for the shortened travels
         return None
-    partial = replace(scene, travels={travel.body: part})
     values = {**scene.values, **values}
+    numbers = {k: sympy.N(v) for k, v in values.items()}  # floats: no symbolic tidying
+    partial = numeric_scene(replace(scene, travels={travel.body: part}), numbers)
     try:
         placements, _ = placements_of(partial)
         (energy,) = energy_equations(partial, symbols, values)
