@@ -313,6 +313,64 @@ def _check_cord_lines(
         )
 
 
+def cord_free_length(
+    scene: Scene, cord: Cord, placements: Mapping[str, Placement] | None = None
+) -> sympy.Expr | None:
+    """The straight (free) length of ``cord`` between its ends, (Q − P)·d, in state 1 or,
+    with ``placements``, in state 2: an end wound on a drum leaves it at the same place
+    relative to G (it moves with G, not with the turn), any other end is a material point.
+    None when the far end is not given.
+
+    >>> import sympy
+    >>> drum = Body("drum", 1, 1, (0, 0), (0, 0), "disk", (1,), {}, False, "", 0, 0)
+    >>> block = Body("block", 1, 0, (1, -3), (1, -3), "particle", (), {}, True, "", 0, 0)
+    >>> cord = Cord("T", "drum", (1, 0), (0, -1), "block", (1, -3))
+    >>> scene = Scene({"drum": drum, "block": block}, {}, (), (), (), None, {})
+    >>> still, up = Placement((0, 0), 0, 1, 0), Placement((0, 4), 0, 1, 0)  # risen 4: past it
+    >>> cord_free_length(scene, cord), cord_free_length(scene, cord, {"drum": still, "block": up})
+    (3, -1)
+    """
+    if cord.other_point is None:
+        return None
+
+    def where(name: str, P: Vec, d: Vec) -> Vec:
+        if not name or placements is None:
+            return P
+        body, placement = scene.bodies[name], placements[name]
+        if is_wound(scene, name, P, d):
+            return (P[0] + placement.shift[0], P[1] + placement.shift[1])
+        return point_after(body, placement, P)
+
+    d = cord.direction
+    P = where(cord.body, cord.point, d)
+    Q = where(cord.other, cord.other_point, (-d[0], -d[1]))
+    return tidy(_dot(_minus(Q, P), d))
+
+
+def _check_cord_lengths(
+    scene: Scene,
+    placements: Mapping[str, Placement],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> None:
+    """Each cord's free length stays positive in state 2: a travel that would pull an end
+    past the other (a block through its drum or pulley) is refused with the numbers."""
+    for cord in scene.cords:
+        before = cord_free_length(scene, cord)
+        after = cord_free_length(scene, cord, placements)
+        L1 = None if before is None else real_value(before, values)
+        L2 = None if after is None else real_value(after, values)
+        if L1 is None or L2 is None or 1e-12 * max(abs(L1), 1e-300) < L2:
+            continue
+        between = f"{cord.body} and {cord.other}" if cord.other else cord.body
+        raise _at_cord(
+            cord,
+            f"the cord {cord.name} between {between} would be {L2:.4g} long at state 2 "
+            f"(its free length {L1:.4g} at state 1, in the spec's length unit): the travel "
+            "takes an end past the other (through the drum or pulley); shorten the travel to "
+            "less than the cord's free length",
+        )
+
+
 def held_only_by_cords(scene: Scene, name: str) -> bool:
     """Whether only cords hold the body ``name`` (no support or link): nothing but a cord
     keeps it from moving across the cord's line."""
@@ -601,6 +659,7 @@ def state_change(
         for n in x.bodies
     }
     _check_cord_lines(scene, placements, {**scene.values, **values})
+    _check_cord_lengths(scene, placements, {**scene.values, **values})
     link_turns = {n: known[x.phi[n]] for n in x.links}
     rates, rate_name = _rates(scene, x, placements, values)
     return StateChange(placements, link_turns, rates, rate_name, tuple(relations), initial)

@@ -109,6 +109,25 @@ class StateOne:
         return squared**0.5 if squared >= 0 else None
 
 
+def sliding(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[str, int] | None:
+    """The contacts whose point slides between the states, each with the sense (±1 along
+    its tangent) of the kinetic friction against the slide; None if state 2 is not found."""
+    from dynsolve.principles.newton_euler import dot
+
+    try:
+        placements, _ = placements_of(scene)
+    except ValueError:
+        return None
+    slipping = {}
+    for support in scene.supports:
+        if support.smooth or support.kind not in ("contact", "base"):
+            continue
+        slide = real_value(dot(placements[support.body].shift, support.tangent), values)
+        if slide:  # friction opposes the slide
+            slipping[support.name] = -1 if slide > 0 else 1
+    return slipping
+
+
 def state_one(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
@@ -118,21 +137,12 @@ def state_one(
     states (its point moving along the surface) has kinetic friction against the motion.
     None where the instant has no unique solution.
     """
-    from dynsolve.principles.newton_euler import dot, formulate
+    from dynsolve.principles.newton_euler import formulate
 
     values = {**scene.values, **values}
-    try:
-        placements, _ = placements_of(scene)
-    except ValueError:
+    slipping = sliding(scene, values)
+    if slipping is None:
         return None
-    slipping = {}
-    for support in scene.supports:
-        if support.smooth or support.kind not in ("contact", "base"):
-            continue
-        placement = placements[support.body]
-        slide = real_value(dot(placement.shift, support.tangent), values)
-        if slide:  # friction opposes the slide
-            slipping[support.name] = -1 if slide > 0 else 1
     try:
         formulation = formulate(scene, symbols, slipping, inclines=False)
     except ValueError:  # the instant cannot be written (a cord across the motion …)
@@ -173,10 +183,19 @@ def taut_details(
 ) -> list[tuple[str, bool, str]]:
     """``(name, holds, detail)`` for each cord assumed taut between the states: its tension
     at state 1 from Newton–Euler, which is its tension throughout when the accelerations are
-    constant, and only its tension at the start otherwise (said so)."""
+    constant; otherwise also at :data:`~dynsolve.principles.cord_travel.SAMPLES` states
+    along the travel up to state 2 (Newton–Euler at each, with its geometry, spring forces
+    and velocities), and where it would fall below zero the cord goes slack there: fails."""
     if not scene.cords:
         return []
     motion = state_one(scene, symbols, values)
+    along: list[tuple[float, dict[str, float]]] = []
+    if motion is not None and motion.steady is not None:
+        from dynsolve.principles.cord_travel import tensions_along
+
+        along = tensions_along(
+            scene, symbols, values, sliding(scene, {**scene.values, **values}) or {}
+        )
     found = []
     for cord in scene.cords:
         name = f"cord {cord.name} taut between the states"
@@ -196,6 +215,52 @@ def taut_details(
         elif motion.steady is None:
             detail += "; the accelerations are constant, so it stays so to state 2"
         else:
-            detail += f"; checked there only ({motion.steady})"
+            holds, detail = _along(scene, symbols, values, cord.name, along, detail, motion.steady)
         found.append((name, holds, detail))
     return found
+
+
+def _along(
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    name: str,
+    along: list[tuple[float, dict[str, float]]],
+    detail: str,
+    steady: str,
+) -> tuple[bool, str]:
+    """Whether the cord ``name`` stays taut at the sampled states, and the detail saying
+    where it was checked and, if it goes slack, where."""
+    from dynsolve.principles.cord_travel import SAMPLES, slack_at
+
+    sampled = [(f, t[name]) for f, t in along if name in t]
+    if not sampled:
+        return True, detail + f"; checked there only ({steady})"
+    end = next((T for f, T in sampled if f == 1.0), None)
+    if end is not None:
+        detail += f", {name} = {end:.4g} at state 2"
+    low = min(T for _, T in sampled)
+    if low >= 0:
+        return True, detail + (
+            f"; ≥ 0 at {len(sampled)} of {SAMPLES} states sampled along the travel ({steady}): "
+            "between them it is not checked"
+        )
+    slipping = sliding(scene, {**scene.values, **values}) or {}
+    fraction = slack_at(scene, symbols, values, slipping, name, along)
+    where = "between the samples" if fraction is None else _distance(scene, fraction)
+    return False, detail + (
+        f"; it falls below 0 along the travel ({steady}): the cord goes slack at {where}, "
+        "past which the bodies move apart: split the travel there (the work–energy answer "
+        "with the cord kept taut is wrong)"
+    )
+
+
+def _distance(scene: Scene, fraction: float) -> str:
+    """Where ``fraction`` of the travel is, in words with the number."""
+    (travel,) = scene.travels.values()
+    total = travel.distance if travel.kind == "by" else travel.angle
+    size = real_value(total, scene.values) if total is not None else None
+    if size is None:
+        return f"{fraction:.4g} of the travel"
+    what = "Δθ" if travel.kind == "turns" else "a travel"
+    return f"{what} of {abs(size) * fraction:.4g} of the {abs(size):.4g} ({fraction:.4g} of it)"
