@@ -11,6 +11,7 @@ import sympy
 from sympy import Rational
 
 from dynsolve.solver.blocks import (
+    BudgetExceeded,
     Candidate,
     _equilibrated,
     solve_block,
@@ -402,3 +403,17 @@ def test_an_angle_inside_one_cosine_is_solved_through_the_cosine():
     assert angles == pytest.approx(expected, rel=1e-12)
     formulas = {sympy.sstr(c.formulas[t]) for c in solution.candidates if t in c.formulas}
     assert "-phi_0 + acos(2*cos(phi_0)/3)" in formulas
+
+
+def test_a_swallowed_budget_expiry_is_raised_again():
+    # a library that catches everything once must not let the work run on past the budget
+    swallowed = []
+    with pytest.raises(BudgetExceeded), time_budget(0.2):
+        try:
+            while True:
+                sum(range(1000))
+        except BaseException:
+            swallowed.append(True)
+        while True:
+            sum(range(1000))
+    assert swallowed == [True]

@@ -161,6 +161,9 @@ def time_budget(seconds: float) -> Iterator[None]:
                 yield
 
 
+REPEAT = 0.1  # CPU seconds between repeated expiries of a block's budget
+
+
 @contextmanager
 def _alarm(seconds: float) -> Iterator[None]:
     """The budget by ``SIGPROF``/``setitimer(ITIMER_PROF)`` (POSIX, main thread): seconds of
@@ -169,12 +172,11 @@ def _alarm(seconds: float) -> Iterator[None]:
     armed = [True]
 
     def expire(signum: int, frame: object) -> None:
-        if armed[0]:
-            armed[0] = False
-            raise BudgetExceeded
+        if armed[0]:  # again every REPEAT s until the block ends: a bare 'except:' in a
+            raise BudgetExceeded  # library may swallow one, and the work must not go on
 
     previous_handler = signal.signal(signal.SIGPROF, expire)
-    previous_delay, previous_interval = signal.setitimer(signal.ITIMER_PROF, seconds)
+    previous_delay, previous_interval = signal.setitimer(signal.ITIMER_PROF, seconds, REPEAT)
     started = time.process_time()
     try:
         yield
