@@ -57,23 +57,6 @@ from dynsolve.units import Dim
 
 LENGTH, MASS = Dim.of("length"), Dim.of("mass")
 MOMENT_OF_INERTIA = Dim(2, 1, 0)
-LINES_3D = frozenset(
-    {
-        "body",
-        "axis",
-        "axes",
-        "inertia3",
-        "rotates",
-        "spins",
-        "nutates",
-        "bearing",
-        "torque",
-        "gravity",
-        "rolls3",
-        "travel3",
-        "assume",
-    }
-)
 KINDS_3D = frozenset(
     {
         "axis",
@@ -88,6 +71,7 @@ KINDS_3D = frozenset(
         "travel3",
     }
 )
+LINES_3D = KINDS_3D | {"body", "gravity", "assume"}  # every line a 3D scene takes
 
 
 @dataclass(frozen=True)
