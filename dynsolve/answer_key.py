@@ -29,11 +29,24 @@ from dynsolve.units import Dim, System
 
 DEFAULT_RELATIVE = Fraction(1, 200)  # 0.5 %: three significant figures
 ZERO_ABSOLUTE = Fraction(1, 10**9)  # for an expected zero, in the answer's unit
-NEGATIVE = ("cw", "down", "left")
-_PAIRS = (("ccw", "cw"), ("up", "down"), ("right", "left"))  # positive, negative
+SENSE_PAIRS = (("ccw", "cw"), ("up", "down"), ("right", "left"))  # positive, negative
+NEGATIVE = tuple(negative for _, negative in SENSE_PAIRS)
 EQUIVALENCE_POINTS = 4
 EQUIVALENCE_RTOL = 1e-9  # two formulas agree at a point within this relative difference
 EQUIVALENCE_SIMPLIFY_OPS = 80  # larger differences are not given to sympy.simplify
+
+
+def sense_word(key_word: str, value: float) -> str:
+    """The word a signed value reads with, in the pair of a key's word ("" for 0, or for a
+    word of no pair): an answer keyed ``2251 N down`` reads ``down`` at −2251.
+
+    >>> sense_word("down", -2251.0), sense_word("down", 3.0), sense_word("cw", 0.0)
+    ('down', 'up', '')
+    """
+    pair = next((p for p in SENSE_PAIRS if key_word in p), None)
+    if pair is None or value == 0:
+        return ""
+    return pair[0] if value > 0 else pair[1]
 
 
 @dataclass(frozen=True)
@@ -87,8 +100,7 @@ def compare(
     error = abs(value - target)
     got = format_quantity(convert(value, unit, spec.system), unit, 4)
     if answer.direction and value != 0:  # as the key reads: a magnitude and its word
-        pair = next(p for p in _PAIRS if answer.direction in p)
-        word = pair[0] if value > 0 else pair[1]
+        word = sense_word(answer.direction, value)
         got = f"{format_quantity(convert(abs(value), unit, spec.system), unit, 4)} {word}"
     if error <= tolerance:
         return Verdict(True, shown, f"got {got}{_relative(error, target)}")

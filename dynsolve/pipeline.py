@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
-from dynsolve.answer_key import compare, compare_magnitude
+from dynsolve.answer_key import compare, compare_magnitude, sense_word
 from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
 from dynsolve.errors import DynsolveError
@@ -676,9 +676,6 @@ def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]
     )
 
 
-_SENSE_PAIRS = {
-    word: pair for pair in (("ccw", "cw"), ("up", "down"), ("right", "left")) for word in pair
-}  # a key's direction word: the words for a positive and a negative signed value
 _ANGLE_UNITS = frozenset({"deg", "degree", "degrees", "°", "rad", "radian", "radians"})
 _TRIG = (sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
 
@@ -1096,11 +1093,10 @@ class _View:
         if target.kind != "signed" and number is not None:
             direction = self.direction(target, number) or direction
             text, latex, number = self.shown(target.name, abs(value))
-        elif direction in _SENSE_PAIRS and number is not None:
+        elif sense_word(direction, 1.0) and number is not None:
             # a signed answer keyed with a word (A_y = 2251 N down): shown as the key reads,
             # a magnitude and its word, not "-2251 N down"
-            positive, negative = _SENSE_PAIRS[direction]
-            direction = "" if number == 0 else positive if number > 0 else negative
+            direction = sense_word(direction, number)
             text, latex, number = self.shown(target.name, abs(value))
         if number is None:
             value, sense = self.sensed(target, value)

@@ -110,7 +110,7 @@ def footprint_of(body: FreeBody) -> Point | None:
         corners = [
             (abs(x) + reach, abs(y) + reach)
             for shape, x, y, sizes, *_ in body.parts
-            for reach in (_part_reach(shape, sizes),)
+            for reach in (reach_of(shape, sizes),)
         ]
         return (max(c[0] for c in corners), max(c[1] for c in corners))
     sizes = [abs(_finite(v)) for v in body.size]
@@ -130,8 +130,13 @@ def footprint_of(body: FreeBody) -> Point | None:
     return None
 
 
-def _part_reach(shape: str, sizes: tuple) -> float:
-    """How far one part of a composite reaches from its own centre (metres)."""
+def reach_of(shape: str, sizes: tuple) -> float:
+    """How far a shape reaches from its own centre (in the units of ``sizes``): a block's or
+    plate's half diagonal, a rod's half length, a round body's radius.
+
+    >>> reach_of("block", (6.0, 8.0)), reach_of("rod", (2.0,)), reach_of("disk", (0.3,))
+    (5.0, 1.0, 0.3)
+    """
     first = abs(sizes[0]) if sizes else 0.0
     if shape in ("block", "plate"):
         return math.hypot(first, abs(sizes[1]) if len(sizes) > 1 else first) / 2

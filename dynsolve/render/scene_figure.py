@@ -22,7 +22,7 @@ import math
 from collections.abc import Callable
 
 from dynsolve.names import latex_name
-from dynsolve.render.fbd_tikz import fit, num, polar, shape_lines
+from dynsolve.render.fbd_tikz import fit, num, polar, reach_of, shape_lines
 from dynsolve.results import SceneSketch
 
 Point = tuple[float, float]
@@ -100,7 +100,7 @@ def _frame(sketch: SceneSketch) -> tuple[Callable[[Point], Point], float]:
     reach: list[Point] = []
     for _, shape, x, y, sizes, _angle, parts in sketch.bodies:
         for shape_, x_, y_, sizes_, *_rest in parts or ((shape, x, y, sizes),):
-            r = _extent(shape_, sizes_)
+            r = reach_of(shape_, sizes_)
             reach += [(x_ - r, y_ - r), (x_ + r, y_ + r)]
     reach += [(x, y) for _, x, y in sketch.pins]
     reach += [(x, y) for _, x, y, _, _, _ in (*sketch.surfaces, *sketch.guides)]
@@ -109,16 +109,6 @@ def _frame(sketch: SceneSketch) -> tuple[Callable[[Point], Point], float]:
     for _, curve in sketch.paths:
         reach += list(curve)
     return fit(reach, WIDTH_MM, HEIGHT_MM)
-
-
-def _extent(shape: str, sizes: tuple) -> float:
-    """How far a body reaches from G (metres), to frame the figure."""
-    first = abs(sizes[0]) if sizes else 0.0
-    if shape in ("block", "plate"):
-        return math.hypot(first, abs(sizes[1]) if len(sizes) > 1 else first) / 2
-    if shape == "rod":
-        return first / 2
-    return first
 
 
 def _body(body: tuple, at: Callable[[Point], Point], scale: float) -> list[str]:
