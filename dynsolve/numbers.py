@@ -97,6 +97,8 @@ def _tidied(expr: sympy.Expr, light: bool) -> sympy.Expr:
     (numeric mode, where a form surely not 0 is left as it is); sympy's cache, cleared with it."""
     if light and _surely_nonzero(expr):
         return expr
+    if light and _numerically_zero(expr):
+        return sympy.Integer(0)
     best = min(_cheap_forms(expr), key=_size)
     if _worth_simplifying(best):
         simpler = sympy.simplify(best)
@@ -146,14 +148,14 @@ def tidying_lightly() -> bool:
     return _LIGHT.get()
 
 
-def _probe(symbol: sympy.Symbol) -> sympy.Rational | None:
+def _probe(symbol: sympy.Symbol, salt: int = 0) -> sympy.Rational | None:
     """A value for ``symbol`` its assumptions allow (None for an integer or a symbol whose
-    sign is not known as such): 1 + (a number in [0, 1) from its name), negative where it
-    must be."""
+    sign is not known as such): 1 + (a number in [0, 1) from its name and ``salt``, which
+    picks another point), negative where it must be."""
     if symbol.is_integer:
         return None
-    value = sympy.Rational(1 + sum(map(ord, symbol.name)) % 89, 89) + 1
-    value += sympy.Rational(len(symbol.name) % 7, 701)
+    value = sympy.Rational(1 + (sum(map(ord, symbol.name)) + 31 * salt) % 89, 89) + 1
+    value += sympy.Rational((len(symbol.name) + 3 * salt) % 7, 701 + 2 * salt)
     if symbol.is_negative or symbol.is_nonpositive:
         return -value
     return value
@@ -178,6 +180,42 @@ def _surely_nonzero(expr: sympy.Expr) -> bool:
     if value.is_Rational:
         return value != 0
     return any(f._prec > 10 and f != 0 for f in value.atoms(sympy.Float))
+
+
+ZERO_POINTS = 3  # numeric mode's zero test: points of the letters' domain
+ZERO_DIGITS = 30  # digits each is evaluated to
+ZERO_TOLERANCE = 1e-20  # |value| next to the sum of its terms' sizes that counts as 0
+
+
+def _numerically_zero(expr: sympy.Expr) -> bool:
+    """Numeric mode's test of a form that is not surely nonzero: True when it is 0 at
+    :data:`ZERO_POINTS` points of its letters' domain, each evaluated to
+    :data:`ZERO_DIGITS` digits (a sum within :data:`ZERO_TOLERANCE` of the sizes of its
+    terms), so that numeric mode need not search for its tidiest form to find 0 (a
+    form that is 0 at three points with irrational-free but unrelated coordinates and
+    not identically 0 would have to vanish there by coincidence). False (not known) when
+    a letter has no probe value or a point gives no number.
+
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> _numerically_zero((a * b - b**2) / (a - b) - b), _numerically_zero(a - b)
+    (True, False)
+    """
+    terms = sympy.Add.make_args(expr)
+    for salt in range(ZERO_POINTS):
+        point = {}
+        for symbol in expr.free_symbols:
+            value = _probe(symbol, salt) if isinstance(symbol, sympy.Symbol) else None
+            if value is None:
+                return False
+            point[symbol] = value
+        try:  # the sum to 30 digits (evalf works through its cancellation), terms' sizes
+            total = complex(sympy.N(expr.xreplace(point), ZERO_DIGITS, maxn=MAX_DIGITS))
+            size = sum(abs(complex(sympy.N(t.xreplace(point), 15))) for t in terms)
+        except (TypeError, ValueError, ArithmeticError, RecursionError):
+            return False
+        if not abs(total) <= ZERO_TOLERANCE * size:  # (a nan is not 0)
+            return False
+    return True
 
 
 @cacheit  # the same candidate forms come back (an expression and its factor_terms)

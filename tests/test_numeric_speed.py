@@ -163,3 +163,29 @@ def test_tidy_once_per_form_and_mode() -> None:
         assert tidy(untidy) == untidy  # not 0 at a point: kept as written
         assert tidy(untidy, light=False) == a * (b + 1)
     assert tidy(untidy) == a * (b + 1)  # exact mode's tidy, not numeric mode's remembered one
+
+
+def test_light_tidying_finds_zero_by_numbers_without_the_search(monkeypatch) -> None:
+    """Numeric mode settles "is this 0?" at three points of the letters' domain, to 30
+    digits, instead of searching for the tidiest form (which proves 0 only at its end)."""
+    import dynsolve.numbers as numbers
+
+    def no_search(expr: sympy.Expr) -> list[sympy.Expr]:
+        raise AssertionError("the search for a tidy form ran")
+
+    monkeypatch.setattr(numbers, "_cheap_forms", no_search)
+    zero = a * b * (sympy.sin(u) ** 2 + sympy.cos(u) ** 2) / (a + b) - a * b / (a + b)
+    with light_tidying():
+        assert tidy(zero) == 0
+
+
+def test_a_form_zero_at_one_point_only_is_not_zero() -> None:
+    """A form that vanishes at the first point (x minus x's own probe value) is not 0."""
+    from dynsolve.numbers import _numerically_zero, _probe
+
+    y = sympy.Symbol("y", positive=True)
+    at_first_point = y - _probe(y, 0)
+    assert at_first_point.xreplace({y: _probe(y, 0)}) == 0
+    assert not _numerically_zero(at_first_point)
+    with light_tidying():
+        assert tidy(at_first_point) != 0

@@ -1185,11 +1185,12 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
         )
     path = mover.path
     at = {path.x: body.G[0], path.y: body.G[1]}
-    residual = real_value(path.curve.xreplace(at), builder.given_values)
     on_path = path.curve.xreplace(at)
+    residual = real_value(on_path, builder.given_values)
     terms = [real_value(t, builder.given_values) for t in sympy.Add.make_args(on_path)]
     size = sum(abs(t) for t in terms if t is not None)  # relative: scale-free
-    if tidy(path.curve.xreplace(at)) != 0 and (residual is None or abs(residual) > 1e-9 * size):
+    # the numbers first: the identity (a tidy with letters) only when they cannot settle it
+    if (residual is None or abs(residual) > 1e-9 * size) and tidy(on_path) != 0:
         raise SpecError(
             f"{body.name}'s G is not on the path {path.name}",
             where,
@@ -1198,9 +1199,12 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
     F_x, F_y = (sympy.diff(path.curve, c) for c in (path.x, path.y))
     H = [[sympy.diff(d, c) for c in (path.x, path.y)] for d in (F_x, F_y)]
     grad = (F_x.xreplace(at), F_y.xreplace(at))
-    size = sympy.sqrt(grad[0] ** 2 + grad[1] ** 2)
-    t = (-grad[1] / size, grad[0] / size)
-    tHt = sum(t[i] * H[i][j].xreplace(at) * t[j] for i in range(2) for j in range(2))
+    # the small pieces tidied first (|∇F|², τ·Hτ with τ = |∇F| t), so that the normal,
+    # a_n and ρ are tidied from short forms: a circle's 4R²sin²θ + 4R²cos²θ is 4R² once
+    size2 = tidy(grad[0] ** 2 + grad[1] ** 2)
+    size = sympy.sqrt(size2)
+    tau = (-grad[1], grad[0])
+    tHt = tidy(sum(tau[i] * H[i][j].xreplace(at) * tau[j] for i in range(2) for j in range(2)))
     normal = (tidy(grad[0] / size), tidy(grad[1] / size))
     return Support(
         "contact",
@@ -1212,10 +1216,10 @@ def _on_path(builder: _Builder, mover: Mover) -> Support:
         line=mover.line,
         column=mover.column,
         two_sided=True,
-        normal_acceleration=tidy(-(mover.speed**2) * tHt / size),
+        normal_acceleration=tidy(-(mover.speed**2) * tHt / (size2 * size)),
         constant_speed=mover.constant,
         speed=mover.speed,
-        rho=None if _is_zero_number(tHt) else tidy(size / sympy.Abs(tHt)),
+        rho=None if _is_zero_number(tHt) else tidy(size2 * size / sympy.Abs(tHt)),
     )
 
 
