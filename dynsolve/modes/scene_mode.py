@@ -8,11 +8,11 @@ and the assumptions to check once it is solved.
 from __future__ import annotations
 
 import difflib
-import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
 import sympy
+from sympy.core.cache import cacheit
 
 from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
@@ -1208,7 +1208,7 @@ def _path_extremes(scene: Scene, name: str, where: Position) -> object:
     return found
 
 
-@functools.lru_cache(maxsize=64)
+@cacheit  # once per path and solve (cleared with sympy's cache, as every form's tidying)
 def _extremes(
     path: Path,
     speed: sympy.Expr,
