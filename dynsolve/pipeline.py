@@ -740,6 +740,7 @@ class _View:
         self.trial = trial
         self.options = options
         self.thresholds: dict[str, sympy.Expr | None] = {}  # steepest(C), computed once
+        self.limits: dict[str, object] = {}  # steepest(C)'s F(φ), N(φ): value and derivation
         self.system = problem.spec.system
         self.knowns = problem.system.knowns
         self.units = {t.name: t.unit for t in problem.targets}
@@ -1029,6 +1030,7 @@ class _View:
                     contact,
                     self.outcome.values,
                     self.options,
+                    self.steepest_limit(contact),  # type: ignore[arg-type]
                 )
             return self.thresholds[contact]
         if target.kind == "threshold":
@@ -1139,6 +1141,21 @@ class _View:
             substituted_latex=numbers[1] if numbers else "",
         )
 
+    def steepest_limit(self, contact: str) -> object:
+        """steepest(C)'s F(φ) and N(φ) in the givens' symbols, solved once for its value and
+        its derivation (None when they could not be solved: the value is then solved with
+        the numbers in)."""
+        if contact not in self.limits:
+            from dynsolve.modes.scene_mode import steepest_limit
+
+            self.limits[contact] = steepest_limit(
+                self.problem,  # type: ignore[arg-type]
+                contact,
+                self.outcome.values,
+                self.options,
+            )
+        return self.limits[contact]
+
     def steepest_formulas(self, target: Target) -> tuple[Formula, ...]:
         """The steepest slope without slip as the seed notes derive it: the friction and
         normal force needed on a slope β, then |F| = μs N, tan β_max = μs (1 + m R²/I)."""
@@ -1147,7 +1164,13 @@ class _View:
         assert target.expr is not None
         contact = target.expr.name
         angle = self.computed(target.name)
-        found = steepest_lines(self.problem, contact, self.outcome.values, self.options)  # type: ignore[arg-type]
+        found = steepest_lines(
+            self.problem,  # type: ignore[arg-type]
+            contact,
+            self.outcome.values,
+            self.options,
+            self.steepest_limit(contact),  # type: ignore[arg-type]
+        )
         if found is None or angle is None or self.number(angle) is None:
             return ()
         F, N, tangent, phi = found

@@ -1095,28 +1095,50 @@ def _average_force(
     return "vector", Dim.of("force"), (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
 
 
-def steepest(
+SteepestLimit = tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol]
+
+
+def steepest_limit(
     problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
+) -> SteepestLimit | None:
+    """F(φ) and N(φ) at ``contact`` in the givens' symbols with gravity tilted by φ,
+    friction's sense and μs (:func:`steepest` and :func:`steepest_lines` share it: the
+    slope's value is its numbers put in, its derivation its letters)."""
+    return _steepest_limit(problem, contact, values, options, {})
+
+
+def steepest(
+    problem: SceneProblem,
+    contact: str,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    options: object,
+    found: SteepestLimit | None = None,
 ) -> sympy.Expr | None:
     """The steepest slope at ``contact`` (angle of its surface to the horizontal) on which
     it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
-    friction at its limit, |F| = μs N, in the sense it has in the solution ``values``.
+    friction at its limit, |F| = μs N, in the sense it has in the solution ``values``
+    (from ``found``, :func:`steepest_limit`, when given; else solved with the numbers in).
     """
-    found = _steepest_limit(problem, contact, values, options, problem.system.knowns)
+    knowns = problem.system.knowns
+    found = found or _steepest_limit(problem, contact, values, options, knowns)
     if found is None:
         return None
     F, N, sense, mu_s, phi = found
-    condition = tidy((F - sense * mu_s * N).xreplace(problem.system.knowns))
+    condition = tidy((F - sense * mu_s * N).xreplace(knowns))
     return _angle_root(condition, phi)
 
 
 def steepest_lines(
-    problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
+    problem: SceneProblem,
+    contact: str,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    options: object,
+    found: SteepestLimit | None = None,
 ) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Symbol] | None:
     """The steepest slope's derivation in the givens' symbols: the friction F(φ) and the
     normal force N(φ) the body needs on a slope φ, and tan φ where |F| = μs N (the seed's
     tan β = μs(1 + m R²/I)); None where |F| = μs N is not a sin/cos balance."""
-    found = _steepest_limit(problem, contact, values, options, {})
+    found = found or steepest_limit(problem, contact, values, options)
     if found is None:
         return None
     F, N, sense, mu_s, phi = found
@@ -1133,7 +1155,7 @@ def _steepest_limit(
     values: Mapping[sympy.Symbol, sympy.Expr],
     options: object,
     knowns: Mapping[sympy.Symbol, sympy.Expr],
-) -> tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol] | None:
+) -> SteepestLimit | None:
     """F and N at ``contact`` with gravity tilted by φ, solved with ``knowns`` put in;
     friction's sense and μs: |F| = μs N at the steepest slope."""
     from dynsolve.solver import solve_system
