@@ -1,0 +1,82 @@
+"""Trigonometric polynomials of a 3D scene's angles in a canonical form.
+
+The scene's vectors are written with the sines and cosines of its angles (a tilted axis
+(sin θ, cos θ, 0)); products of them (I_G = R J Rᵀ, ω × H_G, r × m a_G) hold powers
+sin³θ, sin θ cos²θ that ``sin² + cos² = 1`` reduces. Written as a polynomial in
+s = sin u and c = cos u, the remainder of its division by s² + c² − 1 (in s) is
+A(c) + s B(c), one form for each function of u: two forms equal as functions have the
+same remainder (the ideal of s² + c² − 1 is prime and {1, s} a basis over the functions
+of c), so a form is identically 0 exactly when its remainder expands to 0.
+
+>>> import sympy
+>>> u, a = sympy.symbols("u a")
+>>> pythagoras(a * sympy.sin(u) ** 3 + a * sympy.sin(u) * sympy.cos(u) ** 2)
+a*sin(u)
+>>> pythagoras(sympy.sin(2 * u) / 2 - sympy.sin(u) * sympy.cos(u))
+0
+>>> vanishes(sympy.sin(u) ** 3 + sympy.sin(u) * sympy.cos(u) ** 2 - sympy.sin(u))
+True
+"""
+
+from __future__ import annotations
+
+import sympy
+
+
+def pythagoras(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` reduced with sin²u = 1 − cos²u for each angle u until no sine is squared
+    (sin 2u written 2 sin u cos u first), its terms collected with common factors taken
+    out; ``expr`` itself when it is not a polynomial in the sines and cosines."""
+    expr = sympy.Integer(0) + expr
+    trig = expr.atoms(sympy.sin, sympy.cos)
+    if not trig:
+        return expr
+    expanded = sympy.expand(sympy.expand_trig(expr))
+    angles = sorted(
+        {f.args[0] for f in expanded.atoms(sympy.sin, sympy.cos)}, key=sympy.default_sort_key
+    )
+    letters = {}
+    for u in angles:
+        s, c = sympy.Dummy("s"), sympy.Dummy("c")
+        letters[u] = (s, c)
+        expanded = expanded.xreplace({sympy.sin(u): s, sympy.cos(u): c})
+    if expanded.atoms(sympy.sin, sympy.cos):  # a sine of a sum that expand_trig kept
+        return expr
+    for s, c in letters.values():
+        try:
+            expanded = sympy.rem(expanded, s**2 + c**2 - 1, s)
+        except sympy.PolynomialError:  # a sine in a denominator or under a root
+            return expr
+    back = {x: f(u) for u, (s, c) in letters.items() for x, f in ((s, sympy.sin), (c, sympy.cos))}
+    return sympy.factor_terms(sympy.expand(expanded).xreplace(back))
+
+
+def vanishes(expr: sympy.Expr) -> bool:
+    """Whether ``expr`` is identically 0: not when it is a number other than 0 at a sample
+    point of its letters (to the digits sympy's ``evalf`` guarantees: no identity then);
+    else when its reduced form (:func:`pythagoras`) expands to 0; else as
+    ``sympy.simplify`` finds, the last resort."""
+    expr = sympy.Integer(0) + expr
+    if expr == 0:
+        return True
+    if _nonzero_somewhere(expr):
+        return False
+    return sympy.expand(pythagoras(expr)) == 0 or sympy.simplify(expr) == 0
+
+
+def _nonzero_somewhere(expr: sympy.Expr) -> bool:
+    """True when ``expr`` is a number other than 0, to the digits ``evalf`` guarantees, at
+    a point where each letter is a positive number of its own (1 to 2, from its name)."""
+    point = {
+        s: sympy.Rational(100 + sum(map(ord, s.name)) % 97, 100) + sympy.Rational(i, 331)
+        for i, s in enumerate(sorted(expr.free_symbols, key=str))
+    }
+    try:
+        value = sympy.N(expr.xreplace(point), 15)
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    if not value.is_number:
+        return False
+    if value.is_Rational:
+        return value != 0
+    return any(f._prec > 10 and f != 0 for f in value.atoms(sympy.Float))
