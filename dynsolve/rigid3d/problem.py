@@ -56,6 +56,7 @@ from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.rigid3d.steady import steady_angles, steady_equations
+from dynsolve.rigid3d.trig import pythagoras
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -279,8 +280,9 @@ def _newton_euler(
     where: Position,
 ) -> tuple[list[Equation], str]:
     """ΣF = m a_G and ΣM = Ḣ_G (about G, or about the one bearing when an angle of the
-    position is unknown), with the moment point's label; a moment component that no
-    unknown load can balance is refused."""
+    position or a rate is unknown), with the moment point's label; a moment component that
+    no unknown load can balance is refused. Ḣ_G + r_G × m a_G is written with
+    sin² u = 1 − cos² u applied (:func:`~dynsolve.rigid3d.trig.pythagoras`)."""
     body, spin = scene.body, scene.spin
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
@@ -293,9 +295,11 @@ def _newton_euler(
         total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
         note = f"ΣF_{axis} = m (a_G)_{axis}"
         equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
-    # about G; about the one bearing when an angle of the position is unknown, so that its
-    # reactions drop out of the moments and the angle comes from one equation
-    pivot = scene.bearings[0] if scene.angles and len(scene.bearings) == 1 else None
+    # about G; about the one bearing when the motion is unknown (an angle of the position, or
+    # a rate: a top's precession about its fixed point, Hibbeler eq. 21-30), so that its
+    # reactions drop out of the moments and the motion comes from the moments alone
+    unknown_motion = bool(scene.angles or scene.rates)
+    pivot = scene.bearings[0] if unknown_motion and len(scene.bearings) == 1 else None
     point = pivot.at if pivot is not None else body.G
     label = pivot.name if pivot is not None else "G"
     r_G = tuple(body.G[i] - point[i] for i in range(3))
@@ -313,7 +317,7 @@ def _newton_euler(
             note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
         else:
             note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
-        lhs, rhs = moment[i], tidy(H_dot[i] + m_a_moment[i])  # factored where shorter
+        lhs, rhs = moment[i], tidy(pythagoras(H_dot[i] + m_a_moment[i]))  # factored where shorter
         if not (unknowns & (lhs - rhs).free_symbols):
             if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
                 continue  # holds whatever the reactions: nothing to solve for
@@ -600,7 +604,7 @@ def _second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     values = dict(problem.scene.values)
     rows = []
     for i, axis in enumerate(AXES):
-        lhs, rhs = tidy(total[i]), tidy(expected[i])
+        lhs, rhs = tidy(total[i]), tidy(pythagoras(expected[i]))
         if not unknowns & (lhs - rhs).free_symbols and (
             sympy.simplify((lhs - rhs).xreplace(values)) == 0
         ):
