@@ -51,7 +51,7 @@ from dynsolve.rigid3d.composition import (
 )
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D
-from dynsolve.rigid3d.trig import pythagoras
+from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim, natural_unit
 
@@ -264,6 +264,6 @@ def _vector(
     except TypeError:
         if not formulas:
             return "(in letters)"
-        return "(" + ", ".join(sympy.sstr(tidy(pythagoras(c))) for c in vector) + ")"
+        return "(" + ", ".join(sympy.sstr(tidied(c)) for c in vector) + ")"
     shown = [format_quantity(convert(n, unit, system), unit).rsplit(" ", 1)[0] for n in numbers]
     return f"({', '.join(shown)}) {unit}"

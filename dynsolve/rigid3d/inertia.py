@@ -24,6 +24,8 @@ from collections.abc import Sequence
 
 import sympy
 
+from dynsolve.rigid3d.trig import pythagoras, shortest
+
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
 SHAPES_3D = ("disk", "cylinder", "cone", "ring", "rod", "plate", "sphere", "shell", "particle")
 
@@ -94,8 +96,8 @@ def tensor(
         J[1, 2] = J[2, 1] = -yz
         J[0, 2] = J[2, 0] = -zx
     I_G = R * J * R.T
-    # sin² + cos² = 1 where the axes are turned by an angle (9 small entries: cheap)
-    return I_G.applyfunc(lambda e: sympy.trigsimp(e) if e.has(sympy.sin, sympy.cos) else e)
+    # sin² + cos² = 1 where the axes are turned by an angle, where that is shorter
+    return I_G.applyfunc(shortest)
 
 
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:
@@ -137,8 +139,8 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
     else:
         dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
         x = unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True)))
-    y = cross(z, x)
-    return (x, y, z)
+    y = tuple(pythagoras(c) for c in cross(z, x))  # (0, 0, sin² + cos²) is (0, 0, 1)
+    return (x, y, z)  # type: ignore[return-value]
 
 
 def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:

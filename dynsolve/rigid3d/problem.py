@@ -56,7 +56,7 @@ from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.rigid3d.steady import steady_angles, steady_equations
-from dynsolve.rigid3d.trig import pythagoras
+from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -281,8 +281,9 @@ def _newton_euler(
 ) -> tuple[list[Equation], str]:
     """ΣF = m a_G and ΣM = Ḣ_G (about G, or about the one bearing when an angle of the
     position or a rate is unknown), with the moment point's label; a moment component that
-    no unknown load can balance is refused. Ḣ_G + r_G × m a_G is written with
-    sin² u = 1 − cos² u applied (:func:`~dynsolve.rigid3d.trig.pythagoras`)."""
+    no unknown load can balance is refused. Ḣ_G + r_G × m a_G is written in its shortest
+    form, sin² u + cos² u = 1 applied where that shortens it
+    (:func:`~dynsolve.rigid3d.trig.tidied`)."""
     body, spin = scene.body, scene.spin
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
@@ -317,7 +318,7 @@ def _newton_euler(
             note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
         else:
             note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
-        lhs, rhs = moment[i], tidy(pythagoras(H_dot[i] + m_a_moment[i]))  # factored where shorter
+        lhs, rhs = moment[i], tidied(H_dot[i] + m_a_moment[i])  # factored where shorter
         if not (unknowns & (lhs - rhs).free_symbols):
             if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
                 continue  # holds whatever the reactions: nothing to solve for
@@ -604,7 +605,7 @@ def _second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     values = dict(problem.scene.values)
     rows = []
     for i, axis in enumerate(AXES):
-        lhs, rhs = tidy(total[i]), tidy(pythagoras(expected[i]))
+        lhs, rhs = tidied(total[i]), tidied(expected[i])
         if not unknowns & (lhs - rhs).free_symbols and (
             sympy.simplify((lhs - rhs).xreplace(values)) == 0
         ):

@@ -6,7 +6,8 @@ sin³θ, sin θ cos²θ that ``sin² + cos² = 1`` reduces. Written as a polynom
 s = sin u and c = cos u, the remainder of its division by s² + c² − 1 (in s) is
 A(c) + s B(c), one form for each function of u: two forms equal as functions have the
 same remainder (the ideal of s² + c² − 1 is prime and {1, s} a basis over the functions
-of c), so a form is identically 0 exactly when its remainder expands to 0.
+of c), so a form is identically 0 exactly when its remainder expands to 0 (so too the
+remainder in c, A(s) + c B(s)).
 
 >>> import sympy
 >>> u, a = sympy.symbols("u a")
@@ -14,6 +15,8 @@ of c), so a form is identically 0 exactly when its remainder expands to 0.
 a*sin(u)
 >>> pythagoras(sympy.sin(2 * u) / 2 - sympy.sin(u) * sympy.cos(u))
 0
+>>> pythagoras(a * sympy.cos(u) ** 2 - a), shortest(a * sympy.sin(u) ** 2)
+(-a*sin(u)**2, a*sin(u)**2)
 >>> vanishes(sympy.sin(u) ** 3 + sympy.sin(u) * sympy.cos(u) ** 2 - sympy.sin(u))
 True
 """
@@ -22,33 +25,79 @@ from __future__ import annotations
 
 import sympy
 
+from dynsolve.numbers import tidy
+
 
 def pythagoras(expr: sympy.Expr) -> sympy.Expr:
-    """``expr`` reduced with sin²u = 1 − cos²u for each angle u until no sine is squared
-    (sin 2u written 2 sin u cos u first), its terms collected with common factors taken
-    out; ``expr`` itself when it is not a polynomial in the sines and cosines."""
+    """``expr`` reduced with sin²u + cos²u = 1 for each angle u until only one of sin u
+    and cos u is left squared or higher (the one that leaves the shorter form; sin 2u
+    written 2 sin u cos u first), its common factors taken out; ``expr`` itself when it is
+    not a polynomial in the sines and cosines."""
     expr = sympy.Integer(0) + expr
-    trig = expr.atoms(sympy.sin, sympy.cos)
-    if not trig:
+    if not expr.has(sympy.sin, sympy.cos):
         return expr
     expanded = sympy.expand(sympy.expand_trig(expr))
     angles = sorted(
         {f.args[0] for f in expanded.atoms(sympy.sin, sympy.cos)}, key=sympy.default_sort_key
     )
-    letters = {}
-    for u in angles:
-        s, c = sympy.Dummy("s"), sympy.Dummy("c")
-        letters[u] = (s, c)
+    letters = {u: (sympy.Dummy("s"), sympy.Dummy("c")) for u in angles}
+    for u, (s, c) in letters.items():
         expanded = expanded.xreplace({sympy.sin(u): s, sympy.cos(u): c})
-    if expanded.atoms(sympy.sin, sympy.cos):  # a sine of a sum that expand_trig kept
+    if expanded.has(sympy.sin, sympy.cos):  # a sine of a sum that expand_trig kept
         return expr
     for s, c in letters.values():
         try:
-            expanded = sympy.rem(expanded, s**2 + c**2 - 1, s)
+            reduced = [sympy.expand(sympy.rem(expanded, s**2 + c**2 - 1, x)) for x in (s, c)]
         except sympy.PolynomialError:  # a sine in a denominator or under a root
             return expr
+        expanded = min(reduced, key=_size)
     back = {x: f(u) for u, (s, c) in letters.items() for x, f in ((s, sympy.sin), (c, sympy.cos))}
-    return sympy.factor_terms(sympy.expand(expanded).xreplace(back))
+    return sympy.factor_terms(expanded.xreplace(back))
+
+
+def shortest(expr: sympy.Expr) -> sympy.Expr:
+    """The form of ``expr`` that prints shortest: as it is, with its common factors out, or
+    reduced by :func:`pythagoras`."""
+    expr = sympy.Integer(0) + expr
+    forms = [expr, sympy.factor_terms(expr)]
+    if expr.has(sympy.sin, sympy.cos):
+        forms.append(pythagoras(expr))
+    return min(forms, key=_size)
+
+
+def tidied(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` as a 3D scene shows it: with sines and cosines, reduced by :func:`pythagoras`,
+    or that form with each sin u cos u written sin(2u)/2, whichever prints shorter (a
+    canonical form that ``sympy.simplify`` hardly ever shortens, at a hundred times the
+    cost); else :func:`~dynsolve.numbers.tidy`.
+
+    >>> u, a, b = sympy.symbols("u a b")
+    >>> tidied(a * sympy.sin(u) ** 2 * sympy.cos(u) + a * sympy.cos(u) ** 3 + b * sympy.sin(2 * u))
+    (a + 2*b*sin(u))*cos(u)
+    """
+    expr = sympy.Integer(0) + expr
+    if not expr.has(sympy.sin, sympy.cos):
+        return tidy(expr)
+    reduced = pythagoras(expr)
+    return min((reduced, sympy.factor_terms(_double_angles(reduced))), key=_size)
+
+
+def _double_angles(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` with sin u cos u written sin(2u)/2 in each product that holds both once."""
+
+    def folded(term: sympy.Expr) -> sympy.Expr:
+        powers = term.as_powers_dict()
+        for u in {f.args[0] for f in term.args if isinstance(f, sympy.sin)}:
+            if powers.get(sympy.sin(u)) == 1 and powers.get(sympy.cos(u)) == 1:
+                term = term / (sympy.sin(u) * sympy.cos(u)) * sympy.sin(2 * u) / 2
+        return term
+
+    return expr.replace(lambda e: e.is_Mul, folded)
+
+
+def _size(expr: sympy.Expr) -> tuple[int, int]:
+    """How long a form prints, then how many operations it has."""
+    return len(sympy.sstr(expr)), sympy.count_ops(expr)
 
 
 def vanishes(expr: sympy.Expr) -> bool:
