@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.rigid3d.inertia import Vec3, cross
+from dynsolve.rigid3d.inertia import Vec3, cross, in_body_axes
 from dynsolve.rigid3d.model import Scene3D, SpinOf
 from dynsolve.rigid3d.trig import vanishes
 
@@ -138,16 +138,27 @@ def frame_form(scene: Scene3D, chain: Composition) -> Vec3 | None:
     """Ḣ_G = (Ḣ_G)_xyz + Ω × H_G in the frame that carries the spin axis (Hibbeler 21.4),
     with (Ḣ_G)_xyz = I_G (α − Ω × ω); None when the body does not spin in a frame or is not
     symmetric about its spin axis (then I_G is not constant in that frame)."""
-    if chain.frame is None or scene.spin_of is None:
+    if chain.frame is None or scene.spin_of is None or not _symmetric_about(scene):
         return None
     I_G = scene.body.I_G
-    s = sympy.Matrix(scene.spin_of.axis)
-    S = sympy.Matrix([[0, -s[2], s[1]], [s[2], 0, -s[0]], [-s[1], s[0], 0]])
-    if not all(vanishes(c) for c in I_G * S - S * I_G):
-        return None
     H = I_G * sympy.Matrix(chain.omega)
     relative = sympy.Matrix(chain.alpha) - sympy.Matrix(cross(chain.frame, chain.omega))
     return _plus(tuple(I_G * relative), cross(chain.frame, tuple(H)))  # type: ignore[arg-type]
+
+
+def _symmetric_about(scene: Scene3D) -> bool:
+    """Whether I_G commutes with [s]× for the spin axis s, I_G [s]× = [s]× I_G (the body is
+    symmetric about s: I_G is constant in a frame turning about s). Tested in body axes,
+    J [u]× = [u]× J with u = Rᵀ s the spin axis's body components: I_G = R J Rᵀ and
+    [s]× = R [u]× Rᵀ (R a rotation), so the one holds exactly when the other does, and
+    J's entries are the given moments, not the scene's turned ones."""
+    body = scene.body
+    assert scene.spin_of is not None
+    u = sympy.Matrix(
+        [sum(a * b for a, b in zip(axis, scene.spin_of.axis, strict=True)) for axis in body.axes]
+    )
+    J = in_body_axes(body.principal, body.products)
+    return all(vanishes(c) for c in J * _skew(u) - _skew(u) * J)
 
 
 def filled(

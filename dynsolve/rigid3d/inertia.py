@@ -24,7 +24,8 @@ from collections.abc import Sequence
 
 import sympy
 
-from dynsolve.rigid3d.trig import pythagoras, shortest
+from dynsolve.numbers import tidying_lightly
+from dynsolve.rigid3d.trig import nonzero_somewhere, pythagoras, shortest
 
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
 SHAPES_3D = ("disk", "cylinder", "cone", "ring", "rod", "plate", "sphere", "shell", "particle")
@@ -89,15 +90,26 @@ def tensor(
     [-c, -b,  3]])
     """
     R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
+    I_G = R * in_body_axes(moments, products) * R.T
+    # sin² + cos² = 1 where the axes are turned by an angle, where that is shorter; in
+    # numeric mode an entry surely not 0 is kept as the product wrote it (the equations
+    # written with it are reduced to one form either way: trig.tidied)
+    light = tidying_lightly()
+    return I_G.applyfunc(lambda e: e if light and nonzero_somewhere(e) else shortest(e))
+
+
+def in_body_axes(
+    moments: Sequence[sympy.Expr], products: Sequence[sympy.Expr] | None = None
+) -> sympy.Matrix:
+    """J, the inertia tensor in body axes: diag(moments), less the products of inertia
+    (I_xy, I_yz, I_zx) off the diagonal."""
     J = sympy.diag(*moments)
     if products is not None:
         xy, yz, zx = products
         J[0, 1] = J[1, 0] = -xy
         J[1, 2] = J[2, 1] = -yz
         J[0, 2] = J[2, 0] = -zx
-    I_G = R * J * R.T
-    # sin² + cos² = 1 where the axes are turned by an angle, where that is shorter
-    return I_G.applyfunc(shortest)
+    return J
 
 
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:

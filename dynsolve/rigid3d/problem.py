@@ -176,7 +176,7 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     omega, alpha, v_G, a_G = motion(scene)
     H: Vec3 = tuple(body.I_G * sympy.Matrix(omega))  # type: ignore[assignment]
     I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
-    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
+    H_dot = tuple(a + b for a, b in zip(I_alpha, cross(omega, H), strict=True))
     equations: list[Equation] = []
     label = "G"
     steady = steady_angles(spec, scene, tuple(unknowns))
@@ -483,7 +483,7 @@ def _target(
             item.unit is not None,
             False,
             "signed",
-            vectors[quantity][axis],
+            tidied(vectors[quantity][axis]) if quantity == "Hdot_" else vectors[quantity][axis],
         )
     raise SpecError(
         f"'{function}({args[0]})' is not a quantity of the 3D scene",

@@ -46,13 +46,25 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
     if expanded.has(sympy.sin, sympy.cos):  # a sine of a sum that expand_trig kept
         return expr
     for s, c in letters.values():
-        try:
-            reduced = [sympy.expand(sympy.rem(expanded, s**2 + c**2 - 1, x)) for x in (s, c)]
-        except sympy.PolynomialError:  # a sine in a denominator or under a root
+        reduced = [_remainder(expanded, s, c), _remainder(expanded, c, s)]
+        if None in reduced:  # a sine in a denominator or under a root
             return expr
-        expanded = min(reduced, key=_size)
+        expanded = min(reduced, key=_size)  # type: ignore[arg-type]
     back = {x: f(u) for u, (s, c) in letters.items() for x, f in ((s, sympy.sin), (c, sympy.cos))}
     return sympy.factor_terms(expanded.xreplace(back))
+
+
+def _remainder(expanded: sympy.Expr, x: sympy.Symbol, y: sympy.Symbol) -> sympy.Expr | None:
+    """The remainder of the polynomial ``expanded`` in x divided by x² + y² − 1 (x^k
+    written x^(k mod 2) (1 − y²)^(k div 2)), expanded; None where x is not in it as a
+    power with a natural exponent."""
+    terms = []
+    for term in sympy.Add.make_args(expanded):
+        rest, k = term.as_coeff_exponent(x)
+        if rest.has(x) or not (k.is_Integer and k >= 0):
+            return None
+        terms.append(rest * x ** (k % 2) * (1 - y**2) ** (k // 2))
+    return sympy.expand(sympy.Add(*terms))
 
 
 def shortest(expr: sympy.Expr) -> sympy.Expr:
@@ -108,12 +120,12 @@ def vanishes(expr: sympy.Expr) -> bool:
     expr = sympy.Integer(0) + expr
     if expr == 0:
         return True
-    if _nonzero_somewhere(expr):
+    if nonzero_somewhere(expr):
         return False
     return sympy.expand(pythagoras(expr)) == 0 or sympy.simplify(expr) == 0
 
 
-def _nonzero_somewhere(expr: sympy.Expr) -> bool:
+def nonzero_somewhere(expr: sympy.Expr) -> bool:
     """True when ``expr`` is a number other than 0, to the digits ``evalf`` guarantees, at
     a point where each letter is a positive number of its own (1 to 2, from its name)."""
     point = {
