@@ -34,8 +34,15 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
     written 2 sin u cos u first), its common factors taken out; ``expr`` itself when it is
     not a polynomial in the sines and cosines."""
     expr = sympy.Integer(0) + expr
+    reduced = _reduced(expr)
+    return expr if reduced is None else sympy.factor_terms(reduced)
+
+
+def _reduced(expr: sympy.Expr) -> sympy.Expr | None:
+    """:func:`pythagoras`'s remainder, expanded; None when there is no sine or cosine or
+    ``expr`` is not a polynomial in them."""
     if not expr.has(sympy.sin, sympy.cos):
-        return expr
+        return None
     expanded = sympy.expand(sympy.expand_trig(expr))
     angles = sorted(
         {f.args[0] for f in expanded.atoms(sympy.sin, sympy.cos)}, key=sympy.default_sort_key
@@ -44,14 +51,14 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
     for u, (s, c) in letters.items():
         expanded = expanded.xreplace({sympy.sin(u): s, sympy.cos(u): c})
     if expanded.has(sympy.sin, sympy.cos):  # a sine of a sum that expand_trig kept
-        return expr
+        return None
     for s, c in letters.values():
         reduced = [_remainder(expanded, s, c), _remainder(expanded, c, s)]
         if None in reduced:  # a sine in a denominator or under a root
-            return expr
+            return None
         expanded = min(reduced, key=_size)  # type: ignore[arg-type]
     back = {x: f(u) for u, (s, c) in letters.items() for x, f in ((s, sympy.sin), (c, sympy.cos))}
-    return sympy.factor_terms(expanded.xreplace(back))
+    return expanded.xreplace(back)
 
 
 def _remainder(expanded: sympy.Expr, x: sympy.Symbol, y: sympy.Symbol) -> sympy.Expr | None:
@@ -85,13 +92,14 @@ def tidied(expr: sympy.Expr) -> sympy.Expr:
 
     >>> u, a, b = sympy.symbols("u a b")
     >>> tidied(a * sympy.sin(u) ** 2 * sympy.cos(u) + a * sympy.cos(u) ** 3 + b * sympy.sin(2 * u))
-    (a + 2*b*sin(u))*cos(u)
+    a*cos(u) + b*sin(2*u)
     """
     expr = sympy.Integer(0) + expr
-    if not expr.has(sympy.sin, sympy.cos):
+    reduced = _reduced(expr)
+    if reduced is None:
         return tidy(expr)
-    reduced = pythagoras(expr)
-    return min((reduced, sympy.factor_terms(_double_angles(reduced))), key=_size)
+    forms = (sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced)))
+    return min(forms, key=_size)
 
 
 def _double_angles(expr: sympy.Expr) -> sympy.Expr:
