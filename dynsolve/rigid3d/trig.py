@@ -135,11 +135,12 @@ def vanishes(expr: sympy.Expr) -> bool:
 
 def nonzero_somewhere(expr: sympy.Expr) -> bool:
     """True when ``expr`` is a number other than 0, to the digits ``evalf`` guarantees, at
-    a point where each letter is a positive number of its own (1 to 2, from its name)."""
-    point = {
-        s: sympy.Rational(100 + sum(map(ord, s.name)) % 97, 100) + sympy.Rational(i, 331)
-        for i, s in enumerate(sorted(expr.free_symbols, key=str))
-    }
+    a point where each letter has a value of its own (1 to 2, from its name; negative for a
+    letter that cannot be positive)."""
+    point = {}
+    for i, letter in enumerate(sorted(expr.free_symbols, key=str)):
+        value = sympy.Rational(100 + sum(map(ord, letter.name)) % 97, 100) + sympy.Rational(i, 331)
+        point[letter] = -value if letter.is_nonpositive else value
     try:
         value = sympy.N(expr.xreplace(point), 15)
     except (TypeError, ValueError, ArithmeticError):
