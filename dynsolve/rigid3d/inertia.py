@@ -24,7 +24,7 @@ from collections.abc import Sequence
 
 import sympy
 
-from dynsolve.numbers import tidying_lightly
+from dynsolve.numbers import tidy, tidying_lightly
 from dynsolve.rigid3d.trig import nonzero_somewhere, pythagoras, shortest
 
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
@@ -142,7 +142,7 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
     """Orthonormal body axes from z (and x, when the body is not symmetric about z: made
     perpendicular to z); for an axisymmetric body x is taken ⊥ z in the scene's x–y
     plane (any x ⊥ z will do)."""
-    z = unit(z_axis)
+    z = _plain(unit(z_axis))
     if x_axis is None:
         if z[0] == 0 and z[1] == 0:  # z along the scene's z
             x = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
@@ -150,9 +150,14 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
             x = unit((-z[1], z[0], sympy.Integer(0)))
     else:
         dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
-        x = unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True)))
-    y = tuple(pythagoras(c) for c in cross(z, x))  # (0, 0, sin² + cos²) is (0, 0, 1)
-    return (x, y, z)  # type: ignore[return-value]
+        x = _plain(unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True))))
+    return (x, _plain(cross(z, x)), z)
+
+
+def _plain(vector: Sequence[sympy.Expr]) -> Vec3:
+    """An axis tidied in every mode, as the scene's geometry is: z × x = (0, 0, sin² + cos²)
+    is (0, 0, 1), and a plate's (0, 0, a²/(a² + b²) + b²/(a² + b²)) is (0, 0, 1)."""
+    return tuple(tidy(pythagoras(c), light=False) for c in vector)  # type: ignore[return-value]
 
 
 def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:

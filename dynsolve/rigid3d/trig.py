@@ -76,11 +76,12 @@ def _remainder(expanded: sympy.Expr, x: sympy.Symbol, y: sympy.Symbol) -> sympy.
 
 def shortest(expr: sympy.Expr) -> sympy.Expr:
     """The form of ``expr`` that prints shortest: as it is, with its common factors out, or
-    reduced by :func:`pythagoras`."""
+    as :func:`tidied` writes it (reduced by :func:`pythagoras`)."""
     expr = sympy.Integer(0) + expr
     forms = [expr, sympy.factor_terms(expr)]
-    if expr.has(sympy.sin, sympy.cos):
-        forms.append(pythagoras(expr))
+    reduced = _reduced(expr)
+    if reduced is not None:
+        forms += [sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced))]
     return min(forms, key=_size)
 
 
