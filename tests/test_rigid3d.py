@@ -525,13 +525,17 @@ def test_the_weight_work_and_t_about_the_axle_are_listed():
 
 
 def test_the_moments_about_the_second_point_are_printed():
-    """The moment equations about the first bearing, as the notes write them: about the
-    pivot O of the gyroscope the reactions drop out, m g d = Ω I_s ω_s with I_s = m r²/2
-    (Hibbeler 21.5); about bearing C of the plate turning about its diagonal, the bearings'
-    couple F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) (seed 002, (9.33)–(9.34))."""
+    """The moment equations about the second point, as the notes write them: the
+    gyroscope's precession is unknown, so its equations are about the pivot O, where the
+    reactions drop out, m g d = Ω I_s ω_s with I_s = m r²/2 (Hibbeler 21.5), and the second
+    point is G: ΣM_G,z, −O_y d = −I_s ω_s Ω; about bearing C of the plate turning about its
+    diagonal, the bearings' couple F √(a² + b²) = M ω² ab(a² − b²)/(12(a² + b²)) (seed 002,
+    (9.33)–(9.34))."""
     gyroscope = solve_file(PROBLEMS / "rigid3d" / "gyroscope.dyn")
-    assert [r.text for r in gyroscope.second_moments] == ["-d*g*m = -m*r^2*w_s*Ω/2"]
-    assert gyroscope.second_moments[0].note.startswith("ΣM_O,z = (Ḣ_G + r_G/O × m a_G)_z")
+    about_O = [r for r in gyroscope.equations if r.text == "-d*g*m = -m*r^2*w_s*Ω/2"]
+    assert about_O and about_O[0].note.startswith("ΣM_O,z = (Ḣ_G + r_G/O × m a_G)_z")
+    about_G = {r.text: r.note for r in gyroscope.second_moments}
+    assert about_G["-O_y*d = -m*r^2*w_s*Ω/2"].startswith("ΣM_G,z = (Ḣ_G)_z")
     plate = solve_file(PROBLEMS / "seed" / "3d_seed_plate_diagonal.dyn")
     texts = [r.text for r in plate.second_moments]
     assert "D_y*sqrt(a^2 + b^2) = M*a*b*ω^2*(a^2 - b^2)/(12*(a^2 + b^2))" in texts

@@ -34,8 +34,9 @@ from dataclasses import dataclass
 
 import sympy
 
-from dynsolve.rigid3d.inertia import Vec3, cross
+from dynsolve.rigid3d.inertia import Vec3, cross, in_body_axes
 from dynsolve.rigid3d.model import Scene3D, SpinOf
+from dynsolve.rigid3d.trig import vanishes
 
 ZERO3: Vec3 = (sympy.Integer(0),) * 3  # type: ignore[assignment]
 
@@ -87,43 +88,77 @@ def by_rotations(
     put in first: each turn k through its angle q_k(t) = ω_k t + α_k t²/2 about its axis
     (as drawn, in the frame before it), G(t) = T_0(T_1(T_2(G))) with
     T_k(x) = P_k + R_k(t)(x − P_k), and ω = vee(Ṙ Rᵀ), α = d/dt vee(Ṙ Rᵀ) for
-    R = R_0 R_1 R_2."""
-    t = sympy.Symbol("t", real=True)
+    R = R_0 R_1 R_2.
+
+    Only the first two derivatives at t = 0 are needed, so each rotation is taken to second
+    order in t, R_k = E + q K + q²/2 K² (Rodrigues, sin q K + (1 − cos q) K², expanded),
+    that is R_k = E + ω_k K t + (α_k K + ω_k² K²) t²/2, and the chain is multiplied as
+    polynomials in t cut after t²: R(t) = E + R_1 t + R_2 t², with Ṙ(0) = R_1 and
+    R̈(0) = 2 R_2. As R(0) = E, ω = vee(R_1) and α = vee(R̈ + Ṙ Ṙᵀ) = vee(2 R_2 + R_1 R_1ᵀ)
+    (d/dt (Ṙ Rᵀ) = R̈ Rᵀ + Ṙ Ṙᵀ); a_G = G̈(0), twice G's t² term."""
     spin, body = scene.spin, scene.body
     chain = [(spin.axis, spin.through, spin.omega, spin.alpha)]
     chain += [(u.axis, u.through or body.G, u.omega, u.alpha) for u in turns(scene)]
-    R = sympy.eye(3)
-    G = sympy.Matrix(body.G).xreplace(values)
-    for axis, P, w, a in reversed(chain):
-        axis, P = _put(axis, values), _put(P, values)
-        w, a = (sympy.Integer(0) + w).xreplace(values), (sympy.Integer(0) + a).xreplace(values)
-        R_k = _rotation(axis, w * t + a * t**2 / 2)
-        G = sympy.Matrix(P) + R_k * (G - sympy.Matrix(P))
-        R = R_k * R
-    R_dot = R.diff(t)
-    W = R_dot * R.T
-    omega_t = sympy.Matrix([W[2, 1], W[0, 2], W[1, 0]])
-    at_zero = {t: 0}
-    omega = tuple(c.subs(at_zero) for c in omega_t)
-    alpha = tuple(c.diff(t).subs(at_zero) for c in omega_t)
-    a_G = tuple(c.diff(t, 2).subs(at_zero) for c in G)
-    return omega, alpha, a_G  # type: ignore[return-value]
+    R_1, R_2 = sympy.zeros(3), sympy.zeros(3)
+    G = [_column(body.G, values), sympy.zeros(3, 1), sympy.zeros(3, 1)]
+    for axis, P, w, a in reversed(chain):  # the innermost turn first
+        K = _skew(_column(axis, values))
+        w, a = _number(w, values), _number(a, values)
+        A_1, A_2 = w * K, (a * K + w**2 * K * K) / 2
+        arm = G[0] - _column(P, values)
+        G = [G[0], G[1] + A_1 * arm, G[2] + A_1 * G[1] + A_2 * arm]
+        R_1, R_2 = A_1 + R_1, A_2 + A_1 * R_1 + R_2  # (E + A_1 t + A_2 t²)(E + R_1 t + R_2 t²)
+    change = 2 * R_2 + R_1 * R_1.T
+    return _vee(R_1), _vee(change), tuple(2 * G[2])  # type: ignore[return-value]
+
+
+def _column(
+    vector: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr]
+) -> sympy.Matrix:
+    """``vector`` with ``values`` put in, as a column of numbers (:func:`_number`)."""
+    return sympy.Matrix([_number(c, values) for c in vector])
+
+
+def _number(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with ``values`` put in, evaluated to 30 digits (a letter left stays one)."""
+    return sympy.N((sympy.Integer(0) + expr).xreplace(values), 30)
+
+
+def _skew(u: sympy.Matrix) -> sympy.Matrix:
+    """[u]×: the matrix of u × ."""
+    return sympy.Matrix([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+
+
+def _vee(W: sympy.Matrix) -> Vec3:
+    """The vector of the skew matrix W (W x = w × x)."""
+    return (W[2, 1], W[0, 2], W[1, 0])
 
 
 def frame_form(scene: Scene3D, chain: Composition) -> Vec3 | None:
     """Ḣ_G = (Ḣ_G)_xyz + Ω × H_G in the frame that carries the spin axis (Hibbeler 21.4),
     with (Ḣ_G)_xyz = I_G (α − Ω × ω); None when the body does not spin in a frame or is not
     symmetric about its spin axis (then I_G is not constant in that frame)."""
-    if chain.frame is None or scene.spin_of is None:
+    if chain.frame is None or scene.spin_of is None or not _symmetric_about(scene):
         return None
     I_G = scene.body.I_G
-    s = sympy.Matrix(scene.spin_of.axis)
-    S = sympy.Matrix([[0, -s[2], s[1]], [s[2], 0, -s[0]], [-s[1], s[0], 0]])
-    if any(sympy.simplify(c) != 0 for c in I_G * S - S * I_G):
-        return None
     H = I_G * sympy.Matrix(chain.omega)
     relative = sympy.Matrix(chain.alpha) - sympy.Matrix(cross(chain.frame, chain.omega))
     return _plus(tuple(I_G * relative), cross(chain.frame, tuple(H)))  # type: ignore[arg-type]
+
+
+def _symmetric_about(scene: Scene3D) -> bool:
+    """Whether I_G commutes with [s]× for the spin axis s, I_G [s]× = [s]× I_G (the body is
+    symmetric about s: I_G is constant in a frame turning about s). Tested in body axes,
+    J [u]× = [u]× J with u = Rᵀ s the spin axis's body components: I_G = R J Rᵀ and
+    [s]× = R [u]× Rᵀ (R a rotation), so the one holds exactly when the other does, and
+    J's entries are the given moments, not the scene's turned ones."""
+    body = scene.body
+    assert scene.spin_of is not None
+    u = sympy.Matrix(
+        [sum(a * b for a, b in zip(axis, scene.spin_of.axis, strict=True)) for axis in body.axes]
+    )
+    J = in_body_axes(body.principal, body.products)
+    return all(vanishes(c) for c in J * _skew(u) - _skew(u) * J)
 
 
 def filled(
@@ -165,17 +200,6 @@ def agree(
     worst = max(abs(a - b) for a, b in numbers)
     scale = max(max(abs(a), abs(b)) for a, b in numbers)
     return worst / scale if scale else 0.0
-
-
-def _put(vector: Sequence[sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr]) -> Vec3:
-    return tuple((sympy.Integer(0) + c).xreplace(values) for c in vector)  # type: ignore[return-value]
-
-
-def _rotation(axis: Vec3, angle: sympy.Expr) -> sympy.Matrix:
-    """Rodrigues: R = E + sin q [u]× + (1 − cos q) [u]×² about the unit vector u."""
-    u = sympy.Matrix(axis)
-    K = sympy.Matrix([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
-    return sympy.eye(3) + sympy.sin(angle) * K + (1 - sympy.cos(angle)) * K * K
 
 
 def _scaled(size: sympy.Expr, axis: Vec3) -> Vec3:

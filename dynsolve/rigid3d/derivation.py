@@ -51,6 +51,7 @@ from dynsolve.rigid3d.composition import (
 )
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D
+from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim, natural_unit
 
@@ -263,6 +264,6 @@ def _vector(
     except TypeError:
         if not formulas:
             return "(in letters)"
-        return "(" + ", ".join(sympy.sstr(tidy(sympy.Integer(0) + c)) for c in vector) + ")"
+        return "(" + ", ".join(sympy.sstr(tidied(c)) for c in vector) + ")"
     shown = [format_quantity(convert(n, unit, system), unit).rsplit(" ", 1)[0] for n in numbers]
     return f"({', '.join(shown)}) {unit}"

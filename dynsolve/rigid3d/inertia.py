@@ -24,6 +24,9 @@ from collections.abc import Sequence
 
 import sympy
 
+from dynsolve.numbers import tidy, tidying_lightly
+from dynsolve.rigid3d.trig import nonzero_somewhere, pythagoras, shortest
+
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
 SHAPES_3D = ("disk", "cylinder", "cone", "ring", "rod", "plate", "sphere", "shell", "particle")
 
@@ -87,15 +90,26 @@ def tensor(
     [-c, -b,  3]])
     """
     R = sympy.Matrix([[axes[j][i] for j in range(3)] for i in range(3)])
+    I_G = R * in_body_axes(moments, products) * R.T
+    # sin² + cos² = 1 where the axes are turned by an angle, where that is shorter; in
+    # numeric mode an entry surely not 0 is kept as the product wrote it (the equations
+    # written with it are reduced to one form either way: trig.tidied)
+    light = tidying_lightly()
+    return I_G.applyfunc(lambda e: e if light and nonzero_somewhere(e) else shortest(e))
+
+
+def in_body_axes(
+    moments: Sequence[sympy.Expr], products: Sequence[sympy.Expr] | None = None
+) -> sympy.Matrix:
+    """J, the inertia tensor in body axes: diag(moments), less the products of inertia
+    (I_xy, I_yz, I_zx) off the diagonal."""
     J = sympy.diag(*moments)
     if products is not None:
         xy, yz, zx = products
         J[0, 1] = J[1, 0] = -xy
         J[1, 2] = J[2, 1] = -yz
         J[0, 2] = J[2, 0] = -zx
-    I_G = R * J * R.T
-    # sin² + cos² = 1 where the axes are turned by an angle (9 small entries: cheap)
-    return I_G.applyfunc(lambda e: sympy.trigsimp(e) if e.has(sympy.sin, sympy.cos) else e)
+    return J
 
 
 def unit(vector: Sequence[sympy.Expr]) -> Vec3:
@@ -128,7 +142,7 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
     """Orthonormal body axes from z (and x, when the body is not symmetric about z: made
     perpendicular to z); for an axisymmetric body x is taken ⊥ z in the scene's x–y
     plane (any x ⊥ z will do)."""
-    z = unit(z_axis)
+    z = _plain(unit(z_axis))
     if x_axis is None:
         if z[0] == 0 and z[1] == 0:  # z along the scene's z
             x = (sympy.Integer(1), sympy.Integer(0), sympy.Integer(0))
@@ -136,9 +150,14 @@ def body_axes(z_axis: Vec3, x_axis: Vec3 | None) -> tuple[Vec3, Vec3, Vec3]:
             x = unit((-z[1], z[0], sympy.Integer(0)))
     else:
         dot = sum(a * b for a, b in zip(x_axis, z, strict=True))
-        x = unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True)))
-    y = cross(z, x)
-    return (x, y, z)
+        x = _plain(unit(tuple(a - dot * b for a, b in zip(x_axis, z, strict=True))))
+    return (x, _plain(cross(z, x)), z)
+
+
+def _plain(vector: Sequence[sympy.Expr]) -> Vec3:
+    """An axis tidied in every mode, as the scene's geometry is: z × x = (0, 0, sin² + cos²)
+    is (0, 0, 1), and a plate's (0, 0, a²/(a² + b²) + b²/(a² + b²)) is (0, 0, 1)."""
+    return tuple(tidy(pythagoras(c), light=False) for c in vector)  # type: ignore[return-value]
 
 
 def cross(a: Sequence[sympy.Expr], b: Sequence[sympy.Expr]) -> Vec3:

@@ -24,9 +24,11 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+import mpmath.libmp
 import sympy
 
 from dynsolve.errors import Position, SpecError
+from dynsolve.numbers import tidying_lightly
 from dynsolve.results import Check
 from dynsolve.system import Equation
 
@@ -104,8 +106,15 @@ def onset_value(
     values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> sympy.Expr | None:
     """The smallest positive root P of ∂F/∂θ(0, P) = 0 (a formula of the givens); with
-    symbolic givens, the one root sympy knows to be positive. None when there is none."""
-    slope = sympy.simplify(sympy.diff(residual, angle).subs(angle, 0))
+    symbolic givens, the one root sympy knows to be positive. None when there is none.
+    In numeric mode, with every other given a number, the root in numbers (30 digits:
+    :func:`_in_numbers`)."""
+    slope = sympy.diff(residual, angle).subs(angle, 0)
+    if tidying_lightly():
+        found = _in_numbers(slope, load, values)
+        if found is not None:
+            return found
+    slope = sympy.simplify(slope)
     roots = sympy.solve(slope, load)
     best, best_value = None, math.inf
     for root in roots:
@@ -118,6 +127,23 @@ def onset_value(
         if abs(size.imag) < 1e-12 and 0 < size.real < best_value:
             best, best_value = root, size.real
     return best
+
+
+def _in_numbers(
+    slope: sympy.Expr, load: sympy.Symbol, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> sympy.Expr | None:
+    """The smallest positive root of ``slope`` in ``load`` with ``values`` put in, from the
+    polynomial's roots to 30 digits; None when a letter is left, the slope is not a
+    polynomial in the load or its roots do not converge (then the formula is solved for)."""
+    numbers = sympy.expand(slope.xreplace(dict(values)))
+    if numbers.free_symbols - {load}:
+        return None
+    try:
+        roots = sympy.Poly(numbers, load).nroots(n=30)
+    except (sympy.PolynomialError, mpmath.libmp.NoConvergence):
+        return None
+    positive = [r for r in roots if r.is_real and r > 0]
+    return min(positive) if positive else None
 
 
 def onset_check(onset: Onset, values: Mapping[sympy.Symbol, sympy.Expr]) -> tuple[Check, ...]:

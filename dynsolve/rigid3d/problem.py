@@ -56,6 +56,7 @@ from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.rigid3d.steady import steady_angles, steady_equations
+from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.units import Dim, natural_unit
@@ -175,7 +176,7 @@ def build_3d_problem(spec: Spec) -> Problem3D:
     omega, alpha, v_G, a_G = motion(scene)
     H: Vec3 = tuple(body.I_G * sympy.Matrix(omega))  # type: ignore[assignment]
     I_alpha = tuple(body.I_G * sympy.Matrix(alpha))
-    H_dot = tuple(sympy.expand(a + b) for a, b in zip(I_alpha, cross(omega, H), strict=True))
+    H_dot = tuple(a + b for a, b in zip(I_alpha, cross(omega, H), strict=True))
     equations: list[Equation] = []
     label = "G"
     steady = steady_angles(spec, scene, tuple(unknowns))
@@ -279,8 +280,10 @@ def _newton_euler(
     where: Position,
 ) -> tuple[list[Equation], str]:
     """ΣF = m a_G and ΣM = Ḣ_G (about G, or about the one bearing when an angle of the
-    position is unknown), with the moment point's label; a moment component that no
-    unknown load can balance is refused."""
+    position or a rate is unknown), with the moment point's label; a moment component that
+    no unknown load can balance is refused. Ḣ_G + r_G × m a_G is written in its shortest
+    form, sin² u + cos² u = 1 applied where that shortens it
+    (:func:`~dynsolve.rigid3d.trig.tidied`)."""
     body, spin = scene.body, scene.spin
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)
@@ -293,9 +296,11 @@ def _newton_euler(
         total = sum((f[i] for f, _ in reactions.values()), sympy.Integer(0)) + weight[i]
         note = f"ΣF_{axis} = m (a_G)_{axis}"
         equations.append(Equation(total, body.mass * a_G[i], note, spin.line, note))
-    # about G; about the one bearing when an angle of the position is unknown, so that its
-    # reactions drop out of the moments and the angle comes from one equation
-    pivot = scene.bearings[0] if scene.angles and len(scene.bearings) == 1 else None
+    # about G; about the one bearing when the motion is unknown (an angle of the position, or
+    # a rate: a top's precession about its fixed point, Hibbeler eq. 21-30), so that its
+    # reactions drop out of the moments and the motion comes from the moments alone
+    unknown_motion = bool(scene.angles or scene.rates)
+    pivot = scene.bearings[0] if unknown_motion and len(scene.bearings) == 1 else None
     point = pivot.at if pivot is not None else body.G
     label = pivot.name if pivot is not None else "G"
     r_G = tuple(body.G[i] - point[i] for i in range(3))
@@ -313,7 +318,7 @@ def _newton_euler(
             note = f"ΣM_G,{axis} = (Ḣ_G)_{axis}"
         else:
             note = f"ΣM_{label},{axis} = (Ḣ_G + r_G/{label} × m a_G)_{axis}"
-        lhs, rhs = moment[i], tidy(H_dot[i] + m_a_moment[i])  # factored where shorter
+        lhs, rhs = moment[i], tidied(H_dot[i] + m_a_moment[i])  # factored where shorter
         if not (unknowns & (lhs - rhs).free_symbols):
             if sympy.simplify((lhs - rhs).xreplace(dict(scene.values))) == 0:
                 continue  # holds whatever the reactions: nothing to solve for
@@ -478,7 +483,7 @@ def _target(
             item.unit is not None,
             False,
             "signed",
-            vectors[quantity][axis],
+            tidied(vectors[quantity][axis]) if quantity == "Hdot_" else vectors[quantity][axis],
         )
     raise SpecError(
         f"'{function}({args[0]})' is not a quantity of the 3D scene",
@@ -600,7 +605,7 @@ def _second_moment_rows(problem: Problem3D) -> tuple[EquationRow, ...]:
     values = dict(problem.scene.values)
     rows = []
     for i, axis in enumerate(AXES):
-        lhs, rhs = tidy(total[i]), tidy(expected[i])
+        lhs, rhs = tidied(total[i]), tidied(expected[i])
         if not unknowns & (lhs - rhs).free_symbols and (
             sympy.simplify((lhs - rhs).xreplace(values)) == 0
         ):
