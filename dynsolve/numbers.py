@@ -95,14 +95,14 @@ def tidy(expr: sympy.Expr | int, light: bool = True) -> sympy.Expr:
 def _tidied(expr: sympy.Expr, light: bool) -> sympy.Expr:
     """:func:`tidy`'s search for the tidiest form of ``expr``, once per form and ``light``
     (numeric mode, where a form surely not 0 is left as it is); sympy's cache, cleared with it."""
-    if light and _surely_nonzero(expr):
+    if light and surely_nonzero(expr):
         return expr
     if light and _numerically_zero(expr):
         return sympy.Integer(0)
-    best = min(_cheap_forms(expr), key=_size)
+    best = min(_cheap_forms(expr), key=printed_size)
     if _worth_simplifying(best):
         simpler = sympy.simplify(best)
-        if _size(simpler) < _size(best):
+        if printed_size(simpler) < printed_size(best):
             best = simpler
     return best
 
@@ -161,7 +161,7 @@ def _probe(symbol: sympy.Symbol, salt: int = 0) -> sympy.Rational | None:
     return value
 
 
-def _surely_nonzero(expr: sympy.Expr) -> bool:
+def surely_nonzero(expr: sympy.Expr) -> bool:
     """True when ``expr`` is a number not 0, to the digits sympy's ``evalf`` guarantees,
     at one point of the letters' domain: then it is not identically 0. False (not known)
     when a letter has no probe value, the value is not a number, or it has no digits."""
@@ -219,7 +219,7 @@ def _numerically_zero(expr: sympy.Expr) -> bool:
 
 
 @cacheit  # the same candidate forms come back (an expression and its factor_terms)
-def _size(expr: sympy.Expr) -> tuple[int, int]:
+def printed_size(expr: sympy.Expr) -> tuple[int, int]:
     """How long a form prints, then how many operations it has: the smaller, the tidier."""
     return len(sympy.sstr(expr)), sympy.count_ops(expr)
 

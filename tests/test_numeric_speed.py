@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 import sympy
 
-from dynsolve.numbers import _surely_nonzero, light_tidying, tidy, tidying_lightly
+from dynsolve.numbers import light_tidying, surely_nonzero, tidy, tidying_lightly
 from dynsolve.pipeline import solve_file
 from dynsolve.solver.blocks import _holds, solve_block
 from dynsolve.system import SolveOptions
@@ -45,17 +45,17 @@ def test_light_tidying_leaves_a_nonzero_form_as_written() -> None:
     ],
 )
 def test_light_tidying_still_finds_zero(zero: sympy.Expr) -> None:
-    assert not _surely_nonzero(zero)
+    assert not surely_nonzero(zero)
     with light_tidying():
         assert tidy(zero) == 0
 
 
-def test_surely_nonzero_only_with_digits() -> None:
-    assert _surely_nonzero(a - b + 1 - a + b - 1 + sympy.Rational(1, 10**20))
-    assert not _surely_nonzero(sympy.Function("f")(a))  # not a number: not known
-    assert not _surely_nonzero(sympy.Symbol("n", integer=True) - 1)  # no probe for an integer
+def testsurely_nonzero_only_with_digits() -> None:
+    assert surely_nonzero(a - b + 1 - a + b - 1 + sympy.Rational(1, 10**20))
+    assert not surely_nonzero(sympy.Function("f")(a))  # not a number: not known
+    assert not surely_nonzero(sympy.Symbol("n", integer=True) - 1)  # no probe for an integer
     w = sympy.Symbol("w", negative=True)
-    assert _surely_nonzero(sympy.sqrt(-w))  # probed at a negative value: a real root
+    assert surely_nonzero(sympy.sqrt(-w))  # probed at a negative value: a real root
 
 
 def test_holds_rejects_what_checksol_rejects() -> None:

@@ -21,9 +21,9 @@ from dynsolve.rigid3d.composition import by_rotations, compose, frame_form
 from dynsolve.rigid3d.inertia import body_axes, tensor
 from dynsolve.rigid3d.model import read_scene3d
 from dynsolve.rigid3d.problem import build_3d_problem
-from dynsolve.rigid3d.trig import pythagoras, tidied, vanishes
 from dynsolve.spec.parser import parse_file, parse_spec
 from dynsolve.system import SolveOptions
+from dynsolve.trig import pythagoras, tidied, vanishes
 
 PROBLEMS = Path(__file__).parent.parent / "problems"
 TOP = PROBLEMS / "rigid3d" / "top_steady_precession.dyn"

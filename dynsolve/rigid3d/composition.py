@@ -36,7 +36,7 @@ import sympy
 
 from dynsolve.rigid3d.inertia import Vec3, cross, in_body_axes
 from dynsolve.rigid3d.model import Scene3D, SpinOf
-from dynsolve.rigid3d.trig import vanishes
+from dynsolve.trig import vanishes
 
 ZERO3: Vec3 = (sympy.Integer(0),) * 3  # type: ignore[assignment]
 

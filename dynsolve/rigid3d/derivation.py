@@ -51,8 +51,8 @@ from dynsolve.rigid3d.composition import (
 )
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D
-from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import Spec
+from dynsolve.trig import tidied
 from dynsolve.units import Dim, natural_unit
 
 TOLERANCE = 1e-9

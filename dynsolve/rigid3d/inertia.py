@@ -24,8 +24,8 @@ from collections.abc import Sequence
 
 import sympy
 
-from dynsolve.numbers import tidy, tidying_lightly
-from dynsolve.rigid3d.trig import nonzero_somewhere, pythagoras, shortest
+from dynsolve.numbers import surely_nonzero, tidy, tidying_lightly
+from dynsolve.trig import pythagoras, shortest
 
 Vec3 = tuple[sympy.Expr, sympy.Expr, sympy.Expr]
 SHAPES_3D = ("disk", "cylinder", "cone", "ring", "rod", "plate", "sphere", "shell", "particle")
@@ -95,7 +95,7 @@ def tensor(
     # numeric mode an entry surely not 0 is kept as the product wrote it (the equations
     # written with it are reduced to one form either way: trig.tidied)
     light = tidying_lightly()
-    return I_G.applyfunc(lambda e: e if light and nonzero_somewhere(e) else shortest(e))
+    return I_G.applyfunc(lambda e: e if light and surely_nonzero(e) else shortest(e))
 
 
 def in_body_axes(

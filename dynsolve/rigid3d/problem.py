@@ -56,9 +56,9 @@ from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.rigid3d.steady import steady_angles, steady_equations
-from dynsolve.rigid3d.trig import tidied
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
+from dynsolve.trig import tidied
 from dynsolve.units import Dim, natural_unit
 
 FORCE, MOMENT, ENERGY = Dim.of("force"), Dim(2, 1, -2), Dim(2, 1, -2)
@@ -283,7 +283,7 @@ def _newton_euler(
     position or a rate is unknown), with the moment point's label; a moment component that
     no unknown load can balance is refused. Ḣ_G + r_G × m a_G is written in its shortest
     form, sin² u + cos² u = 1 applied where that shortens it
-    (:func:`~dynsolve.rigid3d.trig.tidied`)."""
+    (:func:`~dynsolve.trig.tidied`)."""
     body, spin = scene.body, scene.spin
     weight = (
         tuple(body.mass * scene.symbols["g"] * c for c in scene.gravity)

@@ -1,4 +1,4 @@
-"""Trigonometric polynomials of a 3D scene's angles in a canonical form.
+"""Trigonometric polynomials of a scene's angles in a canonical form (sin² + cos² = 1).
 
 The scene's vectors are written with the sines and cosines of its angles (a tilted axis
 (sin θ, cos θ, 0)); products of them (I_G = R J Rᵀ, ω × H_G, r × m a_G) hold powers
@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import sympy
 
-from dynsolve.numbers import tidy
+from dynsolve.numbers import printed_size, surely_nonzero, tidy
 
 
 def pythagoras(expr: sympy.Expr) -> sympy.Expr:
@@ -56,7 +56,7 @@ def _reduced(expr: sympy.Expr) -> sympy.Expr | None:
         reduced = [_remainder(expanded, s, c), _remainder(expanded, c, s)]
         if None in reduced:  # a sine in a denominator or under a root
             return None
-        expanded = min(reduced, key=_size)  # type: ignore[arg-type]
+        expanded = min(reduced, key=printed_size)  # type: ignore[arg-type]
     back = {x: f(u) for u, (s, c) in letters.items() for x, f in ((s, sympy.sin), (c, sympy.cos))}
     return expanded.xreplace(back)
 
@@ -82,7 +82,7 @@ def shortest(expr: sympy.Expr) -> sympy.Expr:
     reduced = _reduced(expr)
     if reduced is not None:
         forms += [sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced))]
-    return min(forms, key=_size)
+    return min(forms, key=printed_size)
 
 
 def tidied(expr: sympy.Expr) -> sympy.Expr:
@@ -100,7 +100,7 @@ def tidied(expr: sympy.Expr) -> sympy.Expr:
     if reduced is None:
         return tidy(expr)
     forms = (sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced)))
-    return min(forms, key=_size)
+    return min(forms, key=printed_size)
 
 
 def _double_angles(expr: sympy.Expr) -> sympy.Expr:
@@ -116,11 +116,6 @@ def _double_angles(expr: sympy.Expr) -> sympy.Expr:
     return expr.replace(lambda e: e.is_Mul, folded)
 
 
-def _size(expr: sympy.Expr) -> tuple[int, int]:
-    """How long a form prints, then how many operations it has."""
-    return len(sympy.sstr(expr)), sympy.count_ops(expr)
-
-
 def vanishes(expr: sympy.Expr) -> bool:
     """Whether ``expr`` is identically 0: not when it is a number other than 0 at a sample
     point of its letters (to the digits sympy's ``evalf`` guarantees: no identity then);
@@ -129,25 +124,6 @@ def vanishes(expr: sympy.Expr) -> bool:
     expr = sympy.Integer(0) + expr
     if expr == 0:
         return True
-    if nonzero_somewhere(expr):
+    if surely_nonzero(expr):
         return False
     return sympy.expand(pythagoras(expr)) == 0 or sympy.simplify(expr) == 0
-
-
-def nonzero_somewhere(expr: sympy.Expr) -> bool:
-    """True when ``expr`` is a number other than 0, to the digits ``evalf`` guarantees, at
-    a point where each letter has a value of its own (1 to 2, from its name; negative for a
-    letter that cannot be positive)."""
-    point = {}
-    for i, letter in enumerate(sorted(expr.free_symbols, key=str)):
-        value = sympy.Rational(100 + sum(map(ord, letter.name)) % 97, 100) + sympy.Rational(i, 331)
-        point[letter] = -value if letter.is_nonpositive else value
-    try:
-        value = sympy.N(expr.xreplace(point), 15)
-    except (TypeError, ValueError, ArithmeticError):
-        return False
-    if not value.is_number:
-        return False
-    if value.is_Rational:
-        return value != 0
-    return any(f._prec > 10 and f != 0 for f in value.atoms(sympy.Float))
