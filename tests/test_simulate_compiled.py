@@ -1,0 +1,62 @@
+"""The simulation's float functions are written without sympy's printers
+(:mod:`dynsolve.simulate.compiled`), and a spring's length is a root sympy leaves as
+written (:func:`dynsolve.simulate.equations.root`); the numbers are hand-derived."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+import sympy
+
+from dynsolve.simulate.compiled import _Writer, float_function, float_scalar
+from dynsolve.simulate.equations import Q, root
+
+q, v = sympy.symbols("q v")
+
+
+def test_spring_force_of_a_compression_spring() -> None:
+    """k = 400 N/m, L₀ = 0.3 m, the ball at 0.2 + q above the base: at q = 0.05 the
+    spring is 0.25 m long, compressed 0.05 m, and pushes up k·0.05 = 20 N; past
+    q = 0.1 it has left the ball (0 N), and at the base itself (length 0) its branch
+    is not evaluated at all."""
+    length = root((q + sympy.Rational(1, 5)) ** 2)
+    push = sympy.Piecewise((-400 * (length - sympy.Rational(3, 10)), length < 0.3), (0, True))
+    (force,) = float_function([q], [push])(0.05)
+    assert force == pytest.approx(20.0, rel=1e-14)
+    assert float_function([q], [push])(0.15) == (0.0,)
+    pull = sympy.Piecewise((400 / length, length > 0), (0, True))
+    assert float_function([q], [pull])(-0.2) == (0.0,)  # 1/0 never evaluated
+
+
+def test_pendulum_terms_and_shared_nodes() -> None:
+    """A bob of 2 kg on a 1.2 m cord, q its angle from the bottom: T = ½ m L² q'² and
+    V = m g L (1 − cos q); at q = 60° V = 2 × 9.81 × 1.2 × 0.5 = 11.772 J. sin q and
+    cos q are each computed once."""
+    L, m, g = sympy.Rational(6, 5), 2, sympy.Rational(981, 100)
+    x, y = L * sympy.sin(q), -L * sympy.cos(q)
+    M = m * (sympy.diff(x, q) ** 2 + sympy.diff(y, q) ** 2)
+    V = m * g * (y + L)
+    T_and_V = float_function([q, v], [M * v**2 / 2, V])
+    T, potential = T_and_V(math.pi / 3, 2.0)
+    assert T == pytest.approx(0.5 * 2 * 1.44 * 4.0, rel=1e-14)
+    assert potential == pytest.approx(11.772, rel=1e-14)
+    source = _Writer([q, v], [M, V, sympy.diff(V, q)]).source()
+    assert source.count("math.sin(a0)") == 1 and source.count("math.cos(a0)") == 1
+
+
+def test_scalar_and_a_node_left_to_lambdify() -> None:
+    """float_scalar returns the number itself; a node the writer has no code for
+    (Heaviside) is left to sympy's lambdify, with the same numbers."""
+    assert float_scalar([q], sympy.sqrt(q) * 3)(16.0) == 12.0
+    step = float_scalar([q], sympy.Heaviside(q - 1) * q)
+    assert (step(2.0), step(0.5)) == (2.0, 0.0)
+
+
+def test_root_is_smooth_and_evaluates_numbers() -> None:
+    """d√(u²)/dq = u u'/√(u²): for u = 3q − 1 at q = 1, 3·2/2 = 3; √9 = 3 at once."""
+    length = root((3 * Q - 1) ** 2)
+    slope = sympy.diff(length, Q)
+    assert float(slope.subs(Q, 1)) == pytest.approx(3.0, rel=1e-15)
+    assert root(sympy.Integer(9)) == 3
+    assert float_scalar([Q], slope)(1.0) == pytest.approx(3.0, rel=1e-15)
