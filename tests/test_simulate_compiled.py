@@ -38,8 +38,8 @@ def test_pendulum_terms_and_shared_nodes() -> None:
     M = m * (sympy.diff(x, q) ** 2 + sympy.diff(y, q) ** 2)
     V = m * g * (y + L)
     T_and_V = float_function([q, v], [M * v**2 / 2, V])
-    T, potential = T_and_V(math.pi / 3, 2.0)
-    assert T == pytest.approx(0.5 * 2 * 1.44 * 4.0, rel=1e-14)
+    kinetic, potential = T_and_V(math.pi / 3, 2.0)
+    assert kinetic == pytest.approx(0.5 * 2 * 1.44 * 4.0, rel=1e-14)
     assert potential == pytest.approx(11.772, rel=1e-14)
     source = _Writer([q, v], [M, V, sympy.diff(V, q)]).source()
     assert source.count("math.sin(a0)") == 1 and source.count("math.cos(a0)") == 1
