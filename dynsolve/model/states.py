@@ -621,11 +621,13 @@ def _rates(
         b = travel.body
         placement = placements[b]
         v = (vector[x.vx[b]], vector[x.vy[b]])
-        speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2))
+        speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2), light=False)
         along = v[0] * placement.shift[0] + v[1] * placement.shift[1]
         scale = sign_of(along, given_values) / speed
         rate_name = f"speed of G of {b}"
-    values = {k: tidy(v * scale) for k, v in vector.items()}
+    # tidied in numeric mode too: the kinetic energies and speeds are composed of these
+    # (and tidied as in exact mode), which costs ten times as much from untidy parts
+    values = {k: tidy(v * scale, light=False) for k, v in vector.items()}
     rates = Rates(
         v_G={n: (values[x.vx[n]], values[x.vy[n]]) for n in x.bodies},
         omega={n: values[x.om[n]] for n in x.bodies},
