@@ -304,9 +304,10 @@ def straight_line(
                     f"the forces on {body} have a part across its travel and nothing guides "
                     "it: its path is not straight"
                 )
-    return _build(
-        scene, placements, {}, symbols, values, what or f"distance of {body} along its travel", "m"
-    )
+    numbers = _numbers(symbols, values)
+    along = _dot(_applied(scene, placements, body, numbers), unit)  # Q_c = F·u = −dV/dq
+    what = what or f"distance of {body} along its travel"
+    return _build(scene, placements, {}, numbers, values, what, "m", force=along)
 
 
 def _applied(
@@ -496,8 +497,11 @@ def _build(
     coordinate: str,
     unit: str,
     simplify: bool = False,
+    force: sympy.Expr | None = None,
 ) -> OneDof:
-    """Lambdify M, M', Q_c = −V', the friction's size and V, and each body's placement."""
+    """M, M', Q_c = −V', the friction's size and V, and each body's placement, to be
+    written as float functions; ``force``: Q_c as found without differentiating V (the
+    applied force along a particle's straight line)."""
     symbols = _numbers(symbols, values)
     mass_matrix = sympy.Integer(0)
     places: list[sympy.Expr] = []
@@ -516,7 +520,7 @@ def _build(
             dtheta,
         ]
     V = _potential(scene, placements, link_turns, symbols)
-    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
+    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q) if force is None else force]
     terms += [_friction(scene, placements, symbols, values), V]
     hold = _friction(scene, placements, symbols, values, static=True) if terms[3] != 0 else 0
     numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]]
