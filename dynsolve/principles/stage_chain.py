@@ -137,7 +137,8 @@ def chain_formulation(
             equations.append(Equation(equation.lhs, equation.rhs, f"eq. {number}", number, note))
         unknowns.update(step.unknowns)
         chain.advance(step)
-        chain.presolve(step)
+        if stage is not stages[-1]:  # what it finds is read by the stages after it only
+            chain.presolve(step)
         states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         if stage.number + 1 in instants:

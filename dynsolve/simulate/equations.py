@@ -503,7 +503,7 @@ def _build(
     written as float functions; ``force``: Q_c as found without differentiating V (the
     applied force along a particle's straight line)."""
     symbols = _numbers(symbols, values)
-    mass_matrix = sympy.Integer(0)
+    mass_matrix, slope = sympy.Integer(0), sympy.Integer(0)  # M and M' = dM/dq
     places: list[sympy.Expr] = []
     names = tuple(placements)
     for name in names:
@@ -511,6 +511,9 @@ def _build(
         dx, dy = sympy.diff(placement.shift[0], Q), sympy.diff(placement.shift[1], Q)
         dtheta = sympy.diff(placement.turn, Q)
         mass_matrix += body.mass * (dx**2 + dy**2) + body.I_G * dtheta**2
+        # M' by the product rule on the parts (sympy's diff of the squares costs more)
+        ddx, ddy, ddtheta = (sympy.diff(d, Q) for d in (dx, dy, dtheta))
+        slope += 2 * body.mass * (dx * ddx + dy * ddy) + 2 * body.I_G * dtheta * ddtheta
         places += [
             body.G[0] + placement.shift[0],
             body.G[1] + placement.shift[1],
@@ -520,7 +523,7 @@ def _build(
             dtheta,
         ]
     V = _potential(scene, placements, link_turns, symbols)
-    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q) if force is None else force]
+    terms = [mass_matrix, slope, -sympy.diff(V, Q) if force is None else force]
     terms += [_friction(scene, placements, symbols, values), V]
     hold = _friction(scene, placements, symbols, values, static=True) if terms[3] != 0 else 0
     numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]]
