@@ -488,10 +488,17 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
     return equations, relations
 
 
+def _tidiest(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` tidied as in exact mode, in numeric mode too: a placement's parts are
+    composed into every later form (work terms, velocity constraints, kinetic energies),
+    and linsolve's raw cos θ/(sin²θ + cos²θ) made each of those cost more than this."""
+    return tidy(expr, light=False)
+
+
 def _solve_positions(
     equations: list[sympy.Expr],
     x: _Unknowns,
-    tidy: Callable[[sympy.Expr], sympy.Expr] = tidy,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = _tidiest,
     numeric: bool = False,
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
@@ -688,7 +695,7 @@ def placements_of(
     x = _Unknowns(scene)
     equations, _ = _position_constraints(scene, x)
     known = _solve_positions(
-        equations, x, tidy if simplify else sympy.Integer(0).__add__, numeric=not simplify
+        equations, x, _tidiest if simplify else sympy.Integer(0).__add__, numeric=not simplify
     )
     missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
     missing += [n for n in x.links if x.phi[n] not in known]
