@@ -28,6 +28,7 @@ from dynsolve.model.scene import Body, Scene, Support, Travel, Vec
 from dynsolve.names import pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, cross, dot
+from dynsolve.simulate.compiled import float_scalar
 from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim
 
@@ -352,8 +353,8 @@ def _first_zero(
     p_rel = (R * e[0] - r1[0], R * e[1] - r1[1])
     v2 = dot(v1, v1) + 2 * dot(gravity, p_rel)  # v² along the circle
     force = circle.side * (v2 / R + dot(gravity, e))  # per unit mass, positive while held
-    f_v2 = sympy.lambdify(theta, v2.xreplace(values), "math")
-    f_force = sympy.lambdify(theta, force.xreplace(values), "math")
+    f_v2 = float_scalar([theta], v2.xreplace(values))
+    f_force = float_scalar([theta], force.xreplace(values))
     try:
         if f_force(0.0) <= 0:
             raise UntilError(
@@ -375,12 +376,15 @@ def _first_zero(
                 )
             if f_force(angle) <= 0:
                 root = _bisect(f_force, previous, angle)
-                later = [
-                    2 * math.pi * j / steps
-                    for j in range(k + 1, 2 * steps)
-                    if f_force(2 * math.pi * j / steps) > 0
-                ]
-                bound = (root + later[0]) / 2 if later else root + math.pi / 2
+                later = next(
+                    (
+                        2 * math.pi * j / steps
+                        for j in range(k + 1, 2 * steps)
+                        if f_force(2 * math.pi * j / steps) > 0
+                    ),
+                    None,
+                )
+                bound = (root + later) / 2 if later is not None else root + math.pi / 2
                 return root, bound
             previous = angle
     except (TypeError, ValueError, ZeroDivisionError) as exc:
