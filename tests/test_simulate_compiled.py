@@ -60,3 +60,27 @@ def test_root_is_smooth_and_evaluates_numbers() -> None:
     assert float(slope.subs(Q, 1)) == pytest.approx(3.0, rel=1e-15)
     assert root(sympy.Integer(9)) == 3
     assert float_scalar([Q], slope)(1.0) == pytest.approx(3.0, rel=1e-15)
+
+
+def test_placements_parametrized_by_the_travel_solved_one_unknown_at_a_time() -> None:
+    """A bob on a 1.2 m link from O, released 60° from the vertical and turned q by its
+    link: G = O + 1.2 (sin(60° − q), −cos(60° − q)), so it moves by
+    (1.2 sin(60° − q) − 1.2 sin 60°, −1.2 cos(60° − q) + 1.2 cos 60°) (by hand); each
+    position equation holds one unknown once the link's turn is q."""
+    from dynsolve.model.scene import Body, Link, Scene, Travel
+    from dynsolve.model.states import placements_of
+
+    s3 = sympy.sqrt(3)
+    G = (sympy.Rational(3, 5) * s3, -sympy.Rational(3, 5))
+    bob = Body("bob", 2, 0, G, G, "particle", (), {}, True, "", 0, 0)
+    cord = Link("cord", "bob", G, "", (0, 0))
+    turn = Travel("cord", "turns", angle=-Q)
+    scene = Scene({"bob": bob}, {}, (), (), (), (0, -1), {}, links=(cord,), travels={"cord": turn})
+    placements, turns = placements_of(scene, simplify=False)
+    shift = placements["bob"].shift
+    for q_value in (0.0, 0.4, 1.1):
+        x = 1.2 * math.sin(math.pi / 3 - q_value) - 1.2 * math.sin(math.pi / 3)
+        y = -1.2 * math.cos(math.pi / 3 - q_value) + 1.2 * math.cos(math.pi / 3)
+        assert float(shift[0].subs(Q, q_value)) == pytest.approx(x, abs=1e-14)
+        assert float(shift[1].subs(Q, q_value)) == pytest.approx(y, abs=1e-14)
+    assert turns["cord"] == -Q
