@@ -84,3 +84,21 @@ def test_placements_parametrized_by_the_travel_solved_one_unknown_at_a_time() ->
         assert float(shift[0].subs(Q, q_value)) == pytest.approx(x, abs=1e-14)
         assert float(shift[1].subs(Q, q_value)) == pytest.approx(y, abs=1e-14)
     assert turns["cord"] == -Q
+
+
+def test_straight_line_force_of_a_compression_spring() -> None:
+    """A 0.2 kg ball on a spring (k = 400 N/m, L₀ = 0.3 m) compressed 0.1 m, shot up:
+    q'' = (k δ − m g)/m = (40 − 1.962)/0.2 = 190.19 m/s² at the start, −g = −9.81 once it
+    has left the spring (q > 0.1), by hand; Q_c is the applied force along the line."""
+    from dynsolve.model.scene import Body, Scene, Spring
+    from dynsolve.simulate.equations import straight_line
+
+    G = (0, sympy.Rational(1, 5))
+    ball = Body("ball", sympy.Rational(1, 5), 0, G, G, "particle", (), {}, True, "", 0, 0)
+    spring = Spring("S", "ball", G, "", (0, 0), 400, sympy.Rational(3, 10), compression_only=True)
+    scene = Scene({"ball": ball}, {}, (), (), (), (0, -1), {}, springs=(spring,))
+    g = sympy.Symbol("g", positive=True)
+    motion = straight_line(scene, "ball", (0, 1), {"g": g}, {g: sympy.Rational(981, 100)})
+    assert motion.acceleration(0.0, 0.0) == pytest.approx(190.19, rel=1e-13)
+    assert motion.acceleration(0.15, 1.0) == pytest.approx(-9.81, rel=1e-13)
+    assert motion.energy(0.0, 0.0) == pytest.approx(0.5 * 400 * 0.1**2, rel=1e-13)
