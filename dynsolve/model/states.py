@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.model.scene import Body, Cord, Scene, Support, Travel, Vec
-from dynsolve.numbers import float_functions, real_value, tidy
+from dynsolve.numbers import float_functions, real_value, tidy, tidying_lightly
 from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -645,6 +645,8 @@ def _rates(
     unknowns = x.velocities()
     if equations:
         A, _ = sympy.linear_eq_to_matrix(equations, unknowns)
+        if tidying_lightly():  # −r sin²θ − r cos²θ as −r: the elimination's forms stay small
+            A = A.applyfunc(_tidiest)
         basis = A.nullspace(simplify=True)
     else:
         basis = [sympy.eye(len(unknowns))[:, i] for i in range(len(unknowns))]
