@@ -76,6 +76,7 @@ class _Step:
     constraints: tuple[Constraint, ...] = ()  # root branches (an until event's first zero)
     turn: tuple[str, sympy.Expr, sympy.Expr] | None = None  # (body, angle turned, rise of G)
     cords: tuple[CordState, ...] = ()  # elastic cords assumed taut (or slack) at its end
+    speed: sympy.Expr | None = None  # |v_G| at its end where it is an unknown itself (until)
 
 
 def chain_formulation(
@@ -109,6 +110,7 @@ def chain_formulation(
     heights: dict[str, sympy.Expr] = {}
     reactions: dict[str, tuple[sympy.Symbol, Vec]] = {}
     events: list[tuple[str, sympy.Expr, str]] = []
+    named: dict[tuple[int, str], sympy.Expr] = {}  # (state, body): its speed, an unknown
 
     def instant(k: int) -> None:
         """Newton–Euler at state k, its unknowns named for the state (cord_2)."""
@@ -150,6 +152,8 @@ def chain_formulation(
         cords += step.cords
         if step.turn is not None:
             body, turns[body], heights[body] = step.turn
+        if step.speed is not None:
+            named.update({(stage.number + 1, n): step.speed for n in step.record.bodies})
         if step.relations:
             notes.append(
                 (f"{step.relations_are} in stage {stage.number}", "; ".join(step.relations))
@@ -171,7 +175,7 @@ def chain_formulation(
             if isinstance(r.stage.event, Pivot)
         },
         speeds=_after_travels(
-            records, states, lambda s, n: tidy(sympy.sqrt(dot(*[s.velocities[n]] * 2)), light=False)
+            records, states, lambda s, n: named.get((s.number, n)) or _speed(s, n)
         ),
         turns=turns,
         heights=heights,
@@ -186,6 +190,11 @@ def chain_formulation(
         stages=tuple(records),
         displacements=dict(chain.displacements),
     )
+
+
+def _speed(state: State, body: str) -> sympy.Expr:
+    """|v_G| of ``body`` at ``state``, tidied (an answer's formula)."""
+    return tidy(sympy.sqrt(dot(*[state.velocities[body]] * 2)), light=False)
 
 
 def _after_travels(
@@ -547,6 +556,7 @@ class _Chain:
             relations_are=found.note[0],
             constraints=(found.condition,),
             turn=(body, found.theta, found.height),
+            speed=found.speed,
         )
 
     def friction_sense(self, stage: Stage, support: Support, slip: sympy.Expr) -> tuple[int, bool]:
