@@ -29,3 +29,26 @@ def test_block_pulley_block_energy_and_second_method(mode: str) -> None:
     assert T2.formula == shown[mode]
     (second,) = [c for c in solution.checks if c.name.startswith("second method")]
     assert second.passed and "3.439854" in second.detail
+
+
+def test_null_space_of_velocity_constraints() -> None:
+    """A disk of radius r rolling on the ground (v_x + r ω = 0, v_y = 0): v = −r ω, so
+    the rates per unit ω are (−r, 0, 1), by hand; a block on a cord wound on a pulley
+    of radius r, the cord leaving along (cos θ, sin θ) (v·d = r ω, v·n = 0): v = r ω
+    (cos θ, sin θ). Numeric mode's elimination gives sympy's null vectors (the free
+    column 1), and counts the degrees of freedom as sympy does."""
+    import sympy
+
+    from dynsolve.model.states import _null_space
+    from dynsolve.numbers import light_tidying
+
+    r, t = sympy.symbols("r theta", positive=True)
+    rolling = sympy.Matrix([[1, 0, r], [0, 1, 0]])
+    c, s = sympy.cos(t), sympy.sin(t)
+    cord = sympy.Matrix([[c, s, -r], [-s, c, 0]])
+    free = sympy.Matrix([[1, 0, 0, r]])  # two rates left free: two degrees of freedom
+    with light_tidying():
+        assert [list(v) for v in _null_space(rolling)] == [[-r, 0, 1]]
+        (v,) = _null_space(cord)
+        assert [sympy.simplify(e) for e in v] == [r * c, r * s, 1]
+        assert len(_null_space(free)) == len(free.nullspace()) == 3

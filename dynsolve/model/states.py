@@ -632,6 +632,57 @@ def _velocity_constraints(
     return [sympy.expand(e) for e in equations if e != 0]
 
 
+def _null_space(A: sympy.Matrix) -> list[sympy.Matrix]:
+    """A basis of the null space of the velocity constraints ``A`` (numeric mode), one
+    vector per free column with that column 1, as sympy's nullspace gives it: the columns
+    taken in order, each eliminated by the sparsest row that holds it (a pin, a cord, a
+    rolling contact each ties two or three rates; sympy's nullspace, simplifying every
+    pivot, took ten times as long on a pulley's). The entries are tidied as in exact mode
+    as they are formed, and one is 0 where :func:`tidy` finds it so, as every zero test
+    of numeric mode (the count of the degrees of freedom is exact mode's).
+
+    >>> r, t = sympy.symbols("r theta", positive=True)
+    >>> A = sympy.Matrix([[1, 0, -r], [sympy.cos(t), sympy.sin(t), 0]])
+    >>> [list(v) for v in _null_space(A)]  # x = r z, y = −x cos θ/sin θ
+    [[r, -r/tan(theta), 1]]
+    """
+    rows = [{j: A[i, j] for j in range(A.cols) if A[i, j] != 0} for i in range(A.rows)]
+    rows = [row for row in rows if row]
+    pivots: list[tuple[int, dict[int, sympy.Expr]]] = []  # x_c = Σ coefficient_j x_j
+    for column in range(A.cols):
+        holding = [row for row in rows if column in row]
+        if not holding:
+            continue  # a free column
+        row = min(holding, key=lambda r: (len(r), not r[column].is_number))
+        rows.remove(row)
+        solved = {j: _tidiest(-e / row[column]) for j, e in row.items() if j != column}
+        pivots.append((column, solved))
+        rows = [left for other in rows if (left := _eliminated(other, column, solved))]
+    fixed = {c for c, _ in pivots}
+    basis = []
+    for free in (j for j in range(A.cols) if j not in fixed):
+        x = {j: sympy.Integer(1 if j == free else 0) for j in range(A.cols) if j not in fixed}
+        for column, solved in reversed(pivots):
+            x[column] = _tidiest(sympy.Add(*(e * x[j] for j, e in solved.items())))
+        basis.append(sympy.Matrix([x[j] for j in range(A.cols)]))
+    return basis
+
+
+def _eliminated(
+    row: dict[int, sympy.Expr], column: int, solved: dict[int, sympy.Expr]
+) -> dict[int, sympy.Expr]:
+    """``row`` with x_column replaced by its ``solved`` combination, tidied as in exact
+    mode (the pulley's −sin²θ/cos θ − cos θ as −1/cos θ: the rates are composed of them);
+    the entries that :func:`tidy` finds 0 dropped."""
+    row = dict(row)
+    b = row.pop(column, None)
+    if b is None:
+        return row
+    for j, e in solved.items():
+        row[j] = row.get(j, 0) + b * e
+    return {j: t for j, e in row.items() if (t := _tidiest(e)) != 0}
+
+
 def _rates(
     scene: Scene,
     x: _Unknowns,
@@ -645,9 +696,7 @@ def _rates(
     unknowns = x.velocities()
     if equations:
         A, _ = sympy.linear_eq_to_matrix(equations, unknowns)
-        if tidying_lightly():  # −r sin²θ − r cos²θ as −r: the elimination's forms stay small
-            A = A.applyfunc(_tidiest)
-        basis = A.nullspace(simplify=True)
+        basis = _null_space(A) if tidying_lightly() else A.nullspace(simplify=True)
     else:
         basis = [sympy.eye(len(unknowns))[:, i] for i in range(len(unknowns))]
     if len(basis) != 1:
