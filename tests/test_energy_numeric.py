@@ -52,3 +52,31 @@ def test_null_space_of_velocity_constraints() -> None:
         (v,) = _null_space(cord)
         assert [sympy.simplify(e) for e in v] == [r * c, r * s, 1]
         assert len(_null_space(free)) == len(free.nullspace()) == 3
+
+
+def test_positions_by_elimination_as_linsolve() -> None:
+    """A bob on a link of length L from O, moved to hang straight down from θ off the
+    vertical: Δx = L sin θ, Δy = L cos θ − L, and the link turns by θ (cos, sin of it),
+    by hand; numeric mode's elimination fixes what sympy's linsolve fixes, in the same
+    (tidied) forms, leaves a free unknown free, and refuses contradicting equations."""
+    import sympy
+
+    from dynsolve.model.states import _by_elimination, _by_linsolve, _tidiest
+    from dynsolve.numbers import light_tidying
+
+    L, t = sympy.symbols("L theta", positive=True)
+    u, w, c, s, f = sympy.symbols("u w c s f", real=True)
+    C, S = sympy.cos(t), sympy.sin(t)
+    equations = [
+        L * c * S - L * s * C - L * S + u,
+        L * c * C + L * s * S - L * C + w,
+        u - L * S,
+        w + L - L * C,
+    ]
+    with light_tidying():
+        found = _by_elimination(equations, [u, w, c, s, f])
+    assert found == {u: L * S, w: L * C - L, c: C, s: S}
+    exact = {k: _tidiest(v) for k, v in _by_linsolve(equations, [u, w, c, s, f]).items()}
+    assert found == exact
+    with light_tidying(), pytest.raises(ValueError, match="cannot reach"):
+        _by_elimination([u - 1, u - 2], [u])

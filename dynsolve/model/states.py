@@ -516,9 +516,14 @@ def _solve_positions(
             if numeric:  # what linsolve of them all would have found
                 _consistent(current, unknowns)
             break
-        determined = _by_one_unknown(current, free) if numeric else {}
-        progress = bool(determined)
-        for var, value in (determined or _by_linsolve(current, free)).items():
+        if numeric:
+            determined = _by_one_unknown(current, free) or _by_linsolve(current, free)
+        elif tidying_lightly():  # numeric mode's state 2, in letters: exact mode's values
+            determined = _by_elimination(current, free)
+        else:
+            determined = _by_linsolve(current, free)
+        progress = False
+        for var, value in determined.items():
             known[var] = tidy(value)
             progress = True
         for n in names:
@@ -632,24 +637,23 @@ def _velocity_constraints(
     return [sympy.expand(e) for e in equations if e != 0]
 
 
-def _null_space(A: sympy.Matrix) -> list[sympy.Matrix]:
-    """A basis of the null space of the velocity constraints ``A`` (numeric mode), one
-    vector per free column with that column 1, as sympy's nullspace gives it: the columns
-    taken in order, each eliminated by the sparsest row that holds it (a pin, a cord, a
-    rolling contact each ties two or three rates; sympy's nullspace, simplifying every
-    pivot, took ten times as long on a pulley's). The entries are tidied as in exact mode
-    as they are formed, and one is 0 where :func:`tidy` finds it so, as every zero test
-    of numeric mode (the count of the degrees of freedom is exact mode's).
+ONE = -1  # the column of a row's constant term (its unknown is 1)
 
-    >>> r, t = sympy.symbols("r theta", positive=True)
-    >>> A = sympy.Matrix([[1, 0, -r], [sympy.cos(t), sympy.sin(t), 0]])
-    >>> [list(v) for v in _null_space(A)]  # x = r z, y = −x cos θ/sin θ
-    [[r, -r/tan(theta), 1]]
-    """
-    rows = [{j: A[i, j] for j in range(A.cols) if A[i, j] != 0} for i in range(A.rows)]
+
+def _eliminated_rows(
+    rows: list[dict[int, sympy.Expr]], columns: int
+) -> tuple[list[tuple[int, dict[int, sympy.Expr]]], list[dict[int, sympy.Expr]]]:
+    """Sparse elimination of the linear rows Σ a_j x_j = 0 (column :data:`ONE` a constant
+    term): the columns 0 … ``columns`` − 1 taken in order, as a row echelon form takes
+    them, each by the sparsest row that holds it (a pin, a cord, a rolling contact each
+    ties two or three unknowns). Returns the pivots, x_c = Σ coefficient_j x_j in the
+    order found, and the rows left without an unknown (their constants). The entries are
+    tidied as in exact mode as they form (the parts of the rates and placements that
+    everything later is composed of), and one is 0 where :func:`tidy` finds it so, as
+    every zero test of numeric mode."""
     rows = [row for row in rows if row]
-    pivots: list[tuple[int, dict[int, sympy.Expr]]] = []  # x_c = Σ coefficient_j x_j
-    for column in range(A.cols):
+    pivots: list[tuple[int, dict[int, sympy.Expr]]] = []
+    for column in range(columns):
         holding = [row for row in rows if column in row]
         if not holding:
             continue  # a free column
@@ -657,23 +661,15 @@ def _null_space(A: sympy.Matrix) -> list[sympy.Matrix]:
         rows.remove(row)
         solved = {j: _tidiest(-e / row[column]) for j, e in row.items() if j != column}
         pivots.append((column, solved))
-        rows = [left for other in rows if (left := _eliminated(other, column, solved))]
-    fixed = {c for c, _ in pivots}
-    basis = []
-    for free in (j for j in range(A.cols) if j not in fixed):
-        x = {j: sympy.Integer(1 if j == free else 0) for j in range(A.cols) if j not in fixed}
-        for column, solved in reversed(pivots):
-            x[column] = _tidiest(sympy.Add(*(e * x[j] for j, e in solved.items())))
-        basis.append(sympy.Matrix([x[j] for j in range(A.cols)]))
-    return basis
+        rows = [left for other in rows if (left := _substituted(other, column, solved))]
+    return pivots, rows
 
 
-def _eliminated(
+def _substituted(
     row: dict[int, sympy.Expr], column: int, solved: dict[int, sympy.Expr]
 ) -> dict[int, sympy.Expr]:
-    """``row`` with x_column replaced by its ``solved`` combination, tidied as in exact
-    mode (the pulley's −sin²θ/cos θ − cos θ as −1/cos θ: the rates are composed of them);
-    the entries that :func:`tidy` finds 0 dropped."""
+    """``row`` with x_column replaced by its ``solved`` combination; the entries that
+    :func:`tidy` finds 0 dropped."""
     row = dict(row)
     b = row.pop(column, None)
     if b is None:
@@ -681,6 +677,68 @@ def _eliminated(
     for j, e in solved.items():
         row[j] = row.get(j, 0) + b * e
     return {j: t for j, e in row.items() if (t := _tidiest(e)) != 0}
+
+
+def _back_substituted(
+    pivots: list[tuple[int, dict[int, sympy.Expr]]], x: dict[int, sympy.Expr]
+) -> dict[int, sympy.Expr]:
+    """Every unknown from the free ones in ``x`` (and x_ONE = 1), the last pivot first."""
+    x = {**x, ONE: sympy.Integer(1)}
+    for column, solved in reversed(pivots):
+        x[column] = _tidiest(sympy.Add(*(e * x[j] for j, e in solved.items())))
+    return x
+
+
+def _null_space(A: sympy.Matrix) -> list[sympy.Matrix]:
+    """A basis of the null space of the velocity constraints ``A`` (numeric mode), one
+    vector per free column with that column 1, as sympy's nullspace gives it, by
+    :func:`_eliminated_rows` (sympy's nullspace, simplifying every pivot, took ten times
+    as long on a pulley's); the count of the degrees of freedom is exact mode's.
+
+    >>> r, t = sympy.symbols("r theta", positive=True)
+    >>> A = sympy.Matrix([[1, 0, -r], [sympy.cos(t), sympy.sin(t), 0]])
+    >>> [list(v) for v in _null_space(A)]  # x = r z, y = −x cos θ/sin θ
+    [[r, -r/tan(theta), 1]]
+    """
+    rows = [{j: A[i, j] for j in range(A.cols) if A[i, j] != 0} for i in range(A.rows)]
+    pivots, _ = _eliminated_rows(rows, A.cols)
+    fixed = {c for c, _ in pivots}
+    basis = []
+    for free in (j for j in range(A.cols) if j not in fixed):
+        x = {j: sympy.Integer(1 if j == free else 0) for j in range(A.cols) if j not in fixed}
+        x = _back_substituted(pivots, x)
+        basis.append(sympy.Matrix([x[j] for j in range(A.cols)]))
+    return basis
+
+
+def _by_elimination(equations: list[sympy.Expr], free: list[sympy.Symbol]) -> dict:
+    """The unknowns of ``free`` that the linear ``equations`` fix, as :func:`_by_linsolve`
+    finds them (the same echelon form), by :func:`_eliminated_rows`; linsolve's own forms
+    (cos θ/(sin²θ + cos²θ)) cost more to tidy than the elimination takes. ValueError when
+    they contradict each other.
+
+    >>> u, c, s, L, t = sympy.symbols("u c s L theta")
+    >>> C, S = sympy.cos(t), sympy.sin(t)
+    >>> _by_elimination([u - 2, L * c * S - L * s * C, L * c * C + L * s * S - L], [u, c, s])
+    {u: 2, c: cos(theta), s: sin(theta)}
+    """
+    try:
+        A, b = sympy.linear_eq_to_matrix(equations, free)
+    except ValueError:  # not linear after all (sympy's NonlinearError)
+        return _by_linsolve(equations, free)
+    rows = []
+    for i in range(A.rows):
+        row = {j: A[i, j] for j in range(A.cols) if A[i, j] != 0}
+        if b[i] != 0:
+            row[ONE] = -b[i]
+        rows.append(row)
+    pivots, left = _eliminated_rows(rows, len(free))
+    if left:  # 0 = a constant that is not 0
+        raise ValueError("the travel asks for a state the scene's supports cannot reach")
+    fixed = {c for c, _ in pivots}
+    values = _back_substituted(pivots, {j: v for j, v in enumerate(free) if j not in fixed})
+    unfixed = {v for j, v in enumerate(free) if j not in fixed}
+    return {free[c]: values[c] for c, _ in pivots if not (values[c].free_symbols & unfixed)}
 
 
 def _rates(
