@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.model.scene import Body, Cord, Scene, Support, Travel, Vec
-from dynsolve.numbers import float_functions, real_value, tidy
+from dynsolve.numbers import float_functions, real_value, tidy, tidying_lightly
 from dynsolve.solver.roots import sign_of
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
@@ -488,10 +488,17 @@ def _position_constraints(scene: Scene, x: _Unknowns) -> tuple[list[sympy.Expr],
     return equations, relations
 
 
+def _tidiest(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` tidied as in exact mode, in numeric mode too: a placement's parts are
+    composed into every later form (work terms, velocity constraints, kinetic energies),
+    and linsolve's raw cos θ/(sin²θ + cos²θ) made each of those cost more than this."""
+    return tidy(expr, light=False)
+
+
 def _solve_positions(
     equations: list[sympy.Expr],
     x: _Unknowns,
-    tidy: Callable[[sympy.Expr], sympy.Expr] = tidy,
+    tidy: Callable[[sympy.Expr], sympy.Expr] = _tidiest,
     numeric: bool = False,
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve the (linear in u, w, Δθ, cos Δθ, sin Δθ) constraints, each angle from its sine
@@ -506,16 +513,19 @@ def _solve_positions(
         current = [e for e in current if e != 0]
         free = [v for v in unknowns if v not in known]
         if not current or not free:
+            if numeric:  # what linsolve of them all would have found
+                _consistent(current, unknowns)
             break
-        solution = sympy.linsolve(current, free)
-        if solution == sympy.EmptySet:
-            raise ValueError("the travel asks for a state the scene's supports cannot reach")
-        (values,) = tuple(solution)
+        if numeric:
+            determined = _by_one_unknown(current, free) or _by_linsolve(current, free)
+        elif tidying_lightly():  # numeric mode's state 2, in letters: exact mode's values
+            determined = _by_elimination(current, free)
+        else:
+            determined = _by_linsolve(current, free)
         progress = False
-        for var, value in zip(free, values, strict=True):
-            if not (value.free_symbols & set(free)):
-                known[var] = tidy(value)
-                progress = True
+        for var, value in determined.items():
+            known[var] = tidy(value)
+            progress = True
         for n in names:
             phi, c, s = x.phi[n], x.c[n], x.s[n]
             if phi in known and c not in known:
@@ -534,6 +544,46 @@ def _solve_positions(
             f"('motion {turning[0]}: translation', or a travel that turns it)"
         )
     return known
+
+
+def _by_linsolve(equations: list[sympy.Expr], free: list[sympy.Symbol]) -> dict:
+    """The unknowns of ``free`` that the linear ``equations`` fix (sympy's linsolve);
+    ValueError when they contradict each other."""
+    solution = sympy.linsolve(equations, free)
+    if solution == sympy.EmptySet:
+        raise ValueError("the travel asks for a state the scene's supports cannot reach")
+    (values,) = tuple(solution)
+    unfixed = set(free)
+    return {v: x for v, x in zip(free, values, strict=True) if not (x.free_symbols & unfixed)}
+
+
+def _by_one_unknown(equations: list[sympy.Expr], free: list[sympy.Symbol]) -> dict:
+    """Each unknown of ``free`` that an equation holds alone, solved for from it (a x + b
+    = 0: x = −b/a): a scene with its numbers in, parametrized by its travel, needs no
+    more (a pin, a link to a fixed point, a travel's line), and sympy's linsolve over an
+    expression domain took ten times as long. Empty when no equation has one unknown.
+
+    >>> u, w, q = sympy.symbols("u w q")
+    >>> _by_one_unknown([u - 3 * sympy.cos(q), 2 * w + u], [u, w])
+    {u: 3*cos(q)}
+    """
+    unfixed, found = set(free), {}
+    for equation in equations:
+        (unknown, *others) = (equation.free_symbols & unfixed) or (None, None)
+        if unknown is None or others or unknown in found:
+            continue
+        slope = sympy.diff(equation, unknown)
+        if slope == 0 or slope.has(unknown):  # not of the first degree in it
+            continue
+        found[unknown] = -equation.xreplace({unknown: 0}) / slope
+    return found
+
+
+def _consistent(equations: list[sympy.Expr], unknowns: list[sympy.Symbol]) -> None:
+    """Equations left without an unknown must hold: ValueError where one does not (as
+    linsolve finds when they are solved with the rest)."""
+    if equations and sympy.linsolve(equations, unknowns) == sympy.EmptySet:
+        raise ValueError("the travel asks for a state the scene's supports cannot reach")
 
 
 def _velocity_constraints(
@@ -587,6 +637,110 @@ def _velocity_constraints(
     return [sympy.expand(e) for e in equations if e != 0]
 
 
+ONE = -1  # the column of a row's constant term (its unknown is 1)
+
+
+def _eliminated_rows(
+    rows: list[dict[int, sympy.Expr]], columns: int
+) -> tuple[list[tuple[int, dict[int, sympy.Expr]]], list[dict[int, sympy.Expr]]]:
+    """Sparse elimination of the linear rows Σ a_j x_j = 0 (column :data:`ONE` a constant
+    term): the columns 0 … ``columns`` − 1 taken in order, as a row echelon form takes
+    them, each by the sparsest row that holds it (a pin, a cord, a rolling contact each
+    ties two or three unknowns). Returns the pivots, x_c = Σ coefficient_j x_j in the
+    order found, and the rows left without an unknown (their constants). The entries are
+    tidied as in exact mode as they form (the parts of the rates and placements that
+    everything later is composed of), and one is 0 where :func:`tidy` finds it so, as
+    every zero test of numeric mode."""
+    rows = [row for row in rows if row]
+    pivots: list[tuple[int, dict[int, sympy.Expr]]] = []
+    for column in range(columns):
+        holding = [row for row in rows if column in row]
+        if not holding:
+            continue  # a free column
+        row = min(holding, key=lambda r: (len(r), not r[column].is_number))
+        rows.remove(row)
+        solved = {j: _tidiest(-e / row[column]) for j, e in row.items() if j != column}
+        pivots.append((column, solved))
+        rows = [left for other in rows if (left := _substituted(other, column, solved))]
+    return pivots, rows
+
+
+def _substituted(
+    row: dict[int, sympy.Expr], column: int, solved: dict[int, sympy.Expr]
+) -> dict[int, sympy.Expr]:
+    """``row`` with x_column replaced by its ``solved`` combination; the entries that
+    :func:`tidy` finds 0 dropped."""
+    row = dict(row)
+    b = row.pop(column, None)
+    if b is None:
+        return row
+    for j, e in solved.items():
+        row[j] = row.get(j, 0) + b * e
+    return {j: t for j, e in row.items() if (t := _tidiest(e)) != 0}
+
+
+def _back_substituted(
+    pivots: list[tuple[int, dict[int, sympy.Expr]]], x: dict[int, sympy.Expr]
+) -> dict[int, sympy.Expr]:
+    """Every unknown from the free ones in ``x`` (and x_ONE = 1), the last pivot first."""
+    x = {**x, ONE: sympy.Integer(1)}
+    for column, solved in reversed(pivots):
+        x[column] = _tidiest(sympy.Add(*(e * x[j] for j, e in solved.items())))
+    return x
+
+
+def _null_space(A: sympy.Matrix) -> list[sympy.Matrix]:
+    """A basis of the null space of the velocity constraints ``A`` (numeric mode), one
+    vector per free column with that column 1, as sympy's nullspace gives it, by
+    :func:`_eliminated_rows` (sympy's nullspace, simplifying every pivot, took ten times
+    as long on a pulley's); the count of the degrees of freedom is exact mode's.
+
+    >>> r, t = sympy.symbols("r theta", positive=True)
+    >>> A = sympy.Matrix([[1, 0, -r], [sympy.cos(t), sympy.sin(t), 0]])
+    >>> [list(v) for v in _null_space(A)]  # x = r z, y = −x cos θ/sin θ
+    [[r, -r/tan(theta), 1]]
+    """
+    rows = [{j: A[i, j] for j in range(A.cols) if A[i, j] != 0} for i in range(A.rows)]
+    pivots, _ = _eliminated_rows(rows, A.cols)
+    fixed = {c for c, _ in pivots}
+    basis = []
+    for free in (j for j in range(A.cols) if j not in fixed):
+        x = {j: sympy.Integer(1 if j == free else 0) for j in range(A.cols) if j not in fixed}
+        x = _back_substituted(pivots, x)
+        basis.append(sympy.Matrix([x[j] for j in range(A.cols)]))
+    return basis
+
+
+def _by_elimination(equations: list[sympy.Expr], free: list[sympy.Symbol]) -> dict:
+    """The unknowns of ``free`` that the linear ``equations`` fix, as :func:`_by_linsolve`
+    finds them (the same echelon form), by :func:`_eliminated_rows`; linsolve's own forms
+    (cos θ/(sin²θ + cos²θ)) cost more to tidy than the elimination takes. ValueError when
+    they contradict each other.
+
+    >>> u, c, s, L, t = sympy.symbols("u c s L theta")
+    >>> C, S = sympy.cos(t), sympy.sin(t)
+    >>> _by_elimination([u - 2, L * c * S - L * s * C, L * c * C + L * s * S - L], [u, c, s])
+    {u: 2, c: cos(theta), s: sin(theta)}
+    """
+    try:
+        A, b = sympy.linear_eq_to_matrix(equations, free)
+    except ValueError:  # not linear after all (sympy's NonlinearError)
+        return _by_linsolve(equations, free)
+    rows = []
+    for i in range(A.rows):
+        row = {j: A[i, j] for j in range(A.cols) if A[i, j] != 0}
+        if b[i] != 0:
+            row[ONE] = -b[i]
+        rows.append(row)
+    pivots, left = _eliminated_rows(rows, len(free))
+    if left:  # 0 = a constant that is not 0
+        raise ValueError("the travel asks for a state the scene's supports cannot reach")
+    fixed = {c for c, _ in pivots}
+    values = _back_substituted(pivots, {j: v for j, v in enumerate(free) if j not in fixed})
+    unfixed = {v for j, v in enumerate(free) if j not in fixed}
+    return {free[c]: values[c] for c, _ in pivots if not (values[c].free_symbols & unfixed)}
+
+
 def _rates(
     scene: Scene,
     x: _Unknowns,
@@ -600,7 +754,7 @@ def _rates(
     unknowns = x.velocities()
     if equations:
         A, _ = sympy.linear_eq_to_matrix(equations, unknowns)
-        basis = A.nullspace(simplify=True)
+        basis = _null_space(A) if tidying_lightly() else A.nullspace(simplify=True)
     else:
         basis = [sympy.eye(len(unknowns))[:, i] for i in range(len(unknowns))]
     if len(basis) != 1:
@@ -621,11 +775,13 @@ def _rates(
         b = travel.body
         placement = placements[b]
         v = (vector[x.vx[b]], vector[x.vy[b]])
-        speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2))
+        speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2), light=False)
         along = v[0] * placement.shift[0] + v[1] * placement.shift[1]
         scale = sign_of(along, given_values) / speed
         rate_name = f"speed of G of {b}"
-    values = {k: tidy(v * scale) for k, v in vector.items()}
+    # tidied in numeric mode too: the kinetic energies and speeds are composed of these
+    # (and tidied as in exact mode), which costs ten times as much from untidy parts
+    values = {k: tidy(v * scale, light=False) for k, v in vector.items()}
     rates = Rates(
         v_G={n: (values[x.vx[n]], values[x.vy[n]]) for n in x.bodies},
         omega={n: values[x.om[n]] for n in x.bodies},
@@ -686,7 +842,7 @@ def placements_of(
     x = _Unknowns(scene)
     equations, _ = _position_constraints(scene, x)
     known = _solve_positions(
-        equations, x, tidy if simplify else sympy.Integer(0).__add__, numeric=not simplify
+        equations, x, _tidiest if simplify else sympy.Integer(0).__add__, numeric=not simplify
     )
     missing = [n for n in x.bodies if not {x.u[n], x.w[n], x.phi[n]} <= set(known)]
     missing += [n for n in x.links if x.phi[n] not in known]

@@ -26,12 +26,12 @@ throughout (its "taut between the states" is then checked, not assumed).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy
 
 from dynsolve.model.scene import Scene
-from dynsolve.model.states import cord_ends, is_wound, placements_of
+from dynsolve.model.states import Placement, cord_ends, is_wound, placements_of
 from dynsolve.numbers import real_value, tidy
 
 HOW = (
@@ -82,6 +82,7 @@ class StateOne:
     alpha: Mapping[str, float]
     tensions: Mapping[str, float]
     steady: str | None  # why they may change along the way (None: constant)
+    placements: Mapping[str, Placement] = field(default_factory=dict)  # of state 2
 
     def rate(self, scene: Scene) -> float | None:
         """The rate of travel in state 2 from rest, by v² = 2 a s along a straight travel
@@ -90,8 +91,7 @@ class StateOne:
         if self.steady is not None or scene.velocities or scene.omegas:
             return None
         (travel,) = scene.travels.values()
-        placements, _ = placements_of(scene)
-        placement = placements[travel.body]
+        placement = self.placements[travel.body]
         if travel.kind == "turns":
             step = real_value(placement.turn, scene.values)
             rate = self.alpha.get(travel.body)
@@ -109,14 +109,26 @@ class StateOne:
         return squared**0.5 if squared >= 0 else None
 
 
-def sliding(scene: Scene, values: Mapping[sympy.Symbol, sympy.Expr]) -> dict[str, int] | None:
-    """The contacts whose point slides between the states, each with the sense (±1 along
-    its tangent) of the kinetic friction against the slide; None if state 2 is not found."""
-    from dynsolve.principles.newton_euler import dot
-
+def state_two(scene: Scene) -> Mapping[str, Placement] | None:
+    """Each body's placement in state 2 (None if state 2 is not found)."""
     try:
         placements, _ = placements_of(scene)
     except ValueError:
+        return None
+    return placements
+
+
+def sliding(
+    scene: Scene,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    placements: Mapping[str, Placement] | None,
+) -> dict[str, int] | None:
+    """The contacts whose point slides between the states to ``placements`` (state 2),
+    each with the sense (±1 along its tangent) of the kinetic friction against the slide;
+    None if state 2 is not found."""
+    from dynsolve.principles.newton_euler import dot
+
+    if placements is None:
         return None
     slipping = {}
     for support in scene.supports:
@@ -132,19 +144,25 @@ def state_one(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    placements: Mapping[str, Placement] | None = None,
 ) -> StateOne | None:
     """Newton–Euler at state 1, solved with numbers; a contact that slides between the
-    states (its point moving along the surface) has kinetic friction against the motion.
-    None where the instant has no unique solution.
+    states to ``placements`` (state 2, found here if not given; its point moving along
+    the surface) has kinetic friction against the motion. The equations are written with
+    the givens' values put in (nothing of them is shown). None where the instant has no
+    unique solution.
     """
     from dynsolve.principles.newton_euler import formulate
+    from dynsolve.simulate.equations import numeric_scene
 
     values = {**scene.values, **values}
-    slipping = sliding(scene, values)
-    if slipping is None:
+    placements = state_two(scene) if placements is None else placements
+    slipping = sliding(scene, values, placements)
+    if slipping is None or placements is None:
         return None
+    numbers = {name: (sympy.Integer(0) + v).xreplace(values) for name, v in symbols.items()}
     try:
-        formulation = formulate(scene, symbols, slipping, inclines=False)
+        formulation = formulate(numeric_scene(scene, values), numbers, slipping, inclines=False)
     except ValueError:  # the instant cannot be written (a cord across the motion …)
         return None
     residuals = [sympy.N((e.lhs - e.rhs).xreplace(dict(values))) for e in formulation.equations]
@@ -173,7 +191,7 @@ def state_one(
         tension = number(formulation.reactions[cord.name][0])
         if tension is not None:
             tensions[cord.name] = tension
-    return StateOne(a_G, alpha, tensions, unsteady(scene))
+    return StateOne(a_G, alpha, tensions, unsteady(scene), placements)
 
 
 def taut_details(
@@ -188,14 +206,14 @@ def taut_details(
     and velocities), and where it would fall below zero the cord goes slack there: fails."""
     if not scene.cords:
         return []
-    motion = state_one(scene, symbols, values)
+    placements = state_two(scene)
+    motion = state_one(scene, symbols, values, placements)
     along: list[tuple[float, dict[str, float]]] = []
+    slipping = sliding(scene, {**scene.values, **values}, placements) or {}
     if motion is not None and motion.steady is not None:
         from dynsolve.principles.cord_travel import tensions_along
 
-        along = tensions_along(
-            scene, symbols, values, sliding(scene, {**scene.values, **values}) or {}
-        )
+        along = tensions_along(scene, symbols, values, slipping)
     found = []
     for cord in scene.cords:
         name = f"cord {cord.name} taut between the states"
@@ -215,7 +233,9 @@ def taut_details(
         elif motion.steady is None:
             detail += "; the accelerations are constant, so it stays so to state 2"
         else:
-            holds, detail = _along(scene, symbols, values, cord.name, along, detail, motion.steady)
+            holds, detail = _along(
+                scene, symbols, values, cord.name, (along, slipping), detail, motion.steady
+            )
         found.append((name, holds, detail))
     return found
 
@@ -225,14 +245,16 @@ def _along(
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
     name: str,
-    along: list[tuple[float, dict[str, float]]],
+    sampled_along: tuple[list[tuple[float, dict[str, float]]], Mapping[str, int]],
     detail: str,
     steady: str,
 ) -> tuple[bool, str]:
-    """Whether the cord ``name`` stays taut at the sampled states, and the detail saying
-    where it was checked and, if it goes slack, where."""
+    """Whether the cord ``name`` stays taut at the sampled states (``sampled_along``: the
+    tensions there, and the contacts sliding), and the detail saying where it was checked
+    and, if it goes slack, where."""
     from dynsolve.principles.cord_travel import SAMPLES, slack_at
 
+    along, slipping = sampled_along
     sampled = [(f, t[name]) for f, t in along if name in t]
     if not sampled:
         return True, detail + f"; checked there only ({steady})"
@@ -245,7 +267,6 @@ def _along(
             f"; ≥ 0 at {len(sampled)} of {SAMPLES} states sampled along the travel ({steady}): "
             "between them it is not checked"
         )
-    slipping = sliding(scene, {**scene.values, **values}) or {}
     fraction = slack_at(scene, symbols, values, slipping, name, along)
     where = "between the samples" if fraction is None else _distance(scene, fraction)
     return False, detail + (

@@ -21,9 +21,11 @@ so ω₂² = ω₁² + 2 α Δθ. Both are used as cross-checks of the work–en
 
 from __future__ import annotations
 
+import itertools
+import math
+import warnings
 from collections.abc import Mapping
 
-import mpmath
 import sympy
 
 from dynsolve.model.scene import Scene, Vec
@@ -39,78 +41,139 @@ def speed_by_integration(
     values: Mapping[sympy.Symbol, sympy.Expr],
 ) -> float | None:
     """v₂ of a travelling particle from m v dv = F_t ds along its straight path; None when
-    a value is symbolic, a force is unknown or the particle does not get there."""
+    a value is symbolic, a force is unknown or the particle does not get there. The
+    forces are written with the numbers put in (λ the fraction of the path run) and
+    integrated in floats, split where a spring's force turns or an elastic cord's kinks."""
+    rule = dict(values)
     body = scene.bodies[body_name]
     travel = scene.travels[body_name]
-    G1 = body.G
     step = particle_shift(scene, travel)
     if step is None:
         return None
-    lam = sympy.Symbol("lambda_", real=True)
-    length = sympy.sqrt(dot(step, step))
-    P = (G1[0] + lam * step[0], G1[1] + lam * step[1])
-    forces: list[Vec] = []
-    nearest: list[sympy.Expr] = []  # where the path passes closest to a spring's anchor
-    kinks: list[sympy.Expr] = []  # zero where an elastic cord goes taut or slack
-    if scene.gravity is not None:
-        weight = body.mass * symbols["g"]
-        forces.append((weight * scene.gravity[0], weight * scene.gravity[1]))
-    for spring in scene.springs:
-        if spring.body != body_name or spring.other:
-            continue
-        to_end = (spring.other_point[0] - P[0], spring.other_point[1] - P[1])
-        anchor = (spring.other_point[0] - G1[0], spring.other_point[1] - G1[1])
-        nearest.append(dot(anchor, step) / dot(step, step))
-        current = sympy.sqrt(dot(to_end, to_end))
-        pull = spring.k * (current - spring.unstretched) / current
-        if spring.tension_only:  # an elastic cord pulls only while stretched
-            pull = sympy.Piecewise((pull, current > spring.unstretched), (0, True))
-            taut = dot(to_end, to_end) - spring.unstretched**2  # zero where it tightens
-            kinks.append(taut)
-        elif spring.compression_only:  # a spring pushes only while compressed
-            pull = sympy.Piecewise((pull, current < spring.unstretched), (0, True))
-            kinks.append(dot(to_end, to_end) - spring.unstretched**2)  # where it is left
-        forces.append((pull * to_end[0], pull * to_end[1]))
-    for load in scene.loads:
-        if load.body == body_name and load.kind == "force":
-            if load.name not in symbols:
-                return None
-            size = symbols[load.name]
-            forces.append((size * load.direction[0], size * load.direction[1]))
-    tangent = (step[0] / length, step[1] / length)
-    F_t = sympy.Add(*(dot(f, tangent) for f in forces))
-    for support in scene.supports:
-        if support.body != body_name or support.smooth:
-            continue
-        if support.mu_k is None:
-            return None
-        across = sympy.Add(*(dot(f, support.normal) for f in forces))
-        F_t -= support.mu_k * sympy.Abs(across)  # kinetic friction opposes the motion
     m = real_value(body.mass, values)
-    s = real_value(length, values)
+    s = real_value(sympy.sqrt(dot(step, step)), values)
     v1 = scene.velocities.get(body_name, (0, 0))
     v1_squared = real_value(dot(v1, v1), values)
-    integrand = sympy.Integer(0) + F_t.xreplace(dict(values))
     if m is None or s is None or v1_squared is None:
         return None
     if s == 0:  # no travel, no work: the speed is the starting speed
         return v1_squared**0.5
-    if F_t.has(sympy.nan) or integrand.free_symbols - {lam}:
+    path = _Path(scene, body_name, _in_numbers(step, rule), rule)
+    F_t = path.tangential({name: _in_numbers(value, rule) for name, value in symbols.items()})
+    if F_t is None or F_t.has(sympy.nan) or F_t.free_symbols - {LAMBDA}:
         return None
-    force = sympy.lambdify(lam, integrand, "mpmath")
-    # the spring force turns where the path passes its anchor: split the integral there
-    # so no node falls on that point
-    inner = {real_value(n, values) for n in nearest} - {None}
-    for kink in kinks:  # a node where each elastic cord tightens: the force has a corner
-        polynomial = sympy.Poly((sympy.Integer(0) + kink).xreplace(dict(values)), lam)
-        inner |= {float(sympy.re(r)) for r in polynomial.nroots() if abs(sympy.im(r)) < 1e-12}
-    nodes = [0.0, *sorted(n for n in inner if 0 < n < 1), 1.0]  # type: ignore[operator]
-    try:
-        work = float(mpmath.quad(force, nodes)) * s
-    except (ArithmeticError, ValueError):  # a singular force on the path: no second method
+    work = _integral(F_t, path.nodes())
+    if work is None:  # a singular force on the path: no second method
         return None
-    squared = v1_squared + 2 * work / m
+    squared = v1_squared + 2 * work * s / m
     return None if squared < 0 else squared**0.5
+
+
+LAMBDA = sympy.Symbol("lambda_", real=True)  # the fraction of the straight path run
+
+
+def _in_numbers(item: object, rule: Mapping[sympy.Symbol, sympy.Expr]) -> object:
+    """An expression, or a pair of them, with the values put in."""
+    if isinstance(item, tuple):
+        return tuple(_in_numbers(part, rule) for part in item)
+    return (sympy.Integer(0) + item).xreplace(rule)  # type: ignore[operator]
+
+
+class _Path:
+    """A particle's straight path from G₁ by ``step`` (numbers), and the forces along it."""
+
+    def __init__(self, scene: Scene, name: str, step: Vec, rule: Mapping[sympy.Symbol, sympy.Expr]):
+        self.scene, self.name, self.step, self.rule = scene, name, step, rule
+        self.G1 = _in_numbers(scene.bodies[name].G, rule)
+        self.inner: set[float] = set()  # λ where a spring's force turns or an elastic cord kinks
+
+    def tangential(self, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr | None:
+        """F_t(λ) of the weight, springs from their current length, constant forces and
+        kinetic friction (N from the balance across the surface); None where a force is
+        not known."""
+        from dynsolve.simulate.equations import root
+
+        scene, step = self.scene, self.step
+        P = (self.G1[0] + LAMBDA * step[0], self.G1[1] + LAMBDA * step[1])
+        forces: list[Vec] = []
+        if scene.gravity is not None:
+            weight = _in_numbers(scene.bodies[self.name].mass, self.rule) * symbols["g"]
+            forces.append((weight * scene.gravity[0], weight * scene.gravity[1]))
+        for spring in scene.springs:
+            if spring.body != self.name or spring.other:
+                continue
+            E = _in_numbers(spring.other_point, self.rule)
+            k, free = _in_numbers(spring.k, self.rule), _in_numbers(spring.unstretched, self.rule)
+            to_end = (E[0] - P[0], E[1] - P[1])
+            anchor = (E[0] - self.G1[0], E[1] - self.G1[1])
+            self._add(dot(anchor, step) / dot(step, step))  # the force turns there
+            current = root(dot(to_end, to_end))
+            pull = k * (current - free) / current
+            if spring.tension_only:  # an elastic cord pulls only while stretched
+                pull = sympy.Piecewise((pull, current > free), (0, True))
+                self._kinks(dot(to_end, to_end) - free**2)  # zero where it tightens
+            elif spring.compression_only:  # a spring pushes only while compressed
+                pull = sympy.Piecewise((pull, current < free), (0, True))
+                self._kinks(dot(to_end, to_end) - free**2)  # where it is left
+            forces.append((pull * to_end[0], pull * to_end[1]))
+        for load in scene.loads:
+            if load.body == self.name and load.kind == "force":
+                if load.name not in symbols:
+                    return None
+                size, d = symbols[load.name], _in_numbers(load.direction, self.rule)
+                forces.append((size * d[0], size * d[1]))
+        length = sympy.sqrt(dot(step, step))
+        tangent = (step[0] / length, step[1] / length)
+        F_t = sympy.Add(*(dot(f, tangent) for f in forces))
+        for support in scene.supports:
+            if support.body != self.name or support.smooth:
+                continue
+            if support.mu_k is None:
+                return None
+            n = _in_numbers(support.normal, self.rule)
+            across = sympy.Add(*(dot(f, n) for f in forces))
+            F_t -= _in_numbers(support.mu_k, self.rule) * _magnitude(across)  # against the motion
+        return sympy.Integer(0) + F_t
+
+    def _add(self, fraction: sympy.Expr) -> None:
+        value = real_value(fraction)
+        if value is not None:
+            self.inner.add(value)
+
+    def _kinks(self, squared: sympy.Expr) -> None:
+        """The real λ where ``squared`` (a polynomial in λ) is 0."""
+        polynomial = sympy.Poly(squared, LAMBDA)
+        self.inner |= {float(sympy.re(r)) for r in polynomial.nroots() if abs(sympy.im(r)) < 1e-12}
+
+    def nodes(self) -> list[float]:
+        """0, the places inside the path where the force has a corner, and 1."""
+        return [0.0, *sorted(n for n in self.inner if 0 < n < 1), 1.0]
+
+
+def _magnitude(across: sympy.Expr) -> sympy.Expr:
+    """|N| written as it is: sympy's evaluation of ``Abs`` asks the sign of a spring's
+    force along the path (signsimp, assumptions), a third of the method's time."""
+    return sympy.Abs(across, evaluate=False)
+
+
+def _integral(F_t: sympy.Expr, nodes: list[float]) -> float | None:
+    """∫₀¹ F_t dλ in floats, piece by piece between the nodes; None where the force is
+    singular or not real on the path."""
+    from scipy.integrate import quad
+
+    from dynsolve.simulate.compiled import float_scalar
+
+    force = float_scalar([LAMBDA], F_t)
+    total = 0.0
+    try:
+        with warnings.catch_warnings():  # a rough piece is judged by the comparison itself
+            warnings.simplefilter("ignore")
+            for a, b in itertools.pairwise(nodes):
+                piece, _ = quad(force, a, b, epsabs=0, epsrel=1e-13, limit=200)
+                total += piece
+    except (ArithmeticError, ValueError, TypeError):
+        return None
+    return total if math.isfinite(total) else None
 
 
 def omega_by_constant_alpha(

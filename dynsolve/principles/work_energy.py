@@ -101,22 +101,26 @@ def _is_zero(
     expr: sympy.Expr,
     values: Mapping[sympy.Symbol, sympy.Expr],
     scale: sympy.Expr = sympy.S.One,
+    *scales: sympy.Expr,
 ) -> bool:
-    """Whether ``expr`` is zero, numerically within 1e-12 of ``scale`` (its size if not zero).
+    """Whether ``expr`` is zero, numerically within 1e-12 of ``scale`` (its size if not
+    zero; the largest of ``scale`` and ``scales``, each a number at the values).
 
     The tolerance is relative, so a problem scaled by 10^k decides the same way:
 
     >>> from sympy import Float
     >>> _is_zero(Float("1e-14"), {}, Float("1e-8") ** 2), _is_zero(Float("1e-30"), {}, 1)
     (False, True)
+    >>> _is_zero(Float("1e-14"), {}, Float("1e-8"), 1)
+    True
     """
     if tidy(expr) == 0:
         return True
     number = real_value(expr, values)
-    size = real_value(scale, values)
-    if number is None or size is None:
+    sizes = [real_value(s, values) for s in (scale, *scales)]
+    if number is None or None in sizes:
         return False
-    return abs(number) <= 1e-12 * abs(size)
+    return abs(number) <= 1e-12 * max(abs(s) for s in sizes)  # type: ignore[arg-type]
 
 
 class _Work:
@@ -270,8 +274,7 @@ class _Work:
             error.line, error.column = support.line, support.column  # type: ignore[attr-defined]
             raise error
         path = _length(P2, support.point)
-        reach = sympy.Max(_norm(P2), _norm(support.point))
-        if support.smooth or _is_zero(path, self.values, reach):
+        if support.smooth or _is_zero(path, self.values, _norm(P2), _norm(support.point)):
             self.idle.append(f"N_{support.name} (normal to the motion)")
             return
         if support.mu_k is None:
@@ -536,7 +539,7 @@ def _mechanism(
         elif scene.cords:  # blocks and drums on cords: constant accelerations
             from dynsolve.principles.constant_motion import HOW, state_one
 
-            motion = state_one(scene, symbols, values)
+            motion = state_one(scene, symbols, values, change.placements)
             found = None if motion is None else motion.rate(scene)
             if found is not None:
                 second = (found, HOW, change.rate_name)

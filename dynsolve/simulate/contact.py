@@ -37,6 +37,7 @@ import sympy
 
 from dynsolve.model.scene import Path, Scene
 from dynsolve.model.states import Placement
+from dynsolve.simulate.compiled import float_function
 from dynsolve.simulate.equations import NotSimulable, OneDof, Q, _applied, _build
 
 TANGENT = 1e-9  # a start velocity's part across the path, relative to its size, taken as 0
@@ -140,7 +141,7 @@ def on_circle(
     left = set().union(*(f.free_symbols for f in numeric)) - {Q}
     if left:
         raise NotSimulable(f"symbolic givens ({', '.join(sorted(map(str, left)))}) have no values")
-    applied = sympy.lambdify([Q], tuple(numeric), "math")
+    applied = float_function([Q], numeric)
     mass = float((sympy.Integer(0) + body.mass).xreplace(dict(values)))
     up = None
     side = 1  # level with the centre, or no gravity: only the inside can turn it there

@@ -7,7 +7,7 @@ M q'' + ½ M' q'² = Q(q, q'). Q is the derivative of the work of the scene's lo
 written as a potential V(q) (weights −m g·r_G, springs ½ k (L − L₀)², constant forces
 −F·r_P, couples −M θ) plus kinetic friction −μk N |dr_C/dq| sign q', with N from the
 balance across a straight surface of a translating body. The functions are built with
-sympy once and lambdified to plain floats.
+sympy once and written as plain float functions (:mod:`dynsolve.simulate.compiled`).
 
 >>> import sympy
 >>> from dynsolve.model.scene import Body, Scene
@@ -31,9 +31,41 @@ import sympy
 
 from dynsolve.model.scene import Scene, Support, Travel, Vec
 from dynsolve.model.states import Placement, placements_of
+from dynsolve.simulate.compiled import float_function, float_scalar
 
 Q = sympy.Symbol("q")  # no assumptions: a length sqrt(u²) stays smooth, not |u|
 QD = sympy.Symbol("qd", real=True)
+
+
+class _Root(sympy.Function):
+    """√x of a squared length x ≥ 0, left as written: sympy's own ``sqrt((a·q + b)²)``
+    asks the argument of a + b q (arg, floor, exp) at each power it forms, 10 ms a time,
+    and a spring's force and its derivative form dozens. Evaluated for a number; its
+    derivative is 1/(2√x); printed ``sqrt`` (lambdify: math.sqrt, numpy.sqrt, mpmath.sqrt).
+
+    >>> x = sympy.Symbol("x")
+    >>> root((x - 1) ** 2).diff(x), root(sympy.Integer(9))
+    ((2*x - 2)/(2*sqrt((x - 1)**2)), 3)
+    """
+
+    nargs = 1
+
+    @classmethod
+    def eval(cls, x: sympy.Expr) -> sympy.Expr | None:
+        """√x of a number, at once."""
+        return sympy.sqrt(x) if x.is_Number else None
+
+    def fdiff(self, argindex: int = 1) -> sympy.Expr:
+        """d√x/dx = 1/(2√x)."""
+        return 1 / (2 * self)
+
+
+_Root.__name__ = "sqrt"  # the name the code printers know, in every lambdify module
+
+
+def root(x: sympy.Expr) -> sympy.Expr:
+    """√x of a squared length, as :class:`_Root` writes it (no evaluation of its powers)."""
+    return _Root(sympy.Integer(0) + x)
 
 
 class NotSimulable(ValueError):
@@ -46,7 +78,7 @@ class OneDof:
 
     ``terms`` are M, M', Q_c = −V', the size of the friction force (generalized) and V;
     ``place_terms`` each body's x_G, y_G, Δθ and their q-derivatives: all functions of
-    :data:`Q` alone, numbers put in. Each numeric function is lambdified when first used.
+    :data:`Q` alone, numbers put in. Each float function is written when first used.
     """
 
     coordinate: str  # what q measures
@@ -63,15 +95,11 @@ class OneDof:
 
     @functools.cached_property
     def _terms(self) -> Callable[[float], tuple[float, ...]]:
-        return sympy.lambdify([Q], self.terms, "math", cse=True)
+        return float_function([Q], self.terms)
 
     @functools.cached_property
     def _places(self) -> Callable[[float], tuple[float, ...]]:
-        return sympy.lambdify([Q], self.place_terms, "math", cse=True)
-
-    @functools.cached_property
-    def _dynamics(self) -> Callable[[float], tuple[float, ...]]:
-        return sympy.lambdify([Q], self.terms[:4], "math", cse=True)
+        return float_function([Q], self.place_terms)
 
     @functools.cached_property
     def _accel_expr(self) -> sympy.Expr:
@@ -82,36 +110,27 @@ class OneDof:
     def _accel(self) -> Callable[[float, float], float] | None:
         if not self.frictionless:
             return None
-        return sympy.lambdify([Q, QD], self._accel_expr, "math", cse=True)
-
-    @functools.cached_property
-    def _accel_of_q(self) -> Callable[[float], float] | None:
-        if not self.frictionless or QD in self._accel_expr.free_symbols:
-            return None
-        return sympy.lambdify([Q], self._accel_expr, "math", cse=True)
+        return float_scalar([Q, QD], self._accel_expr)
 
     @functools.cached_property
     def _jacobian(self) -> Callable[[float, float], tuple[float, float]] | None:
         if not self.frictionless:
             return None
         a = self._accel_expr
-        return sympy.lambdify([Q, QD], (sympy.diff(a, Q), sympy.diff(a, QD)), "math", cse=True)
-
-    @functools.cached_property
-    def _energies(self) -> Callable[..., tuple[object, object]]:
-        T = self.terms[0] * QD**2 / 2
-        return sympy.lambdify([Q, QD], (T, self.terms[4]), "numpy", cse=True)
+        return float_function([Q, QD], (sympy.diff(a, Q), sympy.diff(a, QD)))
 
     def energies(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """T and V at each sample (arrays)."""
-        T, V = self._energies(q, qd)
-        return np.broadcast_to(T, q.shape).astype(float), np.broadcast_to(V, q.shape).astype(float)
+        terms = np.array([self._terms(x) for x in np.asarray(q, dtype=float).ravel()])
+        M = terms[:, 0].reshape(np.shape(q)) if terms.size else np.zeros(np.shape(q))
+        V = terms[:, 4].reshape(np.shape(q)) if terms.size else np.zeros(np.shape(q))
+        return 0.5 * M * np.asarray(qd, dtype=float) ** 2, V
 
     def acceleration(self, q: float, qd: float) -> float:
         """q'' from Lagrange's equation at (q, q')."""
         if self._accel is not None:
             return self._accel(q, qd)
-        M, dM, Qc, friction = self._dynamics(q)
+        M, dM, Qc, friction, _ = self._terms(q)
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M
 
     def accelerator(self) -> Callable[[float, float], float]:
@@ -120,9 +139,6 @@ class OneDof:
 
     def right_hand_side(self) -> Callable[[float, object], list[float]] | None:
         """(q', q'') of the state (q, q') as one plain function, without friction."""
-        if self._accel_of_q is not None:
-            accel_q = self._accel_of_q
-            return lambda _t, y: [y[1], accel_q(y[0])]
         if self._accel is not None:
             accel = self._accel
             return lambda _t, y: [y[1], accel(y[0], y[1])]
@@ -142,12 +158,12 @@ class OneDof:
 
     def rates(self, q: float, qd: float) -> tuple[float, float]:
         """q'' and the friction's power at (q, q'), from one evaluation."""
-        M, dM, Qc, friction = self._dynamics(q)
+        M, dM, Qc, friction, _ = self._terms(q)
         return (Qc - friction * _sign(qd) - 0.5 * dM * qd * qd) / M, -friction * abs(qd)
 
     @functools.cached_property
     def _hold(self) -> Callable[[float], float]:
-        return sympy.lambdify([Q], sympy.Integer(0) + self.hold, "math")
+        return float_scalar([Q], sympy.Integer(0) + self.hold)
 
     def holds(self, q: float) -> bool:
         """At rest at q, static friction can hold the body there: |Q_c(q)| ≤ Σ μs N |dr_C/dq|
@@ -159,7 +175,7 @@ class OneDof:
         """
         if self.frictionless:
             return False
-        Qc = self._dynamics(q)[2]
+        Qc = self._terms(q)[2]
         return abs(Qc) <= self._hold(q) * (1 + 1e-12)
 
     def friction_power(self, q: float, qd: float) -> float:
@@ -277,19 +293,21 @@ def straight_line(
     unit = (sympy.Integer(0) + direction[0], sympy.Integer(0) + direction[1])
     placements = {body: Placement((Q * unit[0], Q * unit[1]), sympy.Integer(0), 1, 0)}
     if not any(s.body == body for s in scene.supports):
-        across = (-unit[1], unit[0])
-        net = _applied(scene, placements, body, symbols)
-        push = _number(_dot(net, across), values, free=(Q,))
-        scale = _number(sympy.sqrt(_dot(net, net)), values, free=(Q,))
-        for q in (0.0, 0.5, 1.0):
-            if abs(push(q)) > 1e-12 * max(scale(q), 1e-300):
+        across = (-float(unit[1]), float(unit[0]))
+        numbers = _numbers(symbols, values)
+        for q in (0.0, 0.5, 1.0):  # the net force at three places, in numbers
+            at = {body: Placement((q * unit[0], q * unit[1]), sympy.Integer(0), 1, 0)}
+            net = [_float(f) for f in _applied(scene, at, body, numbers)]
+            push = net[0] * across[0] + net[1] * across[1]
+            if abs(push) > 1e-12 * max(math.hypot(*net), 1e-300):
                 raise NotSimulable(
                     f"the forces on {body} have a part across its travel and nothing guides "
                     "it: its path is not straight"
                 )
-    return _build(
-        scene, placements, {}, symbols, values, what or f"distance of {body} along its travel", "m"
-    )
+    numbers = _numbers(symbols, values)
+    along = _dot(_applied(scene, placements, body, numbers), unit)  # Q_c = F·u = −dV/dq
+    what = what or f"distance of {body} along its travel"
+    return _build(scene, placements, {}, numbers, values, what, "m", force=along)
 
 
 def _applied(
@@ -312,7 +330,7 @@ def _applied(
         b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
         b = b or spring.other_point
         d = (b[0] - a[0], b[1] - a[1])  # from the spring's start toward its other end
-        length = sympy.sqrt(_dot(d, d))
+        length = root(_dot(d, d))
         pull = spring.k * (length - spring.unstretched) / length
         if spring.tension_only:  # no force (nor direction, at zero length) while slack
             pull = sympy.Piecewise((pull, length > spring.unstretched), (0, True))
@@ -340,16 +358,39 @@ def _size(name: str, symbols: Mapping[str, sympy.Expr]) -> sympy.Expr:
     return symbols[name]
 
 
-def _number(
-    expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], free: tuple[sympy.Symbol, ...]
-) -> Callable[..., float]:
-    """``expr`` with the values substituted, as a float function of ``free``."""
+def _numbers(
+    symbols: Mapping[str, sympy.Expr], values: Mapping[sympy.Symbol, sympy.Expr]
+) -> dict[str, sympy.Expr]:
+    """The scene's named quantities (g, the loads' sizes) with the givens' values put in,
+    so the terms are built in numbers (and q) from the start."""
+    rule = dict(values)
+    return {name: (sympy.Integer(0) + v).xreplace(rule) for name, v in symbols.items()}
+
+
+def _float(expr: sympy.Expr) -> float:
+    """A force component in numbers as a float; NotSimulable where a given has no value,
+    ArithmeticError where it is not finite (a spring of zero length)."""
+    value = sympy.Integer(0) + expr
+    if value.free_symbols:
+        names = ", ".join(sorted(str(s) for s in value.free_symbols))
+        raise NotSimulable(f"symbolic givens ({names}) have no values")
+    number = float(value)
+    if not math.isfinite(number):
+        raise ArithmeticError(f"the force is not finite there ({number})")
+    return number
+
+
+def _samples(
+    expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr], points: tuple[float, ...]
+) -> list[float]:
+    """``expr`` (a function of :data:`Q`) with the values put in, at each of ``points``:
+    a few numbers to decide on, without generating code for them."""
     numeric = (sympy.Integer(0) + expr).xreplace(dict(values))
-    left = numeric.free_symbols - set(free)
+    left = numeric.free_symbols - {Q}
     if left:
         names = ", ".join(sorted(str(s) for s in left))
         raise NotSimulable(f"symbolic givens ({names}) have no values")
-    return sympy.lambdify(free, numeric, "math")
+    return [float(numeric.xreplace({Q: sympy.Float(q)})) for q in points]
 
 
 def _potential(
@@ -380,9 +421,7 @@ def _potential(
         b = _point(scene, placements, spring.other, spring.other_point) if spring.other else None
         b = b or spring.other_point
         d = (b[0] - a[0], b[1] - a[1])
-        terms.append(
-            spring.k * _acting(spring, sympy.sqrt(_dot(d, d)) - spring.unstretched) ** 2 / 2
-        )
+        terms.append(spring.k * _acting(spring, root(_dot(d, d)) - spring.unstretched) ** 2 / 2)
     for load in scene.loads:
         if load.kind == "couple":
             turn = link_turns.get(load.body)
@@ -419,15 +458,12 @@ def _friction(
         if support.mu_k is None:
             raise NotSimulable(f"{support.body} slides at {support.name}: mu_k is not known")
         mu = support.mu_s if static and support.mu_s is not None else support.mu_k
-        total += (
-            mu * _normal(scene, placements, support, symbols, values) * sympy.sqrt(_dot(slip, slip))
-        )
+        total += mu * _normal(scene, placements, support, symbols, values) * root(_dot(slip, slip))
     return total
 
 
 def _is_still(slip: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
-    speed = _number(_dot(slip, slip), values, free=(Q,))
-    return all(abs(speed(q)) < 1e-24 for q in (0.0, 0.37, 1.0))
+    return all(abs(v) < 1e-24 for v in _samples(_dot(slip, slip), values, (0.0, 0.37, 1.0)))
 
 
 def _normal(
@@ -439,11 +475,11 @@ def _normal(
 ) -> sympy.Expr:
     """N at a contact of a body translating along a straight surface: −ΣF·n of the rest."""
     name = support.body
-    turn = _number(placements[name].turn, values, free=(Q,))
+    turns = _samples(placements[name].turn, values, (0.0, 0.37, 1.0))
     alone = not any(s.body == name and s is not support for s in scene.supports) and not any(
         name in (link.body, link.other) for link in scene.links
     )
-    if not alone or any(abs(turn(q)) > 1e-12 for q in (0.0, 0.37, 1.0)):
+    if not alone or any(abs(t) > 1e-12 for t in turns):
         raise NotSimulable(
             f"the normal force at {support.name} changes with the motion (the body turns, or "
             "another support or link shares the load)"
@@ -461,9 +497,13 @@ def _build(
     coordinate: str,
     unit: str,
     simplify: bool = False,
+    force: sympy.Expr | None = None,
 ) -> OneDof:
-    """Lambdify M, M', Q_c = −V', the friction's size and V, and each body's placement."""
-    mass_matrix = sympy.Integer(0)
+    """M, M', Q_c = −V', the friction's size and V, and each body's placement, to be
+    written as float functions; ``force``: Q_c as found without differentiating V (the
+    applied force along a particle's straight line)."""
+    symbols = _numbers(symbols, values)
+    mass_matrix, slope = sympy.Integer(0), sympy.Integer(0)  # M and M' = dM/dq
     places: list[sympy.Expr] = []
     names = tuple(placements)
     for name in names:
@@ -471,6 +511,9 @@ def _build(
         dx, dy = sympy.diff(placement.shift[0], Q), sympy.diff(placement.shift[1], Q)
         dtheta = sympy.diff(placement.turn, Q)
         mass_matrix += body.mass * (dx**2 + dy**2) + body.I_G * dtheta**2
+        # M' by the product rule on the parts (sympy's diff of the squares costs more)
+        ddx, ddy, ddtheta = (sympy.diff(d, Q) for d in (dx, dy, dtheta))
+        slope += 2 * body.mass * (dx * ddx + dy * ddy) + 2 * body.I_G * dtheta * ddtheta
         places += [
             body.G[0] + placement.shift[0],
             body.G[1] + placement.shift[1],
@@ -480,7 +523,7 @@ def _build(
             dtheta,
         ]
     V = _potential(scene, placements, link_turns, symbols)
-    terms = [mass_matrix, sympy.diff(mass_matrix, Q), -sympy.diff(V, Q)]
+    terms = [mass_matrix, slope, -sympy.diff(V, Q) if force is None else force]
     terms += [_friction(scene, placements, symbols, values), V]
     hold = _friction(scene, placements, symbols, values, static=True) if terms[3] != 0 else 0
     numeric = [(sympy.Integer(0) + t).xreplace(dict(values)) for t in [*terms, *places, hold]]
