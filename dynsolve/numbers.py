@@ -230,10 +230,12 @@ def _cheap_forms(expr: sympy.Expr) -> list[sympy.Expr]:
     sum for ``expand_mul``, a root for ``powsimp``, a sine or cosine for Pythagoras)."""
     forms = [expr, sympy.factor_terms(expr)]
     distributable = [expr]
+    arguments = {f.args[0] for f in expr.atoms(sympy.sin, sympy.cos)}
+    reduced = _pythagoras_forms(expr) if arguments else None
     denominator = _symbolic_denominator(expr)
-    if denominator:
+    if denominator and reduced is None:  # (the reduced forms are cancelled without sines)
         forms.append(sympy.together(expr))
-    if denominator or sympy.count_ops(expr) <= CANCEL_OPS:
+    if reduced is None and (denominator or sympy.count_ops(expr) <= CANCEL_OPS):
         try:
             cancelled = sympy.cancel(expr)
             forms += [cancelled, sympy.factor_terms(cancelled)]
@@ -244,14 +246,37 @@ def _cheap_forms(expr: sympy.Expr) -> list[sympy.Expr]:
         forms += [sympy.expand_mul(f) for f in distributable if sympy.count_ops(f) <= EXPAND_OPS]
     if any(p.exp.is_Rational and not p.exp.is_Integer for p in expr.atoms(sympy.Pow)):
         forms += [sympy.powsimp(f) for f in distributable]  # sqrt(3)*sqrt(x) = sqrt(3*x)
-    arguments = {f.args[0] for f in expr.atoms(sympy.sin, sympy.cos)}
-    if arguments:
+    if reduced is not None:
+        forms += reduced
+    elif arguments:
         one = {sympy.sin(u) ** 2: 1 - sympy.cos(u) ** 2 for u in arguments}
         for form in list(forms):
             replaced = form.subs(one)
             if replaced != form:
                 forms += [replaced, sympy.factor_terms(sympy.cancel(replaced))]
     return list(dict.fromkeys(forms))  # each distinct form once, in order
+
+
+FACTOR_OPS = 80  # sympy.factor only on reduced forms at most this large
+
+
+def _pythagoras_forms(expr: sympy.Expr) -> list[sympy.Expr] | None:
+    """The forms of a polynomial in sines and cosines reduced by sin² + cos² = 1
+    (:func:`dynsolve.trig.pythagoras`'s canonical remainder): with its common factors out,
+    cancelled, and factored where no sine or cosine is left (a part's distance² from a
+    composite's G, (L − 2d)² m_s²/(4 (m_rod + m_s)²)); None where ``expr`` is not such a
+    polynomial (a sine under a root or in a denominator)."""
+    from dynsolve.trig import reduced_form
+
+    reduced = reduced_form(expr)
+    if reduced is None:
+        return None
+    forms = [sympy.factor_terms(reduced)]
+    if not reduced.has(sympy.sin, sympy.cos) and sympy.count_ops(reduced) <= FACTOR_OPS:
+        forms.append(sympy.factor(reduced))
+    else:
+        forms.append(sympy.factor_terms(sympy.cancel(reduced)))
+    return forms
 
 
 def _symbolic_denominator(expr: sympy.Expr) -> bool:

@@ -34,11 +34,11 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
     written 2 sin u cos u first), its common factors taken out; ``expr`` itself when it is
     not a polynomial in the sines and cosines."""
     expr = sympy.Integer(0) + expr
-    reduced = _reduced(expr)
+    reduced = reduced_form(expr)
     return expr if reduced is None else sympy.factor_terms(reduced)
 
 
-def _reduced(expr: sympy.Expr) -> sympy.Expr | None:
+def reduced_form(expr: sympy.Expr) -> sympy.Expr | None:
     """:func:`pythagoras`'s remainder, expanded; None when there is no sine or cosine or
     ``expr`` is not a polynomial in them."""
     if not expr.has(sympy.sin, sympy.cos):
@@ -79,7 +79,7 @@ def shortest(expr: sympy.Expr) -> sympy.Expr:
     as :func:`tidied` writes it (reduced by :func:`pythagoras`)."""
     expr = sympy.Integer(0) + expr
     forms = [expr, sympy.factor_terms(expr)]
-    reduced = _reduced(expr)
+    reduced = reduced_form(expr)
     if reduced is not None:
         forms += [sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced))]
     return min(forms, key=printed_size)
@@ -96,7 +96,7 @@ def tidied(expr: sympy.Expr) -> sympy.Expr:
     a*cos(u) + b*sin(2*u)
     """
     expr = sympy.Integer(0) + expr
-    reduced = _reduced(expr)
+    reduced = reduced_form(expr)
     if reduced is None:
         return tidy(expr)
     forms = (sympy.factor_terms(reduced), sympy.factor_terms(_double_angles(reduced)))

@@ -30,6 +30,7 @@ from fractions import Fraction
 
 import sympy
 
+from dynsolve.numbers import tidy
 from dynsolve.units import Dim
 
 Number = sympy.Expr | int | Fraction | float
@@ -646,14 +647,17 @@ def composite(parts: Iterable[Part]) -> Composite:
             )
         raise ValueError("a composite body needs a mass: all its parts are massless")
     G = tuple(
-        sympy.Add(*(part.signed_mass * part.position[i] for part in parts)) / mass for i in (0, 1)
+        tidy(sympy.Add(*(part.signed_mass * part.position[i] for part in parts)) / mass)
+        for i in (0, 1)
     )
+    # each d² tidied on its own (a pendulum's parts at an angle: sin² + cos² = 1 per part),
+    # not the whole sum at once, whose tidying costs many times more
     inertia = sympy.Add(
         *(
             part.sign
             * (
                 part.I_G
-                + part.mass * ((part.position[0] - G[0]) ** 2 + (part.position[1] - G[1]) ** 2)
+                + part.mass * tidy((part.position[0] - G[0]) ** 2 + (part.position[1] - G[1]) ** 2)
             )
             for part in parts
         )

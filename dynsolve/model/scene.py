@@ -714,7 +714,7 @@ class _Builder:
 
 
 def _unit(vector: Vec) -> Vec:
-    length = sympy.sqrt(vector[0] ** 2 + vector[1] ** 2)
+    length = sympy.sqrt(tidy(vector[0] ** 2 + vector[1] ** 2, light=False))  # |v|² first: short
     return (tidy(vector[0] / length, light=False), tidy(vector[1] / length, light=False))
 
 

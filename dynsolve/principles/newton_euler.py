@@ -714,7 +714,8 @@ class _Writer:
     def _ends(self, body: str, point: Vec, other: str, other_point: Vec) -> tuple[Vec, sympy.Expr]:
         """The unit vector from ``point`` toward the other end, and the length between them."""
         d = _minus(other_point, point)
-        length = tidy(sympy.sqrt(d[0] ** 2 + d[1] ** 2), light=False)
+        # |d|² tidied first (sin² + cos² = 1 on a short form), then its root and d/|d|
+        length = tidy(sympy.sqrt(tidy(d[0] ** 2 + d[1] ** 2, light=False)), light=False)
         return (tidy(d[0] / length, light=False), tidy(d[1] / length, light=False)), length
 
     def _spring(self, spring: object) -> None:
@@ -858,8 +859,9 @@ class _Writer:
                 "y": (sympy.Integer(0), sympy.Integer(1)),
             }
         else:
-            length = sympy.sqrt(r[0] ** 2 + r[1] ** 2)
-            e_r = (r[0] / length, r[1] / length)
+            # e_r tidied once here (|r|² first), not in every projection of every force on it
+            length = sympy.sqrt(tidy(r[0] ** 2 + r[1] ** 2, light=False))
+            e_r = (tidy(r[0] / length, light=False), tidy(r[1] / length, light=False))
             axes = {"n": (-e_r[0], -e_r[1]), "t": _perp(e_r)}
         for axis, direction in axes.items():
             name = f"{support.name}_{axis}"
@@ -1115,7 +1117,7 @@ class _Writer:
             tidy(body.G[0] - pin.point[0], light=False),
             tidy(body.G[1] - pin.point[1], light=False),
         )
-        r_G_value = tidy(sympy.sqrt(r[0] ** 2 + r[1] ** 2), light=False)
+        r_G_value = tidy(sympy.sqrt(tidy(r[0] ** 2 + r[1] ** 2, light=False)), light=False)
         pin_name = pin.name
         on_axis = _is_zero(r_G_value)
         r_G = self.name_quantity(
