@@ -189,3 +189,18 @@ def test_a_form_zero_at_one_point_only_is_not_zero() -> None:
     assert not _numerically_zero(at_first_point)
     with light_tidying():
         assert tidy(at_first_point) != 0
+
+
+def test_a_part_at_an_angle_has_its_distance_squared_factored() -> None:
+    """A rod (G at L/2) and a sphere (at d_s) on one line at angle θ: the composite's G is
+    at (m_rod L/2 + m_s d_s)/(m_rod + m_s) along it, so the rod's G is
+    m_s |L/2 − d_s|/(m_rod + m_s) from it (by hand): d² = m_s² (L − 2 d_s)²/(4 (m_rod + m_s)²),
+    found through sin² θ + cos² θ = 1 without cancelling the trigonometric form."""
+    L, m_rod, m_s, d_s, theta = sympy.symbols("L m_rod m_s d_s theta", positive=True)
+    s, c = sympy.sin(theta), sympy.cos(theta)
+    G = (L * m_rod / 2 + d_s * m_s) / (m_rod + m_s)
+    d2 = (L * s / 2 - G * s) ** 2 + (L * c / 2 - G * c) ** 2
+    by_hand = m_s**2 * (L - 2 * d_s) ** 2 / (4 * (m_rod + m_s) ** 2)
+    tidied = tidy(d2)
+    assert sympy.expand(tidied - by_hand) == 0
+    assert len(sympy.sstr(tidied)) <= len(sympy.sstr(by_hand))
