@@ -42,6 +42,7 @@ from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
 from dynsolve.numbers import MAX_DIGITS, mpmath_function, tidy
+from dynsolve.solver.evaluate import mp_value
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -604,7 +605,9 @@ def _solve_nonlinear(
     letters = set().union(*(r.free_symbols for r in substituted)) - set(unknowns)
     names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
-        every_root = _polynomial_roots(substituted, unknowns, options)
+        every_root = _eliminated_roots(substituted, unknowns)
+        if every_root is None:
+            every_root = _polynomial_roots(substituted, unknowns, options)
         if every_root is None and given:
             every_root = _briefly_symbolic(residuals, unknowns, given, options)
         return every_root or solve_numerically(substituted, unknowns, "numeric mode")
@@ -618,6 +621,88 @@ def _solve_nonlinear(
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
     return solve_numerically(substituted, unknowns, reason)
+
+
+ELIMINATION_NOTE = (
+    "numeric mode: a polynomial block, every root (by elimination), in floating point"
+)
+BRANCH_POINT = 1e-20  # a cosine or sine this close to ±1 (relative): its angle is left to sympy
+
+
+def _eliminated_roots(
+    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...]
+) -> BlockSolution | None:
+    """Numeric mode's path for a polynomial block of several unknowns, or one whose angle
+    enters through one cosine, sine or tangent (:func:`_one_trig_atom`: the block is then
+    polynomial in that function's value): every root, by exact elimination down to one
+    polynomial whose roots are found in floating point
+    (:func:`~dynsolve.solver.elimination.every_root`); an angle's branches as exact mode's
+    solve gives them (:func:`_back`). The roots its unknowns' assumptions allow (a positive
+    speed), as sympy's solve keeps them; all of them when none is allowed, for the root
+    choice to say why. None when the block is not of this kind, or an angle is at the
+    branch point of its inverse (cos θ = 1: ±acos would split a double root in two).
+
+    >>> v, c = sympy.symbols("v c", positive=True)
+    >>> found = _eliminated_roots([v - 2 * c, c**2 - 1], (v, c))
+    >>> [(float(x.values[v]), float(x.values[c])) for x in found.candidates]
+    [(2.0, 1.0)]
+    """
+    from dynsolve.solver.elimination import every_root
+
+    reduced = _one_trig_atom(residuals, unknowns)
+    if reduced is None and len(unknowns) < 2:
+        return None
+    targets = tuple(reduced.unknowns) if reduced is not None else unknowns
+    if len(targets) > POLYNOMIAL_UNKNOWNS:
+        return None
+    found = every_root(reduced.residuals if reduced is not None else residuals, targets)
+    if found is None:
+        return None
+    with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
+        roots = [r for root in found for r in _angle_branches(root, reduced)]
+    if any(r is None for r in roots):
+        return None
+    candidates = [Candidate({u: _to_sympy(root[u]) for u in unknowns}) for root in roots]
+    allowed = [c for c in candidates if all(_allowed(u, v) for u, v in c.values.items())]
+    return BlockSolution(unknowns, "numeric", tuple(allowed or candidates), note=ELIMINATION_NOTE)
+
+
+def _angle_branches(
+    root: Mapping[sympy.Symbol, mpmath.mpc | mpmath.mpf], reduced: _TrigReduced | None
+) -> list[dict[sympy.Symbol, mpmath.mpc | mpmath.mpf] | None]:
+    """The roots in the block's own unknowns: a reduced block's function value gives its
+    angle's branches as :func:`_back` (cos: ±acos, sin: asin and π − asin, tan: atan, less
+    the constant added to the angle); [None] at a branch point (cos θ = ±1)."""
+    if reduced is None:
+        return [dict(root)]
+    value = root[reduced.atom]
+    rest = {u: x for u, x in root.items() if u != reduced.atom}
+    shift = mp_value(reduced.call.args[0] - reduced.angle, {})
+    if reduced.call.func is not sympy.tan and min(abs(value - 1), abs(value + 1)) <= BRANCH_POINT:
+        return [None]
+    inverse = {
+        sympy.cos: lambda a: (mpmath.acos(a), -mpmath.acos(a)),
+        sympy.sin: lambda a: (mpmath.asin(a), mpmath.pi - mpmath.asin(a)),
+        sympy.tan: lambda a: (mpmath.atan(a),),
+    }[reduced.call.func]
+    return [{**rest, reduced.angle: branch - shift} for branch in inverse(value)]
+
+
+def _allowed(unknown: sympy.Symbol, value: sympy.Expr) -> bool:
+    """Whether a number is one ``unknown``'s assumptions allow: real (within 1e-20 of its
+    size), positive, nonnegative, as declared (sympy's solve keeps no other root)."""
+    try:
+        number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    if not (math.isfinite(number.real) and math.isfinite(number.imag)):
+        return False
+    real = abs(number.imag) <= 1e-20 * abs(number.real)
+    if unknown.is_real and not real:
+        return False
+    if unknown.is_positive and not number.real > 0:
+        return False
+    return not (unknown.is_nonnegative and number.real < 0)
 
 
 BRIEF_BUDGET = 0.25  # seconds numeric mode gives sympy on a block before its root search
@@ -674,7 +759,9 @@ def _polynomial_roots(
             note = "numeric mode: a polynomial, every root (mpmath.polyroots), in floating point"
             candidates = tuple(Candidate({unknowns[0]: _to_sympy(r)}) for r in roots)
             return BlockSolution(unknowns, "numeric", candidates, note=note)
-    exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
+    from dynsolve.solver.elimination import exact_numbers
+
+    exact = [exact_numbers(r) for r in residuals]
     attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None, check=False)
     if attempt is None or not attempt.candidates:
         # sympy keeps only the roots its assumptions allow (t_s positive): without them,
@@ -861,18 +948,7 @@ def _holds(
     at_root: dict[sympy.Symbol, sympy.Expr] = {}
     for u in unknowns:
         value = at_root[u] = substitute(values[u], given)
-        if value.free_symbols:
-            return False
-        try:
-            number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
-        except (TypeError, ValueError, ArithmeticError):
-            return False
-        if not (math.isfinite(number.real) and math.isfinite(number.imag)):
-            return False
-        real = abs(number.imag) <= 1e-20 * abs(number.real)
-        if u.is_real and not real:
-            return False
-        if (u.is_positive and not number.real > 0) or (u.is_nonnegative and number.real < 0):
+        if value.free_symbols or not _allowed(u, value):
             return False
     point = {**given, **at_root}
     for residual in residuals:

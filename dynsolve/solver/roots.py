@@ -231,6 +231,8 @@ def is_real(value: sympy.Expr) -> bool | None:
     >>> is_real(sympy.sqrt(2)), is_real(1 + sympy.I), is_real(sympy.Symbol("x"))
     (True, False, None)
     """
+    if value.is_Float or value.is_Rational:
+        return True  # (a number's real part alone: nothing to evaluate)
     if value.free_symbols:
         return value.is_real
     try:

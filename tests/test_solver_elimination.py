@@ -1,0 +1,92 @@
+"""Numeric mode's polynomial blocks by elimination (dynsolve.solver.elimination): every
+root, from exact elimination down to one polynomial. Expected roots by hand."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+import sympy
+
+from dynsolve.solver.blocks import _eliminated_roots, solve_block
+from dynsolve.solver.elimination import every_root
+from dynsolve.system import SolveOptions
+
+NUMERIC = SolveOptions(mode="numeric")
+
+
+def _pairs(roots: list[dict], first: sympy.Symbol, second: sympy.Symbol) -> list[tuple]:
+    return sorted((float(r[first].real), float(r[second].real)) for r in roots)
+
+
+def test_rolling_disk_energy_block() -> None:
+    # v = r ω (r = 0.5 m) and T = ½ m v² + ½ I ω² = 8 J (m = 2 kg, I = 0.5 kg m²):
+    # ½·2·(0.5 ω)² + ½·0.5·ω² = 0.5 ω² = 8, so ω = ±4 rad/s, v = ±2 m/s
+    v, w = sympy.symbols("v omega")
+    residuals = [v - sympy.Rational(1, 2) * w, v**2 + sympy.Rational(1, 4) * w**2 - 8]
+    assert _pairs(every_root(residuals, (v, w)), v, w) == [(-2.0, -4.0), (2.0, 4.0)]
+
+
+def test_a_factor_splits_the_block() -> None:
+    # a slide that stops: t (N − 98.1) = 0 and N t/5 = 3. t = 0 gives 0 = 3 (no root);
+    # N = 98.1 gives t = 15/98.1 = 0.152905... s
+    N, t = sympy.symbols("N t")
+    residuals = [t * (N - sympy.Rational(981, 10)), N * t / 5 - 3]
+    assert _pairs(every_root(residuals, (N, t)), N, t) == [(98.1, pytest.approx(15 / 98.1))]
+
+
+def test_floats_are_taken_as_the_decimals_they_print() -> None:
+    # 0.25 v² = 4.375 − 0.5 w², v = w: 0.75 v² = 4.375, v = ±sqrt(35/6)
+    v, w = sympy.symbols("v w")
+    residuals = [sympy.Float("0.25") * v**2 + sympy.Float("0.5") * w**2 - 4.375, v - w]
+    root = math.sqrt(35 / 6)
+    found = _pairs(every_root(residuals, (v, w)), v, w)
+    assert found == [(pytest.approx(-root), pytest.approx(-root)), (pytest.approx(root),) * 2]
+
+
+def test_what_elimination_leaves_to_sympy() -> None:
+    x, y = sympy.symbols("x y")
+    assert every_root([x - y, 1 / x - 2], (x, y)) is None  # an unknown in a denominator
+    assert every_root([x - y, (y - 1) ** 2], (x, y)) is None  # a repeated root
+    assert every_root([x * y - 1, x**2 + y**2 - 4], (x, y)) is None  # nothing to eliminate
+    assert every_root([x - y, 2 * x - 2 * y], (x, y)) is None  # dependent equations
+
+
+def test_block_through_one_cosine() -> None:
+    # a block leaving a dome (R = 1 m): v²/4 = (g/2) cos θ from the normal force, and
+    # energy v²/4 = 10.06 − g cos θ (g = 9.81): (g/2 + g) cos θ = 10.06,
+    # cos θ = 10.06/14.715; v = sqrt(2 g cos θ); θ = ±acos(cos θ), v > 0 declared
+    v = sympy.Symbol("v", positive=True)
+    theta = sympy.Symbol("theta", real=True)
+    g = sympy.Rational(981, 100)
+    residuals = [
+        -(v**2) / 4 - g * sympy.cos(theta) + sympy.Rational(503, 50),
+        -(v**2) / 4 + g * sympy.cos(theta) / 2,
+    ]
+    found = _eliminated_roots(residuals, (v, theta))
+    cosine = 10.06 / 14.715
+    expected = [(math.sqrt(2 * 9.81 * cosine), s * math.acos(cosine)) for s in (-1, 1)]
+    got = sorted((float(c.values[v]), float(c.values[theta])) for c in found.candidates)
+    assert got == [pytest.approx(e, rel=1e-13) for e in expected]
+    assert "elimination" in found.note
+
+
+def test_an_angle_at_its_branch_point_is_left_to_sympy() -> None:
+    # cos θ = 1 (θ = 0, a double root of θ): ±acos would split it in two
+    theta, v = sympy.symbols("theta v", real=True)
+    assert _eliminated_roots([sympy.cos(theta) - 1, v - 2], (theta, v)) is None
+
+
+def test_numeric_solve_block_takes_the_elimination() -> None:
+    # the gear rolling on a fixed gear: ω_spin = 3 ω_CD and 0.185 ω_CD² + 0.01 ω_spin² = 62.83
+    # (the energy): 0.275 ω_CD² = 62.8318530717959, ω_CD = ±15.1156...
+    w_cd, w_spin = sympy.symbols("omega_CD omega_spin")
+    residuals = [
+        w_spin / 10 - 3 * w_cd / 10,
+        -sympy.Float("0.185") * w_cd**2 - sympy.Float("0.01") * w_spin**2 + 20 * sympy.pi,
+    ]
+    solution = solve_block(residuals, [w_cd, w_spin], {}, NUMERIC)
+    speeds = sorted(float(c.values[w_cd]) for c in solution.candidates)
+    root = math.sqrt(20 * math.pi / 0.275)
+    assert speeds == [pytest.approx(-root, rel=1e-14), pytest.approx(root, rel=1e-14)]
+    assert solution.exhaustive and "elimination" in solution.note
