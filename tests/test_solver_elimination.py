@@ -90,3 +90,29 @@ def test_numeric_solve_block_takes_the_elimination() -> None:
     root = math.sqrt(20 * math.pi / 0.275)
     assert speeds == [pytest.approx(-root, rel=1e-14), pytest.approx(root, rel=1e-14)]
     assert solution.exhaustive and "elimination" in solution.note
+
+
+def test_symbolic_roots_checked_at_samples_match_sympys_check() -> None:
+    # energy of a fall: m v²/2 = m g h with v > 0 declared, letters positive: v = √(2 g h)
+    # only (sympy's check drops −√(2 g h), which contradicts v > 0); h = v²/(2 g) then.
+    m, g, h = sympy.symbols("m g h", positive=True)
+    v = sympy.Symbol("v", positive=True)
+    residuals = [m * v**2 / 2 - m * g * h]
+    numeric = solve_block(residuals, [v], {}, NUMERIC)
+    exact = solve_block(residuals, [v], {}, SolveOptions(mode="exact"))
+    assert [c.values[v] for c in numeric.candidates] == [c.values[v] for c in exact.candidates]
+    assert sympy.simplify(numeric.candidates[0].values[v] - sympy.sqrt(2 * g * h)) == 0
+
+
+def test_a_spurious_symbolic_root_is_dropped() -> None:
+    # sqrt(x) = a - x with a > 0: squaring gives x² − (2a + 1) x + a² = 0, whose larger root
+    # (2a + 1 + √(4a + 1))/2 makes a − x < 0: not a root of the equation, as sympy finds
+    a = sympy.Symbol("a", positive=True)
+    x = sympy.Symbol("x", real=True)
+    residuals = [sympy.sqrt(x) - a + x]
+    numeric = solve_block(residuals, [x], {}, NUMERIC)
+    exact = solve_block(residuals, [x], {}, SolveOptions(mode="exact"))
+    assert len(numeric.candidates) == len(exact.candidates) == 1
+    root = numeric.candidates[0].values[x]
+    expected = (2 * a + 1 - sympy.sqrt(4 * a + 1)) / 2
+    assert abs(float((root - expected).subs(a, 3))) < 1e-12

@@ -23,6 +23,7 @@ knowns and earlier unknowns kept as symbols. Choosing among the candidates is
 from __future__ import annotations
 
 import math
+import random
 import signal
 import sys
 import threading
@@ -859,15 +860,18 @@ def _solve_symbolically(
     deadline = time.process_time() + options.time_budget  # CPU seconds, as the budget
     reasons: list[str] = []
     nothing_given = substituted == residuals  # then one symbolic attempt says it all
+    # numeric mode checks a root with letters at sample points (sympy's checksol, a
+    # simplify of every residual, is most of the solve's time)
+    check = options.mode != "numeric" or not _samples_decide(residuals, unknowns, given)
     if options.show_formulas:
         share = options.time_budget if nothing_given else options.time_budget / 2
-        attempt, reason = _symbolic_candidates(residuals, unknowns, share, given)
+        attempt, reason = _symbolic_candidates(residuals, unknowns, share, given, check)
         if attempt is not None:
             return attempt, ""
         reasons.append(reason)
     if not (reasons and nothing_given):
         seconds = deadline - time.process_time()
-        attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None)
+        attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None, check)
         if attempt is not None:
             return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else ""), ""
         reasons.append(reason)
@@ -942,14 +946,15 @@ def _holds(
     not a root), and every residual at the root, evaluated to 30 digits, within
     :data:`UNCHECKED_RESIDUAL` of 0 relative to the size of its terms (a root of a squared
     equation, or one that zeroes a denominator, is off by far more). False when any of
-    it cannot be decided (a letter left)."""
+    it cannot be decided. A root that holds letters (symbolic givens, all positive:
+    :func:`_samples_decide`) is judged by :func:`_holds_at_samples`."""
     from dynsolve.solver.residuals import term_size
 
-    at_root: dict[sympy.Symbol, sympy.Expr] = {}
-    for u in unknowns:
-        value = at_root[u] = substitute(values[u], given)
-        if value.free_symbols or not _allowed(u, value):
-            return False
+    at_root = {u: substitute(values[u], given) for u in unknowns}
+    if any(value.free_symbols for value in at_root.values()):
+        return _holds_at_samples(residuals, at_root, given)
+    if not all(_allowed(u, value) for u, value in at_root.items()):
+        return False
     point = {**given, **at_root}
     for residual in residuals:
         at = substitute(residual, point)
@@ -963,6 +968,92 @@ def _holds(
         if not math.isfinite(size) or size > UNCHECKED_RESIDUAL * scale:
             return False
     return True
+
+
+CHECK_POINTS = 3  # seeded points of the letters a symbolic root is checked at
+CHECK_SEED = 4104
+
+
+def _samples_decide(
+    residuals: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """Whether the roots of a block with letters can be checked at sample points: every
+    letter left once ``given`` is put in is declared positive (a given magnitude), so
+    its sample values are values it may take."""
+    letters = set().union(*(substitute(r, given).free_symbols for r in residuals))
+    return all(s.is_positive for s in letters - set(unknowns))
+
+
+def _holds_at_samples(
+    residuals: Sequence[sympy.Expr],
+    at_root: Mapping[sympy.Symbol, sympy.Expr],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """sympy's check of a root in formulas (``check_assumptions`` and ``checksol``), with
+    the residuals at :data:`CHECK_POINTS` seeded positive values of the letters instead of
+    ``simplify``: a root sympy's checks would keep is kept. Its values must not contradict
+    their unknowns' assumptions (sympy's own test, on the formulas); a residual that is
+    not 0 (more than 1e-20 of the size of its terms, 40 digits) or not defined at every
+    point (a spurious root of a squared equation, one that zeroes a denominator) is what
+    ``checksol`` proves nonzero, so the root goes; one that is 0 at a point may be 0
+    everywhere, so the root stays, as sympy keeps a root it cannot disprove.
+
+    >>> a, x = sympy.Symbol("a", positive=True), sympy.Symbol("x", positive=True)
+    >>> r = [x**2 - a]
+    >>> _holds_at_samples(r, {x: sympy.sqrt(a)}, {}), _holds_at_samples(r, {x: -sympy.sqrt(a)}, {})
+    (True, False)
+    >>> _holds_at_samples([x - a], {x: 2 * a}, {})  # not a root
+    False
+    """
+    from sympy.core.assumptions import check_assumptions
+
+    for unknown, value in at_root.items():
+        if check_assumptions(value, **unknown.assumptions0) is False:
+            return False
+    forms = [substitute(r, given) for r in residuals]
+    letters = set().union(
+        *(f.free_symbols for f in forms), *(v.free_symbols for v in at_root.values())
+    )
+    letters = sorted(letters - set(at_root), key=lambda s: s.name)
+    rng = random.Random(CHECK_SEED)
+    nonzero = [0] * len(forms)
+    for _ in range(CHECK_POINTS):
+        point = {s: sympy.Rational(rng.randint(10, 1000), 100) for s in letters}
+        for i, form in enumerate(forms):
+            if not _zero_at(form, at_root, point):
+                nonzero[i] += 1
+    return all(count < CHECK_POINTS for count in nonzero)
+
+
+def _zero_at(
+    form: sympy.Expr,
+    at_root: Mapping[sympy.Symbol, sympy.Expr],
+    point: Mapping[sympy.Symbol, sympy.Rational],
+) -> bool:
+    """Whether ``form`` with the root put in is 0 at ``point`` (within 1e-20 of the size of
+    its terms, at 40 digits); False where it is not defined."""
+    from dynsolve.solver.evaluate import NotQuick, mp_size
+
+    with mpmath.workdps(40):
+        letters = {s: mpmath.mpf(int(v.p)) / int(v.q) for s, v in point.items()}
+        try:
+            shared: dict[sympy.Basic, object] = {}
+            values = {u: mp_value(v, letters, shared) for u, v in at_root.items()}
+            seen: dict[sympy.Basic, object] = {}
+            value = mp_value(form, {**letters, **values}, seen)
+            size = mp_size(form, {**letters, **values}, seen)
+        except (NotQuick, ArithmeticError, ValueError, TypeError):
+            exact = form.xreplace(dict(at_root)).xreplace(dict(point))
+            try:
+                value = mpmath.mpmathify(complex(sympy.N(exact, 40, maxn=MAX_DIGITS)))
+            except (TypeError, ValueError, ArithmeticError):
+                return False
+            size = abs(value)  # no term sizes: 0 only when evalf finds it 0
+        if not (mpmath.isfinite(value) and mpmath.isfinite(size)):
+            return False
+        return abs(value) <= mpmath.mpf(10) ** -20 * size
 
 
 @dataclass(frozen=True)
