@@ -9,9 +9,10 @@ floating point; the unknowns eliminated are then computed from them.
   solved for and substituted into the others (exact: no root is lost or added);
 * an equation with rational coefficients that factors (``t (N − 98.1) = 0``) splits
   the block into one block per factor, whose roots together are the block's;
-* one equation in one unknown left: its roots by ``mpmath.polyroots``
-  (:func:`~dynsolve.solver.blocks._univariate_roots`, with guard digits, a repeated root
-  refused).
+* one equation in one unknown left: its square-free part (rational coefficients: a
+  repeated root once, as sympy's solve lists it), then its roots by ``mpmath.polyroots``
+  (:func:`~dynsolve.solver.blocks._univariate_roots`, with guard digits; a repeated root
+  left, with other coefficients, is refused).
 
 Every root is found, complex ones too (the root choice says why it discards them), as
 sympy's algebraic solve would find them. None when the block is not of this kind (an
@@ -95,9 +96,12 @@ def _solve(equations: list[sympy.Expr], unknowns: list[sympy.Symbol]) -> list[Ro
         if not equation.free_symbols & set(unknowns):
             return None if equation == 0 else []  # dependent; or 0 = c: no root
     if len(unknowns) == 1:
-        if sympy.Poly(equations[0], unknowns[0]).degree() > FINAL_DEGREE:
+        polynomial = sympy.Poly(equations[0], unknowns[0])
+        if polynomial.degree() > FINAL_DEGREE:
             return None
-        found = _univariate_roots(equations[0], unknowns[0])
+        if polynomial.domain.is_QQ or polynomial.domain.is_ZZ:  # a repeated root once
+            polynomial = polynomial.sqf_part()
+        found = _univariate_roots(polynomial.as_expr(), unknowns[0])
         return None if found is None else [{unknowns[0]: r} for r in found]
     pivot = _linear_pivot(equations, unknowns)
     if pivot is not None:
