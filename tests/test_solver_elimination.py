@@ -122,3 +122,12 @@ def test_a_spurious_symbolic_root_is_dropped() -> None:
     root = numeric.candidates[0].values[x]
     expected = (2 * a + 1 - sympy.sqrt(4 * a + 1)) / 2
     assert abs(float((root - expected).subs(a, 3))) < 1e-12
+
+
+def test_a_pivot_with_an_irrational_sum_for_coefficient() -> None:
+    # (1 + √2) x = y, y² = 2: y = ±√2, x = y/(1 + √2) = ±√2 (√2 − 1) = ±(2 − √2)
+    x, y = sympy.symbols("x y")
+    residuals = [(1 + sympy.sqrt(2)) * x - y, y**2 - 2]
+    found = _pairs(every_root(residuals, (x, y)), x, y)
+    expected = [(-(2 - math.sqrt(2)), -math.sqrt(2)), (2 - math.sqrt(2), math.sqrt(2))]
+    assert found == [tuple(pytest.approx(v, rel=1e-14) for v in pair) for pair in expected]

@@ -693,7 +693,7 @@ def _allowed(unknown: sympy.Symbol, value: sympy.Expr) -> bool:
     """Whether a number is one ``unknown``'s assumptions allow: real (within 1e-20 of its
     size), positive, nonnegative, as declared (sympy's solve keeps no other root)."""
     try:
-        number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
+        number = complex(value if value.is_Float else sympy.N(value, 30, maxn=MAX_DIGITS))
     except (TypeError, ValueError, ArithmeticError):
         return False
     if not (math.isfinite(number.real) and math.isfinite(number.imag)):

@@ -56,9 +56,11 @@ def every_root(
     """
     equations = []
     for residual in residuals:
-        numerator, denominator = sympy.fraction(sympy.together(residual))
-        if set(unknowns) & denominator.free_symbols:
-            return None
+        numerator = sympy.Integer(0) + residual
+        if _divides(numerator, unknowns):
+            numerator, denominator = sympy.fraction(sympy.together(numerator))
+            if set(unknowns) & denominator.free_symbols:
+                return None
         polynomial = exact_numbers(sympy.expand(numerator))
         if not polynomial.is_polynomial(*unknowns):
             return None
@@ -73,6 +75,14 @@ def every_root(
         except (NotQuick, ArithmeticError, ValueError, TypeError, sympy.PolynomialError):
             return None
     return _distinct(roots) if roots else None
+
+
+def _divides(expr: sympy.Expr, unknowns: Sequence[sympy.Symbol]) -> bool:
+    """Whether an unknown is in a power with a negative exponent (a denominator)."""
+    return any(
+        p.exp.is_negative and not p.base.free_symbols.isdisjoint(unknowns)
+        for p in expr.atoms(sympy.Pow)
+    )
 
 
 def exact_numbers(expr: sympy.Expr) -> sympy.Expr:
@@ -115,14 +125,17 @@ def _linear_pivot(
     """An equation, an unknown it holds linearly with a nonzero number for coefficient,
     and that unknown's value from it (in the other unknowns); None when there is none."""
     for i, equation in enumerate(equations):
-        for unknown in unknowns:
-            polynomial = sympy.Poly(equation, unknown)
-            if polynomial.degree() != 1:
+        terms = sympy.Poly(equation, *unknowns).terms()
+        for k, unknown in enumerate(unknowns):
+            holding = [(m, c) for m, c in terms if m[k]]
+            if len(holding) != 1 or sum(holding[0][0]) != 1:
+                continue  # a power, or a product with another unknown
+            coefficient = holding[0][1]
+            if coefficient.is_zero is not False:
                 continue
-            coefficient, rest = polynomial.all_coeffs()
-            if coefficient.free_symbols or coefficient.is_zero is not False:
-                continue
-            return i, unknown, sympy.expand(-rest / coefficient)
+            value = sympy.expand(-sympy.expand(equation - coefficient * unknown) / coefficient)
+            if unknown not in value.free_symbols:
+                return i, unknown, value
     return None
 
 
