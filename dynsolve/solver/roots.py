@@ -150,7 +150,38 @@ def _defined(candidate: Candidate) -> str:
 
 
 def _real(candidate: Candidate) -> str:
-    return "not real" if any(is_real(v) is False for v in candidate.values.values()) else ""
+    values = candidate.values.values()
+    return "not real" if any(_may_be_unreal(v) and is_real(v) is False for v in values) else ""
+
+
+_REAL_FUNCTIONS = (sympy.sin, sympy.cos, sympy.exp)
+
+
+def _may_be_unreal(value: sympy.Expr) -> bool:
+    """False when ``value`` is built from real letters and real numbers by sums, products,
+    whole powers, sines, cosines and exponentials: then it is real wherever it is
+    defined, and sympy's ``is_real`` cannot be False for it (a value undefined at the
+    givens is the filter before's), so the query is spared. True otherwise.
+
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> _may_be_unreal(a * b / (a - b) + sympy.cos(a) ** 2), _may_be_unreal(sympy.sqrt(a - b))
+    (False, True)
+    """
+    stack = [value]
+    while stack:
+        node = stack.pop()
+        if node.is_Symbol:
+            if not node.is_real:
+                return True
+        elif node.is_Add or node.is_Mul or isinstance(node, _REAL_FUNCTIONS):
+            stack.extend(node.args)
+        elif node.is_Pow:
+            if not node.exp.is_Integer:
+                return True
+            stack.append(node.base)
+        elif not (node.is_Rational or node.is_Float or node in (sympy.pi, sympy.E)):
+            return True
+    return False
 
 
 def _as_declared(candidate: Candidate) -> str:
