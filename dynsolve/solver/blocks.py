@@ -478,6 +478,14 @@ def solve_linear_in_floats(
             b = [_mp_real(rhs[i], digits) for i in range(n)]
         except (TypeError, ValueError):
             return None  # a complex or non-finite entry: the exact path says what it is
+        if n == 1:  # a x = b: x = b/a, the one division the scaled solve below makes
+            if A[0][0] == 0:
+                return None
+            quotient = b[0] / A[0][0]
+            value = sympy.Integer(0) if quotient == 0 else sympy.Float(quotient, numeric_digits())
+            return BlockSolution(
+                unknowns, "linear", (Candidate({unknowns[0]: value}),), note=FLOAT_LINEAR_NOTE
+            )
         columns = [mpmath.mpf(1)] * n
         for sweep in range(EQUILIBRATION_SWEEPS):
             A, b, columns = _equilibrated(A, b, columns, geometric=sweep > 0)
