@@ -4,6 +4,7 @@ root, from exact elimination down to one polynomial. Expected roots by hand."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 import sympy
@@ -131,3 +132,21 @@ def test_a_pivot_with_an_irrational_sum_for_coefficient() -> None:
     found = _pairs(every_root(residuals, (x, y)), x, y)
     expected = [(-(2 - math.sqrt(2)), -math.sqrt(2)), (2 - math.sqrt(2), math.sqrt(2))]
     assert found == [tuple(pytest.approx(v, rel=1e-14) for v in pair) for pair in expected]
+
+
+def test_auto_mode_keeps_an_eliminated_block_in_floats() -> None:
+    # a 40-lb disk rolled by a 15 ft·lb couple against a spring (rwe_seed_disk40lb): with
+    # m = 40/32.2 = 200/161 slug, I_G = m (0.6 ft)², v_G = 0.8 ω: T = ½ m (0.64 + 0.36) ω²
+    # = (100/161) ω² = U = 15 (0.625) − 10 (1²)/2 = 4.375 ft·lb, so ω = √(4.375·161/100)
+    from dynsolve.pipeline import solve_file
+
+    path = (
+        Path(__file__).resolve().parent.parent / "problems" / "equations" / "rwe_seed_disk40lb.dyn"
+    )
+    for mode in ("numeric", "auto"):
+        solution = solve_file(path, SolveOptions(mode=mode))
+        omega = {row.name: row.value for row in solution.answers}["omega"]
+        assert omega == pytest.approx(math.sqrt(4.375 * 161 / 100), rel=1e-13)
+        assert any("elimination" in step.note for step in solution.steps)
+    (precision,) = [c for c in solution.checks if c.name == "precision"]
+    assert precision.detail.startswith("auto mode: numeric (float64) kept")
