@@ -70,7 +70,10 @@ def test_holds_rejects_what_checksol_rejects() -> None:
     assert not _holds(squared, (t,), {t: sympy.Integer(-2)}, {})  # t is positive
     g = sympy.Symbol("g", positive=True)
     assert _holds([t**2 - g], (t,), {t: sympy.sqrt(g)}, {g: sympy.Integer(9)})
-    assert not _holds([t**2 - g], (t,), {t: sympy.sqrt(g)}, {})  # a letter left: unknown
+    # a letter left (a symbolic given): judged at sample points of g > 0, as checksol would
+    assert _holds([t**2 - g], (t,), {t: sympy.sqrt(g)}, {})  # (√g)² = g for every g
+    assert not _holds([t**2 - g], (t,), {t: -sympy.sqrt(g)}, {})  # t is positive
+    assert not _holds([t**2 - g], (t,), {t: 2 * sympy.sqrt(g)}, {})  # (2√g)² = 4g ≠ g
 
 
 def test_brief_symbolic_block_in_numbers() -> None:

@@ -321,9 +321,7 @@ def _solve_all(
             hint="give values to the givens, or place the joints at the instant "
             "('joint C: (x, y)') to keep the answer symbolic",
         )
-    jacobian = sympy.Matrix(numeric).jacobian(coords)
     f_np = sympy.lambdify(coords, numeric, "numpy")
-    j_np = sympy.lambdify(coords, jacobian, "numpy")
     known = [p for p in (_numbers(linkage, v) for v in positions.values()) if p is not None]
     lengths = [
         v[0]
@@ -345,12 +343,11 @@ def _solve_all(
     ]
     found: list[list[mpmath.mpf]] = []
     f_mp = sympy.lambdify(coords, numeric, "mpmath")
-    j_mp = sympy.lambdify(coords, jacobian, "mpmath")
     with mpmath.workdps(DIGITS + 5):
         for start in starts:
             found_at = _newton(
                 lambda z: numpy.asarray(f_np(*z), dtype=float),
-                lambda z: numpy.asarray(j_np(*z), dtype=float),
+                lambda z: _step_jacobian(f_np, z, size),
                 start,
                 size,
             )
@@ -364,7 +361,7 @@ def _solve_all(
                 polished = mpmath.findroot(
                     lambda *z: f_mp(*z),
                     [mpmath.mpf(float(v)) for v in found_at],
-                    J=lambda *z: j_mp(*z),
+                    J=lambda *z: _step_jacobian_mp(f_mp, z, size),
                     tol=mpmath.mpf(10) ** (-2 * DIGITS),
                     maxsteps=60,
                     verify=False,
@@ -392,6 +389,47 @@ def _solve_all(
         {p: (snapped(v[2 * i]), snapped(v[2 * i + 1])) for i, p in enumerate(unknown)}
         for v in found
     ]
+
+
+def _step_jacobian(f: Callable[..., Any], z: Any, size: float) -> Any:
+    """The Jacobian of the loop-closure residuals ``f`` at ``z`` in float64 by complex
+    steps: column j is Im f(z + i h e_j)/h. The residuals are polynomials in the
+    coordinates, so this is their derivative to the last digit (no difference cancels,
+    whatever h; h = 1e-30 of the linkage's size), without sympy's symbolic Jacobian.
+
+    >>> import numpy
+    >>> f = lambda x, y: [x**2 + y**2 - 1, x - y]
+    >>> _step_jacobian(f, numpy.array([0.6, 0.8]), 1.0).round(12).tolist()
+    [[1.2, 1.6], [1.0, -1.0]]
+    """
+    import numpy
+
+    step = 1e-30 * size
+    columns = []
+    for j in range(len(z)):
+        point = numpy.array(z, dtype=complex)
+        point[j] += 1j * step
+        columns.append(numpy.asarray(f(*point), dtype=complex).imag / step)
+    return numpy.array(columns).T
+
+
+def _step_jacobian_mp(f: Callable[..., Any], z: Sequence[Any], size: float) -> Any:
+    """:func:`_step_jacobian` in mpmath at the working precision (h 10 digits below it).
+
+    >>> import mpmath
+    >>> f = lambda x, y: [x**2 + y**2 - 1, x - y]
+    >>> J = _step_jacobian_mp(f, [mpmath.mpf("0.6"), mpmath.mpf("0.8")], 1.0)
+    >>> [mpmath.nstr(J[i, j], 12) for i in range(2) for j in range(2)]
+    ['1.2', '1.6', '1.0', '-1.0']
+    """
+    import mpmath
+
+    step = mpmath.mpf(10) ** -(mpmath.mp.dps + 10) * size
+    columns = []
+    for j in range(len(z)):
+        point = [mpmath.mpc(v) + (mpmath.mpc(0, step) if k == j else 0) for k, v in enumerate(z)]
+        columns.append([mpmath.im(v) / step for v in f(*point)])
+    return mpmath.matrix(columns).T
 
 
 def _mirrors(solution: Any, known: Sequence[tuple[float, float]]) -> list[Any]:

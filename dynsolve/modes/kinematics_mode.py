@@ -105,7 +105,7 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
                 hint="find each quantity of the motion; derived quantities are for one-line "
                 "motion and scenes",
             )
-        return build_plane_problem(spec)
+        return build_plane_problem(spec, numbers_first)
     file = spec.file
     if len(spec.kinematics) != 1:
         raise SpecError(
@@ -136,6 +136,7 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
     invert = not _values_at_times_only(spec, givens, kind)
+    quick = numbers_first  # numeric mode: relations inverted by peeling where that finds one branch
     if kind in ("a(v)", "a(x)") and invert:
         # an a(v) or a(x) law inverted with the numbers in can cost sympy seconds at
         # extreme scales (exp(c*log(n)) = n**c expanded with c ~ 1e6; the roots of
@@ -144,7 +145,9 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     if numbers_first:
         rhs = rhs.xreplace(values)
         initial = {n: sympy.Integer(0) + e.xreplace(values) for n, e in initial.items()}
-    motion = integrate_motion(rhs, kind, initial["t"], initial["x"], initial["v"], invert)
+    motion = integrate_motion(
+        rhs, kind, initial["t"], initial["x"], initial["v"], invert, quick=quick
+    )
     if kind in ("x(t)", "v(t)"):  # the start is the law's own
         initial |= {n: _tidy(motion.formulas[f"{n}(t)"].subs(T, initial["t"])) for n in "xv"}
     all_symbols = {**symbols, **{n: s for n, (s, _) in VARIABLES.items()}}
@@ -786,10 +789,12 @@ def _steps(
         text = sympy.sstr(formula.xreplace(pretty_names)).replace("**", "^")
         latex = sympy.latex(formula, symbol_names=latex_names)
         with_numbers = formula.xreplace(dict(values))
-        shown = sympy.sstr(sympy.N(with_numbers, 4)).replace("**", "^")
-        result = Formula(name, text, latex, shown, sympy.latex(sympy.N(with_numbers, 4)))
         if numbers_first and with_numbers == formula:  # the numbers are in already
             result = Formula(name, "", "", text, latex)
+        else:
+            rounded = sympy.N(with_numbers, 4)
+            shown = sympy.sstr(rounded).replace("**", "^")
+            result = Formula(name, text, latex, shown, sympy.latex(rounded))
         steps.append(
             Step(index, (), (name,), "integration" if "∫" in how else "algebra", (result,), (), how)
         )

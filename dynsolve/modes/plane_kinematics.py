@@ -109,9 +109,15 @@ def is_plane(spec: Spec) -> bool:
     return bool(names & PLANE_ONLY) or (len(spec.kinematics) > 1 and "x" in names)
 
 
-def build_plane_problem(spec: Spec) -> KinematicsProblem:
+def build_plane_problem(spec: Spec, numbers_first: bool = False) -> KinematicsProblem:
     """Check the two relations (and initial conditions), derive every component, and
     resolve the find list.
+
+    ``numbers_first`` (numeric mode): the givens' values are put into the relations, the
+    initial conditions and the finds' arguments once their units are checked, so every
+    component is derived, solved for and searched with numbers (the steps show
+    y(t) = 10*t − 981*t²/200); a given without a value, and the default g (whose use
+    the notes report), stay letters.
 
     >>> from dynsolve.spec.parser import parse_spec
     >>> given = "given:\\n  c = 3 m/s\\n  w = 2 rad/s\\n"
@@ -119,7 +125,7 @@ def build_plane_problem(spec: Spec) -> KinematicsProblem:
     >>> build_plane_problem(parse_spec(text, "k.dyn")).targets[0].expr
     c*t*w
     """
-    return _Builder(spec).problem()
+    return _Builder(spec, numbers_first).problem()
 
 
 @dataclass(frozen=True)
@@ -139,23 +145,35 @@ class Derivation:
 class _Builder:
     """Builds one plane-motion problem; holds the lookups its steps share."""
 
-    def __init__(self, spec: Spec) -> None:
+    def __init__(self, spec: Spec, numbers_first: bool = False) -> None:
         self.spec, self.file = spec, spec.file
         self.givens = tuple(givens_of(spec))
         self.given_dims = {g.name: g.dim for g in self.givens}
         self.symbols = {g.name: g.symbol for g in self.givens} | {"t": T}
         self.values = {g.symbol: g.value for g in self.givens if g.value is not None}
+        # numbers_first: the values put in as the motion is built (the default g stays a
+        # letter: the note on standard gravity reads whether an answer uses it)
+        self.put_in = {
+            g.symbol: g.value
+            for g in self.givens
+            if numbers_first and g.value is not None and not (g.name == "g" and g.given is None)
+        }
         self.relations: dict[str, EquationStmt] = {}
         self.initial_lines: dict[str, EquationStmt] = {}
         self.formulas: dict[str, sympy.Expr] = {}
         self.derivations: list[Derivation] = []
         self.targets: dict[str, Target] = {}
         self.components = "x–y"
-        self.t0: sympy.Expr = self.symbols.get("t_0", sympy.Integer(0))
+        self.accelerations: dict[str, sympy.Expr] = {}  # a_x, a_y with letters (the notes)
+        self.t0: sympy.Expr = self._in(self.symbols.get("t_0", sympy.Integer(0)))
         self.initial: dict[str, sympy.Expr] = {}
 
     def at(self, line: int, column: int) -> Position:
         return Position(self.file, line, column)
+
+    def _in(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` with the values put in (numeric mode), else as it is."""
+        return (sympy.Integer(0) + expr).xreplace(self.put_in) if self.put_in else expr
 
     def problem(self) -> KinematicsProblem:
         self._classify()
@@ -309,10 +327,10 @@ class _Builder:
     def _initial_conditions(self) -> None:
         for name, dim in INITIAL.items():
             if name in self.given_dims:
-                self.initial[name] = self.symbols[name]
+                self.initial[name] = self._in(self.symbols[name])
             elif name in self.initial_lines:
                 st = self.initial_lines[name]
-                expr = to_sympy(st.rhs, self.symbols, self.values)
+                expr = self._in(to_sympy(st.rhs, self.symbols, self.values))
                 self.initial[name] = expr
                 self.derivations.append(
                     Derivation(name, expr, "initial condition", "algebra", (st.line,), dim)
@@ -325,9 +343,11 @@ class _Builder:
             name = next(n for n in names if n in self.relations)
             st = self.relations[name]
             kind = ("x(t)", "v(t)", "a(t)")[names.index(name)]
-            expr = to_sympy(st.rhs, self.symbols, self.values)
+            letters = to_sympy(st.rhs, self.symbols, self.values)
+            self.accelerations[names[2]] = sympy.diff(letters, T, 2 - names.index(name))
+            expr = self._in(letters)
             start = (self.initial[f"{axis}_0"], self.initial[f"v_{axis}0"])
-            motion = integrate_motion(expr, kind, self.t0, *start)
+            motion = integrate_motion(expr, kind, self.t0, *start, in_time_only=True)
             used = [self.initial_lines.get(n) for n in (f"{axis}_0", f"v_{axis}0")]
             lines = tuple(sorted({st.line, *(s.line for s in used if s and kind != "x(t)")}))
             for key, how in motion.steps:
@@ -339,17 +359,15 @@ class _Builder:
                 self._derive(quantity, motion.formulas[key], rule, step_lines)
         lines = tuple(s.line for s in self.relations.values())
         v_x, v_y, a_x, a_y = (self.formulas[q] for q in ("v_x", "v_y", "a_x", "a_y"))
-        self._derive(
-            "v", tidy(sympy.sqrt(v_x**2 + v_y**2), light=False), "v = √(v_x² + v_y²)", lines
-        )
-        self._derive(
-            "a", tidy(sympy.sqrt(a_x**2 + a_y**2), light=False), "a = √(a_x² + a_y²)", lines
-        )
+        self._derive("v", tidy(sympy.sqrt(v_x**2 + v_y**2)), "v = √(v_x² + v_y²)", lines)
+        self._derive("a", tidy(sympy.sqrt(a_x**2 + a_y**2)), "a = √(a_x² + a_y²)", lines)
 
     def _polar(self) -> None:
         r_line, theta_line = self.relations["r"], self.relations["theta"]
         lines = (r_line.line, theta_line.line)
-        r, theta = (to_sympy(s.rhs, self.symbols, self.values) for s in (r_line, theta_line))
+        r, theta = (
+            self._in(to_sympy(s.rhs, self.symbols, self.values)) for s in (r_line, theta_line)
+        )
         self._derive("r", r, "given", (r_line.line,))
         self._derive("theta", theta, "given", (theta_line.line,))
         found = polar_components(r, theta, T)
@@ -495,13 +513,14 @@ class _Builder:
         self._quantity(FORCES[name], at)
         lines = tuple(s.line for s in self.relations.values())
         rule = f"ΣF = m a: {pretty(name)} = m {pretty(FORCES[name])} (resultant force)"
-        self._derive(name, tidy(self.symbols["m"] * self.formulas[FORCES[name]]), rule, lines)
+        mass = self._in(self.symbols["m"])
+        self._derive(name, tidy(mass * self.formulas[FORCES[name]]), rule, lines)
         return name
 
     def _value(self, name: str, at: Position) -> tuple[sympy.Expr, Dim]:
         """A given, an initial condition or an earlier find: its value and dimension."""
         if name in self.given_dims:
-            return self.symbols[name], self.given_dims[name]
+            return self._in(self.symbols[name]), self.given_dims[name]
         if name == "t_0":
             return self.t0, TIME
         if name in INITIAL and self.components == "x–y":
@@ -584,7 +603,10 @@ class _Builder:
     def _notes(self, targets: tuple[Target, ...]) -> tuple[tuple[str, str], ...]:
         notes = []
         g = self.symbols["g"]
-        if self.formulas.get("a_x") == 0 and self.formulas.get("a_y") == -g:
+        a_x, a_y = (self.formulas.get(a) for a in ("a_x", "a_y"))
+        if self.put_in and self.components == "x–y":  # the numbers are in: read the letters
+            a_x, a_y = (tidy(self.accelerations[a], light=False) for a in ("a_x", "a_y"))
+        if a_x == 0 and a_y == -g:
             notes.append(("projectile", "a_x = 0, a_y = −g: the axes move independently"))
         used = any(g in (t.expr or sympy.Integer(0)).free_symbols for t in targets)
         default = next(i for i in self.givens if i.name == "g").given is None

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from functools import cmp_to_key
 
 import sympy
+from sympy.core.cache import cacheit
 
 from dynsolve.numbers import real_value, tidy
 
@@ -47,19 +48,24 @@ def integrate_motion(
     x0: sympy.Expr,
     v0: sympy.Expr,
     invert: bool = True,
+    in_time_only: bool = False,
+    quick: bool = False,
 ) -> Motion:
     """All of v(t), x(t), a(t) and, where they exist, t(v), x(v), v(x), t(x), a(x), a(v).
 
     With ``invert=False`` no relation is inverted (sympy's inversion may take seconds and
     fail): what only an inversion gives is left out, for the caller to integrate
-    numerically when it only needs values.
+    numerically when it only needs values. With ``in_time_only`` a motion given in t
+    gives v(t), x(t) and a(t) only (a component of plane motion, read in t alone).
+    ``quick`` (numeric mode): a relation is inverted by peeling its operations where that
+    finds one branch through the start (:func:`peeled_roots`), else by sympy's solve.
     """
     u = sympy.Dummy("u", real=True)
     found: dict[str, sympy.Expr] = {}
     steps: list[tuple[str, str]] = []
 
     def _invert(*args: sympy.Expr) -> sympy.Expr | None:
-        return _inverse(*args) if invert else None
+        return _inverse(*args, quick=quick) if invert else None
 
     def keep(name: str, value: sympy.Expr | None, how: str) -> None:
         if value is not None and name not in found:
@@ -105,8 +111,8 @@ def integrate_motion(
             keep("a(t)", sympy.diff(found["v(t)"], T), "a = dv/dt")
     else:
         raise ValueError(f"unknown kind of motion {kind!r}; one of {', '.join(KINDS)}")
-    if kind in ("a(t)", "x(t)", "v(t)"):
-        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0, invert)
+    if kind in ("a(t)", "x(t)", "v(t)") and not in_time_only:
+        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0, invert, quick)
     return Motion(kind, found, tuple(steps), invert)
 
 
@@ -116,6 +122,7 @@ def _time_inverses(
     a: sympy.Expr | None,
     t0: sympy.Expr,
     invert: bool = True,
+    quick: bool = False,
 ) -> None:
     """t(v), x(v), v(x), t(x) of a motion known in t: the constant-acceleration formulas
     when a is a constant, else v(t) inverted on the branch through t₀ (when sympy can).
@@ -141,7 +148,7 @@ def _time_inverses(
     if not invert:
         return
     how = "t(v) by inverting v(t) (branch through t₀)"
-    keep("t(v)", _inverse(found["v(t)"], T, V, v0, t0), how)
+    keep("t(v)", _inverse(found["v(t)"], T, V, v0, t0, quick), how)
     if "t(v)" in found:
         keep("x(v)", found["x(t)"].subs(T, found["t(v)"]), "x(v) = x(t(v))")
 
@@ -270,13 +277,25 @@ def _inverse(
     argument: sympy.Symbol,
     at: sympy.Expr,
     value: sympy.Expr,
+    quick: bool = False,
 ) -> sympy.Expr | None:
     """Solve ``argument = relation(variable)`` for ``variable``; the branch through
-    (``at``, ``value``). None when sympy cannot invert it."""
+    (``at``, ``value``). None when sympy cannot invert it.
+
+    ``quick``: first by :func:`peeled_roots`, taken when exactly one of its roots passes
+    through the start (the branch sympy's solve would give: it returns the same
+    inverses of each operation); otherwise sympy's solve decides, as without ``quick``."""
     from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
     if relation.has(sympy.Integral):
         return None
+    if quick:
+        peeled = peeled_roots(relation, variable, argument)
+        if peeled is not None:
+            tidied = (tidy(root, light=False) for root in peeled)  # small forms: cheap
+            through = [r for r in tidied if _passes(r, argument, at, value)]
+            if len(through) == 1:
+                return through[0]
     try:
         with time_budget(INVERT_BUDGET):
             roots = [
@@ -285,17 +304,85 @@ def _inverse(
     except (NotImplementedError, ValueError, BudgetExceeded):
         return None
     for root in roots:
-        start = tidy(root.subs(argument, at) - value)
-        if start == 0:
+        if _passes(root, argument, at, value):
             return root
     return roots[0] if len(roots) == 1 else None
 
 
+def _passes(root: sympy.Expr, argument: sympy.Symbol, at: sympy.Expr, value: sympy.Expr) -> bool:
+    """Whether the branch ``root`` (in ``argument``) takes ``value`` at ``at`` (identically)."""
+    return tidy(root.subs(argument, at) - value) == 0
+
+
+_UNDO: dict[type, Callable[[sympy.Expr], list[sympy.Expr]]] = {
+    sympy.exp: lambda y: [sympy.log(y)],
+    sympy.log: lambda y: [sympy.exp(y)],
+    sympy.sin: lambda y: [sympy.pi - sympy.asin(y), sympy.asin(y)],
+    sympy.cos: lambda y: [2 * sympy.pi - sympy.acos(y), sympy.acos(y)],
+    sympy.tan: lambda y: [sympy.atan(y)],
+    sympy.sinh: lambda y: [sympy.asinh(y)],
+    sympy.cosh: lambda y: [-sympy.acosh(y), sympy.acosh(y)],
+    sympy.tanh: lambda y: [sympy.atanh(y)],
+    sympy.asin: lambda y: [sympy.sin(y)],
+    sympy.acos: lambda y: [sympy.cos(y)],
+    sympy.atan: lambda y: [sympy.tan(y)],
+    sympy.asinh: lambda y: [sympy.sinh(y)],
+    sympy.acosh: lambda y: [sympy.cosh(y)],
+    sympy.atanh: lambda y: [sympy.tanh(y)],
+}
+_UNDO_POWER: dict[sympy.Rational, Callable[[sympy.Expr], list[sympy.Expr]]] = {
+    sympy.Integer(2): lambda y: [-sympy.sqrt(y), sympy.sqrt(y)],
+    sympy.Integer(-1): lambda y: [1 / y],
+    sympy.Integer(-2): lambda y: [-sympy.sqrt(1 / y), sympy.sqrt(1 / y)],
+    sympy.Rational(1, 2): lambda y: [y**2],
+    sympy.Rational(-1, 2): lambda y: [y**-2],
+}
+
+
+def peeled_roots(
+    relation: sympy.Expr, variable: sympy.Symbol, argument: sympy.Expr
+) -> list[sympy.Expr] | None:
+    """The roots of ``argument = relation(variable)`` for ``variable``, found by undoing the
+    relation's operations from the outside in, when ``variable`` occurs once in it: a sum
+    or product less its other terms or factors, then each function's inverses as sympy's
+    solve gives them (sin: asin and π − asin; x²: ±√), down to ``variable``. None when it
+    occurs more than once or an operation has no listed inverse.
+
+    >>> k, v_0 = sympy.symbols("k v_0", positive=True)
+    >>> peeled_roots((1 / V - 1 / v_0) / k, V, T)  # t(v) of a = -k v²
+    [1/(k*t + 1/v_0)]
+    >>> peeled_roots(sympy.asin(sympy.sqrt(k) * X / v_0) / sympy.sqrt(k), X, T)
+    [v_0*sin(sqrt(k)*t)/sqrt(k)]
+    >>> peeled_roots(V**2 + V, V, T) is None
+    True
+    """
+    inner, sides = sympy.Integer(0) + relation, [sympy.Integer(0) + argument]
+    while inner != variable:
+        if inner.is_Add or inner.is_Mul:
+            holding = [a for a in inner.args if a.has(variable)]
+            if len(holding) != 1:
+                return None
+            rest = inner.func(*(a for a in inner.args if a is not holding[0]))
+            sides = [y - rest if inner.is_Add else y / rest for y in sides]
+            inner = holding[0]
+        elif inner.is_Pow and not inner.exp.has(variable) and inner.exp in _UNDO_POWER:
+            sides = [x for y in sides for x in _UNDO_POWER[inner.exp](y)]
+            inner = inner.base
+        elif type(inner) in _UNDO and len(inner.args) == 1:
+            sides = [x for y in sides for x in _UNDO[type(inner)](y)]
+            inner = inner.args[0]
+        else:
+            return None
+    return sides
+
+
+@cacheit  # x(t_1) and v(t_1) from one integration (sympy's cache, cleared with it)
 def integrate_numerically(
     a: sympy.Expr, kind: str, t0: float, x0: float, v0: float, t1: float
 ) -> tuple[float, float]:
     """(x, v) at t1 by integrating x' = v, v' = a(t, x or v) numerically (mpmath's
-    Taylor-series ODE solver): the values when a relation could not be inverted.
+    Taylor-series ODE solver): the values when a relation could not be inverted. The
+    result is kept for the same law, start and time (asked for x and for v at t_1).
 
     >>> x, v = integrate_numerically(-V, "a(v)", 0.0, 0.0, 2.0, 1.0)  # v = 2 e^(−t)
     >>> round(v, 10), round(x, 10)

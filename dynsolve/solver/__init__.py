@@ -71,13 +71,14 @@ def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS
     for block in structure.blocks:
         _solve_structural_block(block, system, structure, options, progress)
     _check_magnitudes(range(len(system.equations)), system, progress)
-    redundant = _check_surplus(structure.surplus, system, progress)
+    quick = options.mode == "numeric"  # residuals in mpmath, node by node
+    redundant = _check_surplus(structure.surplus, system, progress, quick)
     unsolved = set(system.unknowns) - set(progress.solved)
     return Outcome(
         status=_status(progress),
         blocks=tuple(progress.blocks),
         values={u: progress.solved[u] for u in system.unknowns if u in progress.solved},
-        residuals=all_residuals(system.equations, progress.given, unsolved),
+        residuals=all_residuals(system.equations, progress.given, unsolved, quick),
         undetermined=tuple(u for u in system.unknowns if u in progress.undetermined),
         missing_equations=progress.missing_equations,
         conflicting=tuple(sorted(progress.conflicting)),
@@ -211,13 +212,14 @@ def _checks_for(
 
 
 def _check_surplus(
-    surplus: tuple[int, ...], system: EquationSystem, progress: _Progress
+    surplus: tuple[int, ...], system: EquationSystem, progress: _Progress, quick: bool = False
 ) -> tuple[int, ...]:
     """Substitute the answers into the surplus equations: redundant or conflicting."""
     unsolved = set(system.unknowns) - set(progress.solved)
     redundant = []
     for i in surplus:
-        verdict = is_satisfied(equation_residual(i, system.equations[i], progress.given, unsolved))
+        equation = system.equations[i]
+        verdict = is_satisfied(equation_residual(i, equation, progress.given, unsolved, quick))
         if verdict is True:
             redundant.append(i)
         elif verdict is False:

@@ -23,6 +23,7 @@ knowns and earlier unknowns kept as symbols. Choosing among the candidates is
 from __future__ import annotations
 
 import math
+import random
 import signal
 import sys
 import threading
@@ -42,6 +43,7 @@ from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
 from dynsolve.numbers import MAX_DIGITS, mpmath_function, tidy
+from dynsolve.solver.evaluate import mp_value
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
 
@@ -476,6 +478,14 @@ def solve_linear_in_floats(
             b = [_mp_real(rhs[i], digits) for i in range(n)]
         except (TypeError, ValueError):
             return None  # a complex or non-finite entry: the exact path says what it is
+        if n == 1:  # a x = b: x = b/a, the one division the scaled solve below makes
+            if A[0][0] == 0:
+                return None
+            quotient = b[0] / A[0][0]
+            value = sympy.Integer(0) if quotient == 0 else sympy.Float(quotient, numeric_digits())
+            return BlockSolution(
+                unknowns, "linear", (Candidate({unknowns[0]: value}),), note=FLOAT_LINEAR_NOTE
+            )
         columns = [mpmath.mpf(1)] * n
         for sweep in range(EQUILIBRATION_SWEEPS):
             A, b, columns = _equilibrated(A, b, columns, geometric=sweep > 0)
@@ -604,7 +614,9 @@ def _solve_nonlinear(
     letters = set().union(*(r.free_symbols for r in substituted)) - set(unknowns)
     names = ", ".join(sorted(map(str, letters)))
     if options.mode == "numeric" and not letters:
-        every_root = _polynomial_roots(substituted, unknowns, options)
+        every_root = _eliminated_roots(substituted, unknowns)
+        if every_root is None:
+            every_root = _polynomial_roots(substituted, unknowns, options)
         if every_root is None and given:
             every_root = _briefly_symbolic(residuals, unknowns, given, options)
         return every_root or solve_numerically(substituted, unknowns, "numeric mode")
@@ -618,6 +630,88 @@ def _solve_nonlinear(
         note = f"{reason}; numeric root finding needs values for {names}"
         return BlockSolution(unknowns, "symbolic", (), note=note, exhaustive=False)
     return solve_numerically(substituted, unknowns, reason)
+
+
+ELIMINATION_NOTE = (
+    "numeric mode: a polynomial block, every root (by elimination), in floating point"
+)
+BRANCH_POINT = 1e-20  # a cosine or sine this close to ±1 (relative): its angle is left to sympy
+
+
+def _eliminated_roots(
+    residuals: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...]
+) -> BlockSolution | None:
+    """Numeric mode's path for a polynomial block of several unknowns, or one whose angle
+    enters through one cosine, sine or tangent (:func:`_one_trig_atom`: the block is then
+    polynomial in that function's value): every root, by exact elimination down to one
+    polynomial whose roots are found in floating point
+    (:func:`~dynsolve.solver.elimination.every_root`); an angle's branches as exact mode's
+    solve gives them (:func:`_back`). The roots its unknowns' assumptions allow (a positive
+    speed), as sympy's solve keeps them; all of them when none is allowed, for the root
+    choice to say why. None when the block is not of this kind, or an angle is at the
+    branch point of its inverse (cos θ = 1: ±acos would split a double root in two).
+
+    >>> v, c = sympy.symbols("v c", positive=True)
+    >>> found = _eliminated_roots([v - 2 * c, c**2 - 1], (v, c))
+    >>> [(float(x.values[v]), float(x.values[c])) for x in found.candidates]
+    [(2.0, 1.0)]
+    """
+    from dynsolve.solver.elimination import every_root
+
+    reduced = _one_trig_atom(residuals, unknowns)
+    if reduced is None and len(unknowns) < 2:
+        return None
+    targets = tuple(reduced.unknowns) if reduced is not None else unknowns
+    if len(targets) > POLYNOMIAL_UNKNOWNS:
+        return None
+    found = every_root(reduced.residuals if reduced is not None else residuals, targets)
+    if found is None:
+        return None
+    with mpmath.workdps(numeric_digits() + GUARD_DIGITS):
+        roots = [r for root in found for r in _angle_branches(root, reduced)]
+    if any(r is None for r in roots):
+        return None
+    candidates = [Candidate({u: _to_sympy(root[u]) for u in unknowns}) for root in roots]
+    allowed = [c for c in candidates if all(_allowed(u, v) for u, v in c.values.items())]
+    return BlockSolution(unknowns, "numeric", tuple(allowed or candidates), note=ELIMINATION_NOTE)
+
+
+def _angle_branches(
+    root: Mapping[sympy.Symbol, mpmath.mpc | mpmath.mpf], reduced: _TrigReduced | None
+) -> list[dict[sympy.Symbol, mpmath.mpc | mpmath.mpf] | None]:
+    """The roots in the block's own unknowns: a reduced block's function value gives its
+    angle's branches as :func:`_back` (cos: ±acos, sin: asin and π − asin, tan: atan, less
+    the constant added to the angle); [None] at a branch point (cos θ = ±1)."""
+    if reduced is None:
+        return [dict(root)]
+    value = root[reduced.atom]
+    rest = {u: x for u, x in root.items() if u != reduced.atom}
+    shift = mp_value(reduced.call.args[0] - reduced.angle, {})
+    if reduced.call.func is not sympy.tan and min(abs(value - 1), abs(value + 1)) <= BRANCH_POINT:
+        return [None]
+    inverse = {
+        sympy.cos: lambda a: (mpmath.acos(a), -mpmath.acos(a)),
+        sympy.sin: lambda a: (mpmath.asin(a), mpmath.pi - mpmath.asin(a)),
+        sympy.tan: lambda a: (mpmath.atan(a),),
+    }[reduced.call.func]
+    return [{**rest, reduced.angle: branch - shift} for branch in inverse(value)]
+
+
+def _allowed(unknown: sympy.Symbol, value: sympy.Expr) -> bool:
+    """Whether a number is one ``unknown``'s assumptions allow: real (within 1e-20 of its
+    size), positive, nonnegative, as declared (sympy's solve keeps no other root)."""
+    try:
+        number = complex(value if value.is_Float else sympy.N(value, 30, maxn=MAX_DIGITS))
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    if not (math.isfinite(number.real) and math.isfinite(number.imag)):
+        return False
+    real = abs(number.imag) <= 1e-20 * abs(number.real)
+    if unknown.is_real and not real:
+        return False
+    if unknown.is_positive and not number.real > 0:
+        return False
+    return not (unknown.is_nonnegative and number.real < 0)
 
 
 BRIEF_BUDGET = 0.25  # seconds numeric mode gives sympy on a block before its root search
@@ -674,7 +768,9 @@ def _polynomial_roots(
             note = "numeric mode: a polynomial, every root (mpmath.polyroots), in floating point"
             candidates = tuple(Candidate({unknowns[0]: _to_sympy(r)}) for r in roots)
             return BlockSolution(unknowns, "numeric", candidates, note=note)
-    exact = [sympy.nsimplify(r, rational=True) if r.has(sympy.Float) else r for r in residuals]
+    from dynsolve.solver.elimination import exact_numbers
+
+    exact = [exact_numbers(r) for r in residuals]
     attempt, _ = _symbolic_candidates(exact, unknowns, options.time_budget, None, check=False)
     if attempt is None or not attempt.candidates:
         # sympy keeps only the roots its assumptions allow (t_s positive): without them,
@@ -772,15 +868,18 @@ def _solve_symbolically(
     deadline = time.process_time() + options.time_budget  # CPU seconds, as the budget
     reasons: list[str] = []
     nothing_given = substituted == residuals  # then one symbolic attempt says it all
+    # numeric mode checks a root with letters at sample points (sympy's checksol, a
+    # simplify of every residual, is most of the solve's time)
+    check = options.mode != "numeric" or not _samples_decide(residuals, unknowns, given)
     if options.show_formulas:
         share = options.time_budget if nothing_given else options.time_budget / 2
-        attempt, reason = _symbolic_candidates(residuals, unknowns, share, given)
+        attempt, reason = _symbolic_candidates(residuals, unknowns, share, given, check)
         if attempt is not None:
             return attempt, ""
         reasons.append(reason)
     if not (reasons and nothing_given):
         seconds = deadline - time.process_time()
-        attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None)
+        attempt, reason = _symbolic_candidates(substituted, unknowns, seconds, None, check)
         if attempt is not None:
             return replace(attempt, note=f"no formula: {reasons[0]}" if reasons else ""), ""
         reasons.append(reason)
@@ -855,25 +954,15 @@ def _holds(
     not a root), and every residual at the root, evaluated to 30 digits, within
     :data:`UNCHECKED_RESIDUAL` of 0 relative to the size of its terms (a root of a squared
     equation, or one that zeroes a denominator, is off by far more). False when any of
-    it cannot be decided (a letter left)."""
+    it cannot be decided. A root that holds letters (symbolic givens, all positive:
+    :func:`_samples_decide`) is judged by :func:`_holds_at_samples`."""
     from dynsolve.solver.residuals import term_size
 
-    at_root: dict[sympy.Symbol, sympy.Expr] = {}
-    for u in unknowns:
-        value = at_root[u] = substitute(values[u], given)
-        if value.free_symbols:
-            return False
-        try:
-            number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
-        except (TypeError, ValueError, ArithmeticError):
-            return False
-        if not (math.isfinite(number.real) and math.isfinite(number.imag)):
-            return False
-        real = abs(number.imag) <= 1e-20 * abs(number.real)
-        if u.is_real and not real:
-            return False
-        if (u.is_positive and not number.real > 0) or (u.is_nonnegative and number.real < 0):
-            return False
+    at_root = {u: substitute(values[u], given) for u in unknowns}
+    if any(value.free_symbols for value in at_root.values()):
+        return _holds_at_samples(residuals, at_root, given)
+    if not all(_allowed(u, value) for u, value in at_root.items()):
+        return False
     point = {**given, **at_root}
     for residual in residuals:
         at = substitute(residual, point)
@@ -887,6 +976,92 @@ def _holds(
         if not math.isfinite(size) or size > UNCHECKED_RESIDUAL * scale:
             return False
     return True
+
+
+CHECK_POINTS = 3  # seeded points of the letters a symbolic root is checked at
+CHECK_SEED = 4104
+
+
+def _samples_decide(
+    residuals: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """Whether the roots of a block with letters can be checked at sample points: every
+    letter left once ``given`` is put in is declared positive (a given magnitude), so
+    its sample values are values it may take."""
+    letters = set().union(*(substitute(r, given).free_symbols for r in residuals))
+    return all(s.is_positive for s in letters - set(unknowns))
+
+
+def _holds_at_samples(
+    residuals: Sequence[sympy.Expr],
+    at_root: Mapping[sympy.Symbol, sympy.Expr],
+    given: Mapping[sympy.Symbol, sympy.Expr],
+) -> bool:
+    """sympy's check of a root in formulas (``check_assumptions`` and ``checksol``), with
+    the residuals at :data:`CHECK_POINTS` seeded positive values of the letters instead of
+    ``simplify``: a root sympy's checks would keep is kept. Its values must not contradict
+    their unknowns' assumptions (sympy's own test, on the formulas); a residual that is
+    not 0 (more than 1e-20 of the size of its terms, 40 digits) or not defined at every
+    point (a spurious root of a squared equation, one that zeroes a denominator) is what
+    ``checksol`` proves nonzero, so the root goes; one that is 0 at a point may be 0
+    everywhere, so the root stays, as sympy keeps a root it cannot disprove.
+
+    >>> a, x = sympy.Symbol("a", positive=True), sympy.Symbol("x", positive=True)
+    >>> r = [x**2 - a]
+    >>> _holds_at_samples(r, {x: sympy.sqrt(a)}, {}), _holds_at_samples(r, {x: -sympy.sqrt(a)}, {})
+    (True, False)
+    >>> _holds_at_samples([x - a], {x: 2 * a}, {})  # not a root
+    False
+    """
+    from sympy.core.assumptions import check_assumptions
+
+    for unknown, value in at_root.items():
+        if check_assumptions(value, **unknown.assumptions0) is False:
+            return False
+    forms = [substitute(r, given) for r in residuals]
+    letters = set().union(
+        *(f.free_symbols for f in forms), *(v.free_symbols for v in at_root.values())
+    )
+    letters = sorted(letters - set(at_root), key=lambda s: s.name)
+    rng = random.Random(CHECK_SEED)
+    nonzero = [0] * len(forms)
+    for _ in range(CHECK_POINTS):
+        point = {s: sympy.Rational(rng.randint(10, 1000), 100) for s in letters}
+        for i, form in enumerate(forms):
+            if not _zero_at(form, at_root, point):
+                nonzero[i] += 1
+    return all(count < CHECK_POINTS for count in nonzero)
+
+
+def _zero_at(
+    form: sympy.Expr,
+    at_root: Mapping[sympy.Symbol, sympy.Expr],
+    point: Mapping[sympy.Symbol, sympy.Rational],
+) -> bool:
+    """Whether ``form`` with the root put in is 0 at ``point`` (within 1e-20 of the size of
+    its terms, at 40 digits); False where it is not defined."""
+    from dynsolve.solver.evaluate import NotQuick, mp_size
+
+    with mpmath.workdps(40):
+        letters = {s: mpmath.mpf(int(v.p)) / int(v.q) for s, v in point.items()}
+        try:
+            shared: dict[sympy.Basic, object] = {}
+            values = {u: mp_value(v, letters, shared) for u, v in at_root.items()}
+            seen: dict[sympy.Basic, object] = {}
+            value = mp_value(form, {**letters, **values}, seen)
+            size = mp_size(form, {**letters, **values}, seen)
+        except (NotQuick, ArithmeticError, ValueError, TypeError):
+            exact = form.xreplace(dict(at_root)).xreplace(dict(point))
+            try:
+                value = mpmath.mpmathify(complex(sympy.N(exact, 40, maxn=MAX_DIGITS)))
+            except (TypeError, ValueError, ArithmeticError):
+                return False
+            size = abs(value)  # no term sizes: 0 only when evalf finds it 0
+        if not (mpmath.isfinite(value) and mpmath.isfinite(size)):
+            return False
+        return abs(value) <= mpmath.mpf(10) ** -20 * size
 
 
 @dataclass(frozen=True)

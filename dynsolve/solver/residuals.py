@@ -34,11 +34,13 @@ import math
 import random
 from collections.abc import Collection, Mapping, Sequence
 
+import mpmath
 import sympy
 from sympy.core.cache import cacheit
 
 from dynsolve.numbers import MAX_DIGITS
 from dynsolve.solver.blocks import as_expr, substitute
+from dynsolve.solver.evaluate import NotQuick, mp_size, mp_value
 from dynsolve.solver.outcome import Residual
 from dynsolve.system import Equation
 
@@ -53,8 +55,11 @@ def equation_residual(
     equation: Equation,
     substitution: Mapping[sympy.Symbol, sympy.Expr],
     unsolved: Collection[sympy.Symbol] = (),
+    quick: bool = False,
 ) -> Residual:
     """Substitute ``substitution`` into ``equation`` and measure how far it is from holding.
+
+    ``quick`` (numeric mode): computed by :func:`_quick_residual` where it can be.
 
     >>> import sympy
     >>> from dynsolve.system import Equation
@@ -64,6 +69,10 @@ def equation_residual(
     """
     if not equation.residual.free_symbols.isdisjoint(unsolved):
         return Residual(index, math.nan, math.nan, evaluated=False)
+    if quick:
+        found = _quick_residual(index, equation, substitution)
+        if found is not None:
+            return found
     sides = [substitute(equation.lhs, substitution), substitute(equation.rhs, substitution)]
     terms = [
         substitute(t, substitution)
@@ -81,6 +90,61 @@ def equation_residual(
     inner = [term_size(as_expr(side), values) for side in (equation.lhs, equation.rhs)]
     absolute, relative = _measure(sides, terms + [sympy.Float(x) for x in inner])
     return Residual(index, absolute, relative, evaluated=not letters)
+
+
+QUICK_DIGITS = DIGITS + 10  # the working precision of a quick residual
+
+
+def _quick_residual(
+    index: int, equation: Equation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> Residual | None:
+    """:func:`equation_residual` in mpmath at :data:`QUICK_DIGITS` digits, node by node
+    (:mod:`dynsolve.solver.evaluate`), instead of sympy's ``evalf`` of the substituted
+    sides: the same sides, terms and term sizes, the same spot values for the letters
+    left, at a tenth of the cost. Its error is below 1e-38 of the equation's scale (a
+    fixed precision cannot lose more next to the size of the terms the residual is
+    judged on), so a residual of an answer in 15 digits reads the same and every
+    verdict at :data:`SATISFIED` is the same. None (use ``evalf``) when a node is not
+    known to it, a value is not finite or a division by 0 occurs.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> r = _quick_residual(0, Equation(x + y, 3, "a"), {x: sympy.Float(1), y: 2})
+    >>> r.absolute, r.relative, r.evaluated
+    (0.0, 0.0, True)
+    """
+    lhs, rhs = as_expr(equation.lhs), as_expr(equation.rhs)
+    present = lhs.free_symbols | rhs.free_symbols
+    values = {k: as_expr(substitution[k]) for k in present if k in substitution}
+    letters = (present - set(values)).union(*(v.free_symbols for v in values.values()))
+    if letters:  # the letters left once substituted (some may cancel), as evalf's path sees
+        forms = [substitute(t, substitution) for side in (lhs, rhs) for t in (side, *_terms(side))]
+        letters = set().union(*(f.free_symbols for f in forms))
+    spot = spot_values(letters) if letters else {}
+    try:
+        with mpmath.workdps(QUICK_DIGITS):
+            at_letters = {k: mpmath.mpf(v._mpf_) for k, v in spot.items()}
+            point = dict(at_letters)
+            shared: dict[sympy.Basic, object] = {}
+            for symbol, value in values.items():
+                point[symbol] = mp_value(value, at_letters, shared)
+            seen: dict[sympy.Basic, object] = {}
+            sides = [mp_value(side, point, seen) for side in (lhs, rhs)]
+            terms = [mp_value(t, point, seen) for side in (lhs, rhs) for t in _terms(side)]
+            sizes = [mp_size(side, point, seen) for side in (lhs, rhs)]
+            magnitudes = [abs(v) for v in (*sides, *terms, *sizes)]
+            if not all(mpmath.isfinite(m) for m in magnitudes):
+                return None
+            absolute = abs(sides[0] - sides[1])
+            scale = max(magnitudes)
+            relative = absolute / scale if scale > 0 else mpmath.mpf(0)
+    except (NotQuick, ArithmeticError, ValueError, TypeError):
+        return None
+    return Residual(index, float(absolute), float(relative), evaluated=not letters)
+
+
+def _terms(side: sympy.Expr) -> tuple[sympy.Expr, ...]:
+    """The top-level summands of one side of an equation."""
+    return sympy.Add.make_args(side)
 
 
 def term_size(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> float:
@@ -163,6 +227,7 @@ def all_residuals(
     equations: Sequence[Equation],
     substitution: Mapping[sympy.Symbol, sympy.Expr],
     unsolved: Collection[sympy.Symbol] = (),
+    quick: bool = False,
 ) -> tuple[Residual, ...]:
     """The residual of every equation, in equation order.
 
@@ -173,6 +238,6 @@ def all_residuals(
     [0.0, 0.3333333333333333]
     """
     return tuple(
-        equation_residual(i, equation, substitution, unsolved)
+        equation_residual(i, equation, substitution, unsolved, quick)
         for i, equation in enumerate(equations)
     )

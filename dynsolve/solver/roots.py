@@ -31,6 +31,7 @@ import random
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+import mpmath
 import sympy
 from sympy.logic.boolalg import Boolean, BooleanAtom
 
@@ -43,6 +44,7 @@ from dynsolve.solver.blocks import (
     is_finite,
     numeric_digits,
 )
+from dynsolve.solver.evaluate import NotQuick, mp_value
 from dynsolve.solver.outcome import DiscardedRoot
 from dynsolve.solver.residuals import equation_residual, is_satisfied
 from dynsolve.system import Constraint, Equation
@@ -101,7 +103,8 @@ def choose_root(
             remaining = _apply_if_any_passes(_non_negative(unknown), remaining, discarded)
     if not remaining:
         return RootChoice({}, {}, tuple(discarded))
-    remaining.sort(key=lambda c: not all(_is_non_negative(v) for v in c.values.values()))
+    if len(remaining) > 1:  # (the sign of a lone root's formulas is not asked: sampling costs)
+        remaining.sort(key=lambda c: not all(_is_non_negative(v) for v in c.values.values()))
     kept, others = remaining[0], remaining[1:]
     discarded.extend(DiscardedRoot(c.values, AMBIGUOUS) for c in others)
     ambiguous = tuple(u for u in unknowns if any(c.values[u] != kept.values[u] for c in others))
@@ -147,7 +150,38 @@ def _defined(candidate: Candidate) -> str:
 
 
 def _real(candidate: Candidate) -> str:
-    return "not real" if any(is_real(v) is False for v in candidate.values.values()) else ""
+    values = candidate.values.values()
+    return "not real" if any(_may_be_unreal(v) and is_real(v) is False for v in values) else ""
+
+
+_REAL_FUNCTIONS = (sympy.sin, sympy.cos, sympy.exp)
+
+
+def _may_be_unreal(value: sympy.Expr) -> bool:
+    """False when ``value`` is built from real letters and real numbers by sums, products,
+    whole powers, sines, cosines and exponentials: then it is real wherever it is
+    defined, and sympy's ``is_real`` cannot be False for it (a value undefined at the
+    givens is the filter before's), so the query is spared. True otherwise.
+
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> _may_be_unreal(a * b / (a - b) + sympy.cos(a) ** 2), _may_be_unreal(sympy.sqrt(a - b))
+    (False, True)
+    """
+    stack = [value]
+    while stack:
+        node = stack.pop()
+        if node.is_Symbol:
+            if not node.is_real:
+                return True
+        elif node.is_Add or node.is_Mul or isinstance(node, _REAL_FUNCTIONS):
+            stack.extend(node.args)
+        elif node.is_Pow:
+            if not node.exp.is_Integer:
+                return True
+            stack.append(node.base)
+        elif not (node.is_Rational or node.is_Float or node in (sympy.pi, sympy.E)):
+            return True
+    return False
 
 
 def _as_declared(candidate: Candidate) -> str:
@@ -228,6 +262,8 @@ def is_real(value: sympy.Expr) -> bool | None:
     >>> is_real(sympy.sqrt(2)), is_real(1 + sympy.I), is_real(sympy.Symbol("x"))
     (True, False, None)
     """
+    if value.is_Float or value.is_Rational:
+        return True  # (a number's real part alone: nothing to evaluate)
     if value.free_symbols:
         return value.is_real
     try:
@@ -325,7 +361,9 @@ def sampled(expr: sympy.Expr) -> list[float]:
     """``expr`` at seeded random positive values of its free symbols: the real results.
 
     Only symbols declared positive (given magnitudes) are sampled; fewer than
-    :data:`SAMPLES_NEEDED` real values means no verdict (an empty list).
+    :data:`SAMPLES_NEEDED` real values means no verdict (an empty list). Each value is
+    read for its sign only; it is :func:`_sample`'s (sympy's 20-digit ``evalf`` where a
+    quick evaluation cannot vouch for its sign).
 
     >>> import sympy
     >>> L, s = sympy.symbols("L s", positive=True)
@@ -339,15 +377,51 @@ def sampled(expr: sympy.Expr) -> list[float]:
     values = []
     for _ in range(SAMPLE_POINTS):
         point = {symbol: sympy.Rational(rng.randint(10, 1000), 100) for symbol in free}
-        try:
-            number = complex(sympy.N(expr.xreplace(point), 20))
-        except (TypeError, ValueError):
+        number = _sample(expr, point)
+        if number is None:
             continue
         if math.isfinite(number.real) and abs(number.imag) <= _IMAGINARY_TOLERANCE * max(
             1.0, abs(number.real)
         ):
             values.append(number.real)
     return values if len(values) >= SAMPLES_NEEDED else []
+
+
+QUICK_DIGITS = (25, 45)  # the two precisions a quick sample is computed at
+QUICK_AGREEMENT = 1e-18  # relative gap within which the two vouch for the value's digits
+
+
+def _sample(expr: sympy.Expr, point: Mapping[sympy.Symbol, sympy.Rational]) -> complex | None:
+    """``expr`` at ``point`` as a complex number (None when it is not a number).
+
+    Computed quickly in mpmath at two precisions (:data:`QUICK_DIGITS`); when they agree
+    to :data:`QUICK_AGREEMENT` the value's sign and its first 18 digits are certain, so it
+    is the value sympy's 20-digit ``evalf`` gives to those digits. Otherwise (a value that
+    cancels to 0 or nearly, a function the quick evaluation lacks, a division by 0)
+    sympy's ``evalf`` gives it, as it did before the quick path existed: every sign read
+    from a sample is the same.
+
+    >>> x = sympy.Symbol("x", positive=True)
+    >>> _sample(sympy.sqrt(x) - 1, {x: sympy.Rational(9, 4)})
+    (0.5+0j)
+    >>> _sample(sympy.sqrt(x) ** 2 - x, {x: sympy.Rational(9, 4)})  # 0: evalf's answer
+    0j
+    """
+    try:
+        found = []
+        for digits in QUICK_DIGITS:
+            with mpmath.workdps(digits):
+                at = {s: mpmath.mpf(int(v.p)) / int(v.q) for s, v in point.items()}
+                found.append(mpmath.mpmathify(mp_value(expr, at)))
+        low, high = found
+        if mpmath.isfinite(high) and high != 0 and abs(high - low) <= QUICK_AGREEMENT * abs(high):
+            return complex(high)
+    except (NotQuick, ArithmeticError, ValueError, TypeError):
+        pass
+    try:
+        return complex(sympy.N(expr.xreplace(dict(point)), 20))
+    except (TypeError, ValueError):
+        return None
 
 
 def _is_negative(value: sympy.Expr) -> bool:
