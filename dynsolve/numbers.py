@@ -161,16 +161,32 @@ def _probe(symbol: sympy.Symbol, salt: int = 0) -> sympy.Rational | None:
     return value
 
 
+def probe_point(expr: sympy.Expr, salt: int = 0) -> dict[sympy.Symbol, sympy.Rational] | None:
+    """A point of the domain of ``expr``'s letters: each a value its assumptions allow
+    (from its name and ``salt``, which picks another point); None when a letter has none
+    (an integer, or a symbol whose sign is not known as such).
+
+    >>> m = sympy.Symbol("m", positive=True)
+    >>> point = probe_point(m - 1)
+    >>> 1 < point[m] < 3, probe_point(sympy.Symbol("n", integer=True)) is None
+    (True, True)
+    """
+    point = {}
+    for symbol in expr.free_symbols:
+        value = _probe(symbol, salt) if isinstance(symbol, sympy.Symbol) else None
+        if value is None:
+            return None
+        point[symbol] = value
+    return point
+
+
 def surely_nonzero(expr: sympy.Expr) -> bool:
     """True when ``expr`` is a number not 0, to the digits sympy's ``evalf`` guarantees,
     at one point of the letters' domain: then it is not identically 0. False (not known)
     when a letter has no probe value, the value is not a number, or it has no digits."""
-    point = {}
-    for symbol in expr.free_symbols:
-        value = _probe(symbol) if isinstance(symbol, sympy.Symbol) else None
-        if value is None:
-            return False
-        point[symbol] = value
+    point = probe_point(expr)
+    if point is None:
+        return False
     try:
         value = sympy.N(expr.xreplace(point), 15, maxn=MAX_DIGITS)
     except (TypeError, ValueError, ArithmeticError, RecursionError):
@@ -202,12 +218,9 @@ def _numerically_zero(expr: sympy.Expr) -> bool:
     """
     terms = sympy.Add.make_args(expr)
     for salt in range(ZERO_POINTS):
-        point = {}
-        for symbol in expr.free_symbols:
-            value = _probe(symbol, salt) if isinstance(symbol, sympy.Symbol) else None
-            if value is None:
-                return False
-            point[symbol] = value
+        point = probe_point(expr, salt)
+        if point is None:
+            return False
         try:  # the sum to 30 digits (evalf works through its cancellation), terms' sizes
             total = complex(sympy.N(expr.xreplace(point), ZERO_DIGITS, maxn=MAX_DIGITS))
             size = sum(abs(complex(sympy.N(t.xreplace(point), 15))) for t in terms)
@@ -265,10 +278,11 @@ def _pythagoras_forms(expr: sympy.Expr) -> list[sympy.Expr] | None:
     (:func:`dynsolve.trig.pythagoras`'s canonical remainder): with its common factors out,
     cancelled, and factored where no sine or cosine is left (a part's distance² from a
     composite's G, (L − 2d)² m_s²/(4 (m_rod + m_s)²)); None where ``expr`` is not such a
-    polynomial (a sine under a root or in a denominator)."""
+    polynomial (a sine under a root or in a denominator) or holds a sine of a sum of angles
+    (a phase, A sin(ω t + φ), is kept as written)."""
     from dynsolve.trig import reduced_form
 
-    reduced = reduced_form(expr)
+    reduced = reduced_form(expr, sums=False)
     if reduced is None:
         return None
     forms = [sympy.factor_terms(reduced)]

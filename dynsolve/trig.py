@@ -38,10 +38,13 @@ def pythagoras(expr: sympy.Expr) -> sympy.Expr:
     return expr if reduced is None else sympy.factor_terms(reduced)
 
 
-def reduced_form(expr: sympy.Expr) -> sympy.Expr | None:
+def reduced_form(expr: sympy.Expr, sums: bool = True) -> sympy.Expr | None:
     """:func:`pythagoras`'s remainder, expanded; None when there is no sine or cosine or
-    ``expr`` is not a polynomial in them."""
+    ``expr`` is not a polynomial in them. Without ``sums``, also None for a sine or cosine
+    of a sum of angles (A sin(ω t + φ) keeps its phase rather than being expanded)."""
     if not expr.has(sympy.sin, sympy.cos):
+        return None
+    if not sums and any(f.args[0].is_Add for f in expr.atoms(sympy.sin, sympy.cos)):
         return None
     expanded = sympy.expand(sympy.expand_trig(expr))
     angles = sorted(

@@ -141,3 +141,30 @@ def test_linear_drag_as_f_equals_ma_gives_the_exponential(tmp_path):
     )
     (v_1,) = solve_file(path).answers
     assert v_1.value == pytest.approx(10 * math.exp(-0.5), rel=1e-12)
+
+
+@pytest.mark.parametrize("quick", [False, True])
+def test_t_of_v_from_rest_takes_the_branch_after_the_start(quick):
+    # a = c t from rest at t = 0: v = c t²/2, so t(v) = +√(2 v/c) for t ≥ 0 and
+    # x(v) = c t³/6 = (2 v/c)^(3/2) c/6 (by hand). Both ±√ pass (t, v) = (0, 0); the
+    # derivation showed sympy's first, −√(2 v/c), and x(v) < 0 (regression).
+    motion = integrate_motion(c * T, "a(t)", ZERO, ZERO, ZERO, quick=quick)
+    assert same(motion.formulas["t(v)"], sympy.sqrt(2 * V / c))
+    assert same(motion.formulas["x(v)"], c * (2 * V / c) ** sympy.Rational(3, 2) / 6)
+
+
+def test_t_of_v_from_rest_in_a_spec_in_both_modes():
+    # a = 2 m/s³ · t from rest: v = 9 m/s at t = 3 s, x(t = 3 s) = 9 m (by hand)
+    spec = (
+        "given:\n  c = 2 m/s^3\n  v_0 = 0 m/s\n  x_0 = 0 m\n  v_9 = 9 m/s\n"
+        "kinematics:\n  a = c*t\nfind: t_v = t_at(v, v_9)\n"
+    )
+    from dynsolve.pipeline import solve_text
+    from dynsolve.system import SolveOptions
+
+    for mode in ("exact", "numeric"):
+        solution = solve_text(spec, "rest.dyn", SolveOptions(mode=mode))
+        shown = {r.name: r for s in solution.steps for r in s.results}
+        assert not shown["t(v)"].formula.startswith("-"), shown["t(v)"].formula
+        assert not shown["x(v)"].value.startswith("-"), shown["x(v)"].value
+        assert solution.answers[0].value == pytest.approx(3.0, rel=1e-12)

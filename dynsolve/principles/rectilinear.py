@@ -16,14 +16,14 @@ keeping the branch that meets the initial condition. ``crossing_times`` and
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cmp_to_key
 
 import sympy
 from sympy.core.cache import cacheit
 
-from dynsolve.numbers import real_value, tidy
+from dynsolve.numbers import probe_point, real_value, tidy
 
 T, X, V = sympy.symbols("t x v", real=True)
 KINDS = ("a(t)", "a(v)", "a(x)", "x(t)", "v(t)")
@@ -303,10 +303,44 @@ def _inverse(
             ]
     except (NotImplementedError, ValueError, BudgetExceeded):
         return None
-    for root in roots:
-        if _passes(root, argument, at, value):
-            return root
+    through = [root for root in roots if _passes(root, argument, at, value)]
+    if len(through) > 1 and variable == T:  # t = ±√(2 (v − v₀)/c) from rest: t ≥ t₀
+        return _forward(through, relation, argument, value)
+    if through:
+        return through[0]
     return roots[0] if len(roots) == 1 else None
+
+
+def _forward(
+    branches: Sequence[sympy.Expr], relation: sympy.Expr, argument: sympy.Symbol, t0: sympy.Expr
+) -> sympy.Expr | None:
+    """Of several branches t(q) through the start, the one the motion takes after t₀: it
+    gives back t₀ + h from q(t₀ + h), for the first h (from 1e-3 s up) at which exactly one
+    does, at a point of the letters' domain (:func:`~dynsolve.numbers.probe_point`); None
+    (no t(q) shown, never a wrong one) where none decides.
+
+    >>> v0, c = sympy.symbols("v_0 c", positive=True)
+    >>> _forward([-sympy.sqrt(2 * (V - v0) / c), sympy.sqrt(2 * (V - v0) / c)],
+    ...          v0 + c * T**2 / 2, V, sympy.Integer(0))
+    sqrt(2*v - 2*v_0)/sqrt(c)
+    """
+    for h in (sympy.Rational(1, 1000), sympy.Rational(1, 10), sympy.Integer(1), sympy.Integer(10)):
+        later = t0 + h
+        q = relation.xreplace({T: later})
+        back = [b for b in branches if _gives_back(b.xreplace({argument: q}), later)]
+        if len(back) == 1:
+            return back[0]
+    return None
+
+
+def _gives_back(time: sympy.Expr, later: sympy.Expr) -> bool:
+    """``time`` equals ``later`` (to 1e-9 of its size) at a point of the letters' domain."""
+    point = probe_point(time - later)
+    if point is None:
+        return False
+    found = real_value(time.xreplace(point))
+    wanted = real_value(later.xreplace(point))
+    return found is not None and wanted is not None and abs(found - wanted) <= 1e-9 * abs(wanted)
 
 
 def _passes(root: sympy.Expr, argument: sympy.Symbol, at: sympy.Expr, value: sympy.Expr) -> bool:
