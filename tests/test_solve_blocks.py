@@ -417,3 +417,19 @@ def test_a_swallowed_budget_expiry_is_raised_again():
         while True:
             sum(range(1000))
     assert swallowed == [True]
+
+
+def test_a_polynomial_search_that_does_not_converge_goes_to_sympy(monkeypatch) -> None:
+    """mpmath.polyroots raising NoConvergence gives None (sympy then solves the block);
+    the handler named mpmath.NoConvergence, which mpmath 1.3 does not have, so the
+    failure became an AttributeError (regression)."""
+    import mpmath
+
+    from dynsolve.solver.blocks import _univariate_roots
+
+    def no_convergence(*args: object, **kwargs: object) -> None:
+        raise mpmath.mp.NoConvergence("Didn't converge in maxsteps=100 steps.")
+
+    monkeypatch.setattr(mpmath, "polyroots", no_convergence)
+    w = sympy.Symbol("w")
+    assert _univariate_roots(2 * w**2 - 8, w) is None

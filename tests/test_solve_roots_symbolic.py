@@ -37,3 +37,17 @@ def test_sampling_decides_only_when_every_sample_agrees():
     assert truth(x >= 0, {x: sympy.sqrt(L**2 + s**2) - L}) is True
     assert truth(x >= 0, {x: L - s}) is None  # sign depends on the givens
     assert sampled(x + L) == []  # x is not a positive given: no sampling
+
+
+def test_a_lone_equation_is_solved_factor_by_factor() -> None:
+    """The bar on a shaft at its steady angle: sin θ (Ω² cos θ − 3g/(2L)) = 0 (seed notes:
+    θ_s = acos(3g/(2LΩ²)) besides θ = 0, π), solved with its common factor out, so the
+    nonzero root reads as the notes write it (sympy gave 2 atan(…) for the whole)."""
+    from dynsolve.solver.blocks import _symbolic_candidates
+
+    theta = sympy.Symbol("theta", real=True)
+    g, L, W = sympy.symbols("g L Omega", positive=True)
+    residual = W**2 * sympy.sin(theta) * sympy.cos(theta) - 3 * g * sympy.sin(theta) / (2 * L)
+    found, _ = _symbolic_candidates([residual], (theta,), 5.0, None)
+    roots = [c.values[theta] for c in found.candidates]
+    assert sympy.acos(3 * g / (2 * L * W**2)) in roots

@@ -37,6 +37,7 @@ from typing import TypeVar
 
 import mpmath
 import sympy
+from mpmath.libmp import NoConvergence
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
@@ -829,7 +830,7 @@ def _univariate_roots(residual: sympy.Expr, unknown: sympy.Symbol) -> list[mpmat
                     if abs(a - b) <= mpmath.mpf(10) ** -8 * max(abs(a), abs(b)):
                         return None
             return list(roots)
-    except (sympy.PolynomialError, ValueError, TypeError, ArithmeticError, mpmath.NoConvergence):
+    except (sympy.PolynomialError, ValueError, TypeError, ArithmeticError, NoConvergence):
         return None
 
 
@@ -903,7 +904,9 @@ def _symbolic_candidates(
     Returns the solution, or None and the reason it could not be used.
     """
     if len(unknowns) == 1:  # a lone equation solves about twice as fast as a one-item list
-        problem: object = residuals[0]
+        # its common factors out first: sin θ (Ω² cos θ − 3g/2L) is solved factor by factor
+        # (θ = acos(3g/(2LΩ²)), not sympy's 2 atan(…) of the whole, in a third of the time)
+        problem: object = sympy.factor_terms(residuals[0])
         targets: object = unknowns[0]
     else:
         problem, targets = residuals, list(unknowns)
