@@ -879,7 +879,6 @@ class _View:
     def derived_row(self, info: GivenInfo) -> GivenRow:
         """A quantity dynsolve derived from the givens (r_G, I_O): its formula and value."""
         assert info.formula is not None and info.value is not None
-        formula = self.text(info.formula)
         value = self.number(info.value)
         unit = self.unit_of(info.name) if info.dim.dimensionless else ""
         unit = unit or natural_unit(info.dim, self.system, info.name)
@@ -888,17 +887,18 @@ class _View:
             if value is None
             else format_quantity(convert(value, unit, self.system), unit, 4, trim=True)
         )
-        written = f"= {formula}"
-        latex = self.latex(info.formula)
-        numbers = self.substituted(info.formula)
-        if numbers is not None:  # the table formula, then its numbers (a hand calculation)
-            written += f" = {numbers[0]}"
-            latex += f" = {numbers[1]}"
         if value is not None and not (sympy.Integer(0) + info.formula).free_symbols:
             # a number found numerically (a joint by loop closure): shown with its unit
             converted = convert(value, unit, self.system)
             written = f"= {format_quantity(converted, unit, 6)}"
             latex = latex_number(converted, 6) + (f"\\,{latex_unit(unit)}" if unit else "")
+        else:  # the table formula, then its numbers (a hand calculation)
+            written = f"= {self.text(info.formula)}"
+            latex = self.latex(info.formula)
+            numbers = self.substituted(info.formula)
+            if numbers is not None:
+                written += f" = {numbers[0]}"
+                latex += f" = {numbers[1]}"
         return GivenRow(
             info.name, written, base, info.note, value is None, latex_name(info.name), latex
         )
