@@ -119,6 +119,8 @@ def measure(
     """Solve every problem at every scale in every mode; one row per problem and scale.
     With ``phases``, a second untimed pass per mode charges each mode's CPU time to the
     pipeline's phases (the wrappers cost a little, so the timed pass runs without them)."""
+    import scipy.integrate  # noqa: F401  (imported on first use: not charged to one mode)
+
     first = parse_file(paths[0])
     for mode in modes:  # warm-up, not timed
         _timed(first, mode)
