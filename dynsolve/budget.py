@@ -27,7 +27,7 @@ from typing import Any, TypeVar
 
 from dynsolve.errors import DynsolveError
 
-DEFAULT_SECONDS = 60.0  # every bundled problem takes under 6 s (drag_fall, the slowest)
+DEFAULT_SECONDS = 60.0  # every bundled problem takes under 1.5 s cold (docs/benchmarks.md)
 DEFAULT_MEGABYTES = 2048  # address space of the worker, libraries included
 # fork starts the worker with the parent's modules in ~5 ms; macOS and Windows have
 # only spawn (a fresh interpreter) as a safe choice
