@@ -123,3 +123,17 @@ def test_a_travel_of_unknown_extent_gets_a_hint_that_fits_a_simulation(tmp_path)
     result = CliRunner().invoke(app, ["simulate", str(file)])
     assert result.exit_code == 2
     assert "leave the travel line out" in result.output and "--until" in result.output
+
+
+def test_a_sliding_contact_is_judged_moving_at_any_length_scale() -> None:
+    """A contact point that moves with G (1e-13 m per unit of the travel coordinate, a
+    problem in picometres) slides: the test compares |dr_C/dq|² with |dr_G/dq|², not with an
+    absolute 1e-24 (which called it still); a contact that does not move is still."""
+    import sympy
+
+    from dynsolve.simulate.equations import _is_still
+
+    tiny = sympy.Float(1e-13)
+    assert not _is_still((tiny, 0), (tiny, 0), {})
+    assert _is_still((0, 0), (tiny, 0), {})
+    assert _is_still((0, 0), (0, 0), {})

@@ -451,7 +451,8 @@ def _friction(
             continue
         P = _point(scene, placements, support.body, support.point)
         slip = (sympy.diff(P[0], Q), sympy.diff(P[1], Q))
-        if _is_still(slip, values):
+        G = _point(scene, placements, support.body, scene.bodies[support.body].G)
+        if _is_still(slip, (sympy.diff(G[0], Q), sympy.diff(G[1], Q)), values):
             continue
         if support.smooth:
             continue
@@ -462,8 +463,14 @@ def _friction(
     return total
 
 
-def _is_still(slip: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
-    return all(abs(v) < 1e-24 for v in _samples(_dot(slip, slip), values, (0.0, 0.37, 1.0)))
+def _is_still(slip: Vec, v_G: Vec, values: Mapping[sympy.Symbol, sympy.Expr]) -> bool:
+    """The contact point does not move along the travel: |dr_C/dq|² at most 1e-24 of
+    |dr_C/dq|² + |dr_G/dq|² at three points (scale-free: a travel coordinate that is an
+    angle gives both a length's size)."""
+    points = (0.0, 0.37, 1.0)
+    slips = _samples(_dot(slip, slip), values, points)
+    sizes = _samples(_dot(v_G, v_G), values, points)
+    return all(abs(s) <= 1e-24 * (abs(s) + g) for s, g in zip(slips, sizes, strict=True))
 
 
 def _normal(
