@@ -10,6 +10,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
@@ -78,7 +79,9 @@ def test_holds_rejects_what_checksol_rejects() -> None:
 
 def test_brief_symbolic_block_in_numbers() -> None:
     """A transcendental block numeric mode solves with the knowns as letters, without
-    sympy's root check: the spurious ±oo*I roots are gone, the real ones kept."""
+    sympy's root check: the spurious ±oo*I roots are gone, the real ones kept. By hand,
+    sin θ (L Ω² cos θ/3 − g/2) = 0: θ = 0, π and ±acos(3g/(2LΩ²)) in (−π, π] (θ = π, the
+    bar straight up, was missed while sympy solved the unfactored form)."""
     theta = sympy.Symbol("theta_s", real=True)
     L, W, g, m = sympy.symbols("L Omega g m", positive=True)
     residual = (
@@ -88,7 +91,7 @@ def test_brief_symbolic_block_in_numbers() -> None:
     found = solve_block([residual], [theta], given, SolveOptions(mode="numeric"))
     values = sorted(float(c.values[theta]) for c in found.candidates)
     exact = float(sympy.acos(3 * given[g] / (2 * given[L] * given[W] ** 2)))
-    assert values == pytest.approx([-exact, 0.0, exact], rel=1e-13, abs=1e-300)
+    assert values == pytest.approx([-exact, 0.0, exact, math.pi], rel=1e-13, abs=1e-300)
 
 
 @pytest.mark.parametrize(

@@ -6,6 +6,9 @@ sqrt(L^2 + s^2) - L > 0; the constraint v_0 >= 0 is now decided by sampling
 positive values of the givens.
 """
 
+import math
+
+import pytest
 import sympy
 
 from dynsolve.solver import solve_system
@@ -51,3 +54,22 @@ def test_a_lone_equation_is_solved_factor_by_factor() -> None:
     found, _ = _symbolic_candidates([residual], (theta,), 5.0, None)
     roots = [c.values[theta] for c in found.candidates]
     assert sympy.acos(3 * g / (2 * L * W**2)) in roots
+
+
+def test_an_angle_from_sympy_is_written_in_the_principal_range() -> None:
+    """sympy gives cos θ = c as acos(c) and 2π − acos(c); the root choice reads angles in
+    (−π, π] (as the root search writes them), so the second is −acos(c): by hand the bar
+    on a shaft's steady angles are 0, π and ±acos(3g/(2LΩ²))."""
+    from dynsolve.solver.blocks import solve_block
+    from dynsolve.system import SolveOptions
+
+    theta = sympy.Symbol("theta_s", real=True)
+    L, W, g, m = sympy.symbols("L Omega g m", positive=True)
+    residual = (
+        L**2 * W**2 * m * sympy.sin(theta) * sympy.cos(theta) / 3 - L * g * m * sympy.sin(theta) / 2
+    )
+    given = {L: sympy.Rational(6, 5), W: 4, g: sympy.Rational(981, 100), m: 3}
+    found = solve_block([residual], [theta], given, SolveOptions(mode="exact"))
+    values = sorted(float(c.values[theta]) for c in found.candidates)
+    root = math.acos(3 * 9.81 / (2 * 1.2 * 16))
+    assert values == pytest.approx([-root, 0.0, root, math.pi], rel=1e-12, abs=1e-300)

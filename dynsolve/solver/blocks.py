@@ -43,7 +43,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.solvers.solveset import NonlinearError
 
 from dynsolve.budget import step
-from dynsolve.numbers import MAX_DIGITS, mpmath_function, tidy
+from dynsolve.numbers import MAX_DIGITS, mpmath_function, probe_point, real_value, tidy
 from dynsolve.solver.evaluate import mp_value
 from dynsolve.solver.outcome import Method
 from dynsolve.system import SolveOptions
@@ -934,6 +934,7 @@ def _symbolic_candidates(
         return BlockSolution(
             unknowns, "symbolic", (), note=note, free=unknowns, missing_equations=max(missing, 1)
         ), ""
+    complete = _principal_angles(complete, residuals, unknowns, given)
     candidates = [_candidate(r, unknowns, given) for r in complete]
     candidates = [c for c in candidates if c is not None]
     if not check:
@@ -1279,6 +1280,44 @@ def _same_angles(a: Sequence[object], b: Sequence[object], periodic: Sequence[bo
         elif gap > 1e-9 * max(abs(x), abs(y)):
             return False
     return True
+
+
+def _principal_angles(
+    roots: list[dict[sympy.Symbol, sympy.Expr]],
+    residuals: Sequence[sympy.Expr],
+    unknowns: Sequence[sympy.Symbol],
+    given: Mapping[sympy.Symbol, sympy.Expr] | None,
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """sympy's roots with each angle that enters only through sin, cos, tan of whole
+    multiples of itself written in (−π, π], as the root search writes it (2π − acos(c) is
+    −acos(c)): an ``assume theta > 0`` line then reads the angles it was written for; a
+    root met twice so is kept once. An angle whose value cannot be had (letters without a
+    probe value) is kept as sympy wrote it.
+
+    >>> t = sympy.Symbol("t", real=True)
+    >>> _principal_angles([{t: 2 * sympy.pi - sympy.acos(sympy.Rational(1, 3))}],
+    ...                   [sympy.cos(t) - sympy.Rational(1, 3)], [t], {})
+    [{t: -acos(1/3)}]
+    """
+    periodic = [u for u in unknowns if _periodic(u, residuals)]
+    if not periodic:
+        return roots
+    turn, kept = 2 * sympy.pi, []
+    for root in roots:
+        root = dict(root)
+        for u in periodic:
+            value = substitute(root[u], given or {}) if u in root else None
+            if value is None:
+                continue
+            point = probe_point(value)
+            number = real_value(value, point) if point is not None else None
+            if number is not None and number > math.pi:
+                root[u] = tidy(root[u] - turn)
+            elif number is not None and number <= -math.pi:
+                root[u] = tidy(root[u] + turn)
+        if root not in kept:
+            kept.append(root)
+    return kept
 
 
 def _principal(angle: mpmath.mpc | mpmath.mpf) -> mpmath.mpc | mpmath.mpf:
