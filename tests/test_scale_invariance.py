@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from dynsolve.errors import SpecError
 from dynsolve.pipeline import solve_spec
 from dynsolve.scaling import mismatches, scale_spec
 from dynsolve.spec.parser import parse_file
@@ -119,6 +120,17 @@ def test_exact_root_of_1e_minus_200_is_not_rounded_away() -> None:
     assert x == pytest.approx(1e-200, rel=1e-12)
     assert solution.passed
 
+
+
+@pytest.mark.parametrize("mode", ["numeric", "auto"])
+def test_floating_point_modes_refuse_the_1e_minus_200_root_and_point_to_exact(mode: str) -> None:
+    # The same spec in floating point: x = 1e-200 makes the x^2 of line 5 about 1e-400, which
+    # float64 rounds to 0; the refusal names the line and says exact mode keeps x exact.
+    with pytest.raises(SpecError) as raised:
+        solve_spec(parse_file(ROOT / "tests/data/scale/root_1e-200.dyn"), SolveOptions(mode=mode))
+    text = str(raised.value)
+    assert "root_1e-200.dyn:5:3" in text and "too small" in text
+    assert "--mode exact" in text
 
 @pytest.mark.parametrize("k", [-9, 9])
 def test_the_simulation_check_is_scale_free(k: int) -> None:

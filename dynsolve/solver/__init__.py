@@ -70,7 +70,14 @@ def solve_system(system: EquationSystem, options: SolveOptions = DEFAULT_OPTIONS
     progress.missing_equations = structure.missing_equations
     for block in structure.blocks:
         _solve_structural_block(block, system, structure, options, progress)
-    _check_magnitudes(range(len(system.equations)), system, progress)
+    try:
+        _check_magnitudes(range(len(system.equations)), system, progress)
+    except OutOfRange as error:
+        if options.mode == "exact":
+            raise
+        raise OutOfRange(  # exact mode keeps a solved value exact, so its powers stay exact
+            error.message, error.line, error.column, f"{error.hint}; or try --mode exact"
+        ) from None
     quick = options.mode == "numeric"  # residuals in mpmath, node by node
     redundant = _check_surplus(structure.surplus, system, progress, quick)
     unsolved = set(system.unknowns) - set(progress.solved)
