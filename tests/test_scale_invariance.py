@@ -121,7 +121,6 @@ def test_exact_root_of_1e_minus_200_is_not_rounded_away() -> None:
     assert solution.passed
 
 
-
 @pytest.mark.parametrize("mode", ["numeric", "auto"])
 def test_floating_point_modes_refuse_the_1e_minus_200_root_and_point_to_exact(mode: str) -> None:
     # The same spec in floating point: x = 1e-200 makes the x^2 of line 5 about 1e-400, which
@@ -131,6 +130,7 @@ def test_floating_point_modes_refuse_the_1e_minus_200_root_and_point_to_exact(mo
     text = str(raised.value)
     assert "root_1e-200.dyn:5:3" in text and "too small" in text
     assert "--mode exact" in text
+
 
 @pytest.mark.parametrize("k", [-9, 9])
 def test_the_simulation_check_is_scale_free(k: int) -> None:
