@@ -102,11 +102,13 @@ def _ordinal(n: int) -> str:
     return {1: "first", 2: "second", 3: "third"}.get(n, f"{n}th")
 
 
-def _crossings(q: sympy.Expr, level: sympy.Expr, t0: sympy.Expr, values: Values) -> Crossings:
-    """crossing_times, with a numeric check (when the givens have values) that no crossing
-    between t₀ and the last root kept was missed (sympy returns a periodic law's principal
-    roots only)."""
-    found = crossing_times(q, level, t0, values)
+def _crossings(
+    q: sympy.Expr, level: sympy.Expr, t0: sympy.Expr, values: Values, count: int = 1
+) -> Crossings:
+    """crossing_times (``count`` crossings sought), with a numeric check (when the givens
+    have values) that no crossing between t₀ and the last root kept was missed (sympy may
+    return only some roots of a law it cannot see is periodic)."""
+    found = crossing_times(q, level, t0, values, count=count)
     numeric = (q - level).xreplace(dict(values))
     start = real_value(t0, values)
     if not found.times or numeric.free_symbols - {T} or start is None:
@@ -143,7 +145,7 @@ def _time_at(
     law = _law(motion, quantity)
     if law is not None:
         try:
-            found = _crossings(law, level, t0, values)
+            found = _crossings(law, level, t0, values, n)
         except ValueError as error:
             numeric = _scan_roots(law - level, t0, n, values)
             if numeric is None:
@@ -315,7 +317,7 @@ def _extreme(
         return Event(tidy(law.subs(T, time)), rule, found.discarded, time)
     if _sign(end - t0, values) != 1:
         raise ValueError("the end of the interval is not after t₀")
-    stationary = crossing_times(sympy.diff(law, T), sympy.Integer(0), t0, values)
+    stationary = crossing_times(sympy.diff(law, T), sympy.Integer(0), t0, values, until=end)
     inside = [t for t in stationary.times if _sign(end - t, values) == 1]
     candidates = [t0, *inside, end]
     best = candidates[0]
@@ -365,7 +367,7 @@ def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values
     if _sign(end - start, values) == -1:
         raise ValueError("the interval ends before it starts")
     try:
-        stops = crossing_times(v_law, sympy.Integer(0), start, values)
+        stops = crossing_times(v_law, sympy.Integer(0), start, values, until=end)
     except ValueError as error:
         if "at every time" not in str(error):
             raise

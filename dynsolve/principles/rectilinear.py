@@ -16,6 +16,7 @@ keeping the branch that meets the initial condition. ``crossing_times`` and
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cmp_to_key
@@ -162,20 +163,33 @@ class Crossings:
 
 
 def crossing_times(
-    q: sympy.Expr, level: sympy.Expr, t0: sympy.Expr, values: Values | None = None
+    q: sympy.Expr,
+    level: sympy.Expr,
+    t0: sympy.Expr,
+    values: Values | None = None,
+    *,
+    count: int = 1,
+    until: sympy.Expr | None = None,
 ) -> Crossings:
-    """Every time t > t₀ at which ``q`` (an expression in ``T``) equals ``level``, earliest first.
+    """Times t > t₀ at which ``q`` (an expression in ``T``) equals ``level``, earliest first.
 
     The roots are placed by their values at ``values`` (the givens' values), or, for
-    symbolic givens, by the symbols' assumptions. Roots sympy's ``solve`` does not
-    return (the other periods of a periodic motion) are not found. A ValueError says
-    when sympy cannot solve ``q = level`` for t, or cannot place a root.
+    symbolic givens, by the symbols' assumptions. When ``q − level`` is periodic in t
+    (``sympy.periodicity``) and the givens have values, the roots sympy's ``solve``
+    returns (one period's) are repeated by whole periods so that the times cover
+    t₀ … ``until`` (when given) or ``count`` periods after t₀, which hold at least ``count``
+    crossings when there is one; a symbolic periodic law gets sympy's roots only. A
+    ValueError says when sympy cannot solve ``q = level`` for t, cannot place a root, or
+    when the periods asked would hold more than :data:`MAX_CROSSINGS` roots.
 
     >>> import sympy
     >>> y = 10 * T - sympy.Rational(981, 200) * T**2  # y = v_y0 t - g t²/2
     >>> found = crossing_times(y, sympy.Integer(0), sympy.Integer(0))
     >>> found.times, found.discarded
     ((2000/981,), ((0, 'not after t₀'),))
+    >>> # sin t = 0 at whole multiples of π; two periods after t₀ = 4 reach 4 + 4π = 16.57
+    >>> crossing_times(sympy.sin(T), sympy.Integer(0), sympy.Integer(4), count=2).times
+    (2*pi, 3*pi, 4*pi, 5*pi)
     """
     values = dict(values or {})
     if tidy(q - level) == 0:
@@ -184,6 +198,9 @@ def crossing_times(
         roots = [tidy(r) for r in sympy.solve(sympy.Eq(q, level), T, simplify=False)]
     except NotImplementedError as error:
         raise ValueError(f"sympy cannot solve {q} = {level} for t") from error
+    period = _period(q - level, values)
+    if period is not None:
+        roots = _every_period(roots, period, t0, until, count, values)
     kept: list[sympy.Expr] = []
     discarded: list[tuple[sympy.Expr, str]] = []
     for root in dict.fromkeys(tidy(r) for r in roots):
@@ -196,6 +213,70 @@ def crossing_times(
             discarded.append((root, "not after t₀"))
     ordered = sorted(kept, key=cmp_to_key(lambda a, b: _sign(a - b, values) or 0))
     return Crossings(tuple(ordered), tuple(discarded))
+
+
+MAX_CROSSINGS = 1000  # roots of a periodic law listed at most (one per period and family)
+
+
+def _period(expr: sympy.Expr, values: Values) -> sympy.Expr | None:
+    """The period in t of ``expr`` (positive where the givens' values tell), or None when it
+    is not periodic or sympy cannot tell."""
+    if not expr.has(T):
+        return None
+    try:
+        period = sympy.periodicity(expr, T)
+    except (NotImplementedError, ValueError, TypeError):
+        return None
+    if period is None or period.has(T) or period == 0:
+        return None
+    number = real_value(sympy.Integer(0) + period, values)
+    return tidy(-period if number is not None and number < 0 else period)
+
+
+def _every_period(
+    roots: Sequence[sympy.Expr],
+    period: sympy.Expr,
+    t0: sympy.Expr,
+    until: sympy.Expr | None,
+    count: int,
+    values: Values,
+) -> list[sympy.Expr]:
+    """Each root of one period repeated by whole periods over t₀ … ``until`` (or ``count``
+    periods; a repeat within rounding of either end is kept, for the exact test of the
+    caller); sympy's own roots are kept as they are, for the caller to discard those
+    before t₀."""
+    start, step = real_value(t0, values), real_value(period, values)
+    end = real_value(until, values) if until is not None else None
+    if start is None or step is None or (until is not None and end is None):
+        if count == 1 and until is None:
+            return list(roots)  # the first crossing: among the roots sympy returns
+        missing = ", ".join(sorted(map(str, period.free_symbols | t0.free_symbols)))
+        raise ValueError(
+            f"the law repeats every {period}: its later crossings are counted with values "
+            f"for {missing or 'the givens'}"
+        )
+    if end is None:
+        end = start + max(count, 1) * step
+    if (end - start) / step * max(len(roots), 1) > MAX_CROSSINGS:
+        raise ValueError(
+            f"the periodic law repeats every {step:.6g} s: over {end - start:.6g} s it would "
+            f"cross more than {MAX_CROSSINGS} times (ask for a shorter interval)"
+        )
+    slack = 1e-9 * step  # a repeat this close to t₀ or the end is decided exactly later
+    repeated: list[sympy.Expr] = []
+    for root in roots:
+        repeated.append(root)
+        at = real_value(root, values)
+        if at is None:
+            continue  # complex: discarded by the caller as "not real"
+        first = math.floor((start - at) / step)  # the last repeat at or before t₀
+        last = math.floor((end - at) / step) + 1
+        repeated += [
+            tidy(root + k * period)
+            for k in range(first, last + 1)
+            if k != 0 and start - slack <= at + k * step <= end + slack
+        ]
+    return list(dict.fromkeys(repeated))
 
 
 def extreme_time(
@@ -235,6 +316,8 @@ def extreme_time(
         if gap == -sense:
             discarded.append((best, "a smaller extreme" if largest else "a larger extreme"))
             best = time
+        elif gap == 0:
+            discarded.append((time, "the same extreme, later"))
         else:
             discarded.append((time, "a smaller extreme" if largest else "a larger extreme"))
     return Crossings((best,), tuple(discarded))
