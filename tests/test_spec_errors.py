@@ -864,6 +864,16 @@ def test_given_without_number_does_not_suggest_an_operator():
     assert "value" in error.hint
 
 
+# a newcomer writes a textbook's omega = pi/2 rad/s as a given: the hint says how to write it
+def test_pi_in_a_given_is_told_how_to_write_it():
+    with pytest.raises(SpecError) as info:
+        parse_spec(spec("given:", "  w = pi/2 rad/s"), "pi.dyn")
+    error = info.value
+    assert error.position is not None
+    assert (error.position.line, error.position.column) == (2, 7)
+    assert "1.570796 rad/s" in error.hint and "pi in the equations" in error.hint
+
+
 # ---- random text never escapes as another exception ------------------------------------
 
 SPEC_TOKENS = [

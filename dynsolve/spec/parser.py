@@ -584,6 +584,11 @@ def _expected_words(expected: list[str]) -> str:
 
 def _token_hint(token: str, kind: str, expected: list[str], form: str) -> str:
     if kind == "NAME" and "NUMBER" in expected and "NAME" not in expected:
+        if token == "pi":  # a value is a decimal number: pi belongs in the equations
+            return (
+                "a value is a number and a unit: write pi/2 rad/s as 1.570796 rad/s, or give "
+                "the number that multiplies pi and write pi in the equations"
+            )
         return f"a value comes before its unit: write a number before '{token}', e.g. 'm = 60 kg'"
     operator_expected = any(e in expected for e in ("STAR", "PLUS", "MINUS", "SLASH", "REL"))
     if kind in ("NAME", "NUMBER", "LPAR") and operator_expected:
