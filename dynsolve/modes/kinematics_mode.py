@@ -146,7 +146,7 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
         rhs = rhs.xreplace(values)
         initial = {n: sympy.Integer(0) + e.xreplace(values) for n, e in initial.items()}
     motion = integrate_motion(
-        rhs, kind, initial["t"], initial["x"], initial["v"], invert, quick=quick
+        rhs, kind, initial["t"], initial["x"], initial["v"], invert, quick=quick, values=values
     )
     if kind in ("x(t)", "v(t)"):  # the start is the law's own
         initial |= {n: _tidy(motion.formulas[f"{n}(t)"].subs(T, initial["t"])) for n in "xv"}

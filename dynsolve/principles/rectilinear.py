@@ -51,6 +51,7 @@ def integrate_motion(
     invert: bool = True,
     in_time_only: bool = False,
     quick: bool = False,
+    values: Values | None = None,
 ) -> Motion:
     """All of v(t), x(t), a(t) and, where they exist, t(v), x(v), v(x), t(x), a(x), a(v).
 
@@ -60,6 +61,8 @@ def integrate_motion(
     gives v(t), x(t) and a(t) only (a component of plane motion, read in t alone).
     ``quick`` (numeric mode): a relation is inverted by peeling its operations where that
     finds one branch through the start (:func:`peeled_roots`), else by sympy's solve.
+    The sense of v(x) (the sign of v₀, or from rest that of a at x₀) is read at
+    ``values``, the givens' values (else from the symbols' signs).
     """
     u = sympy.Dummy("u", real=True)
     found: dict[str, sympy.Expr] = {}
@@ -97,9 +100,7 @@ def integrate_motion(
     elif kind == "a(x)":
         keep("a(x)", expr, "given")
         squared = v0**2 + 2 * sympy.integrate(expr.subs(X, u), (u, x0, X))
-        # the branch of v: the sense of v₀, or from rest the sense of a at x₀
-        start = v0 if not v0.is_zero else expr.subs(X, x0)
-        sign = -1 if start.is_negative else 1
+        sign = _start_sense(v0, expr.subs(X, x0), values or {})
         keep("v(x)", sign * sympy.sqrt(squared), "v² = v₀² + 2 ∫ a dx")
         keep(
             "t(x)",
@@ -113,7 +114,8 @@ def integrate_motion(
     else:
         raise ValueError(f"unknown kind of motion {kind!r}; one of {', '.join(KINDS)}")
     if kind in ("a(t)", "x(t)", "v(t)") and not in_time_only:
-        _time_inverses(found, keep, expr if kind == "a(t)" else None, t0, invert, quick)
+        a = expr if kind == "a(t)" else None
+        _time_inverses(found, keep, a, t0, invert, quick, values or {})
     return Motion(kind, found, tuple(steps), invert)
 
 
@@ -124,6 +126,7 @@ def _time_inverses(
     t0: sympy.Expr,
     invert: bool = True,
     quick: bool = False,
+    values: Values | None = None,
 ) -> None:
     """t(v), x(v), v(x), t(x) of a motion known in t: the constant-acceleration formulas
     when a is a constant, else v(t) inverted on the branch through t₀ (when sympy can).
@@ -137,8 +140,7 @@ def _time_inverses(
     if a is not None and not a.has(T) and not a.is_zero:
         keep("t(v)", t0 + (V - v0) / a, "t = t₀ + (v − v₀)/a (constant a)")
         keep("x(v)", x0 + (V**2 - v0**2) / (2 * a), "v² = v₀² + 2 a (x − x₀) (constant a)")
-        start = v0 if not v0.is_zero else a
-        sign = -1 if start.is_negative else 1
+        sign = _start_sense(v0, a, values or {})
         keep(
             "v(x)",
             sign * sympy.sqrt(v0**2 + 2 * a * (X - x0)),
@@ -152,6 +154,29 @@ def _time_inverses(
     keep("t(v)", _inverse(found["v(t)"], T, V, v0, t0, quick), how)
     if "t(v)" in found:
         keep("x(v)", found["x(t)"].subs(T, found["t(v)"]), "x(v) = x(t(v))")
+
+
+def _start_sense(v0: sympy.Expr, a0: sympy.Expr, values: Values) -> int:
+    """The sense of the motion at the start (+1 or −1): that of v₀, or from rest that of a₀,
+    read at the givens' ``values`` (a given's symbol has no sign of its own).
+
+    >>> v_0, k = sympy.symbols("v_0 k")
+    >>> _start_sense(v_0, -k, {v_0: sympy.Integer(0), k: sympy.Integer(4)})
+    -1
+    >>> _start_sense(v_0, -k, {v_0: sympy.Float(-0.2), k: sympy.Integer(4)})
+    -1
+    """
+    moving = _sign(v0, values)
+    if moving is None:
+        raise ValueError(f"the start's velocity {v0} is not real")
+    if moving != 0:
+        return moving
+    pushed = _sign(a0, values)
+    if not pushed:
+        raise ValueError(
+            "from rest with no acceleration at the start the sense of v(x) is undecided"
+        )
+    return pushed
 
 
 @dataclass(frozen=True)
