@@ -388,6 +388,30 @@ def _trial(
     )
 
 
+def _undefined_equations(system: EquationSystem) -> tuple[Check, ...]:
+    """A failed check for each equation the model wrote with an undefined term (nan, ±∞:
+    a division by zero in building it), which no solve can make hold.
+
+    >>> import sympy
+    >>> from dynsolve.system import Equation
+    >>> x = sympy.Symbol("x")
+    >>> bad = EquationSystem((Equation(sympy.nan, sympy.Integer(0), "eq. 3"),), (x,))
+    >>> [c.detail for c in _undefined_equations(bad)]
+    ['eq. 3 reads nan = 0: a term was divided by zero in writing it; no answer can be trusted']
+    """
+    undefined = (sympy.nan, sympy.zoo, sympy.oo, -sympy.oo)
+    return tuple(
+        Check(
+            "defined",
+            False,
+            f"{e.label} reads {e.lhs} = {e.rhs}: a term was divided by zero in writing it; "
+            "no answer can be trusted",
+        )
+        for e in system.equations
+        if any(e.lhs.has(u) or e.rhs.has(u) for u in undefined)
+    )
+
+
 def solve_problem(
     problem: SolvableProblem,
     options: SolveOptions,
@@ -414,6 +438,7 @@ def solve_problem(
     checks = (
         view.checks()
         + overflowed
+        + _undefined_equations(problem.system)
         + notes
         + second_methods
         + _assumption_checks(assumptions)

@@ -320,6 +320,8 @@ def _slide(
         return []  # a driven wheel's slide: stated, not checked
     if not assumption.holds:
         raise NotClosedForm(f"assumption '{assumption.name}' fails in the base problem")
+    if support.friction_sense is None:  # sliding at the velocities given, no slides line
+        raise NotClosedForm(f"assumption '{assumption.name}' (the velocities given) is per variant")
     along = -support.friction_sense
     v, a = _contact_motion(problem, support)
     if v != 0:

@@ -8,6 +8,7 @@ and the assumptions to check once it is solved.
 from __future__ import annotations
 
 import difflib
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
@@ -1385,12 +1386,15 @@ def assess(
             pass  # kinetic friction until it rolls: checked by the event's time
         elif support.name in formulation.sliding:
             slip = real_value(formulation.sliding[support.name], substitution)
+            known = slip is not None and math.isfinite(slip)
             checks.append(
                 Assumption(
                     f"sliding at {support.name}",
-                    True,
+                    known,
                     f"its contact point moves at {slip:.4g} m/s along the surface at the "
-                    "instant (the velocities given): kinetic friction μk N opposes it",
+                    "instant (the velocities given): kinetic friction μk N opposes it"
+                    if known
+                    else "the speed of its contact point along the surface is undefined",
                 )
             )
         elif friction_name in formulation.reactions and N is not None:

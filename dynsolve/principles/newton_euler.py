@@ -579,7 +579,7 @@ class _Writer:
     def omega_from_velocity(self, body: Body) -> sympy.Expr:
         """ω implied by a given v_G: rolling without slip (v_C = 0) or rotation about a pin."""
         v = self.scene.velocities.get(body.name)
-        if v is None:
+        if v is None or body.particle:  # a particle does not turn: its contact slides
             return sympy.Integer(0)
         for support in self.scene.supports:
             if support.body != body.name:

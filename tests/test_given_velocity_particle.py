@@ -1,0 +1,76 @@
+"""A particle given a velocity on a rough surface slides; it does not roll (regression).
+
+A newcomer's block moving up a rough incline was answered with friction up the slope
+(2.78 m/s², the sliding-down value) and an equation printed ``nan = 0``, every check
+green: a given velocity on a rough contact without ``slides`` was read as rolling
+(ω = v/r with r = 0 for a particle). A particle now never turns, an undefined equation
+is a failed check, and so is a slip speed that is not a number. Every expected number is
+derived by hand in the comment above it.
+"""
+
+import math
+from pathlib import Path
+
+import pytest
+
+from dynsolve.pipeline import solve_file, solve_text
+from dynsolve.system import SolveOptions
+
+ROOT = Path(__file__).resolve().parent.parent
+
+UP_THE_SLOPE = """given:
+  m = 10 kg
+  theta = 30 deg
+  mu_k = 0.25
+  v_1 = 5 m/s
+  g = 9.81 m/s^2
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: normal (-sin(theta), cos(theta)), mu_k mu_k
+  velocity block: v_1, angle theta
+  gravity
+find: a = a_G(block) [m/s^2], F = F_G [N]
+"""
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric", "auto"])
+def test_block_moving_up_a_rough_incline(mode: str) -> None:
+    # N = m g cos 30° = 84.957 N; friction opposes the upward slide, down the slope:
+    # a = g (sin 30° + μk cos 30°) = 9.81 (0.5 + 0.216506) = 7.028928 m/s² down the slope,
+    # F = μk N = 21.2393 N.
+    solution = solve_text(UP_THE_SLOPE, options=SolveOptions(mode=mode))
+    values = {a.name: float(a.value) for a in solution.answers}
+    assert values["a"] == pytest.approx(9.81 * (0.5 + 0.25 * math.sqrt(3) / 2), rel=1e-9)
+    assert values["F"] == pytest.approx(0.25 * 98.1 * math.sqrt(3) / 2, rel=1e-9)
+    assert solution.passed
+    assert not any("nan" in e.text for e in solution.equations)
+
+
+@pytest.mark.parametrize("name", ["block_moving_up_incline", "block_moving_up_incline_fps"])
+def test_bundled_moving_up_problems_pass_their_keys(name: str) -> None:
+    solution = solve_file(ROOT / "problems" / "scenes" / f"{name}.dyn")
+    assert solution.key and all(k.passed for k in solution.key), [k.detail for k in solution.key]
+
+
+def test_a_sliding_crate_on_its_base_translates() -> None:
+    # a 50 kg crate (1 m by 1.5 m) sliding right at 3 m/s on its base, μk = 0.2: N = m g,
+    # a = −μk g = −1.962 m/s², α = 0, and N acts h μk/2 = 0.15 m ahead of G (ΣM_G = 0).
+    text = """given:
+  m = 50 kg
+  b = 1 m
+  h = 1.5 m
+  v_1 = 3 m/s
+  mu_k = 0.2
+scene:
+  body crate: mass m, block b by h, at (0, h/2)
+  base C on crate: from (-b/2, -h/2) to (b/2, -h/2), mu_k mu_k
+  velocity crate: v_1, right
+  gravity
+find: a_x = a_Gx, al = alpha(crate), x_C
+"""
+    solution = solve_text(text)
+    values = {a.name: float(a.value) for a in solution.answers}
+    assert values["a_x"] == pytest.approx(-0.2 * 9.81, rel=1e-9)
+    assert values["al"] == 0
+    assert values["x_C"] == pytest.approx(0.15, rel=1e-9)
+    assert solution.passed
