@@ -116,7 +116,7 @@ def build_scene_problem(
         elif any(t.kind == "for" for t in scene.travels.values()):
             from dynsolve.principles.impulse_momentum import impulse_formulation
 
-            formulation = impulse_formulation(scene, symbols)
+            formulation = impulse_formulation(scene, symbols, slipping)
         elif (scene.travels and rigid) or (
             scene.movers and not set(scene.movers) & set(scene.bodies)
         ):
@@ -168,8 +168,9 @@ def build_scene_problem(
     targets = _targets(spec, scene, formulation, symbols, dims, givens)
     check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     wanted = _wanted(targets, formulation)
-    if wanted:  # every assumption is checked, whatever the find list asks
-        wanted += tuple(s for s in _checked(scene, formulation) if s not in wanted)
+    # every assumption is checked, whatever the find list asks, also when the answers
+    # follow from the givens alone (a crate's speed, "unchanged" only if it does not slip)
+    wanted += tuple(s for s in _checked(scene, formulation) if s not in wanted)
     knowns = {g.symbol: g.value for g in givens if g.value is not None}
     equations = formulation.equations if wanted else ()  # nothing asked needs an equation
     system = EquationSystem(

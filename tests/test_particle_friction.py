@@ -1,11 +1,12 @@
-"""A particle given a velocity on a rough surface slides; it does not roll (regression).
+"""Friction on a particle: a given velocity slides it, a pull it cannot hold slips it (regressions).
 
 A newcomer's block moving up a rough incline was answered with friction up the slope
 (2.78 m/s², the sliding-down value) and an equation printed ``nan = 0``, every check
 green: a given velocity on a rough contact without ``slides`` was read as rolling
 (ω = v/r with r = 0 for a particle). A particle now never turns, an undefined equation
-is a failed check, and so is a slip speed that is not a number. Every expected number is
-derived by hand in the comment above it.
+is a failed check, and so is a slip speed that is not a number. A crate pulled for 3 s was
+answered v_2 = 0: its speed needed no equation, so "no slip" was assumed and never checked.
+Every expected number is derived by hand in the comment above it.
 """
 
 import math
@@ -74,3 +75,42 @@ find: a_x = a_Gx, al = alpha(crate), x_C
     assert values["al"] == 0
     assert values["x_C"] == pytest.approx(0.15, rel=1e-9)
     assert solution.passed
+
+
+# ---- an answer that follows from the givens alone still has its assumptions checked
+
+CRATE = """given:
+  m = 20 kg
+  P = {P} N
+  phi = 30 deg
+  mu_s = 0.3
+  mu_k = 0.2
+  dt = 3 s
+  g = 9.81 m/s^2
+scene:
+  body crate: particle, mass m, at (0, 0)
+  contact crate at G: normal up, mu_s mu_s, mu_k mu_k
+  force P on crate at G: angle phi
+  gravity
+  travel crate: for dt
+find: v_2 = speed(crate) [m/s]
+"""
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_a_pulled_crate_that_slips_gains_speed(mode: str) -> None:
+    # Hibbeler 15.x style: N = m g − P sin 30° = 196.2 − 50 = 146.2 N; P cos 30° = 86.60 N
+    # > μs N = 43.86 N, so it slides: m v_2 = (P cos 30° − μk N) Δt = (86.603 − 29.24)·3,
+    # v_2 = 8.604381 m/s. (It was answered 0: "no slip" assumed and never checked.)
+    solution = solve_text(CRATE.format(P=100), options=SolveOptions(mode=mode))
+    (v_2,) = [float(a.value) for a in solution.answers]
+    assert v_2 == pytest.approx((100 * math.sqrt(3) / 2 - 0.2 * 146.2) * 3 / 20, rel=1e-9)
+
+
+def test_a_pulled_crate_that_holds_stays_at_rest() -> None:
+    # P = 30 N: N = 196.2 − 15 = 181.2 N, μs N = 54.36 N ≥ P cos 30° = 25.98 N: it stays put
+    solution = solve_text(CRATE.format(P=30))
+    (v_2,) = [float(a.value) for a in solution.answers]
+    assert v_2 == 0
+    assert solution.passed
+    assert any(c.name == "assumption: no slip at G" and c.passed for c in solution.checks)
