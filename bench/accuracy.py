@@ -42,7 +42,7 @@ from report import write_section  # noqa: E402
 from dynsolve.errors import DynsolveError  # noqa: E402
 from dynsolve.pipeline import solve_spec  # noqa: E402
 from dynsolve.results import Solution  # noqa: E402
-from dynsolve.scaling import scale_spec  # noqa: E402
+from dynsolve.scaling import exact_scale, scale_spec  # noqa: E402
 from dynsolve.spec.parser import parse_file  # noqa: E402
 from dynsolve.system import SolveOptions  # noqa: E402
 
@@ -127,7 +127,7 @@ def measure(
     rows = []
     for path in paths:
         spec = parse_file(path)
-        for k in [0, *ks]:
+        for k in [0, *(exact_scale(spec, j) for j in ks)]:  # even for a half power
             row = Row(f"{path.parent.name}/{path.stem}", k, _symbolic(spec))
             scaled = scale_spec(spec, k) if k else spec
             solutions = {}

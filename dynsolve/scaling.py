@@ -20,7 +20,7 @@ from dynsolve.results import Solution
 from dynsolve.spec.ast import Given, Quantity, Spec, Tolerance, UnitExpr
 from dynsolve.units import GRAVITY, Dim, registry, unit_named
 
-__all__ = ["dim_scale", "mismatches", "scale_spec", "unit_scale"]
+__all__ = ["dim_scale", "exact_scale", "mismatches", "scale_spec", "unit_scale"]
 
 
 def dim_scale(dim: Dim, k: int) -> Fraction:
@@ -91,6 +91,24 @@ def scale_spec(spec: Spec, k: int) -> Spec:
         for a in spec.answers
     )
     return replace(spec, givens=givens, answers=answers)
+
+
+def exact_scale(spec: Spec, k: int) -> int:
+    """``k``, or the nearest even scale toward 0 when a given's unit has a half power of mass
+    or length (k = 3 m^(1/2)/s^(3/2): 10^(9/2) is irrational, 10^8 is not).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  k = 3 m^(1/2)/s\\nequations:\\n  v = k^2\\nfind: v\\n")
+    >>> exact_scale(spec, 9), exact_scale(spec, -3), exact_scale(spec, 4)
+    (8, -2, 4)
+    """
+    try:
+        scale_spec(spec, k)
+    except ValueError as error:
+        if "fractional power of ten" not in str(error) or not k % 2:
+            raise
+        return k - 1 if k > 0 else k + 1
+    return k
 
 
 def mismatches(base: Solution, scaled: Solution, k: int, tolerance: float = 1e-9) -> list[str]:

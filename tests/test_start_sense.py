@@ -1,4 +1,4 @@
-"""The sense of v(x) is the start's: v₀'s sign, or from rest the sign of a at x₀ (regression).
+"""The start and the stop of a one-line motion: v(x) takes the start's sense; past a stop it rests.
 
 A newcomer found v(x) = +√(v₀² + 2∫a dx) taken whatever v₀'s sign, with every check green:
 a given's symbol has no sign of its own, so ``v_0.is_negative`` was None and "+" was
@@ -64,3 +64,29 @@ find: v_1 = v(x_1), t_1 = t(x_1)
     found = answers(text, mode)
     assert found["v_1"] == pytest.approx(-math.sqrt(13), rel=1e-9)
     assert found["t_1"] == pytest.approx((5 - math.sqrt(13)) / 2, rel=1e-9)
+
+
+# ---- past the stop of an a(v) motion (regression: the inverted v(t) was read past it)
+
+SQRT_DRAG = """given:
+  k = 3 m^(1/2)/s^(3/2)
+  v_0 = 9 m/s
+  t_1 = 1 s
+  t_3 = 3 s
+kinematics:
+  a = -k*sqrt(v)
+find: v_1 = v(t_1), x_1 = x(t_1), v_3 = v(t_3), x_3 = x(t_3)
+"""
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric", "auto"])
+def test_an_a_of_v_motion_stays_at_rest_after_it_stops(mode: str) -> None:
+    # Beer-Johnston 11.x style: dv/dt = −k√v → √v = √v₀ − k t/2 = 3 − 1.5 t: it stops at
+    # t = 2 s after x = 2 v₀^(3/2)/(3k) = 6 m; at 1 s v = 2.25 m/s, x = (2/9)(27 − 3.375)
+    # = 5.25 m. At 3 s it is at rest at 6 m, where a = −k√0 = 0 keeps it (v = (3 − 1.5·3)²
+    # = 2.25 m/s is the formula's other branch: it was answered, with x = 5.25 m).
+    found = answers(SQRT_DRAG, mode)
+    assert found["v_1"] == pytest.approx(2.25, rel=1e-9)
+    assert found["x_1"] == pytest.approx(5.25, rel=1e-9)
+    assert found["v_3"] == 0
+    assert found["x_3"] == pytest.approx(6.0, rel=1e-9)

@@ -25,6 +25,7 @@ c*t_1**2/2 + v_0
 from __future__ import annotations
 
 import difflib
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
@@ -408,7 +409,14 @@ def _target(
         hint = f"the time at which v = {argument} is t_at(v, {argument})"
         raise SpecError(f"t(v) could not be found from {motion.given}", where, hint=hint)
     numeric = None
-    if name not in motion.formulas and numbers is not None and argument not in VARIABLES:
+    if numbers is not None and argument not in VARIABLES and variable == "t":
+        numeric = _after_a_stop(ref.function, symbols[argument], motion, numbers)
+    if (
+        numeric is None
+        and name not in motion.formulas
+        and numbers is not None
+        and (argument not in VARIABLES)
+    ):
         try:
             numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
         except MotionBlowsUp as blow_up:
@@ -691,6 +699,77 @@ def _check_no_blow_up(
         Position(file, item.line, item.column),
         hint="ask for a time before it, or check the law's sign and the initial conditions",
     )
+
+
+def _after_a_stop(
+    function: str,
+    at: sympy.Expr,
+    motion: Motion,
+    numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]],
+) -> sympy.Expr | None:
+    """x or v at a time past the stop of an a(v) motion, or None when it has not stopped.
+
+    Under an a(v) law v changes monotonically until it reaches a v_s where a(v_s) = 0; when
+    t(v_s) is finite (a = −k√v from v₀ = 9 m/s stops at t = 2 s) the particle stays at v_s,
+    x(t) = x(v_s) + v_s (t − t_s). The inverted v(t) = (3 − 1.5 t)² gives 2.25 m/s at 3 s,
+    a speed of no motion, and a numerical integration steps into √(v < 0); the step says
+    which stop was taken.
+
+    >>> from dynsolve.principles.rectilinear import integrate_motion
+    >>> k, v_0, t_3 = sympy.symbols("k v_0 t_3", positive=True)
+    >>> zero = sympy.Integer(0)
+    >>> motion = integrate_motion(-k * sympy.sqrt(V), "a(v)", zero, zero, v_0)
+    >>> values = {k: sympy.Integer(3), v_0: sympy.Integer(9), t_3: sympy.Integer(3)}
+    >>> numbers = (values, {"t": zero, "x": zero, "v": v_0}, [])
+    >>> _after_a_stop("v", t_3, motion, numbers), _after_a_stop("x", t_3, motion, numbers)
+    (0, 2*v_0**(3/2)/(3*k))
+    """
+    from dynsolve.numbers import real_value
+
+    values, initial, steps = numbers
+    formulas = motion.formulas
+    if motion.given != "a(v)" or function not in ("x", "v") or "t(v)" not in formulas:
+        return None
+    a = formulas["a(v)"].xreplace(dict(values))
+    t_law = formulas["t(v)"].xreplace(dict(values))
+    t_q, t_0 = real_value(at, values), real_value(initial["t"], values)
+    v_0 = real_value(initial["v"], values)
+    if None in (t_q, t_0, v_0) or t_q <= t_0 or (a.free_symbols | t_law.free_symbols) - {V}:
+        return None
+    a_0 = real_value(a.subs(V, v_0))
+    if not a_0 or t_law.has(sympy.Integral):
+        return None  # at rest (or a rate sympy did not integrate): no stop to place
+    try:
+        roots = sympy.solve(a, V)
+    except NotImplementedError:
+        return None
+    stops = []
+    for v_s in roots:
+        ahead = real_value(v_s)
+        t_s = real_value(t_law.subs(V, v_s)) if ahead is not None else None
+        reached = ahead is not None and (ahead - v_0) * a_0 > 0  # the way v changes
+        if reached and t_s is not None and math.isfinite(t_s) and t_0 < t_s <= t_q:
+            stops.append((t_s, v_s))
+    if not stops:
+        return None
+    t_s, v_s = min(stops, key=lambda stop: stop[0])
+    if function == "x" and "x(v)" not in formulas:
+        return None
+    value = (
+        v_s
+        if function == "v"
+        else formulas["x(v)"].subs(V, v_s) + v_s * (at - formulas["t(v)"].subs(V, v_s))
+    )
+    value = sympy.Integer(0) + value
+    how = (
+        f"v reaches {v_s} at t = {t_s:.6g} s, where a = 0: the particle stays at that speed, "
+        f"so {function}({at}) is the stop's (v(t) holds only until then)"
+    )
+    number = real_value(value, values)
+    shown = f"{number:.6g}" if number is not None else sympy.sstr(value)
+    result = Formula(f"{function}({at})", sympy.sstr(value), sympy.latex(value), shown, shown)
+    steps.append(Step(0, (), (f"{function}({at})",), "stop", (result,), (), how))
+    return value
 
 
 def _numerically(
