@@ -157,8 +157,8 @@ def test_t_of_v_from_rest_in_a_spec_in_both_modes():
     # a = 2 m/s³ · t from rest: v = 9 m/s at t = 3 s, x(t = 3 s) = 9 m (by hand)
     spec = (
         "given:\n  c = 2 m/s^3\n  v_0 = 0 m/s\n  x_0 = 0 m\n  v_9 = 9 m/s\n"
-        "kinematics:\n  a = c*t\nfind: t_v = t_at(v, v_9)\n"
-    )
+        "kinematics:\n  a = c*t\nfind: t_v = t_at(v, v_9), t_w = t(v_9), x_w = x(v_9)\n"
+    )  # t(v) and x(v) are derived when a find asks for them
     from dynsolve.pipeline import solve_text
     from dynsolve.system import SolveOptions
 

@@ -101,3 +101,14 @@ def test_a_never_reached_level_of_a_periodic_law_is_still_an_error() -> None:
     # |sin t| <= 1: x = 2 m is never reached
     with pytest.raises(SpecError, match="never"):
         solve_text(PERIODIC.format(find="t_f = t_at(x, h)").replace("t_2 = 10 s", "h = 2 m"))
+
+
+def test_distance_when_sympy_cannot_solve_v_equals_0() -> None:
+    # Beer & Johnston 11.x style: x = 6t² − 8 + 40 cos πt (in, s); v = 12 t − 40π sin πt = 0
+    # has no closed form: the stops 0.9705, 2.0631, 2.9104, 4.1290, 4.8468 s come from a
+    # scan. Hand: x(0) = 32, x(0.970459) = −42.1771, x(2.063124) = 57.29..., ...; the total
+    # over 0..6 s is 536.188 in (newcomer's Newton roots; also ∫|v| dt by quadrature).
+    solution = solve_file(ROOT / "problems" / "kinematics" / "poly_cos_distance.dyn")
+    assert solution.key and all(k.passed for k in solution.key), [k.detail for k in solution.key]
+    (s,) = [a for a in solution.answers if a.name == "s"]
+    assert float(s.value) == pytest.approx(536.188, rel=1e-5)  # in inches, as asked

@@ -16,7 +16,7 @@ from typer.testing import CliRunner
 from dynsolve.cli import app
 from dynsolve.errors import DimensionError, SpecError
 from dynsolve.modes.kinematics_mode import build_kinematics_problem
-from dynsolve.pipeline import solve_file
+from dynsolve.pipeline import solve_file, solve_text
 from dynsolve.principles.curvilinear import path_components
 from dynsolve.principles.rectilinear import T, crossing_times, extreme_time
 from dynsolve.spec.parser import parse_file
@@ -354,3 +354,44 @@ def test_a_force_needs_the_mass(tmp_path):
     path.write_text(text)
     with pytest.raises(SpecError, match="needs the particle's mass"):
         solve_file(path)
+
+
+def test_time_at_a_literal_zero_as_in_one_line_motion() -> None:
+    # a ball thrown from a 20 m cliff at 15 m/s, 40° up (newcomer round: t_at(y, 0) was
+    # refused); 0 = 20 + 9.641814 t − 4.905 t²: t = (9.641814 + √(9.641814² + 2·9.81·20))/9.81
+    text = """given:
+  v_0 = 15 m/s
+  theta_0 = 40 deg
+  y_0 = 20 m
+  g = 9.81 m/s^2
+kinematics:
+  v_x0 = v_0*cos(theta_0)
+  v_y0 = v_0*sin(theta_0)
+  a_x = 0
+  a_y = -g
+find: t_f = t_at(y, 0)
+"""
+    v_y0 = 15 * math.sin(math.radians(40))
+    expected = (v_y0 + math.sqrt(v_y0**2 + 2 * 9.81 * 20)) / 9.81
+    (t_f,) = [float(a.value) for a in solve_text(text).answers]
+    assert t_f == pytest.approx(expected, rel=1e-9)
+
+
+def test_no_highest_point_after_the_start_gets_a_hint_that_fits() -> None:
+    # a ball thrown 10° below the horizontal: dy/dt < 0 from the start, so max(y) has no
+    # stationary point; the hint said "give values to the givens", which all had values
+    text = """given:
+  v_0 = 15 m/s
+  theta_0 = -10 deg
+  y_0 = 20 m
+kinematics:
+  v_x0 = v_0*cos(theta_0)
+  v_y0 = v_0*sin(theta_0)
+  a_x = 0
+  a_y = -g
+find: h = max(y)
+"""
+    with pytest.raises(SpecError) as info:
+        solve_text(text)
+    assert "no largest value after" in info.value.message
+    assert "give values" not in info.value.hint and "y(t_0)" in info.value.hint

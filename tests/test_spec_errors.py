@@ -946,6 +946,24 @@ def test_a_unit_in_a_scene_line_is_told_to_become_a_given():
     assert "scene lines take no units" in info.value.hint and "given:" in info.value.hint
 
 
+def test_degrees_in_a_scene_line_are_told_to_become_radians_or_a_given():
+    # newcomer round: 'angle 180 deg + theta' got "for a product write '*' (e.g. '2*deg')",
+    # and '180*deg' then failed with "'deg' in the scene is not a given"
+    text = spec(
+        "given:",
+        "  d = 2 m",
+        "  theta = 30 deg",
+        "scene:",
+        "  body block: particle, mass 1, at (0, 0)",
+        "  travel block: by d, angle 180 deg + theta",
+        "find: v = speed(block)",
+    )
+    with pytest.raises(SpecError) as info:
+        parse_spec(text, "deg.dyn")
+    assert "2*deg" not in info.value.hint
+    assert "angle pi + theta" in info.value.hint and "given:" in info.value.hint
+
+
 @pytest.mark.parametrize("kind", ["omega", "alpha"])
 def test_a_rotation_without_its_sense_is_refused(kind):
     # newcomer report: 'omega AB: 3' was taken ccw without a word, so a cw drive came out

@@ -136,7 +136,7 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     rhs = to_sympy(statement.rhs, {**symbols, **variables}, values)
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
-    invert = not _values_at_times_only(spec, givens, kind)
+    invert = not _values_at_times_only(spec, givens, kind) and _inverses_asked(spec, givens, kind)
     quick = numbers_first  # numeric mode: relations inverted by peeling where that finds one branch
     if kind in ("a(v)", "a(x)") and invert:
         # an a(v) or a(x) law inverted with the numbers in can cost sympy seconds at
@@ -199,6 +199,27 @@ def _values_at_times_only(spec: Spec, givens: Sequence[GivenInfo], kind: str) ->
         and item.ref.args[0] in times
         for item in spec.finds
     )
+
+
+def _inverses_asked(spec: Spec, givens: Sequence[GivenInfo], kind: str) -> bool:
+    """Whether a law in t (x(t), v(t), a(t)) must be inverted for its finds: only a find of
+    a relation in x or v (``t(v_1)``, ``x(v)``) or a define needs t(v); events and values at
+    times read the laws in t (sympy may spend seconds failing to invert 12 t − 40π sin πt).
+    Laws in x or v are always inverted (their t-laws come from the inversion)."""
+    if kind not in ("x(t)", "v(t)", "a(t)") or spec.defines:
+        return True
+    times = {g.name for g in givens if g.dim == _DIMS["t"]} | {"t", "t_0"}
+    times |= {f.name for f in spec.finds if f.ref is not None and f.ref.function == "t_at"}
+    for item in spec.finds:
+        ref = item.ref
+        if ref is None:
+            return True
+        if ref.function in EVENTS:
+            continue
+        if ref.function in ("x", "v", "a") and len(ref.args) == 1 and ref.args[0] in times:
+            continue
+        return True
+    return False
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:

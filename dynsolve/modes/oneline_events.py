@@ -227,6 +227,40 @@ def _scan_roots(
     return None
 
 
+def _scanned_stops(
+    v: sympy.Expr, start: sympy.Expr, end: sympy.Expr, values: Values, samples: int = 4000
+) -> list[sympy.Expr] | None:
+    """Every sign change of ``v`` (in T) strictly between ``start`` and ``end``, by scanning
+    ``samples`` steps and bisecting each; None when symbols remain.
+
+    >>> [round(float(t), 9) for t in _scanned_stops(sympy.cos(T), sympy.Integer(0),
+    ...                                              sympy.Integer(5), {})]  # π/2, 3π/2
+    [1.570796327, 4.71238898]
+    """
+    numeric = v.xreplace(dict(values))
+    low_end, high_end = real_value(start, values), real_value(end, values)
+    if numeric.free_symbols - {T} or low_end is None or high_end is None:
+        return None
+    f = sympy.lambdify(T, numeric, "math")
+    step = (high_end - low_end) / samples
+    found: list[sympy.Expr] = []
+    previous_t, previous = low_end + step / 2, f(low_end + step / 2)
+    for i in range(1, samples):
+        here = low_end + step / 2 + i * step
+        value = f(here)
+        if previous * value <= 0 and previous != 0:
+            low, high = previous_t, here
+            for _ in range(80):
+                middle = (low + high) / 2
+                if f(low) * f(middle) <= 0:
+                    high = middle
+                else:
+                    low = middle
+            found.append(sympy.Float((low + high) / 2, 15))
+        previous_t, previous = here, value
+    return found
+
+
 def _after(time: sympy.Expr, t0: sympy.Expr, values: Values, quantity: str) -> sympy.Expr:
     """``time`` when it is a finite real time after t₀; a ValueError otherwise."""
     if time.has(sympy.oo, -sympy.oo, sympy.zoo, sympy.nan):
@@ -366,12 +400,19 @@ def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values
         raise ValueError(f"x(t) could not be found from {motion.given}: the distance needs it")
     if _sign(end - start, values) == -1:
         raise ValueError("the interval ends before it starts")
+    scanned = False
     try:
         stops = crossing_times(v_law, sympy.Integer(0), start, values, until=end)
     except ValueError as error:
-        if "at every time" not in str(error):
+        if "at every time" in str(error):
+            stops = Crossings((), ())  # at rest throughout
+        elif "sympy cannot solve" in str(error):
+            found = _scanned_stops(v_law, start, end, values)  # x = 6t² − 8 + 40 cos πt
+            if found is None:
+                raise
+            stops, scanned = Crossings(tuple(found), ()), True
+        else:
             raise
-        stops = Crossings((), ())  # at rest throughout
     inside = [t for t in stops.times if _sign(end - t, values) == 1]
     discarded = (
         *stops.discarded,
@@ -389,8 +430,9 @@ def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values
     total = tidy(total)
     _check_quadrature(total, v_law, start, end, inside, values)
     shown = ", ".join(_number(t, values) for t in inside) or "none inside"
+    how = " (sympy could not solve v = 0: found by scanning v(t) and bisection)" * scanned
     rule = (
-        f"s = Σ |x(tᵢ₊₁) − x(tᵢ)| over t₀ … t₂, split where v = 0 (t = {shown}); "
+        f"s = Σ |x(tᵢ₊₁) − x(tᵢ)| over t₀ … t₂, split where v = 0 (t = {shown}){how}; "
         "checked against ∫|v| dt by quadrature"
     )
     return Event(total, rule, discarded)

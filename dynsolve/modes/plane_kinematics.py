@@ -411,7 +411,10 @@ class _Builder:
             if len(args) != 2:
                 raise SpecError("t_at takes a quantity and a value", at, "e.g. t_f = t_at(y, h)")
             quantity = self._quantity(args[0], at)
-            level, dim = self._value(args[1], at)
+            if args[1] == "0":  # zero in any unit, as in one-line motion: t_at(y, 0)
+                level, dim = sympy.Integer(0), DIMS[quantity]
+            else:
+                level, dim = self._value(args[1], at)
             if dim != DIMS[quantity]:
                 raise SpecError(
                     f"'{args[1]}' is {dim.name}, but {pretty(quantity)} is {DIMS[quantity].name}",
@@ -557,9 +560,17 @@ class _Builder:
         try:
             return run()
         except ValueError as error:
-            raise SpecError(
-                str(error), at, hint="give values to the givens, or ask at a given time"
-            ) from error
+            message = str(error)
+            if "largest value after" in message or "smallest value after" in message:
+                hint = (  # a ball thrown downward: highest at the start, no dy/dt = 0
+                    "no stationary point after t₀ is that extreme; the value sought may be "
+                    "at the start (ask e.g. y(t_0)) or at a later find's time"
+                )
+            elif "give values" in message:
+                hint = "give values to the givens, or ask at a given time"
+            else:
+                hint = "ask at a given time, e.g. y(t_1)"
+            raise SpecError(message, at, hint=hint) from error
 
     def _defined(self, expr: sympy.Expr, quantity: str, argument: str, at: Position) -> None:
         value = expr.xreplace(self.values)

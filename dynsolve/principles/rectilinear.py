@@ -29,6 +29,7 @@ from dynsolve.numbers import probe_point, real_value, tidy
 T, X, V = sympy.symbols("t x v", real=True)
 KINDS = ("a(t)", "a(v)", "a(x)", "x(t)", "v(t)")
 INVERT_BUDGET = 3.0  # seconds for sympy to invert a relation before it is left uninverted
+CROSSING_BUDGET = 1.0  # CPU seconds for sympy to solve q(t) = q₁ before a numerical scan
 Values = Mapping[sympy.Symbol, sympy.Expr]
 
 
@@ -219,10 +220,10 @@ def crossing_times(
     values = dict(values or {})
     if tidy(q - level) == 0:
         raise ValueError(f"{q} equals {level} at every time")
-    try:
-        roots = [tidy(r) for r in sympy.solve(sympy.Eq(q, level), T, simplify=False)]
-    except NotImplementedError as error:
-        raise ValueError(f"sympy cannot solve {q} = {level} for t") from error
+    solved = _roots_in_t(q - level)
+    if solved is None:
+        raise ValueError(f"sympy cannot solve {q} = {level} for t")
+    roots = [tidy(r) for r in solved]
     period = _period(q - level, values)
     if period is not None:
         roots = _every_period(roots, period, t0, until, count, values)
@@ -238,6 +239,24 @@ def crossing_times(
             discarded.append((root, "not after t₀"))
     ordered = sorted(kept, key=cmp_to_key(lambda a, b: _sign(a - b, values) or 0))
     return Crossings(tuple(ordered), tuple(discarded))
+
+
+@cacheit
+def _roots_in_t(expr: sympy.Expr) -> tuple[sympy.Expr, ...] | None:
+    """sympy's roots of ``expr`` = 0 in t, or None when it cannot solve it within
+    :data:`CROSSING_BUDGET` CPU seconds (12 t = 40π sin πt: sympy spends 7 s to give up);
+    remembered per solve, since t_at, max and distance may ask the same.
+
+    >>> _roots_in_t(T**2 - 4)
+    (-2, 2)
+    """
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
+
+    try:
+        with time_budget(CROSSING_BUDGET):
+            return tuple(sympy.solve(expr, T, simplify=False))
+    except (NotImplementedError, BudgetExceeded):
+        return None
 
 
 MAX_CROSSINGS = 1000  # roots of a periodic law listed at most (one per period and family)

@@ -550,10 +550,17 @@ def _unit_hint(token: str, start: str) -> str:
     """The hint for a unit written in a scene line, which takes none, else ""."""
     if start != "scene_line" or token not in _UNIT_WORDS:
         return ""
-    return (
+    if token in ("deg", "degree", "degrees"):
+        return (
+            "scene lines take no units: an angle here is in radians (180° is pi: "
+            "'angle pi + theta'), or name it under 'given:' (e.g. 'phi = 30 deg') and write "
+            "its name here"
+        )
+    named = (
         "scene lines take no units: give the quantity a name under 'given:' (e.g. "
-        f"'v_0 = 20 m/s') and write its name here; for a product write '*' (e.g. '2*{token}')"
+        "'v_0 = 20 m/s') and write its name here"
     )
+    return named + ("; for a product with gravity write '*' (e.g. '2*g')" if token == "g" else "")
 
 
 def _acceptable(exc: lark.exceptions.UnexpectedInput) -> set[str]:
