@@ -114,3 +114,43 @@ def test_a_pulled_crate_that_holds_stays_at_rest() -> None:
     assert v_2 == 0
     assert solution.passed
     assert any(c.name == "assumption: no slip at G" and c.passed for c in solution.checks)
+
+
+# ---- an interval of constant forces whose sliding stops inside it (newcomer round 2)
+
+SLIDING_LEFT = """given:
+  m = 10 kg
+  mu_k = 0.2
+  v_1 = 3 m/s
+  dt = 2 s
+scene:
+  body block: particle, mass m, at (0, 0)
+  contact block at G: normal up, mu_k mu_k
+  velocity block: v_1, left
+  gravity
+  travel block: {travel}
+find: {find}
+"""
+
+
+@pytest.mark.parametrize("mode", ["exact", "numeric"])
+def test_a_block_that_stops_inside_the_interval_fails_its_check(mode: str) -> None:
+    # sliding left at 3 m/s, friction alone: a = μk g = 1.962 m/s², it stops at
+    # 3/1.962 = 1.529 s < 2 s and stays. Impulse and momentum with friction to the right for
+    # the whole 2 s gave v_2 = 2·1.962 − 3 = 0.924 m/s to the right, every check green.
+    text = SLIDING_LEFT.format(travel="for dt", find="v_2 = speed(block) [m/s]")
+    solution = solve_text(text, options=SolveOptions(mode=mode))
+    assert not solution.passed
+    (failed,) = [
+        c for c in solution.checks if "through the interval" in c.name and "assum" in c.name
+    ]
+    assert not failed.passed and "stops sliding before the interval ends" in failed.detail
+
+
+def test_the_time_it_takes_to_stop_is_found_with_stops() -> None:
+    # the same block, asked how long it slides: t_s = v_1/(μk g) = 3/1.962 s
+    text = SLIDING_LEFT.format(travel="for t_s, stops", find="t_s [s]").replace("  dt = 2 s\n", "")
+    solution = solve_text(text)
+    (t_s,) = [float(a.value) for a in solution.answers]
+    assert t_s == pytest.approx(3 / (0.2 * 9.81), rel=1e-9)
+    assert solution.passed

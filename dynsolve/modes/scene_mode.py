@@ -1352,6 +1352,7 @@ def assess(
         events = tuple(_event_checks(formulation, substitution))
         return _between_states(problem, substitution) + events + cords, slips
     checks += _event_checks(formulation, substitution)
+    checks += _slides_kept(formulation, substitution)
     sliding_until = {
         s.name
         for s in scene.supports
@@ -1519,6 +1520,21 @@ def _cord_checks(
         state = on if taut else off
         checks.append(Assumption(f"{what} {name} {state} at state {k}", holds, detail))
     return tuple(checks), switched
+
+
+def _slides_kept(
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> list[Assumption]:
+    """Each contact sliding at the start of an interval (impulse and momentum) slides to
+    its end: a block that stops before it (friction alone would bring it back) fails."""
+    from dynsolve.principles.stage_chain import slide_kept
+
+    checks = []
+    for name, (start, end) in formulation.interval_slips.items():
+        first, last = real_value(start, substitution), real_value(end, substitution)
+        if first is not None and last is not None:
+            checks.append(slide_kept(f"sliding at {name} through the interval", first, last, 1))
+    return checks
 
 
 def _event_checks(

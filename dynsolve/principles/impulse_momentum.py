@@ -217,6 +217,14 @@ def impulse_formulation(
                 f"the slip of {rolls.name} reaches zero after Δt = {{value:.4g}} s",
             ),
         )
+    slips = {}  # each contact sliding at the start: its slip at both ends of the interval
+    for support in scene.supports:
+        if support.name in motion.sliding and support.body in ends and rolls is None:
+            body, ((v_x, v_y), spin) = scene.bodies[support.body], ends[support.body]
+            r = (support.point[0] - body.G[0], support.point[1] - body.G[1])
+            v_P2 = (v_x - spin * r[1], v_y + spin * r[0])  # v_G2 + ω₂ k × r_P/G
+            end_slip = tidy(v_P2[0] * support.tangent[0] + v_P2[1] * support.tangent[1])
+            slips[support.name] = (motion.sliding[support.name], end_slip)
     return Formulation(
         equations=equations,
         unknowns=unknowns,
@@ -233,6 +241,7 @@ def impulse_formulation(
         after={name: v_G for name, (v_G, _) in ends.items()},
         interval_energy=(tidy(T_1), works, tidy(T_2)),
         sliding=motion.sliding,  # contacts slipping at the start: kinetic friction, said so
+        interval_slips=slips,
     )
 
 

@@ -115,6 +115,8 @@ class Formulation:
     notes: tuple[tuple[str, str], ...] = ()  # (name, derivation) shown with the checks
     # contacts whose point slips at the instant (given velocities): v_P·t, kinetic friction
     sliding: Mapping[str, sympy.Expr] = field(default_factory=dict)
+    # over an interval: a sliding contact's slip v_P·t at its start and its end
+    interval_slips: Mapping[str, tuple[sympy.Expr, sympy.Expr]] = field(default_factory=dict)
     # an unknown's value found by a second method: (unknown, value, how, what it measures)
     second: tuple[tuple[sympy.Symbol, float, str, str], ...] = ()
     states: tuple[State, ...] = ()  # the motion at each numbered state of a chain of stages

@@ -1205,22 +1205,35 @@ def _interval_checks(
             )
             checks.append(Assumption(name, False, detail))
             continue
-        scale = max(abs(start), abs(end)) or 1.0
-        keeps = end * (1 if start > 0 else -1) >= -1e-9 * scale  # relative: a speed vs speeds
-        detail = (
-            f"slip {start:.4g} m/s at state {k}, {0.0 if abs(end) <= 1e-9 * scale else end:.4g} "
-            f"m/s at state {k + 1}: kinetic friction opposes it throughout"
-        )
-        if not keeps:
-            detail = (
-                f"slip {start:.4g} m/s at state {k} but {end:.4g} m/s at state {k + 1}: it stops "
-                "sliding before the interval ends (state the end with ', until rolls' or "
-                "', stops')"
-            )
-        checks.append(Assumption(name, keeps, detail))
+        checks.append(slide_kept(name, start, end, k))
     return checks + _event_checks(
         record, values, ": it would have to happen before the start, so it never happens"
     )
+
+
+def slide_kept(name: str, start: float, end: float, k: int) -> Assumption:
+    """A contact's slip keeps its sign from state k to k + 1 (0 at the end allowed): kinetic
+    friction opposes it throughout an interval of constant forces, else the body stopped
+    sliding inside it and the interval's equation no longer holds.
+
+    >>> slide_kept("sliding at C", -3.0, 0.92, 1).holds  # a block stopped and came back
+    False
+    >>> slide_kept("sliding at C", 3.0, 0.0, 1).holds  # it stops just at the end
+    True
+    """
+    scale = max(abs(start), abs(end)) or 1.0
+    keeps = end * (1 if start > 0 else -1) >= -1e-9 * scale  # relative: a speed vs speeds
+    detail = (
+        f"slip {start:.4g} m/s at state {k}, {0.0 if abs(end) <= 1e-9 * scale else end:.4g} "
+        f"m/s at state {k + 1}: kinetic friction opposes it throughout"
+    )
+    if not keeps:
+        detail = (
+            f"slip {start:.4g} m/s at state {k} but {end:.4g} m/s at state {k + 1}: it stops "
+            "sliding before the interval ends, and friction does not push it back (state the "
+            "end with ', until rolls' or ', stops')"
+        )
+    return Assumption(name, keeps, detail)
 
 
 def _event_checks(
