@@ -12,18 +12,18 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import replace
 from functools import cached_property
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import sympy
 
 from dynsolve.answer_key import compare, compare_magnitude, sense_word
 from dynsolve.budget import step
 from dynsolve.dimensions import DimensionReport
-from dynsolve.errors import DynsolveError
+from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
@@ -194,7 +194,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
 
     problem = build_scene_problem(spec)
     outcome = solve_system(problem.system, options)
-    assumptions, slips = assess(problem, outcome.values)
+    assumptions, slips = _assessed(assess, problem, outcome.values)
     trial: Mapping[sympy.Symbol, sympy.Expr] = {}
     trial_targets = problem.targets  # trial(X) reads X as the first trial defined it
     failed: tuple[Assumption, ...] = ()
@@ -220,7 +220,7 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
             ),
         )
         outcome = solve_system(problem.system, options)
-        assumptions, slips = assess(problem, outcome.values)
+        assumptions, slips = _assessed(assess, problem, outcome.values)
     assumptions = failed + assumptions
     solution = solve_problem(
         problem,
@@ -410,6 +410,23 @@ def _undefined_equations(system: EquationSystem) -> tuple[Check, ...]:
         for e in system.equations
         if any(e.lhs.has(u) or e.rhs.has(u) for u in undefined)
     )
+
+
+def _assessed(
+    assess: Callable[..., Any], problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> Any:
+    """Scene mode's assumption checks; velocities given that contradict the scene (found
+    when state 1 is written for them) are a spec error at the first velocity line."""
+    from dynsolve.principles.newton_euler import VelocityConflict
+
+    try:
+        return assess(problem, values)
+    except VelocityConflict as conflict:
+        spec = problem.spec
+        line = next((s.line for s in spec.scene if s.kind in ("velocity", "omega")), 1)
+        raise SpecError(
+            str(conflict), Position(spec.file, line, 1), hint="check the velocity and omega lines"
+        ) from None
 
 
 def solve_problem(

@@ -152,7 +152,7 @@ def state_one(
     the givens' values put in (nothing of them is shown). None where the instant has no
     unique solution.
     """
-    from dynsolve.principles.newton_euler import formulate
+    from dynsolve.principles.newton_euler import VelocityConflict, formulate
     from dynsolve.simulate.equations import numeric_scene
 
     values = {**scene.values, **values}
@@ -163,6 +163,8 @@ def state_one(
     numbers = {name: (sympy.Integer(0) + v).xreplace(values) for name, v in symbols.items()}
     try:
         formulation = formulate(numeric_scene(scene, values), numbers, slipping, inclines=False)
+    except VelocityConflict:
+        raise  # the givens contradict the scene: an error, not an instant to skip
     except ValueError:  # the instant cannot be written (a cord across the motion …)
         return None
     residuals = [sympy.N((e.lhs - e.rhs).xreplace(dict(values))) for e in formulation.equations]

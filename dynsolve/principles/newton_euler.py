@@ -19,12 +19,18 @@ from typing import Any
 
 import sympy
 
-from dynsolve.model.scene import Body, CordState, Scene, Support, Vec
+from dynsolve.model.scene import Body, Cord, CordState, Scene, Support, Vec
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.names import pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim
+
+
+class VelocityConflict(ValueError):
+    """The velocities a spec gives contradict a constraint of the scene (a cord's ends
+    moving differently along it): refused wherever the instant is written, never skipped."""
+
 
 FORCE, ACCELERATION, LENGTH = Dim.of("force"), Dim.of("acceleration"), Dim.of("length")
 ANGULAR_ACCELERATION, MOMENT = Dim.of("angular_acceleration"), Dim.of("moment")
@@ -692,6 +698,7 @@ class _Writer:
                     )
                 )
                 a_2 = self.point_acceleration(cord.other, cord.other_point)
+                self._cord_velocity(cord)
                 self.constraint(
                     dot(a_1, cord.direction),
                     dot(a_2, cord.direction),
@@ -712,6 +719,39 @@ class _Writer:
                     sympy.Integer(0),
                     f"cord {cord.name} fixed: its end on {cord.body} does not move along it",
                 )
+
+    def _given_motion(self, body: str) -> bool:
+        """Whether the velocity of every point of ``body`` is stated by the spec: a particle's
+        ``velocity`` line, or an ``omega`` line of a body pinned at a fixed point."""
+        if self.scene.bodies[body].particle:
+            return body in self.scene.velocities
+        pinned = any(s.body == body and s.kind == "pin" for s in self.scene.supports)
+        return body in self.scene.omegas and pinned and body not in self.scene.velocities
+
+    def _cord_velocity(self, cord: Cord) -> None:
+        """A cord's two ends, where the spec states both motions, move equally along it:
+        refuse velocities that stretch or slacken it (B said to move down while the cord
+        over a turning pulley lifts it), which the answers would otherwise ignore."""
+        assert cord.other_point is not None
+        if not (self._given_motion(cord.body) and self._given_motion(cord.other)):
+            return
+        v_1 = self.point_velocity(cord.body, cord.point)
+        v_2 = self.point_velocity(cord.other, cord.other_point)
+        gap = tidy(dot(v_1, cord.direction) - dot(v_2, cord.direction))
+        value = real_value(gap, self.scene.values)
+        ends = [real_value(dot(v, cord.direction), self.scene.values) for v in (v_1, v_2)]
+        scale = max((abs(e) for e in ends if e is not None), default=0.0)
+        if (value is not None and abs(value) > 1e-9 * scale) or (value is None and gap != 0):
+            shown = ", ".join(
+                f"{name} {e:.4g}"
+                for name, e in zip((cord.body, cord.other), ends, strict=True)
+                if e is not None
+            )
+            raise VelocityConflict(
+                f"the velocities given stretch or slacken the cord {cord.name}: its ends move "
+                f"along it at different speeds ({shown} m/s); an inextensible cord's ends move "
+                "equally along it, so check the directions of the velocity and omega lines"
+            )
 
     def _ends(self, body: str, point: Vec, other: str, other_point: Vec) -> tuple[Vec, sympy.Expr]:
         """The unit vector from ``point`` toward the other end, and the length between them."""
