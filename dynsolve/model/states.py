@@ -777,6 +777,9 @@ def _rates(
         v = (vector[x.vx[b]], vector[x.vy[b]])
         speed = tidy(sympy.sqrt(v[0] ** 2 + v[1] ** 2), light=False)
         along = v[0] * placement.shift[0] + v[1] * placement.shift[1]
+        extent = travel.distance
+        if isinstance(extent, sympy.Symbol) and extent not in given_values:
+            along = along.xreplace({extent: 1})  # shift = d·direction, d unknown and > 0
         scale = sign_of(along, given_values) / speed
         rate_name = f"speed of G of {b}"
     # tidied in numeric mode too: the kinetic energies and speeds are composed of these
