@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from dynsolve.errors import DimensionError, SpecError
-from dynsolve.pipeline import solve_file
+from dynsolve.pipeline import solve_file, solve_text
 from dynsolve.spec.parser import parse_spec
 
 G = 9.81
@@ -410,3 +410,30 @@ def test_energy_bookkeeping_across_chained_stages(tmp_path_factory, e, h):
     assert got["T_3"] + got["U_3"] == pytest.approx(got["T_4"], abs=1e-9)
     assert got["T_3"] == pytest.approx((e / 10) ** 2 * got["T_2"], rel=1e-9, abs=1e-12)
     assert got["T_2"] == pytest.approx(0.5 * G * h, rel=1e-9)  # m g h, m = 0.5 kg
+
+
+def test_a_line_of_impact_written_backwards_is_named_as_such() -> None:
+    # newcomer round 5: A (x = 0) moves right at 4 m/s toward B (x = 1 m) moving left at
+    # 2 m/s, with the line written 'left' (from B toward A): the check said "A does not
+    # strike B", which is false; it now says the line must point from A toward B.
+    text = """given:
+  m_A = 2 kg
+  m_B = 3 kg
+  v_A1 = 4 m/s
+  v_B1 = 2 m/s
+  e = 0.6
+  D = 1 m
+scene:
+  body A: particle, mass m_A, at (0, 0)
+  body B: particle, mass m_B, at (D, 0)
+  velocity A: v_A1, right
+  velocity B: v_B1, left
+  impact A with B: e e, line left
+find: v_A = v_after(A)
+"""
+    solution = solve_text(text)
+    (approach,) = [c for c in solution.checks if c.name == "assumption: approach in stage 1"]
+    assert not approach.passed
+    assert (
+        "must point from A toward B" in approach.detail and "does not strike" not in approach.detail
+    )

@@ -1089,8 +1089,7 @@ def chain_assumptions(
                         + (
                             " > 0"
                             if closing > 0
-                            else f": {event.body} does not strike {event.other} (the line "
-                            f"points from {event.body} toward {event.other})"
+                            else _no_approach(scene, event, values, first=k == 1)
                         ),
                     )
                 )
@@ -1208,6 +1207,27 @@ def _interval_checks(
         checks.append(slide_kept(name, start, end, k))
     return checks + _event_checks(
         record, values, ": it would have to happen before the start, so it never happens"
+    )
+
+
+def _no_approach(
+    scene: Scene, event: Impact, values: Mapping[sympy.Symbol, sympy.Expr], first: bool
+) -> str:
+    """Why two bodies do not close along the line of impact: the line written from B toward
+    A (where the scene's positions tell, at the first stage), or their motions."""
+    if first and event.other in scene.bodies:
+        G_A, G_B = scene.bodies[event.body].G, scene.bodies[event.other].G
+        toward = real_value(
+            (G_B[0] - G_A[0]) * event.line[0] + (G_B[1] - G_A[1]) * event.line[1], values
+        )
+        if toward is not None and toward < 0:
+            return (
+                f": the line of impact is written from {event.other} toward {event.body}; "
+                f"it must point from {event.body} toward {event.other} (reverse its direction)"
+            )
+    return (
+        f": {event.body} does not strike {event.other} (the line points from {event.body} "
+        f"toward {event.other})"
     )
 
 
