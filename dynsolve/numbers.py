@@ -221,6 +221,11 @@ def _numerically_zero(expr: sympy.Expr) -> bool:
         point = probe_point(expr, salt)
         if point is None:
             return False
+        quick = _quick_zero(expr, point)
+        if quick is not None:
+            if not quick:
+                return False
+            continue
         try:  # the sum to 30 digits (evalf works through its cancellation), terms' sizes
             total = complex(sympy.N(expr.xreplace(point), ZERO_DIGITS, maxn=MAX_DIGITS))
             size = sum(abs(complex(sympy.N(t.xreplace(point), 15))) for t in terms)
@@ -229,6 +234,35 @@ def _numerically_zero(expr: sympy.Expr) -> bool:
         if not abs(total) <= ZERO_TOLERANCE * size:  # (a nan is not 0)
             return False
     return True
+
+
+def _quick_zero(expr: sympy.Expr, point: Mapping[sympy.Symbol, sympy.Rational]) -> bool | None:
+    """Whether ``expr`` is 0 at ``point`` by a walk over its nodes in mpmath at
+    ZERO_DIGITS + 15 digits, against the size of its sums taken as sums of magnitudes (an
+    evalf of a long trigonometric form costs ten times as much); None when a node is not
+    one the walk knows (the caller uses evalf).
+
+    >>> a, b = sympy.symbols("a b", positive=True)
+    >>> _quick_zero(sympy.sin(a)**2 + sympy.cos(a)**2 - 1, {a: sympy.Rational(3, 2)})
+    True
+    >>> _quick_zero(a - b, {a: sympy.Integer(2), b: sympy.Integer(3)})
+    False
+    """
+    import mpmath
+
+    from dynsolve.solver.evaluate import NotQuick, mp_size, mp_value
+
+    with mpmath.workdps(ZERO_DIGITS + 15):
+        try:
+            at = {s: mpmath.mpf(int(v.p)) / int(v.q) for s, v in point.items()}
+            seen: dict[sympy.Basic, object] = {}
+            total = mp_value(expr, at, seen)  # type: ignore[arg-type]
+            size = mp_size(expr, at, seen)  # type: ignore[arg-type]
+        except (NotQuick, ZeroDivisionError, ValueError, TypeError, ArithmeticError):
+            return None
+        if not (mpmath.isfinite(total) and mpmath.isfinite(size)):
+            return None
+        return bool(abs(total) <= ZERO_TOLERANCE * size)
 
 
 @cacheit  # the same candidate forms come back (an expression and its factor_terms)

@@ -265,8 +265,13 @@ MAX_CROSSINGS = 1000  # roots of a periodic law listed at most (one per period a
 def _period(expr: sympy.Expr, values: Values) -> sympy.Expr | None:
     """The period in t of ``expr`` (positive where the givens' values tell), or None when it
     is not periodic or sympy cannot tell."""
-    if not expr.has(T):
-        return None
+    trig = expr.atoms(sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
+    if not any(f.has(T) for f in trig):
+        return None  # periodicity's search costs 0.1 s on a projectile's polynomial
+    period = _harmonic_period(expr, trig)
+    if period is not None:
+        number = real_value(sympy.Integer(0) + period, values)
+        return tidy(-period if number is not None and number < 0 else period)
     try:
         period = sympy.periodicity(expr, T)
     except (NotImplementedError, ValueError, TypeError):
@@ -275,6 +280,34 @@ def _period(expr: sympy.Expr, values: Values) -> sympy.Expr | None:
         return None
     number = real_value(sympy.Integer(0) + period, values)
     return tidy(-period if number is not None and number < 0 else period)
+
+
+def _harmonic_period(expr: sympy.Expr, trig: set[sympy.Expr]) -> sympy.Expr | None:
+    """2π/ω when ``expr`` is c₀ + Σ cᵢ sin or cos(ω t + φᵢ), one ω, the c's free of t (a
+    harmonic motion: R sin(ω t + φ) + c₀ has that fundamental period); None otherwise,
+    for ``sympy.periodicity`` (which takes a second on a spring's solved law).
+
+    >>> w, A = sympy.symbols("w A", positive=True)
+    >>> _harmonic_period(A * sympy.sin(w * T + 1) - 3, {sympy.sin(w * T + 1)})
+    2*pi/w
+    >>> _harmonic_period(sympy.sin(T) ** 2, {sympy.sin(T)}) is None
+    True
+    """
+    if not trig or any(type(f) not in (sympy.sin, sympy.cos) for f in trig):
+        return None
+    rates = {tidy(sympy.diff(f.args[0], T)) for f in trig}
+    if len(rates) != 1:
+        return None
+    (rate,) = rates
+    if rate == 0 or rate.has(T):
+        return None
+    slots = {f: sympy.Dummy() for f in trig}
+    linear = expr.xreplace(slots)
+    if linear.has(T) or not all(
+        sympy.diff(linear, u).free_symbols.isdisjoint(slots.values()) for u in slots.values()
+    ):
+        return None
+    return 2 * sympy.pi / rate
 
 
 def _every_period(
