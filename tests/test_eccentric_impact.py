@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from dynsolve.errors import SpecError
-from dynsolve.pipeline import solve_file
+from dynsolve.pipeline import solve_file, solve_text
 
 CUBE = """\
 given:
@@ -129,3 +129,27 @@ def test_a_free_rod_striking_a_point_keeps_its_angular_momentum_about_it(
     assert I_G * signed_w - d * m * signed_v == pytest.approx(m * d * v_1, rel=1e-9)
     # kinetic energy never grows
     assert m * signed_v**2 + I_G * signed_w**2 <= m * v_1**2 * (1 + 1e-12)
+
+
+def test_the_velocity_of_G_after_a_plastic_eccentric_impact() -> None:
+    # newcomer round 6: v_after(rod) after 'impact rod at P: e 0' was refused with "rod takes
+    # part in no impact". Hand: a 3 kg, 1.2 m rod falling flat at 4 m/s strikes a ledge
+    # d = 0.3 m left of G: H_P = m v d = 3·4·0.3 = 3.6 = I_P ω, I_P = m L²/12 + m d² = 0.36
+    # + 0.27 = 0.63 kg·m², ω₂ = 5.7143 rad/s cw; v_G2 = ω₂ d = 1.7143 m/s down.
+    text = """given:
+  m = 3 kg
+  L = 1.2 m
+  d = 0.3 m
+  v_1 = 4 m/s
+scene:
+  point P: (-d, 0)
+  body rod: mass m, rod L, at (0, 0)
+  velocity rod: v_1, down
+  impact rod at P: e 0
+find: w_2 = omega_after(rod), v_2 = v_after(rod) [m/s]
+"""
+    solution = solve_text(text)
+    values = {a.name: a for a in solution.answers}
+    assert float(values["w_2"].value) == pytest.approx(3.6 / 0.63, rel=1e-9)
+    assert float(values["v_2"].value) == pytest.approx(3.6 / 0.63 * 0.3, rel=1e-9)
+    assert values["v_2"].direction == "down" and values["w_2"].direction == "cw"

@@ -139,6 +139,7 @@ def pivot_formulation(
     equations: list[Equation] = []
     unknowns: dict[sympy.Symbol, Dim] = {}
     after_omega: dict[str, sympy.Expr] = {}
+    after: dict[str, Vec] = {}
     for number, pivot in enumerate(scene.pivots, start=1):
         body = scene.bodies[pivot.body]
         r = (body.G[0] - pivot.point[0], body.G[1] - pivot.point[1])
@@ -162,8 +163,14 @@ def pivot_formulation(
         )
         unknowns[omega] = Dim(0, 0, -1)
         after_omega[pivot.body] = sense * omega
+        # G turns about P afterwards: v_G2 = ω₁ k × r_G/P
+        after[pivot.body] = (-sense * omega * r[1], sense * omega * r[0])
     return bare_formulation(
-        scene.bodies, equations=tuple(equations), unknowns=unknowns, after_omega=after_omega
+        scene.bodies,
+        equations=tuple(equations),
+        unknowns=unknowns,
+        after_omega=after_omega,
+        after=after,
     )
 
 
