@@ -984,3 +984,33 @@ def test_a_rotation_without_its_sense_is_refused(kind):
     assert (info.value.position.line, info.value.position.column) == (7, len(kind) + 4)
     assert "cw" in info.value.hint
     parse_spec(text.replace(f"{kind} rod: w", f"{kind} rod: 0"), "zero.dyn")  # no sense needed
+
+
+def test_a_bare_number_for_a_position_is_told_to_become_a_given():
+    # newcomer round 6: 'joint C: near (3.4, 1.9)' got "check the units of the givens it
+    # uses", but it uses no givens
+    from dynsolve.pipeline import solve_text
+
+    text = spec(
+        "units: FPS",
+        "given:",
+        "  d = 4 ft",
+        "  L_AB = 1 ft",
+        "  L_BC = 4 ft",
+        "  L_CD = 2 ft",
+        "  theta = 120 deg",
+        "  w_0 = 5 rad/s",
+        "scene:",
+        "  point A: (0, 0)",
+        "  point D: (d, 0)",
+        "  bar AB: A to B, length L_AB, angle theta",
+        "  bar BC: B to C, length L_BC",
+        "  bar CD: C to D, length L_CD",
+        "  joint C: near (3.4, 1.9)",
+        "  omega AB: w_0 cw",
+        "find: w_BC = omega(BC)",
+    )
+    with pytest.raises(DynsolveError) as info:
+        solve_text(text, "near.dyn")
+    assert "givens it uses" not in info.value.hint
+    assert "bare number has no unit" in info.value.hint

@@ -412,10 +412,17 @@ class _Builder:
         text = expr_text(expr, str)
         found = self.dimension(expr, text)
         if found != dim:
+            names = [n.text for n in iter_names(expr) if n.text != "pi"]
+            hint = (
+                "check the units of the givens it uses"
+                if names
+                else "a bare number has no unit: give it a name under 'given:' (e.g. "
+                f"'x_C = {expr} m', or ft) and write the name here"
+            )
             raise DimensionError(
                 f"{what} must be {_article(dim.name)}, but '{expr}' is {_article(found.name)}",
                 self.where(expr.line, expr.column),
-                hint="check the units of the givens it uses",
+                hint=hint,
             )
         if text not in self.converted:  # a chain of bodies writes 'm' and 'w/2' on every line
             self.converted[text] = to_sympy(expr, self.symbols, self.given_values)
