@@ -20,7 +20,7 @@ and the roots set aside.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import sympy
@@ -215,14 +215,7 @@ def _scan_roots(
                 changes.append((previous_t, here))
             previous_t, previous = here, value
         if len(changes) >= n:
-            low, high = changes[n - 1]
-            for _ in range(80):
-                middle = (low + high) / 2
-                if f(low) * f(middle) <= 0:
-                    high = middle
-                else:
-                    low = middle
-            return sympy.Float((low + high) / 2, 15), horizon
+            return _bisected(f, *changes[n - 1]), horizon
         horizon *= 2
     return None
 
@@ -249,16 +242,24 @@ def _scanned_stops(
         here = low_end + step / 2 + i * step
         value = f(here)
         if previous * value <= 0 and previous != 0:
-            low, high = previous_t, here
-            for _ in range(80):
-                middle = (low + high) / 2
-                if f(low) * f(middle) <= 0:
-                    high = middle
-                else:
-                    low = middle
-            found.append(sympy.Float((low + high) / 2, 15))
+            found.append(_bisected(f, previous_t, here))
         previous_t, previous = here, value
     return found
+
+
+def _bisected(f: Callable[[float], float], low: float, high: float) -> sympy.Float:
+    """The sign change of ``f`` between ``low`` and ``high``, by 80 bisections.
+
+    >>> round(float(_bisected(lambda t: t * t - 2, 1.0, 2.0)), 12)
+    1.414213562373
+    """
+    for _ in range(80):
+        middle = (low + high) / 2
+        if f(low) * f(middle) <= 0:
+            high = middle
+        else:
+            low = middle
+    return sympy.Float((low + high) / 2, 15)
 
 
 def _after(time: sympy.Expr, t0: sympy.Expr, values: Values, quantity: str) -> sympy.Expr:
