@@ -136,7 +136,7 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     rhs = to_sympy(statement.rhs, {**symbols, **variables}, values)
     if mass is not None:  # F = m a with a force law: a = F/m
         rhs = rhs / mass
-    invert = not _values_at_times_only(spec, givens, kind) and _inverses_asked(spec, givens, kind)
+    invert = _inverts(spec, givens, kind)
     quick = numbers_first  # numeric mode: relations inverted by peeling where that finds one branch
     if kind in ("a(v)", "a(x)") and invert:
         # an a(v) or a(x) law inverted with the numbers in can cost sympy seconds at
@@ -184,42 +184,43 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
     )
 
 
-def _values_at_times_only(spec: Spec, givens: Sequence[GivenInfo], kind: str) -> bool:
-    """True when an acceleration law's finds are all x or v at given times, every given has
-    a value and nothing else is asked: numbers, for which integrating the motion numerically
-    is the direct path, so no relation need be inverted (sympy may spend seconds trying).
+def _inverts(spec: Spec, givens: Sequence[GivenInfo], kind: str) -> bool:
+    """Whether the law's relations are inverted for the finds (sympy may spend seconds
+    trying, and failing, on 12 t − 40π sin πt). Not when nothing asked needs it:
+
+    - an acceleration law whose finds are all x or v at given times, every given with a
+      value: numbers, which integrating the motion numerically gives directly;
+    - a law in t (x(t), v(t), a(t)) whose finds are events or values at times: they read
+      the laws in t (a relation in x or v, ``t(v_1)``, ``x(v)``, or a define needs t(v)).
+
+    Laws in x or v are otherwise inverted: their laws in t come from the inversion.
     """
-    if not kind.startswith("a(") or spec.defines or any(g.value is None for g in givens):
-        return False
-    times = {g.name for g in givens if g.dim == _DIMS["t"]}
-    return all(
-        item.ref is not None
-        and item.ref.function in ("x", "v")
-        and len(item.ref.args) == 1
-        and item.ref.args[0] in times
-        for item in spec.finds
-    )
-
-
-def _inverses_asked(spec: Spec, givens: Sequence[GivenInfo], kind: str) -> bool:
-    """Whether a law in t (x(t), v(t), a(t)) must be inverted for its finds: only a find of
-    a relation in x or v (``t(v_1)``, ``x(v)``) or a define needs t(v); events and values at
-    times read the laws in t (sympy may spend seconds failing to invert 12 t − 40π sin πt).
-    Laws in x or v are always inverted (their t-laws come from the inversion)."""
-    if kind not in ("x(t)", "v(t)", "a(t)") or spec.defines:
+    if spec.defines:
         return True
-    times = {g.name for g in givens if g.dim == _DIMS["t"]} | {"t", "t_0"}
-    times |= {f.name for f in spec.finds if f.ref is not None and f.ref.function == "t_at"}
-    for item in spec.finds:
+    given_times = {g.name for g in givens if g.dim == _DIMS["t"]}
+
+    def at_a_time(item: FindItem, quantities: tuple[str, ...], times: set[str]) -> bool:
         ref = item.ref
-        if ref is None:
-            return True
-        if ref.function in EVENTS:
-            continue
-        if ref.function in ("x", "v", "a") and len(ref.args) == 1 and ref.args[0] in times:
-            continue
-        return True
-    return False
+        return (
+            ref is not None
+            and ref.function in quantities
+            and len(ref.args) == 1
+            and ref.args[0] in times
+        )
+
+    numbers = all(g.value is not None for g in givens)
+    at_given_times = all(at_a_time(item, ("x", "v"), given_times) for item in spec.finds)
+    if kind.startswith("a(") and numbers and at_given_times:
+        return False
+    if kind in ("x(t)", "v(t)", "a(t)"):
+        times = given_times | {"t", "t_0"}
+        times |= {f.name for f in spec.finds if f.ref is not None and f.ref.function == "t_at"}
+        return not all(
+            (item.ref is not None and item.ref.function in EVENTS)
+            or at_a_time(item, ("x", "v", "a"), times)
+            for item in spec.finds
+        )
+    return True
 
 
 def _tidy(expr: sympy.Expr) -> sympy.Expr:
@@ -430,24 +431,22 @@ def _target(
         hint = f"the time at which v = {argument} is t_at(v, {argument})"
         raise SpecError(f"t(v) could not be found from {motion.given}", where, hint=hint)
     numeric = None
-    if numbers is not None and argument not in VARIABLES and variable == "t":
-        numeric = _after_a_stop(ref.function, symbols[argument], motion, numbers)
-    if (
-        numeric is None
-        and name not in motion.formulas
-        and numbers is not None
-        and (argument not in VARIABLES)
-    ):
-        try:
-            numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
-        except MotionBlowsUp as blow_up:
-            end = real_value(symbols[argument], numbers[0])
-            raise SpecError(
-                f"{ref.function}(t) is not finite at t = {blow_up.time:.6g} s, before "
-                f"{argument} = {end:.6g} s: the motion blows up there (found by integrating it)",
-                where,
-                hint="ask for a time before it, or check the law's sign and the initial conditions",
-            ) from None
+    if numbers is not None and argument not in VARIABLES:
+        if variable == "t":  # at a time past an a(v) motion's stop: the stop's values
+            numeric = _after_a_stop(ref.function, symbols[argument], motion, numbers)
+        if numeric is None and name not in motion.formulas:
+            try:
+                numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
+            except MotionBlowsUp as blow_up:
+                end = real_value(symbols[argument], numbers[0])
+                raise SpecError(
+                    f"{ref.function}(t) is not finite at t = {blow_up.time:.6g} s, before "
+                    f"{argument} = {end:.6g} s: the motion blows up there (found by "
+                    "integrating it)",
+                    where,
+                    hint="ask for a time before it, or check the law's sign and the initial "
+                    "conditions",
+                ) from None
     if numeric is not None:
         motion = replace(motion, formulas={**motion.formulas, name: numeric})
         argument = variable  # already evaluated at the given
@@ -745,8 +744,6 @@ def _after_a_stop(
     >>> _after_a_stop("v", t_3, motion, numbers), _after_a_stop("x", t_3, motion, numbers)
     (0, 2*v_0**(3/2)/(3*k))
     """
-    from dynsolve.numbers import real_value
-
     values, initial, steps = numbers
     formulas = motion.formulas
     if motion.given != "a(v)" or function not in ("x", "v") or "t(v)" not in formulas:

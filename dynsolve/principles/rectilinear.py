@@ -267,26 +267,26 @@ def _period(expr: sympy.Expr, values: Values) -> sympy.Expr | None:
     """The period in t of ``expr`` (positive where the givens' values tell), or None when it
     is not periodic or sympy cannot tell."""
     trig = expr.atoms(sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
-    if not any(f.has(T) for f in trig):
+    trig = {f for f in trig if f.has(T)}
+    if not trig:
         return None  # periodicity's search costs 0.1 s on a projectile's polynomial
     period = _harmonic_period(expr, trig)
-    if period is not None:
-        number = real_value(sympy.Integer(0) + period, values)
-        return tidy(-period if number is not None and number < 0 else period)
-    try:
-        period = sympy.periodicity(expr, T)
-    except (NotImplementedError, ValueError, TypeError):
-        return None
-    if period is None or period.has(T) or period == 0:
-        return None
+    if period is None:
+        try:
+            period = sympy.periodicity(expr, T)
+        except (NotImplementedError, ValueError, TypeError):
+            return None
+        if period is None or period.has(T) or period == 0:
+            return None
     number = real_value(sympy.Integer(0) + period, values)
     return tidy(-period if number is not None and number < 0 else period)
 
 
 def _harmonic_period(expr: sympy.Expr, trig: set[sympy.Expr]) -> sympy.Expr | None:
     """2π/ω when ``expr`` is c₀ + Σ cᵢ sin or cos(ω t + φᵢ), one ω, the c's free of t (a
-    harmonic motion: R sin(ω t + φ) + c₀ has that fundamental period); None otherwise,
-    for ``sympy.periodicity`` (which takes a second on a spring's solved law).
+    harmonic motion: R sin(ω t + φ) + c₀ has that fundamental period); ``trig`` holds its
+    trigonometric functions of t. None otherwise, for ``sympy.periodicity`` (which takes a
+    second on a spring's solved law).
 
     >>> w, A = sympy.symbols("w A", positive=True)
     >>> _harmonic_period(A * sympy.sin(w * T + 1) - 3, {sympy.sin(w * T + 1)})
@@ -354,7 +354,7 @@ def _every_period(
             for k in range(first, last + 1)
             if k != 0 and start - slack <= at + k * step <= end + slack
         ]
-    return list(dict.fromkeys(repeated))
+    return repeated  # the caller tidies and drops repeats
 
 
 def extreme_time(
