@@ -253,11 +253,27 @@ def _roots_in_t(expr: sympy.Expr) -> tuple[sympy.Expr, ...] | None:
     """
     from dynsolve.solver.blocks import BudgetExceeded, time_budget
 
+    if any(_kepler_like(factor) for factor in sympy.Mul.make_args(sympy.factor_terms(expr))):
+        return None  # no closed form: not worth sympy's search (nor waiting out the budget)
     try:
         with time_budget(CROSSING_BUDGET):
             return tuple(sympy.solve(expr, T, simplify=False))
     except (NotImplementedError, BudgetExceeded):
         return None
+
+
+def _kepler_like(expr: sympy.Expr) -> bool:
+    """Whether t appears in ``expr`` both inside a trigonometric function and outside any
+    (12 t − 40π sin πt, Kepler's M = E − e sin E): such an equation has no closed-form root.
+
+    >>> _kepler_like(12 * T - 40 * sympy.pi * sympy.sin(sympy.pi * T))
+    True
+    >>> _kepler_like(sympy.sin(T) - sympy.Rational(1, 2)), _kepler_like(T**2 - 4)
+    (False, False)
+    """
+    trig = expr.atoms(sympy.sin, sympy.cos, sympy.tan, sympy.cot, sympy.sec, sympy.csc)
+    inside = {f: sympy.Dummy() for f in trig if f.has(T)}
+    return bool(inside) and expr.xreplace(inside).has(T)
 
 
 MAX_CROSSINGS = 1000  # roots of a periodic law listed at most (one per period and family)
