@@ -78,7 +78,8 @@ def test_directions_and_signs() -> None:
     assert judge("11.3 rad/s^2 CW", ALPHA, Rule()).verdict == "correct"
     reversed_ = judge("4.52 m/s^2 up", A, Rule(partial=0.5))
     assert (reversed_.verdict, reversed_.credit) == ("sign", 0.5)
-    assert judge("11.3 rad/s^2", ALPHA, Rule()).verdict == "sign"  # no word: ccw positive
+    assert judge("11.3 rad/s^2", ALPHA, Rule()).verdict == "correct"  # a bare magnitude
+    assert judge("11.3 rad/s^2", ALPHA, Rule(signed=True)).verdict == "sign"  # ccw positive
     assert judge("-4.52 m/s^2 down", A, Rule()).verdict == "unreadable"  # sign and word
 
 
@@ -99,7 +100,7 @@ def test_bare_numbers_take_the_header_unit_or_fail() -> None:
 
 @pytest.mark.parametrize(
     "cell",
-    ["abc", "1e999 N", "__import__('os') N", "4.5 +- 1% N", "4.5 blargs", "x" * 200, "1 N N"],
+    ["abc", "1e999 N", "__import__('os') N", "4.5 +- 1% N", "4.5 blargs", "x" * 200, "1 N 2"],
 )
 def test_bad_cells_are_wrong_with_a_reason(cell: str) -> None:
     result = judge(cell, T, Rule())

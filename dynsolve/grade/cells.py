@@ -9,6 +9,9 @@ the reason, which the grader reports as that part's verdict.
 (105.87, True, '23.8')
 >>> read_cell("4.52 m/s^2 down").value
 -4.52
+>>> cell = read_cell("4,52 m s⁻² downwards", decimal_comma=True)
+>>> cell.value, cell.unit, cell.direction, cell.signed
+(-4.52, 'm/s^2', 'down', True)
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ import math
 from dataclasses import dataclass
 
 from dynsolve.errors import DynsolveError
+from dynsolve.grade.forms import normalise
 from dynsolve.quantities import resolve_unit
 from dynsolve.spec.parser import parse_answer_cell, parse_unit
 from dynsolve.units import Dim, UnitInfo
@@ -42,12 +46,14 @@ class Cell:
     number: str  # the number as written, sign included: "-4.52", "1.20e3"
     unit: str | None  # the unit as written ("" for none given but taken from the header)
     factor: float  # the unit's size in SI base units
-    direction: str  # the direction word as written, lowercase, or ""
+    direction: str  # the direction word (cw, ccw, up, down, left, right) or ""
+    signed: bool = False  # a sign (-, +) or a direction word was written
 
 
 @functools.lru_cache(maxsize=65536)
-def read_cell(text: str, header_unit: str = "") -> Cell:
+def read_cell(text: str, header_unit: str = "", decimal_comma: bool = False) -> Cell:
     """The cell ``text``; a bare number takes ``header_unit`` (a column header's unit).
+    ``decimal_comma``: the file writes decimals with a comma (see :mod:`.forms`).
 
     >>> read_cell("11.3", "rad/s^2").unit
     ''
@@ -57,23 +63,26 @@ def read_cell(text: str, header_unit: str = "") -> Cell:
     text = text.strip()
     if len(text) > MAX_CELL:
         raise CellError(f"the answer is longer than {MAX_CELL} characters")
-    words = text.rsplit(maxsplit=1)
-    if len(words) == 2 and words[1].lower() in (*NEGATIVE, "ccw", "up", "right"):
-        text = f"{words[0]} {words[1].lower()}"
+    try:
+        written = normalise(text, decimal_comma)
+    except ValueError as error:
+        raise CellError(str(error)) from None
+    text = written.text
     number, unit_text, direction = _parsed(text)
-    if direction and number.startswith("-"):
+    if direction and (number.startswith("-") or written.plus):
         raise CellError(f"'{text}' has both a sign and a direction word: give one")
     if unit_text:
-        info, written = _unit(unit_text), unit_text
+        info, shown = _unit(unit_text), unit_text
     elif header_unit:
-        info, written = _unit(header_unit), ""
+        info, shown = _unit(header_unit), ""
     else:
-        info, written = UnitInfo(1.0, same_dim(Dim())), None
+        info, shown = UnitInfo(1.0, same_dim(Dim())), None
     magnitude = float(number)
     if not math.isfinite(magnitude) or abs(magnitude) * info.factor > LARGEST:
         raise CellError(f"{number} is out of range")
     value = magnitude * info.factor * (-1.0 if direction in NEGATIVE else 1.0)
-    return Cell(value, info.dim, number, written, info.factor, direction)
+    signed = bool(direction) or written.plus or number.startswith("-")
+    return Cell(value, info.dim, number, shown, info.factor, direction, signed)
 
 
 def _parsed(text: str) -> tuple[str, str, str]:
@@ -122,6 +131,19 @@ def significant_figures(number: str) -> int:
     mantissa = number.lstrip("+-").lower().split("e")[0]
     digits = mantissa.replace(".", "").lstrip("0")
     return len(digits) or 1
+
+
+def fewest_figures(number: str) -> int:
+    """Significant figures with the doubt going the other way: the trailing zeros of a
+    whole number do not count (``110`` may be 105.86 rounded to 2 figures).
+
+    >>> [fewest_figures(n) for n in ("110", "1.10", "0.011", "1.1e2", "0")]
+    [2, 3, 2, 2, 1]
+    """
+    mantissa = number.lstrip("+-").lower().split("e")[0]
+    if "." in mantissa:
+        return significant_figures(number)
+    return len(mantissa.strip("0")) or 1
 
 
 def decimal_digits(number: str) -> int:

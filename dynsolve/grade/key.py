@@ -56,7 +56,12 @@ def keys_of(solution: Solution) -> dict[str, Key]:
         info = unit_info(answer.unit)
         sign = -1.0 if answer.direction in NEGATIVE else 1.0
         keys[answer.name] = Key(
-            answer.name, sign * answer.value * info.factor, info.dim, answer.unit, info.factor
+            answer.name,
+            sign * answer.value * info.factor,
+            info.dim,
+            answer.unit,
+            info.factor,
+            answer.direction or "",
         )
     return keys
 
@@ -91,7 +96,7 @@ def variant_keys(
             info = unit_info(answer.unit)
             sign = -1.0 if answer.direction in NEGATIVE else 1.0
             per_student[student][name] = Key(
-                name, sign * answer.value, answer.dim, answer.unit, info.factor
+                name, sign * answer.value, answer.dim, answer.unit, info.factor, answer.direction
             )
     base = keys_of(solve_spec(spec, options))
     path = getattr(result, "path", "per-variant")

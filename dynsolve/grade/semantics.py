@@ -1,27 +1,42 @@
 """Grading semantics: judge one student cell against one expected answer under a rule.
 
 Values are compared in SI base units, signed by the textbook convention (ccw, up, right
-positive; a direction word gives the sign). The comparison is one of:
+positive). How a cell's sign is read:
+
+- a direction word sets the sign along the axis it names, and must name the key's axis:
+  ``left`` for a downward acceleration, or ``down`` for an angular one, is the ``sign``
+  verdict whatever the number (the senses of rotation are cw and ccw);
+- a bare positive number is a magnitude: right when it matches the key's size, as a
+  textbook writes ``11.3 rad/s^2`` for a drum turning clockwise. A ``signed`` rule takes
+  it as positive instead (a course that wants signs);
+- an explicit sign (``-4.52``, ``+4.52``) is taken as written.
+
+The comparison is one of:
 
 - tolerance (default): ``|s - k| <= max(atol, rtol |k|)``, rtol 1 % unless set;
 - ``sigfig N``: the number must be WRITTEN with at least N significant figures, and lie
-  within 0.51 units of the N-th significant figure of the key (PrairieLearn's
-  ``pl-number-input`` sigfig rule), so with a key of 4.5168 and N = 3, ``4.52`` and
-  ``4.517`` pass, ``4.5`` fails (too few figures) and ``4.53`` fails (wrong value);
+  within 0.51 units of the N-th significant figure of the key expressed in the unit the
+  student wrote (PrairieLearn's ``pl-number-input`` sigfig rule), so with a key of
+  4.5168 and N = 3, ``4.52`` and ``4.517`` pass, ``4.5`` fails (too few figures) and
+  ``4.53`` fails (wrong value); ``14.8 ft/s^2`` (the key is 14.819 ft/s^2) passes;
 - ``decdig N``: written to at least N decimal places, and within 0.51·10^-N of the key
   expressed in the unit the student wrote. In e-notation the place is the mantissa's
   decimals less the exponent: ``4.52e-1`` is written to 3 decimals, ``1.5e2`` to the tens.
 
 A right magnitude with the wrong sign or direction, or a right value with too few
-figures, earns the ``partial`` credit (0 unless set).
+figures, earns the ``partial`` credit (0 unless set). A bare ``0`` is zero in any unit.
 
 >>> from dynsolve.grade.cells import read_cell
->>> key = Key("a", -4.5168, Dim.of("acceleration"), "m/s^2")
->>> judge("4.52 m/s^2 down", key, Rule()).verdict
-'correct'
->>> flipped = judge("4.52 m/s^2", key, Rule(partial=0.5))
+>>> key = Key("a", -4.5168, Dim.of("acceleration"), "m/s^2", direction="down")
+>>> judge("4.52 m/s^2 down", key, Rule()).verdict, judge("4.52 m/s^2", key, Rule()).verdict
+('correct', 'correct')
+>>> flipped = judge("4.52 m/s^2 up", key, Rule(partial=0.5))
 >>> flipped.verdict, flipped.credit
 ('sign', 0.5)
+>>> judge("4.52 m/s^2 left", key, Rule()).detail
+"a is down: 'left' is along another axis (give up or down)"
+>>> judge("4.52 m/s^2", key, Rule(signed=True)).verdict
+'sign'
 >>> judge("4.5 m/s^2 down", key, Rule(sigfig=3)).verdict
 'sigfig'
 """
@@ -37,6 +52,7 @@ from dynsolve.grade.cells import (
     Cell,
     CellError,
     decimal_digits,
+    fewest_figures,
     read_cell,
     same_dim,
     significant_figures,
@@ -47,6 +63,14 @@ from dynsolve.units import Dim, natural_unit
 
 DEFAULT_RTOL = 0.01
 SIGFIG_SLACK = 0.51  # units of the last figure: PrairieLearn's allowance for rounding
+NO_ANSWER = ("-", "\u2013", "\u2014")  # Moodle's mark for a question not answered
+AXES = {"cw": "rotation", "ccw": "rotation", "up": "vertical", "down": "vertical"}
+AXES |= {"left": "horizontal", "right": "horizontal"}
+PAIRS = {"rotation": "cw or ccw", "vertical": "up or down", "horizontal": "left or right"}
+ANGULAR_UNITS = ("rad", "deg", "rev", "rpm")
+LINEAR = frozenset(
+    Dim.of(name) for name in ("length", "velocity", "acceleration", "force", "momentum")
+)
 VERDICTS = ("correct", "sign", "sigfig", "wrong", "dimension", "unreadable", "missing")
 
 
@@ -59,6 +83,7 @@ class Key:
     dim: Dim
     unit: str  # the display unit for feedback ("m/s^2")
     factor: float = 1.0  # the display unit's size in SI base units
+    direction: str = ""  # as ``dynsolve solve`` states it: cw, down, "angle 53.1°" or ""
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "dim", same_dim(self.dim))
@@ -74,6 +99,7 @@ class Rule:
     decdig: int = 0
     weight: float = 1.0
     partial: float = 0.0
+    signed: bool = False  # a bare number is taken as positive, not as a magnitude
 
 
 @dataclass(frozen=True)
@@ -86,14 +112,19 @@ class PartResult:
     value: float | None = None  # the student's value in SI base units, when read
 
 
-def judge(text: str, key: Key, rule: Rule, header_unit: str = "") -> PartResult:
-    """Judge the cell ``text`` against ``key`` (a bare number takes ``header_unit``)."""
-    if not text.strip():
+def judge(
+    text: str, key: Key, rule: Rule, header_unit: str = "", decimal_comma: bool = False
+) -> PartResult:
+    """Judge the cell ``text`` against ``key`` (a bare number takes ``header_unit``;
+    ``decimal_comma``: the file writes ``4,52``)."""
+    if not text.strip() or text.strip() in NO_ANSWER:
         return PartResult("missing", 0.0, "no answer")
     try:
-        cell = read_cell(text, header_unit)
+        cell = read_cell(text, header_unit, decimal_comma)
     except CellError as error:
         return PartResult("unreadable", 0.0, str(error))
+    if cell.unit is None and cell.value == 0:  # a bare 0 is zero in any unit
+        cell = replace(cell, dim=key.dim, unit="")
     if cell.unit is None and not key.dim.dimensionless:
         return PartResult(
             "unreadable", 0.0, f"no unit: write it ({key.unit}) or put it in the column header"
@@ -106,7 +137,38 @@ def judge(text: str, key: Key, rule: Rule, header_unit: str = "") -> PartResult:
             f"{key.name} is {_dimension(key.dim)}",
             cell.value,
         )
+    if not cell.signed and not rule.signed and key.value < 0:
+        cell = replace(cell, value=-cell.value)  # a bare magnitude: the key's sense
+    misdirected = _axis_problem(cell, key)
+    if misdirected:
+        size = math.copysign(cell.value, key.value)
+        if matches(size, key, rule, cell):
+            return PartResult("sign", rule.partial, misdirected, cell.value)
+        return PartResult("wrong", 0.0, f"off by {_off(size, key)}", cell.value)
     return _compare(cell, key, rule)
+
+
+def _axis_problem(cell: Cell, key: Key) -> str:
+    """Why the cell's direction word names another axis than the key's, or ""."""
+    if not cell.direction:
+        return ""
+    said = AXES[cell.direction]
+    expected = AXES.get(key.direction, "")
+    if not expected:  # no direction stated with the key (equation mode): its dimension
+        if any(unit in key.unit for unit in ANGULAR_UNITS):
+            expected = "rotation"
+        elif said == "rotation" and key.dim in LINEAR:
+            return f"'{cell.direction}' is a sense of rotation; {key.name} is not angular"
+        else:
+            return ""
+    if said == expected:
+        return ""
+    if expected == "rotation":
+        return f"'{cell.direction}' is not a sense of rotation: give cw or ccw"
+    return (
+        f"{key.name} is {key.direction}: '{cell.direction}' is along another axis "
+        f"(give {PAIRS[expected]})"
+    )
 
 
 def _compare(cell: Cell, key: Key, rule: Rule) -> PartResult:
@@ -117,7 +179,8 @@ def _compare(cell: Cell, key: Key, rule: Rule) -> PartResult:
             factor = cell.factor or key.factor
             right = abs(cell.value - key.value) / factor <= place
         else:
-            right = matches(cell.value, key, replace(rule, sigfig=significant_figures(cell.number)))
+            figures = replace(rule, sigfig=significant_figures(cell.number))
+            right = matches(cell.value, key, figures, cell)
         if right:
             return PartResult("sigfig", rule.partial, short, cell.value)
     elif matches(cell.value, key, rule, cell):
@@ -129,7 +192,24 @@ def _compare(cell: Cell, key: Key, rule: Rule) -> PartResult:
             "right magnitude, wrong sign or direction (ccw, up, right are positive)",
             cell.value,
         )
-    return PartResult("wrong", 0.0, f"off by {_off(cell.value, key)}", cell.value)
+    off = f"off by {_off(cell.value, key)}"
+    rounded = _rounded(cell, key, rule)
+    return PartResult("wrong", 0.0, f"{rounded} ({off})" if rounded else off, cell.value)
+
+
+def _rounded(cell: Cell, key: Key, rule: Rule) -> str:
+    """The sentence for an answer that is the key rounded to 1 or 2 significant figures
+    in the unit written (``110 N`` for 105.86 N), or ""."""
+    figures = fewest_figures(cell.number)
+    factor = cell.factor or key.factor
+    target = abs(key.value) / factor
+    if figures > 2 or target == 0 or not math.isfinite(target):
+        return ""
+    rounded = float(f"{target:.{figures}g}")
+    if not math.isclose(abs(float(cell.number)), rounded, rel_tol=1e-9):
+        return ""
+    plural = "s" * (figures != 1)
+    return f"rounded to {figures} significant figure{plural}: keep at least {max(rule.sigfig, 3)}"
 
 
 def _short(cell: Cell, rule: Rule) -> str:
@@ -144,18 +224,20 @@ def _short(cell: Cell, rule: Rule) -> str:
 
 
 def matches(value: float, key: Key, rule: Rule, cell: Cell | None = None) -> bool:
-    """Whether ``value`` (SI base units) matches the key under ``rule``'s comparison.
+    """Whether ``value`` (SI base units) matches the key under ``rule``'s comparison
+    (significant figures and decimals counted in ``cell``'s unit, when given).
 
     >>> k = Key("T", 105.863, Dim.of("force"), "N")
     >>> matches(106.0, k, Rule(sigfig=3)), matches(107.0, k, Rule(sigfig=3))
     (True, False)
     """
     target = key.value
-    if rule.sigfig:
+    if rule.sigfig:  # the figures of the key in the unit written
         if target == 0:
             return abs(value) <= rule.atol
-        place = math.floor(math.log10(abs(target))) - rule.sigfig + 1
-        return abs(value - target) <= SIGFIG_SLACK * 10.0**place
+        factor = cell.factor if cell is not None and cell.factor else 1.0
+        place = math.floor(math.log10(abs(target / factor))) - rule.sigfig + 1
+        return abs(value - target) / factor <= SIGFIG_SLACK * 10.0**place
     if rule.decdig:
         factor = cell.factor if cell is not None and cell.factor else key.factor
         return abs(value - target) / factor <= SIGFIG_SLACK * 10.0**-rule.decdig
@@ -196,7 +278,7 @@ def rules_for(
             default = Rule()
             changed = {
                 f: getattr(overrides, f)
-                for f in ("rtol", "atol", "sigfig", "decdig", "partial")
+                for f in ("rtol", "atol", "sigfig", "decdig", "partial", "signed")
                 if getattr(overrides, f) != getattr(default, f)
             }
             if changed.get("sigfig"):
@@ -217,4 +299,6 @@ def _apply(rule: Rule, key: str, value: Fraction, source: GradingRule) -> Rule:
         return replace(rule, **{key: int(value), other: 0})
     if key == "rtol" and source.part:  # a part's own tolerance replaces a general sigfig
         return replace(rule, rtol=float(value), sigfig=0, decdig=0)
+    if key == "signed":  # 'signed' (1) or 'magnitude' (0)
+        return replace(rule, signed=bool(value))
     return replace(rule, **{key: float(value)})

@@ -308,7 +308,7 @@ class GradingRule:
     """A ``grading:`` line: ``rtol 1%``, ``atol 0.01 m/s``, ``sigfig 3``, ``alpha weight 2``."""
 
     part: str  # the find it applies to; "" for every part
-    key: str  # rtol, atol, sigfig, decdig, weight or partial
+    key: str  # rtol, atol, sigfig, decdig, weight, partial; signed (1, or 0: magnitude)
     value: Fraction
     text: str  # the number as written
     unit: UnitExpr | None  # atol's unit
