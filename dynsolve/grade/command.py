@@ -18,7 +18,7 @@ from pathlib import Path
 
 from dynsolve.errors import SpecError
 from dynsolve.files import read_capped, write_text
-from dynsolve.grade.answers import AnswerSheet, read_answers
+from dynsolve.grade.answers import AnswerSheet, check_header_units, read_answers
 from dynsolve.grade.diagnose import Diagnoser
 from dynsolve.grade.key import Keys, base_keys, variant_keys
 from dynsolve.grade.report import gradebook_csv, results_csv, results_json
@@ -68,6 +68,7 @@ def grade(request: GradeRequest, progress: Callable[[int, int], None] | None = N
     finds = [f.name for f in spec.finds]
     sheet = read_answers(io.StringIO(answers_text), finds, str(request.answers))
     keys = _keys(request, spec, sheet)
+    check_header_units(sheet, keys.shared, str(request.answers))
     rules = rules_for(list(keys.shared), spec.grading, request.overrides)
     warnings = list(sheet.warnings)
     if request.atol_text:

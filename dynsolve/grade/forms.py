@@ -103,7 +103,7 @@ def normalise(text: str, decimal_comma: bool = False) -> Written:
     if power and exponent is None:
         exponent, rest = power[1], rest[power.end() :]
     value = f"{'-' if sign == '-' else ''}{digits}" + (f"e{exponent}" if exponent else "")
-    unit = _unit(rest.strip())
+    unit = normalise_unit(rest.strip())
     written = " ".join(p for p in (value, unit, direction) if p)
     return Written(written, sign == "+")
 
@@ -130,10 +130,15 @@ def _decimal(digits: str, decimal_comma: bool) -> str:
     return digits
 
 
-def _unit(text: str) -> str:
-    """A unit as typed (``m/s2``, ``m s^-2``) in the grammar's spelling (``m/s^2``, ``m·s^-2``)."""
+def normalise_unit(text: str) -> str:
+    """A unit as typed (``m/s2``, ``m s^-2``, ``s²``) in the grammar's spelling.
+
+    >>> normalise_unit("m/s2"), normalise_unit("kg m²")
+    ('m/s^2', 'kg·m^2')
+    """
     if not text:
         return ""
+    text = _SUPER.sub(lambda m: "^" + "".join(_SUPERSCRIPTS[c] for c in m[0]), text)
     if text[0].isdigit() and not text.startswith("1/"):
         raise ValueError(f"a number inside the unit ('{text}'): write the number without spaces")
     text = _GLUED_POWER.sub(r"\1^\2", text)

@@ -59,14 +59,15 @@ def grade_row(
     rules: Mapping[str, Rule],
     units: Mapping[str, str],
     doctor: Diagnoser | None,
+    decimal_comma: bool = False,
 ) -> StudentResult:
-    """Grade one student's cells against their keys."""
+    """Grade one student's cells against their keys (``decimal_comma``: the file's mark)."""
     parts: dict[str, dict[str, Any]] = {}
     earned = total = 0.0
     for name, key in keys.items():
         rule = rules[name]
         text = cells.get(name, "")
-        result = judge(text, key, rule, units.get(name, ""))
+        result = judge(text, key, rule, units.get(name, ""), decimal_comma)
         feedback = result.detail
         if result.verdict == "wrong" and doctor is not None and result.value is not None:
             named = doctor.diagnose(name, result.value, keys, rule, student)
@@ -121,7 +122,9 @@ def grade_sheet(
                     row = _no_key(student, keys, keys.errors[student])
                 else:
                     mine = keys.for_student(student)
-                    row = grade_row(student, cells, mine, rules, sheet.units, doctor)
+                    row = grade_row(
+                        student, cells, mine, rules, sheet.units, doctor, sheet.decimal_comma
+                    )
                 results.append(row)
                 if handle is not None:
                     _append(handle, row.as_dict(), sync=index % SYNC_EVERY == 0)
