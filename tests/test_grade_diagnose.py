@@ -55,7 +55,7 @@ def test_power_of_ten(drum: tuple[Diagnoser, dict]) -> None:
 
 def test_degrees_for_radians(drum: tuple[Diagnoser, dict]) -> None:
     # 11.292 rad/s^2 = 647.0 deg/s^2, written with rad
-    assert _named(*drum, "alpha", "647 rad/s^2") == "degrees given where radians are asked"
+    assert _named(*drum, "alpha", "647 rad/s^2") == "a value in degrees labelled as radians (x57.3)"
 
 
 def test_another_part(drum: tuple[Diagnoser, dict]) -> None:
@@ -110,3 +110,67 @@ def test_weight_used_as_mass() -> None:
 def test_re_solves_are_cached(drum: tuple[Diagnoser, dict]) -> None:
     doctor, _ = drum
     assert doctor.mistakes() is doctor.mistakes()
+
+
+def test_radians_labelled_degrees(drum: tuple[Diagnoser, dict]) -> None:
+    # 11.3 written with deg/s^2: 11.3 pi/180 = 0.1972 rad/s^2, the key times pi/180
+    named = _named(*drum, "alpha", "11.3 deg/s^2")
+    assert named == "a value in radians labelled as degrees (/57.3)"
+
+
+def test_a_static_answer_for_a_dynamic_problem(drum: tuple[Diagnoser, dict]) -> None:
+    # T = m_b g = 20(9.81) = 196.2 N, as if the block hung at rest (the key is 105.86 N)
+    assert _named(*drum, "T", "196 N") == "the static answer T = m_b g, as if nothing accelerated"
+
+
+def test_the_static_answer_in_us_units() -> None:
+    # a 10-lb weight W pulled up by T with a = 8 ft/s^2: T = W + (W/g) a = 10 + 2.484 lb;
+    # the static answer is T = W = 10 lb
+    text = (
+        "units: FPS\ngiven:\n  W = 10 lb\n  a = 8 ft/s^2\n  g = 32.2 ft/s^2\n"
+        "equations:\n  T - W = (W/g)*a\nfind: T [lb]\n"
+    )
+    assert _diagnose(text, "T", "10 lb") == "the static answer T = W, as if nothing accelerated"
+
+
+def test_the_printed_numbers_for_a_variant() -> None:
+    # s1's variant has m_b = 25 kg: alpha = 25(9.81)(0.4)/(3.75 + 25(0.16)) = 98.1/7.75
+    # = 12.658 rad/s^2; 11.3 rad/s^2 is the printed problem's (m_b = 20 kg) answer
+    from dynsolve.grade.semantics import Key
+    from dynsolve.units import Dim
+
+    doctor = Diagnoser(parse_file(DRUM), variants={"s1": {"m_b": "25 kg"}})
+    keys = {"alpha": Key("alpha", 12.658, Dim(0, 0, -2), "rad/s^2")}
+    result = judge("11.3 rad/s^2", keys["alpha"], Rule())
+    assert result.verdict == "wrong" and result.value is not None
+    named = doctor.diagnose("alpha", result.value, keys, Rule(), "s1")
+    assert named == "the numbers of the problem as printed used, not those of your own variant"
+
+
+def test_rounded_to_two_figures(drum: tuple[Diagnoser, dict]) -> None:
+    # 105.86 N to 2 figures is 110 N (3.9 % off); 11.292 rad/s^2 to 2 figures is 11 (2.6 %)
+    _, keys = drum
+    assert judge("110 N", keys["T"], Rule()).detail.startswith("rounded to 2 significant")
+    assert judge("11 rad/s^2", keys["alpha"], Rule()).detail.startswith("rounded to 2")
+    assert judge("107 N", keys["T"], Rule()).detail.startswith("off by")  # not a rounding
+
+
+def test_top_three_mistakes_skip_undiagnosed_answers() -> None:
+    from dynsolve.grade.report import class_summary
+    from dynsolve.grade.run import StudentResult
+
+    feedbacks = ["off by 12 %"] * 5 + ["g left out (g = 1) (off by 90 %)"] * 3
+    feedbacks += ["a power-of-ten slip (x10): check the unit prefix (off by 900 %)"] * 2
+    feedbacks += ["the diameter used for the radius r (off by 16 %)"]
+    rows = [
+        StudentResult(
+            f"s{i}", 0.0, {"a": {"answer": "", "verdict": "wrong", "credit": 0.0, "feedback": text}}
+        )
+        for i, text in enumerate(feedbacks)
+    ]
+    mistakes = class_summary(rows)["parts"]["a"]["mistakes"]
+    assert [m for m, _ in mistakes] == [
+        "g left out (g = 1)",
+        "a power-of-ten slip (x10): check the unit prefix",
+        "the diameter used for the radius r",
+    ]

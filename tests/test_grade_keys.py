@@ -96,7 +96,7 @@ def test_the_example_class() -> None:
     assert rows["s007"].parts["T"]["feedback"].startswith("g left out")
     assert rows["s008"].parts["a"]["feedback"].startswith("g from the US system")
     assert rows["s009"].parts["a"]["feedback"].startswith("the diameter used for the radius r")
-    assert rows["s010"].parts["alpha"]["feedback"].startswith("degrees given where radians")
+    assert rows["s010"].parts["alpha"]["feedback"].startswith("a value in degrees labelled as")
     assert rows["s014"].parts["T"]["verdict"] == "dimension"
     assert rows["s016"].parts["alpha"]["verdict"] == "unreadable"
     assert rows["s028"].parts["T"]["verdict"] == "correct"  # 0.8 % off, rtol 1 %

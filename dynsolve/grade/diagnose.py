@@ -1,7 +1,10 @@
 """Name the classic mistake that reproduces a wrong answer, on the problem's own model.
 
 Two kinds of candidates. Answer-side slips need no solve: a power of ten or unit prefix
-(×10^±1, ±2, ±3, ±6), degrees given for radians or the reverse, another part's answer.
+(×10^±1, ±2, ±3, ±6), an angular value in degrees written with a radian unit or the
+reverse, another part's answer, a force given its static value (a mass given times g, or
+a weight given ``W…``: T = m g as if nothing accelerated) and, with variants, the answer
+of the problem as printed instead of the student's own variant.
 Model-side mistakes re-solve the spec with one given or equation changed: degrees taken as
 radians (or the reverse) for an angle given, a weight in lb used as a mass (×32.2) or
 slug/lbm swapped, g missing (g = 1) or from the other unit system, μs and μk swapped,
@@ -29,17 +32,22 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
-from dynsolve.grade.semantics import Key, Rule
+from dynsolve.errors import DynsolveError
+from dynsolve.grade.semantics import ANGULAR_UNITS, Key, Rule
 from dynsolve.principles.newton_euler import parallel_axis_forgotten
+from dynsolve.quantities import resolve_unit, unit_info
 from dynsolve.spec.ast import Binary, EquationStmt, Given, Name, Quantity, Spec
-from dynsolve.spec.parser import parse_unit
+from dynsolve.spec.parser import parse_quantity, parse_unit
 from dynsolve.system import SolveOptions
-from dynsolve.units import Dim
+from dynsolve.units import GRAVITY, Dim
 
+MAX_CACHED = 100_000  # students whose givens are kept
 MATCH_RTOL = 0.01  # a mistake reproduces an answer within 1 % (or the part's rtol if wider)
 POWERS = (1, -1, 2, -2, 3, -3, 6, -6)
 G_FACTOR = Fraction(322, 10)  # ft/s^2 per slug/lbm and lb as mass
 DEGREE = math.pi / 180
+FORCE, MASS = Dim.of("force"), Dim.of("mass")
+BASE_NUMBERS = "the numbers of the problem as printed used, not those of your own variant"
 
 __all__ = ["Diagnoser", "Dim", "Key"]
 
@@ -69,6 +77,8 @@ class Diagnoser:
         self._by_student: dict[str, list[Mistake]] | None = None
         self._mistakes: list[Mistake] | None = None
         self._slips: dict[tuple[str, tuple[float, ...]], list[tuple[str, float]]] = {}
+        self._base: dict[str, float] | None = None  # the printed problem's answers
+        self._givens: dict[str, list[tuple[str, float, Dim]]] = {}  # per student, in SI
 
     def diagnose(
         self, part: str, value: float, keys: Mapping[str, Key], rule: Rule, student: str = ""
@@ -79,7 +89,15 @@ class Diagnoser:
         signature = (part, tuple(k.value for k in keys.values()))
         if signature not in self._slips:  # the same keys (no variants): built once
             self._slips[signature] = self._answer_side(part, keys)
-        for sentence, candidate in self._slips[signature]:
+        if self.variants is not None and self.model:
+            base = self.base_answers().get(part)
+            moved = base is not None and not _close(base, key.value, 1e-6)
+            if moved and _close(value, base, tolerance):  # type: ignore[arg-type]
+                return BASE_NUMBERS
+        slips = self._slips[signature]
+        if key.dim == FORCE:
+            slips = slips + self._static(part, student)
+        for sentence, candidate in slips:
             if _close(value, candidate, tolerance) and not _close(candidate, key.value, 1e-9):
                 return sentence
         for mistake in self.mistakes(student):
@@ -112,6 +130,50 @@ class Diagnoser:
                     self._mistakes.append(Mistake(PINNED_I_G, values))
         return self._mistakes
 
+    def base_answers(self) -> dict[str, float]:
+        """The answers of the problem as printed (signed SI), solved once."""
+        if self._base is None:
+            self._base = _solve(self.spec, self.options) or {}
+        return self._base
+
+    def _static(self, part: str, student: str) -> list[tuple[str, float]]:
+        """A force answered with its static value: a mass given times g, or a weight."""
+        givens = self.givens(student)
+        g = next((v for name, v, _ in givens if name == "g"), None)
+        if g is None:
+            number, unit = GRAVITY[self.spec.system]
+            g = float(number) * unit_info(unit).factor
+        out = []
+        for name, value, dim in givens:
+            if dim == MASS:
+                out.append(
+                    (f"the static answer {part} = {name} g, as if nothing accelerated", value * g)
+                )
+            elif dim == FORCE and name.startswith(("W", "w")):
+                out.append((f"the static answer {part} = {name}, as if nothing accelerated", value))
+        return out
+
+    def givens(self, student: str = "") -> list[tuple[str, float, Dim]]:
+        """The student's givens (their variant's, else the spec's) with a unit: name, value
+        in SI base units, dimension."""
+        if student in self._givens:
+            return self._givens[student]
+        cells = (self.variants or {}).get(student, {})
+        out = []
+        for given in self.spec.givens:
+            quantity, text = given.quantity, cells.get(given.name, "")
+            try:
+                quantity = parse_quantity(text) if text.strip() else quantity
+                if quantity is None or quantity.unit is None:
+                    continue
+                info = resolve_unit(quantity.unit, "<given>")
+            except DynsolveError:
+                continue
+            out.append((given.name, float(quantity.value) * info.factor, info.dim))
+        if len(self._givens) < MAX_CACHED:
+            self._givens[student] = out
+        return out
+
     def _answer_side(self, part: str, keys: Mapping[str, Key]) -> list[tuple[str, float]]:
         key = keys[part]
         out = [
@@ -121,10 +183,9 @@ class Diagnoser:
             )
             for p in POWERS
         ]
-        if "rad" in key.unit:
-            out.append(("degrees given where radians are asked", key.value / DEGREE))
-        if "deg" in key.unit:
-            out.append(("radians given where degrees are asked", key.value * DEGREE))
+        if any(unit in key.unit for unit in ANGULAR_UNITS):  # either way round
+            out.append(("a value in degrees labelled as radians (x57.3)", key.value / DEGREE))
+            out.append(("a value in radians labelled as degrees (/57.3)", key.value * DEGREE))
         for other, other_key in keys.items():
             if other != part:
                 scaled = other_key.value / other_key.factor * key.factor
@@ -159,10 +220,8 @@ def variant_mistakes(
     """The given-level mistakes on every student's own variant: each mistake is one more
     set of variants (the student's cells changed), solved for the whole class at once by
     :func:`dynsolve.grade.expected.expected_answers` (vectorized where it can)."""
-    from dynsolve.errors import DynsolveError
     from dynsolve.grade.cells import NEGATIVE
     from dynsolve.grade.expected import expected_answers
-    from dynsolve.spec.parser import parse_quantity
 
     givens = {g.name: g.quantity for g in spec.givens if g.quantity is not None}
     out: dict[str, list[Mistake]] = {student: [] for student in variants}

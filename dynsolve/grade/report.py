@@ -83,13 +83,12 @@ def class_summary(results: Sequence[StudentResult]) -> dict[str, Any]:
     for part in parts_of(results):
         cells = [r.parts[part] for r in results]
         verdicts = Counter(c["verdict"] for c in cells)
-        mistakes = Counter(
-            _mistake(c["feedback"]) for c in cells if c["verdict"] == "wrong" and c["feedback"]
-        )
+        named = (_mistake(c["feedback"]) for c in cells if c["verdict"] == "wrong")
+        mistakes = Counter(m for m in named if m)  # an undiagnosed answer takes no slot
         parts[part] = {
             "correct": round(verdicts["correct"] / count, 4) if count else 0.0,
             "verdicts": dict(sorted(verdicts.items())),
-            "mistakes": [[m, n] for m, n in mistakes.most_common(TOP_MISTAKES) if m],
+            "mistakes": [[m, n] for m, n in mistakes.most_common(TOP_MISTAKES)],
         }
     bins = [0] * BINS
     for result in results:
