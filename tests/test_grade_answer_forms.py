@@ -105,10 +105,17 @@ def test_signed_rule_takes_a_bare_number_as_positive() -> None:
         ("11.3 rad/s²", "alpha"),
         ("0.106 kN", "T"),
         ("647 deg/s^2", "alpha"),  # 11.292 rad/s^2 x 57.296 = 647.0 deg/s^2
+        ("4.52m/s^2", "a"),
+        ("\u20134.52 m/s^2", "a"),  # an en dash for the minus
+        ("4.52 m/s^2 down.", "a"),
     ],
 )
 def test_typed_forms_are_read(cell: str, part: str) -> None:
     assert _verdict(cell, part) == "correct", judge(cell, KEYS[part], Rule()).detail
+
+
+def test_degree_sign() -> None:
+    assert read_cell("30°").value == pytest.approx(0.5235988)  # 30 pi/180 rad
 
 
 def test_bare_zero_is_zero_in_any_unit() -> None:
