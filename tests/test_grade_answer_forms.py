@@ -16,6 +16,7 @@ from dynsolve.grade.cells import CellError, read_cell
 from dynsolve.grade.key import base_keys
 from dynsolve.grade.semantics import Key, Rule, judge, rules_for
 from dynsolve.spec.parser import parse_file, parse_spec
+from dynsolve.units import Dim
 
 ROOT = Path(__file__).parent.parent
 KEYS = base_keys(parse_file(ROOT / "problems" / "seed" / "fa_hib_drum.dyn")).shared
@@ -70,6 +71,13 @@ def test_bare_magnitude_is_right_by_default() -> None:
     assert _verdict("+4.52 m/s^2", "a") == "sign"
     assert _verdict("-4.52 m/s^2", "a") == "correct"
     assert _verdict("-106 N", "T") == "sign"  # T = +105.86 N
+
+
+def test_a_signed_scalar_is_not_a_magnitude() -> None:
+    # work of -50 J is not 50 J: energy has no direction to leave out
+    work = Key("U", -50.0, Dim.of("energy"), "J")
+    assert judge("50 J", work, Rule()).verdict == "sign"
+    assert judge("-50 J", work, Rule()).verdict == "correct"
 
 
 def test_signed_rule_takes_a_bare_number_as_positive() -> None:

@@ -6,9 +6,10 @@ positive). How a cell's sign is read:
 - a direction word sets the sign along the axis it names, and must name the key's axis:
   ``left`` for a downward acceleration, or ``down`` for an angular one, is the ``sign``
   verdict whatever the number (the senses of rotation are cw and ccw);
-- a bare positive number is a magnitude: right when it matches the key's size, as a
-  textbook writes ``11.3 rad/s^2`` for a drum turning clockwise. A ``signed`` rule takes
-  it as positive instead (a course that wants signs);
+- a bare positive number is a magnitude where the key's sign is a direction (see
+  :func:`directed`): right when it matches the key's size, as a textbook writes
+  ``11.3 rad/s^2`` for a drum turning clockwise. A ``signed`` rule takes it as positive
+  instead (a course that wants signs), as it always is for a signed scalar (work);
 - an explicit sign (``-4.52``, ``+4.52``) is taken as written.
 
 The comparison is one of:
@@ -137,7 +138,7 @@ def judge(
             f"{key.name} is {_dimension(key.dim)}",
             cell.value,
         )
-    if not cell.signed and not rule.signed and key.value < 0:
+    if not cell.signed and not rule.signed and key.value < 0 and directed(key):
         cell = replace(cell, value=-cell.value)  # a bare magnitude: the key's sense
     misdirected = _axis_problem(cell, key)
     if misdirected:
@@ -146,6 +147,19 @@ def judge(
             return PartResult("sign", rule.partial, misdirected, cell.value)
         return PartResult("wrong", 0.0, f"off by {_off(size, key)}", cell.value)
     return _compare(cell, key, rule)
+
+
+def directed(key: Key) -> bool:
+    """Whether the key's sign is a direction (so a bare number may be its magnitude): a
+    direction stated with it, an angular unit, or a length, velocity, acceleration, force
+    or momentum; not a signed scalar such as work or energy (-50 J is not 50 J).
+
+    >>> directed(Key("U", -50.0, Dim.of("energy"), "J"))
+    False
+    """
+    if key.direction:
+        return True
+    return any(unit in key.unit for unit in ANGULAR_UNITS) or key.dim in LINEAR
 
 
 def _axis_problem(cell: Cell, key: Key) -> str:
