@@ -52,6 +52,8 @@ def test_canvas_quiz_student_analysis(tmp_path: Path) -> None:
         "S003": {"alpha": "sign", "T": "wrong", "a": "sign"},
     }
     assert any("'sis_id'" in w for w in report["warnings"])
+    poe = next(s for s in report["students"] if s["student"] == "S003")
+    assert poe["parts"]["T"]["feedback"].startswith("the static answer T = m_b g")
 
 
 def test_canvas_gradebook_skips_points_possible_and_test_student(tmp_path: Path) -> None:
@@ -74,6 +76,8 @@ def test_moodle_semicolons_and_decimal_commas(tmp_path: Path) -> None:
         "S001": ALL_RIGHT,
         "S002": {"alpha": "wrong", "T": "sign", "a": "missing"},
     }
+    roe = next(s for s in report["students"] if s["student"] == "S002")
+    assert roe["parts"]["alpha"]["feedback"].startswith("a value in radians labelled as degrees")
     warnings = "\n".join(report["warnings"])
     assert "decimal comma" in warnings
     assert "'Response 1' -> alpha, 'Response 2' -> T, 'Response 3' -> a" in warnings
