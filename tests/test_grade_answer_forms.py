@@ -159,3 +159,26 @@ def test_sigfig_in_the_unit_written() -> None:
     assert _verdict("14.9 ft/s^2", "a", Rule(sigfig=3)) == "wrong"  # 0.081 > 0.051
     # 105.86 N / 4.44822 = 23.799 lb: 23.8 passes to 3 figures
     assert _verdict("23.8 lb", "T", Rule(sigfig=3)) == "correct"
+
+
+def test_sigfig_option_through_the_command_line(tmp_path: Path) -> None:
+    import json
+
+    from typer.testing import CliRunner
+
+    from dynsolve.cli import app
+
+    # a = 4.5168 m/s^2 = 14.819 ft/s^2 and T = 105.86 N = 23.799 lb: right to 3 figures
+    answers = tmp_path / "answers.csv"
+    answers.write_text("student,alpha,T,a\ns1,11.3 rad/s^2,23.8 lb,14.8 ft/s^2\n")
+    out = tmp_path / "r.json"
+    drum = ROOT / "problems" / "seed" / "fa_hib_drum.dyn"
+    args = ["grade", str(drum), str(answers), "--sigfig", "3", "--json", str(out)]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    parts = json.loads(out.read_text())["students"][0]["parts"]
+    assert {p: c["verdict"] for p, c in parts.items()} == {
+        "alpha": "correct",
+        "T": "correct",
+        "a": "correct",
+    }

@@ -90,9 +90,8 @@ class Diagnoser:
         if signature not in self._slips:  # the same keys (no variants): built once
             self._slips[signature] = self._answer_side(part, keys)
         if self.variants is not None and self.model:
-            base = self.base_answers().get(part)
-            moved = base is not None and not _close(base, key.value, 1e-6)
-            if moved and _close(value, base, tolerance):  # type: ignore[arg-type]
+            base = self.base_answers().get(part, key.value)  # none: nothing to tell apart
+            if not _close(base, key.value, 1e-6) and _close(value, base, tolerance):
                 return BASE_NUMBERS
         slips = self._slips[signature]
         if key.dim == FORCE:
