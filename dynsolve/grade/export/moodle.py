@@ -1,0 +1,105 @@
+"""A problem's variants as a Moodle XML quiz: one ``numerical`` question per student and
+part, with the part's unit and the tolerance its grading rule allows.
+
+The file follows the Moodle XML format as Moodle's ``qformat_xml`` reads it: a ``<quiz>``
+of ``<question>`` elements, first a ``category`` pseudo-question naming where the
+questions go, then per question ``<name><text>``, ``<questiontext format="html">``, one
+``<answer fraction="100">`` with its ``<text>`` and ``<tolerance>`` (absolute, ±), and
+``<units>`` (``<unit>`` with ``<multiplier>`` 1 and ``<unit_name>``). Units are optional
+for the student (``unitgradingtype`` 0): a bare number is read in the stated unit. Every
+text is an ElementTree node, so student ids and spec text are escaped, never spliced.
+
+>>> from dynsolve.grade.export.table import Answer, GivenLine, Part, Variant, VariantTable
+>>> from dynsolve.grade.semantics import Rule
+>>> table = VariantTable("Block", (GivenLine("m", "mass"),), (Part("a", "m/s^2", Rule(), False),),
+...     (Variant("s1", {"m": "4 kg"}, {"a": Answer(2.5, "", 0.025)}),))
+>>> quiz = ElementTree.fromstring(moodle_xml(table))
+>>> [q.get("type") for q in quiz], quiz.find("question[2]/answer/tolerance").text
+(['category', 'numerical'], '0.025')
+"""
+
+from __future__ import annotations
+
+from xml.etree import ElementTree
+
+from dynsolve.grade.export.table import Part, Variant, VariantTable
+
+PENALTY = "0.3333333"  # Moodle's default penalty for each wrong try (interactive modes)
+MAX_NAME = 255  # Moodle's question name column
+MAX_IDNUMBER = 100
+
+
+def moodle_xml(table: VariantTable, category: str = "") -> bytes:
+    """The quiz as UTF-8 XML bytes; ``category`` defaults to ``dynsolve/TITLE``."""
+    quiz = ElementTree.Element("quiz")
+    header = ElementTree.SubElement(quiz, "question", type="category")
+    path = category or f"dynsolve/{table.title}"
+    _text(ElementTree.SubElement(header, "category"), f"$course$/top/{path}")
+    for variant in table.variants:
+        for part in table.parts:
+            quiz.append(_numerical(table, variant, part))
+    ElementTree.indent(quiz)
+    return ElementTree.tostring(quiz, encoding="utf-8", xml_declaration=True) + b"\n"
+
+
+def _numerical(table: VariantTable, variant: Variant, part: Part) -> ElementTree.Element:
+    answer = variant.answers[part.name]
+    question = ElementTree.Element("question", type="numerical")
+    name = f"{table.title}: {variant.student}: {part.name}"
+    _text(ElementTree.SubElement(question, "name"), name[:MAX_NAME])
+    statement = ElementTree.SubElement(question, "questiontext", format="html")
+    _text(statement, question_html(table, variant, part))
+    _text(ElementTree.SubElement(question, "generalfeedback", format="html"), "")
+    ElementTree.SubElement(question, "defaultgrade").text = f"{part.rule.weight:g}"
+    ElementTree.SubElement(question, "penalty").text = PENALTY
+    ElementTree.SubElement(question, "hidden").text = "0"
+    idnumber = f"{variant.student}:{part.name}"
+    ElementTree.SubElement(question, "idnumber").text = idnumber[:MAX_IDNUMBER]
+    key = ElementTree.SubElement(question, "answer", fraction="100", format="moodle_auto_format")
+    _text(key, number(answer.value))
+    ElementTree.SubElement(key, "tolerance").text = number(answer.tolerance)
+    _text(ElementTree.SubElement(key, "feedback", format="html"), "")
+    if part.unit:
+        units = ElementTree.SubElement(question, "units")
+        unit = ElementTree.SubElement(units, "unit")
+        ElementTree.SubElement(unit, "multiplier").text = "1"
+        ElementTree.SubElement(unit, "unit_name").text = part.unit
+    for tag, value in (("unitgradingtype", "0"), ("unitpenalty", "0.1000000"),
+                       ("showunits", "0" if part.unit else "3"), ("unitsleft", "0")):  # fmt: skip
+        ElementTree.SubElement(question, tag).text = value
+    return question
+
+
+def question_html(table: VariantTable, variant: Variant, part: Part) -> str:
+    """The question's statement (HTML): title, the variant's givens, the part asked for."""
+    body = ElementTree.Element("div")
+    ElementTree.SubElement(body, "p").text = table.title
+    ElementTree.SubElement(body, "p").text = "Given:"
+    items = ElementTree.SubElement(body, "ul")
+    for given in table.givens:
+        line = f"{given.name} = {variant.givens[given.name]}"
+        ElementTree.SubElement(items, "li").text = line + (
+            f" ({given.description})" if given.description else ""
+        )
+    ElementTree.SubElement(body, "p").text = asked(part)
+    return ElementTree.tostring(body, encoding="unicode", method="html")
+
+
+def asked(part: Part) -> str:
+    """What the student is asked for: ``Find a in m/s^2.`` (``the magnitude of`` when the
+    key has a direction)."""
+    what = f"the magnitude of {part.name}" if part.directed else part.name
+    return f"Find {what}" + (f" in {part.unit}." if part.unit else ".")
+
+
+def number(value: float) -> str:
+    """A number as Moodle reads it: 12 significant figures, no thousands separator.
+
+    >>> number(11.569347660759632), number(0.0051), number(-2.0)
+    ('11.5693476608', '0.0051', '-2')
+    """
+    return f"{value:.12g}"
+
+
+def _text(parent: ElementTree.Element, text: str) -> None:
+    ElementTree.SubElement(parent, "text").text = text

@@ -1,0 +1,137 @@
+"""A problem's variants as a PrairieLearn question folder that needs no dynsolve on the
+course server: ``info.json``, ``question.html`` and a ``server.py`` whose ``generate``
+draws one row of the pre-computed variant table embedded in it.
+
+- ``info.json``: ``uuid``, ``title``, ``topic``, ``tags``, ``type`` ``"v3"`` (the fields
+  PrairieLearn's question schema requires are uuid, type, title and topic).
+- ``question.html``: the statement in ``<pl-question-panel>`` (givens from
+  ``{{params.NAME}}``), then one ``<pl-number-input>`` per part with ``answers-name``,
+  ``label``, ``suffix`` (the unit) and the part's rule: ``comparison="relabs"`` with
+  ``rtol``/``atol``, or ``comparison="sigfig"``/``"decdig"`` with ``digits``; ``weight``.
+- ``server.py``: the table is a Python string literal (``repr`` of its JSON), so no text
+  of the spec or the variants file can become code. It lives in ``server.py``, which
+  students cannot download (``clientFilesQuestion/`` is public), and PrairieLearn seeds
+  ``random`` per variant, so a variant's row is stable across reloads.
+"""
+
+from __future__ import annotations
+
+import json
+import uuid as uuids
+from collections.abc import Mapping
+from pathlib import Path
+from xml.etree import ElementTree
+
+from dynsolve.grade.export.moodle import asked, number
+from dynsolve.grade.export.table import Part, VariantTable
+from dynsolve.grade.export.target import ExportError
+
+SERVER = '''"""PrairieLearn server code written by dynsolve (dynsolve export prairielearn).
+
+Each variant is one row of a table dynsolve computed and checked: the givens shown to
+the student (params) and the answers (correct_answers). Regenerate it rather than edit.
+"""
+
+import json
+import random
+
+VARIANTS = json.loads({table})
+
+
+def generate(data):
+    """Pick one pre-computed variant (PrairieLearn seeds random per variant)."""
+    row = random.choice(VARIANTS)
+    data["params"].update(row["params"])
+    data["correct_answers"].update(row["correct_answers"])
+'''
+
+
+def question_files(
+    table: VariantTable, topic: str, tags: tuple[str, ...] = (), uuid: str = ""
+) -> dict[str, str]:
+    """The folder's files (name → text); a new random UUID unless ``uuid`` is given."""
+    info = {
+        "uuid": uuid or str(uuids.uuid4()),
+        "title": table.title,
+        "topic": topic,
+        "tags": ["dynsolve", *tags],
+        "type": "v3",
+    }
+    return {
+        "info.json": json.dumps(info, indent=2, ensure_ascii=False) + "\n",
+        "question.html": question_html(table),
+        "server.py": SERVER.format(table=repr(table_json(table))),
+    }
+
+
+def table_json(table: VariantTable) -> str:
+    """The variant rows as JSON: each with ``params`` (given texts) and ``correct_answers``
+    (numbers in the parts' units); identical rows once, no student ids."""
+    rows: dict[str, dict[str, object]] = {}
+    for variant in table.variants:
+        row = {
+            "params": dict(variant.givens),
+            "correct_answers": {n: a.value for n, a in variant.answers.items()},
+        }
+        rows.setdefault(json.dumps(row, sort_keys=True), row)
+    return json.dumps(list(rows.values()), separators=(",", ":"), ensure_ascii=False)
+
+
+def question_html(table: VariantTable) -> str:
+    """The statement panel and one ``pl-number-input`` per part."""
+    root = ElementTree.Element("div")
+    panel = ElementTree.SubElement(root, "pl-question-panel")
+    ElementTree.SubElement(panel, "p").text = table.title
+    ElementTree.SubElement(panel, "p").text = "Given:"
+    items = ElementTree.SubElement(panel, "ul")
+    for given in table.givens:
+        note = f" ({given.description})" if given.description else ""
+        shown = "{{params." + given.name + "}}"
+        ElementTree.SubElement(items, "li").text = f"{given.name} = {shown}{note}"
+    for part in table.parts:
+        ElementTree.SubElement(panel, "p").text = asked(part)
+    for part in table.parts:
+        paragraph = ElementTree.SubElement(root, "p")
+        ElementTree.SubElement(paragraph, "pl-number-input", number_attributes(part))
+    for child in root:
+        ElementTree.indent(child)
+    return "\n".join(ElementTree.tostring(c, encoding="unicode", method="html") for c in root)
+
+
+def number_attributes(part: Part) -> Mapping[str, str]:
+    """The ``pl-number-input`` attributes that grade ``part`` as its rule says."""
+    rule = part.rule
+    attributes = {"answers-name": part.name, "label": f"{part.name} ="}
+    if part.unit:
+        attributes["suffix"] = part.unit
+    if rule.sigfig or rule.decdig:
+        attributes["comparison"] = "sigfig" if rule.sigfig else "decdig"
+        attributes["digits"] = str(rule.sigfig or rule.decdig)
+    else:
+        attributes["comparison"] = "relabs"
+        attributes["rtol"] = number(rule.rtol)
+        attributes["atol"] = number(rule.atol / _factor(part.unit))
+    if rule.weight != 1:
+        if rule.weight != int(rule.weight):
+            raise ExportError(
+                f"{part.name} weight {rule.weight:g}: PrairieLearn weights are whole numbers",
+                hint="use whole-number weights in the grading: section",
+            )
+        attributes["weight"] = str(int(rule.weight))
+    return attributes
+
+
+def existing_uuid(folder: Path) -> str:
+    """The UUID of a question already in ``folder`` (kept when it is written again, so
+    PrairieLearn sees the same question), or "" when there is none."""
+    try:
+        value = json.loads((folder / "info.json").read_text(encoding="utf-8")).get("uuid", "")
+        return str(uuids.UUID(str(value)))
+    except (OSError, ValueError, AttributeError):
+        return ""
+
+
+def _factor(unit: str) -> float:
+    from dynsolve.quantities import unit_info
+
+    return unit_info(unit).factor
