@@ -5,9 +5,10 @@ draws one row of the pre-computed variant table embedded in it.
 - ``info.json``: ``uuid``, ``title``, ``topic``, ``tags``, ``type`` ``"v3"`` (the fields
   PrairieLearn's question schema requires are uuid, type, title and topic).
 - ``question.html``: the statement in ``<pl-question-panel>`` (givens from
-  ``{{params.NAME}}``), then one ``<pl-number-input>`` per part with ``answers-name``,
-  ``label``, ``suffix`` (the unit) and the part's rule: ``comparison="relabs"`` with
-  ``rtol``/``atol``, or ``comparison="sigfig"``/``"decdig"`` with ``digits``; ``weight``.
+  ``{{params.NAME}}``; a ``{`` of the spec's text is written ``&#123;``, never a template
+  tag), then one ``<pl-number-input>`` per part with ``answers-name``, ``label``,
+  ``suffix`` (the unit) and the part's rule: ``comparison="relabs"`` with ``rtol`` and
+  ``atol``, or ``comparison="sigfig"``/``"decdig"`` with ``digits``; ``weight``.
 - ``server.py``: the table is a Python string literal (``repr`` of its JSON), so no text
   of the spec or the variants file can become code. It lives in ``server.py``, which
   students cannot download (``clientFilesQuestion/`` is public), and PrairieLearn seeds
@@ -25,6 +26,8 @@ from xml.etree import ElementTree
 from dynsolve.grade.export.moodle import asked, number
 from dynsolve.grade.export.table import Part, VariantTable
 from dynsolve.grade.export.target import ExportError
+
+_BRACE = "\ue000"  # a private-use stand-in for "{" in spec text, until serialized
 
 SERVER = '''"""PrairieLearn server code written by dynsolve (dynsolve export prairielearn).
 
@@ -81,11 +84,11 @@ def question_html(table: VariantTable) -> str:
     """The statement panel and one ``pl-number-input`` per part."""
     root = ElementTree.Element("div")
     panel = ElementTree.SubElement(root, "pl-question-panel")
-    ElementTree.SubElement(panel, "p").text = table.title
+    ElementTree.SubElement(panel, "p").text = _inert(table.title)
     ElementTree.SubElement(panel, "p").text = "Given:"
     items = ElementTree.SubElement(panel, "ul")
     for given in table.givens:
-        note = f" ({given.description})" if given.description else ""
+        note = f" ({_inert(given.description)})" if given.description else ""
         shown = "{{params." + given.name + "}}"
         ElementTree.SubElement(items, "li").text = f"{given.name} = {shown}{note}"
     for part in table.parts:
@@ -95,7 +98,8 @@ def question_html(table: VariantTable) -> str:
         ElementTree.SubElement(paragraph, "pl-number-input", number_attributes(part))
     for child in root:
         ElementTree.indent(child)
-    return "\n".join(ElementTree.tostring(c, encoding="unicode", method="html") for c in root)
+    html = "\n".join(ElementTree.tostring(c, encoding="unicode", method="html") for c in root)
+    return html.replace(_BRACE, "&#123;")
 
 
 def number_attributes(part: Part) -> Mapping[str, str]:
@@ -119,6 +123,12 @@ def number_attributes(part: Part) -> Mapping[str, str]:
             )
         attributes["weight"] = str(int(rule.weight))
     return attributes
+
+
+def _inert(text: str) -> str:
+    """Spec text that mustache leaves alone: each ``{`` becomes ``&#123;`` once serialized
+    (a title holding ``{{{params.x}}}`` would otherwise be a template tag)."""
+    return text.replace(_BRACE, "").replace("{", _BRACE)
 
 
 def existing_uuid(folder: Path) -> str:
