@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from xml.etree import ElementTree
 
+from dynsolve.grade.export.statement import asked, statement, to_html
 from dynsolve.grade.export.table import Part, Variant, VariantTable
 
 PENALTY = "0.3333333"  # Moodle's default penalty for each wrong try (interactive modes)
@@ -72,24 +73,8 @@ def _numerical(table: VariantTable, variant: Variant, part: Part) -> ElementTree
 
 def question_html(table: VariantTable, variant: Variant, part: Part) -> str:
     """The question's statement (HTML): title, the variant's givens, the part asked for."""
-    body = ElementTree.Element("div")
-    ElementTree.SubElement(body, "p").text = table.title
-    ElementTree.SubElement(body, "p").text = "Given:"
-    items = ElementTree.SubElement(body, "ul")
-    for given in table.givens:
-        line = f"{given.name} = {variant.givens[given.name]}"
-        ElementTree.SubElement(items, "li").text = line + (
-            f" ({given.description})" if given.description else ""
-        )
-    ElementTree.SubElement(body, "p").text = asked(part)
-    return ElementTree.tostring(body, encoding="unicode", method="html")
-
-
-def asked(part: Part) -> str:
-    """What the student is asked for: ``Find a in m/s^2.`` (``the magnitude of`` when the
-    key has a direction)."""
-    what = f"the magnitude of {part.name}" if part.directed else part.name
-    return f"Find {what}" + (f" in {part.unit}." if part.unit else ".")
+    givens = [(g.name, variant.givens[g.name], g.description) for g in table.givens]
+    return to_html(statement("div", table.title, givens, [asked(part)]))
 
 
 def number(value: float) -> str:

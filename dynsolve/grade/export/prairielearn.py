@@ -23,11 +23,10 @@ from collections.abc import Mapping
 from pathlib import Path
 from xml.etree import ElementTree
 
-from dynsolve.grade.export.moodle import asked, number
+from dynsolve.grade.export.moodle import number
+from dynsolve.grade.export.statement import asked, statement, to_html
 from dynsolve.grade.export.table import Part, VariantTable
 from dynsolve.grade.export.target import ExportError
-
-_BRACE = "\ue000"  # a private-use stand-in for "{" in spec text, until serialized
 
 SERVER = '''"""PrairieLearn server code written by dynsolve (dynsolve export prairielearn).
 
@@ -82,24 +81,16 @@ def table_json(table: VariantTable) -> str:
 
 def question_html(table: VariantTable) -> str:
     """The statement panel and one ``pl-number-input`` per part."""
-    root = ElementTree.Element("div")
-    panel = ElementTree.SubElement(root, "pl-question-panel")
-    ElementTree.SubElement(panel, "p").text = _inert(table.title)
-    ElementTree.SubElement(panel, "p").text = "Given:"
-    items = ElementTree.SubElement(panel, "ul")
-    for given in table.givens:
-        note = f" ({_inert(given.description)})" if given.description else ""
-        shown = "{{params." + given.name + "}}"
-        ElementTree.SubElement(items, "li").text = f"{given.name} = {shown}{note}"
+    givens = [(g.name, "{{params." + g.name + "}}", g.description) for g in table.givens]
+    panel = statement("pl-question-panel", table.title, givens, [asked(p) for p in table.parts])
+    blocks = [panel]
     for part in table.parts:
-        ElementTree.SubElement(panel, "p").text = asked(part)
-    for part in table.parts:
-        paragraph = ElementTree.SubElement(root, "p")
+        paragraph = ElementTree.Element("p")
         ElementTree.SubElement(paragraph, "pl-number-input", number_attributes(part))
-    for child in root:
-        ElementTree.indent(child)
-    html = "\n".join(ElementTree.tostring(c, encoding="unicode", method="html") for c in root)
-    return html.replace(_BRACE, "&#123;")
+        blocks.append(paragraph)
+    for block in blocks:
+        ElementTree.indent(block)
+    return "\n".join(to_html(block) for block in blocks) + "\n"
 
 
 def number_attributes(part: Part) -> Mapping[str, str]:
@@ -123,12 +114,6 @@ def number_attributes(part: Part) -> Mapping[str, str]:
             )
         attributes["weight"] = str(int(rule.weight))
     return attributes
-
-
-def _inert(text: str) -> str:
-    """Spec text that mustache leaves alone: each ``{`` becomes ``&#123;`` once serialized
-    (a title holding ``{{{params.x}}}`` would otherwise be a template tag)."""
-    return text.replace(_BRACE, "").replace("{", _BRACE)
 
 
 def existing_uuid(folder: Path) -> str:
