@@ -867,6 +867,14 @@ def export_moodle(
     category: Annotated[
         str, typer.Option(help="Question bank category (default: dynsolve/TITLE).")
     ] = "",
+    calculated: Annotated[
+        bool,
+        typer.Option(
+            "--calculated",
+            help="One calculated question per part whose dataset items are the variants "
+            "(Moodle draws one per attempt), instead of a numerical question per student.",
+        ),
+    ] = False,
     rtol: QuizRtol = None,
     sigfig: QuizSigfig = None,
     decdig: QuizDecdig = None,
@@ -877,7 +885,10 @@ def export_moodle(
     Each question states the student's givens and has their answer with its unit and
     the tolerance of the part's grading rule (Question bank > Import > Moodle XML).
     """
-    _export_quiz(problem, output, "moodle", variants, rtol, sigfig, decdig, force, category)
+    _export_quiz(
+        problem, output, "moodle", variants, rtol, sigfig, decdig, force, category,
+        calculated=calculated,
+    )  # fmt: skip
 
 
 @export_app.command("prairielearn")
@@ -916,6 +927,7 @@ def _export_quiz(
     category: str = "",
     topic: str = "Dynamics",
     tags: tuple[str, ...] = (),
+    calculated: bool = False,
 ) -> None:
     from dynsolve.errors import DynsolveError
     from dynsolve.grade.export.command import QuizRequest, export_quiz
@@ -926,7 +938,10 @@ def _export_quiz(
         sigfig=sigfig or 0,
         decdig=decdig or 0,
     )
-    request = QuizRequest(problem, output, kind, variants, overrides, category, topic, tags, force)
+    request = QuizRequest(
+        problem, output, kind, variants, overrides, category=category, calculated=calculated,
+        topic=topic, tags=tags, force=force,
+    )  # fmt: skip
     try:
         table = export_quiz(request)
     except DynsolveError as error:

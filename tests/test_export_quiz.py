@@ -321,3 +321,58 @@ def test_export_help_names_every_format() -> None:
     assert result.exit_code == 0
     for name in ("canvas", "scores", "moodle-xml", "prairielearn"):
         assert name in result.output
+
+
+# qtype_calculated's placeholder: a letter, then anything but > } space < { " '
+MOODLE_WILDCARD = re.compile(r"\{([A-Za-z][^>} <{\"']*)\}")
+
+
+def test_moodle_calculated_questions_draw_the_variants(tmp_path: Path) -> None:
+    out = tmp_path / "calc.xml"
+    args = ["export", "moodle-xml", str(DRUM), "--variants", str(DRUM_VARIANTS), "-o", str(out)]
+    result = runner.invoke(app, [*args, "--calculated"])
+    assert result.exit_code == ExitCode.OK, result.output
+    quiz = ElementTree.parse(out).getroot()
+    questions = quiz.findall("question")[1:]
+    assert [q.get("type") for q in questions] == ["calculated"] * 3  # one per part
+    rows = list(_drum_rows().values())
+    for question in questions:
+        # what import_calculated reads without a default (format.php indexes them directly)
+        for path in ("name/text", "questiontext/text", "answer/tolerance", "answer/tolerancetype",
+                     "answer/correctanswerformat", "answer/correctanswerlength",
+                     "dataset_definitions/dataset_definition"):  # fmt: skip
+            assert question.find(path) is not None, path
+        assert question.find("questiontext").get("format") in MOODLE_TEXT_FORMATS
+        assert question.findtext("answer/tolerancetype") == "1"  # relative
+        assert float(question.findtext("answer/tolerance")) == 0.01  # the default 1 %
+        datasets = {}
+        for definition in question.findall("dataset_definitions/dataset_definition"):
+            assert definition.findtext("status/text") == "private"
+            assert definition.findtext("type") == "calculated"
+            items = definition.findall("dataset_items/dataset_item")
+            assert int(definition.findtext("itemcount")) == len(items) <= 100
+            assert [int(i.findtext("number")) for i in items] == list(range(1, len(items) + 1))
+            datasets[definition.findtext("name/text")] = [float(i.findtext("value")) for i in items]
+        wildcards = set(MOODLE_WILDCARD.findall(question.findtext("questiontext/text")))
+        wildcards |= set(MOODLE_WILDCARD.findall(question.findtext("answer/text")))
+        assert (
+            wildcards
+            == set(datasets)
+            == {"m_d", "r", "m_b", f"key_{question.findtext('idnumber')}"}
+        )
+        part = question.findtext("idnumber")
+        for k in range(len(datasets["m_d"])):  # item k of every dataset is one variant
+            givens = {"m_d": str(datasets["m_d"][k]), "k_O": "0.25", "r": str(datasets["r"][k]),
+                      "m_b": str(datasets["m_b"][k]), "g": "9.81"}  # fmt: skip
+            assert datasets[f"key_{part}"][k] == pytest.approx(_drum(givens)[part], rel=1e-9)
+            assert any(_number(r["m_d"]) == datasets["m_d"][k] and
+                       _number(r["r"]) == datasets["r"][k] for r in rows)  # fmt: skip
+
+
+def test_moodle_calculated_refuses_a_sigfig_rule(tmp_path: Path) -> None:
+    out = tmp_path / "calc.xml"
+    args = ["export", "moodle-xml", str(DRUM), "--variants", str(DRUM_VARIANTS), "-o", str(out)]
+    result = runner.invoke(app, [*args, "--calculated", "--sigfig", "3"])
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "sigfig rule has no Moodle calculated tolerance" in result.output
+    assert not out.exists()

@@ -57,6 +57,7 @@ class QuizRequest:
     variants: Path | None = None
     overrides: Rule = field(default_factory=Rule)
     category: str = ""  # moodle: question bank category under the course's top
+    calculated: bool = False  # moodle: calculated questions instead of numerical ones
     topic: str = "Dynamics"  # prairielearn: info.json topic
     tags: tuple[str, ...] = ()
     force: bool = False
@@ -99,9 +100,12 @@ def export_quiz(request: QuizRequest) -> VariantTable:
     variants = read_variants(request.variants) if request.variants is not None else None
     table = variant_table(spec, variants, request.options, request.overrides)
     if request.format == "moodle":
+        from dynsolve.grade.export.calculated import calculated_questions
         from dynsolve.grade.export.moodle import moodle_xml
 
-        write_file(request.output, moodle_xml(table, request.category), request.force)
+        questions = calculated_questions(table) if request.calculated else None
+        quiz = moodle_xml(table, request.category, questions)
+        write_file(request.output, quiz, request.force)
     else:
         from dynsolve.grade.export.prairielearn import existing_uuid, question_files
 

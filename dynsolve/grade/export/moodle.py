@@ -20,6 +20,7 @@ text is an ElementTree node, so student ids and spec text are escaped, never spl
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from xml.etree import ElementTree
 
 from dynsolve.grade.export.statement import asked, statement, to_html
@@ -30,45 +31,69 @@ MAX_NAME = 255  # Moodle's question name column
 MAX_IDNUMBER = 100
 
 
-def moodle_xml(table: VariantTable, category: str = "") -> bytes:
-    """The quiz as UTF-8 XML bytes; ``category`` defaults to ``dynsolve/TITLE``."""
+def moodle_xml(
+    table: VariantTable,
+    category: str = "",
+    questions: Sequence[ElementTree.Element] | None = None,
+) -> bytes:
+    """The quiz as UTF-8 XML bytes; ``category`` defaults to ``dynsolve/TITLE``. The
+    questions are one numerical question per student and part unless ``questions`` are
+    given (the calculated ones of :mod:`dynsolve.grade.export.calculated`)."""
     quiz = ElementTree.Element("quiz")
     header = ElementTree.SubElement(quiz, "question", type="category")
     path = category or f"dynsolve/{table.title}"
-    _text(ElementTree.SubElement(header, "category"), f"$course$/top/{path}")
-    for variant in table.variants:
-        for part in table.parts:
-            quiz.append(_numerical(table, variant, part))
+    text(ElementTree.SubElement(header, "category"), f"$course$/top/{path}")
+    if questions is None:
+        questions = [_numerical(table, v, p) for v in table.variants for p in table.parts]
+    quiz.extend(questions)
     ElementTree.indent(quiz)
     return ElementTree.tostring(quiz, encoding="utf-8", xml_declaration=True) + b"\n"
 
 
 def _numerical(table: VariantTable, variant: Variant, part: Part) -> ElementTree.Element:
     answer = variant.answers[part.name]
-    question = ElementTree.Element("question", type="numerical")
-    name = f"{table.title}: {variant.student}: {part.name}"
-    _text(ElementTree.SubElement(question, "name"), name[:MAX_NAME])
-    statement = ElementTree.SubElement(question, "questiontext", format="html")
-    _text(statement, question_html(table, variant, part))
-    _text(ElementTree.SubElement(question, "generalfeedback", format="html"), "")
+    question = question_header(
+        "numerical",
+        f"{table.title}: {variant.student}: {part.name}",
+        question_html(table, variant, part),
+        part,
+        f"{variant.student}:{part.name}",
+    )
+    key = ElementTree.SubElement(question, "answer", fraction="100", format="moodle_auto_format")
+    text(key, number(answer.value))
+    ElementTree.SubElement(key, "tolerance").text = number(answer.tolerance)
+    text(ElementTree.SubElement(key, "feedback", format="html"), "")
+    unit_options(question, part)
+    return question
+
+
+def question_header(
+    kind: str, name: str, html: str, part: Part, idnumber: str
+) -> ElementTree.Element:
+    """A ``<question>`` with the fields every type shares: name, HTML question text,
+    general feedback, default grade (the part's weight), penalty, hidden, idnumber."""
+    question = ElementTree.Element("question", type=kind)
+    text(ElementTree.SubElement(question, "name"), name[:MAX_NAME])
+    text(ElementTree.SubElement(question, "questiontext", format="html"), html)
+    text(ElementTree.SubElement(question, "generalfeedback", format="html"), "")
     ElementTree.SubElement(question, "defaultgrade").text = f"{part.rule.weight:g}"
     ElementTree.SubElement(question, "penalty").text = PENALTY
     ElementTree.SubElement(question, "hidden").text = "0"
-    idnumber = f"{variant.student}:{part.name}"
     ElementTree.SubElement(question, "idnumber").text = idnumber[:MAX_IDNUMBER]
-    key = ElementTree.SubElement(question, "answer", fraction="100", format="moodle_auto_format")
-    _text(key, number(answer.value))
-    ElementTree.SubElement(key, "tolerance").text = number(answer.tolerance)
-    _text(ElementTree.SubElement(key, "feedback", format="html"), "")
+    return question
+
+
+def unit_options(question: ElementTree.Element, part: Part) -> None:
+    """The part's unit (multiplier 1) and how units are graded: optional for the student
+    (``unitgradingtype`` 0, a bare number is read in the unit), typed in a box
+    (``showunits`` 0, qtype_numerical::UNITINPUT; 3, UNITNONE, without a unit)."""
     if part.unit:
-        units = ElementTree.SubElement(question, "units")
-        unit = ElementTree.SubElement(units, "unit")
+        unit = ElementTree.SubElement(ElementTree.SubElement(question, "units"), "unit")
         ElementTree.SubElement(unit, "multiplier").text = "1"
         ElementTree.SubElement(unit, "unit_name").text = part.unit
     for tag, value in (("unitgradingtype", "0"), ("unitpenalty", "0.1000000"),
                        ("showunits", "0" if part.unit else "3"), ("unitsleft", "0")):  # fmt: skip
         ElementTree.SubElement(question, tag).text = value
-    return question
 
 
 def question_html(table: VariantTable, variant: Variant, part: Part) -> str:
@@ -86,5 +111,6 @@ def number(value: float) -> str:
     return f"{value:.12g}"
 
 
-def _text(parent: ElementTree.Element, text: str) -> None:
-    ElementTree.SubElement(parent, "text").text = text
+def text(parent: ElementTree.Element, content: str) -> None:
+    """A ``<text>`` child holding ``content`` (escaped by ElementTree)."""
+    ElementTree.SubElement(parent, "text").text = content
