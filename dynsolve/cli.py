@@ -851,6 +851,12 @@ QuizVariants = Annotated[
     ),
 ]
 QuizRtol = Annotated[str | None, typer.Option("--rtol", help="Relative tolerance: '1%' or 0.01.")]
+QuizAtol = Annotated[
+    str | None,
+    typer.Option(
+        "--atol", help="Absolute tolerance with a unit: '0.01 m/s' (parts of its dimension)."
+    ),
+]
 QuizSigfig = Annotated[
     int | None, typer.Option("--sigfig", min=1, max=15, help="Grade to N significant figures.")
 ]
@@ -876,6 +882,7 @@ def export_moodle(
         ),
     ] = False,
     rtol: QuizRtol = None,
+    atol: QuizAtol = None,
     sigfig: QuizSigfig = None,
     decdig: QuizDecdig = None,
     force: Force = False,
@@ -887,7 +894,7 @@ def export_moodle(
     """
     _export_quiz(
         problem, output, "moodle", variants, rtol, sigfig, decdig, force, category,
-        calculated=calculated,
+        calculated=calculated, atol=atol or "",
     )  # fmt: skip
 
 
@@ -899,6 +906,7 @@ def export_prairielearn(
     topic: Annotated[str, typer.Option(help="info.json topic.")] = "Dynamics",
     tag: Annotated[list[str] | None, typer.Option(help="An info.json tag (repeatable).")] = None,
     rtol: QuizRtol = None,
+    atol: QuizAtol = None,
     sigfig: QuizSigfig = None,
     decdig: QuizDecdig = None,
     force: Force = False,
@@ -911,7 +919,7 @@ def export_prairielearn(
     """
     _export_quiz(
         problem, output, "prairielearn", variants, rtol, sigfig, decdig, force, "", topic,
-        tuple(tag or ()),
+        tuple(tag or ()), atol=atol or "",
     )  # fmt: skip
 
 
@@ -928,6 +936,7 @@ def _export_quiz(
     topic: str = "Dynamics",
     tags: tuple[str, ...] = (),
     calculated: bool = False,
+    atol: str = "",
 ) -> None:
     from dynsolve.errors import DynsolveError
     from dynsolve.grade.export.command import QuizRequest, export_quiz
@@ -940,7 +949,7 @@ def _export_quiz(
     )
     request = QuizRequest(
         problem, output, kind, variants, overrides, category=category, calculated=calculated,
-        topic=topic, tags=tags, force=force,
+        topic=topic, tags=tags, force=force, atol=atol,
     )  # fmt: skip
     try:
         table = export_quiz(request)

@@ -376,3 +376,16 @@ def test_moodle_calculated_refuses_a_sigfig_rule(tmp_path: Path) -> None:
     assert result.exit_code == ExitCode.BAD_INPUT
     assert "sigfig rule has no Moodle calculated tolerance" in result.output
     assert not out.exists()
+
+
+def test_atol_sets_the_tolerance_of_its_dimension(tmp_path: Path) -> None:
+    out = tmp_path / "quiz.xml"
+    args = ["export", "moodle-xml", str(DRUM), "-o", str(out), "--rtol", "0"]
+    assert runner.invoke(app, [*args, "--atol", "5 cm/s^2"]).exit_code == 0
+    questions = _check_moodle(ElementTree.parse(out).getroot())
+    tolerances = {q.findtext("idnumber"): float(q.findtext("answer/tolerance")) for q in questions}
+    # 5 cm/s^2 = 0.05 m/s^2 for a; alpha and T keep rtol 0 and no atol
+    assert tolerances == {"base:alpha": 0.0, "base:T": 0.0, "base:a": pytest.approx(0.05)}
+    refused = runner.invoke(app, [*args, "--atol", "1 kg", "--force"])
+    assert refused.exit_code == ExitCode.BAD_INPUT
+    assert "matches the dimension of no part" in refused.output

@@ -56,6 +56,7 @@ class QuizRequest:
     format: str  # "moodle" or "prairielearn"
     variants: Path | None = None
     overrides: Rule = field(default_factory=Rule)
+    atol: str = ""  # "0.01 m/s": the absolute tolerance of the parts of its dimension
     category: str = ""  # moodle: question bank category under the course's top
     calculated: bool = False  # moodle: calculated questions instead of numerical ones
     topic: str = "Dynamics"  # prairielearn: info.json topic
@@ -98,7 +99,7 @@ def export_quiz(request: QuizRequest) -> VariantTable:
         raise ExportError(f"unknown quiz format {request.format!r}", hint="moodle or prairielearn")
     spec = parse_file(request.problem)
     variants = read_variants(request.variants) if request.variants is not None else None
-    table = variant_table(spec, variants, request.options, request.overrides)
+    table = variant_table(spec, variants, request.options, request.overrides, request.atol)
     if request.format == "moodle":
         from dynsolve.grade.export.calculated import calculated_questions
         from dynsolve.grade.export.moodle import moodle_xml

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from dynsolve.grade.expected import expected_answers
 from dynsolve.grade.export.target import ExportError
@@ -33,6 +33,7 @@ from dynsolve.grade.semantics import SIGFIG_SLACK, Rule, rules_for
 from dynsolve.quantities import unit_info
 from dynsolve.spec.ast import Spec
 from dynsolve.system import SolveOptions
+from dynsolve.units import Dim
 
 BASE = "base"  # the one row of a problem exported without variants
 
@@ -88,9 +89,11 @@ def variant_table(
     variants: Mapping[str, Mapping[str, str]] | None,
     options: SolveOptions | None = None,
     overrides: Rule | None = None,
+    atol: str = "",
 ) -> VariantTable:
     """The table of ``variants`` (student → given cells; None: the problem as written, one
-    row named ``base``). A variant that cannot be solved stops the export, naming it."""
+    row named ``base``). A variant that cannot be solved stops the export, naming it.
+    ``atol`` (``0.01 m/s``) sets the absolute tolerance of the parts of its dimension."""
     options = options or SolveOptions()
     rows = dict(variants) if variants else {BASE: {}}
     result = expected_answers(spec, rows, options)
@@ -105,6 +108,8 @@ def variant_table(
     first = result[next(iter(rows))]
     rules = rules_for([f.name for f in spec.finds], spec.grading, overrides)
     names = list(first.answers)
+    if atol:
+        rules = with_atol(rules, {n: first.answers[n].dim for n in names}, atol)
     parts = tuple(
         Part(
             n,
@@ -130,6 +135,29 @@ def variant_table(
         out.append(Variant(student, _given_texts(spec, cells), answers))
     lines = tuple(GivenLine(g.name, g.description) for g in spec.givens if g.quantity)
     return VariantTable(spec.title or "dynsolve problem", lines, parts, tuple(out))
+
+
+def with_atol(rules: dict[str, Rule], dims: Mapping[str, Dim], text: str) -> dict[str, Rule]:
+    """The rules with ``text``'s absolute tolerance on every part of its dimension.
+
+    >>> rules = with_atol({"a": Rule(), "T": Rule()}, {"a": Dim(L=1, T=-2), "T": Dim(1, 1, -2)},
+    ...                   "0.02 m/s^2")
+    >>> rules["a"].atol, rules["T"].atol
+    (0.02, 0.0)
+    """
+    from dynsolve.grade.cells import CellError, read_cell, same_dim
+
+    try:
+        cell = read_cell(text)
+    except CellError as error:
+        raise ExportError(f"--atol {text}: {error}", hint="e.g. --atol '0.01 m/s'") from None
+    matched = {n for n, dim in dims.items() if same_dim(dim) == same_dim(cell.dim)}
+    if not matched or cell.unit is None:
+        raise ExportError(
+            f"--atol {text} matches the dimension of no part",
+            hint="give a value with the unit of a part, e.g. --atol '0.01 m/s^2'",
+        )
+    return {n: replace(r, atol=abs(cell.value)) if n in matched else r for n, r in rules.items()}
 
 
 def tolerance(part: Part, value: float) -> float:
