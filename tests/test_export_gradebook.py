@@ -185,3 +185,18 @@ def test_an_unreadable_assignment_name_is_refused(tmp_path: Path) -> None:
     args = ["export", "canvas", str(_gradebook(tmp_path)), "-o", str(out), "--assignment", "a\nb"]
     result = runner.invoke(app, args)
     assert result.exit_code == ExitCode.BAD_INPUT and "printable" in result.output
+
+
+def test_a_broken_csv_is_an_error_with_its_line_not_a_traceback(tmp_path: Path) -> None:
+    huge = "student,score,points,max_points\n" + "x" * 200_000 + ",1,1,3\n"  # over csv's limit
+    out = tmp_path / "s.csv"
+    result = runner.invoke(
+        app, ["export", "scores", str(_gradebook(tmp_path, huge)), "-o", str(out)]
+    )
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "cannot read" in result.output and "field larger than field limit" in result.output
+    roster = tmp_path / "roster.csv"
+    roster.write_text("Student,ID\n" + "y" * 200_000 + ",1\n")
+    args = ["export", "canvas", str(_gradebook(tmp_path)), "-o", str(out), "--assignment", "HW"]
+    result = runner.invoke(app, [*args, "--roster", str(roster)])
+    assert result.exit_code == ExitCode.BAD_INPUT and "roster.csv:" in result.output

@@ -80,11 +80,22 @@ def read_roster(path: Path) -> dict[str, dict[str, str]]:
     ``SIS Login ID`` → their identity cells (the ``Points Possible`` row is skipped)."""
     raw = read_capped(path, MAX_BYTES)
     where = Position(str(path), 1, 1)
+    if len(raw) > MAX_BYTES:
+        raise ExportError(f"{path} is over {MAX_BYTES} bytes", where)
     try:
-        text = raw[: MAX_BYTES + 1].decode("utf-8-sig")
+        text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise ExportError(f"{path} is not UTF-8 text", where, "save it as UTF-8") from None
     reader = csv.DictReader(io.StringIO(text, newline=""))
+    try:
+        return _roster(path, reader)
+    except csv.Error as error:
+        where = Position(str(path), reader.line_num, 1)
+        raise ExportError(f"cannot read {path}: {error}", where, "check the quoting") from None
+
+
+def _roster(path: Path, reader: csv.DictReader[str]) -> dict[str, dict[str, str]]:
+    where = Position(str(path), 1, 1)
     header = [h.strip() for h in reader.fieldnames or []]
     if "Student" not in header or not any(c in header for c in ID_COLUMNS):
         raise ExportError(

@@ -13,6 +13,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -52,7 +53,16 @@ def read_gradebook(path: Path) -> list[Total]:
     except UnicodeDecodeError:
         raise ExportError(f"{path} is not UTF-8 text", where, "save it as UTF-8") from None
     reader = csv.reader(io.StringIO(text, newline=""))
-    header = [h.strip().lower() for h in next(reader, [])]
+    try:
+        return _totals(path, ((reader.line_num, row) for row in reader))
+    except csv.Error as error:
+        where = Position(str(path), reader.line_num, 1)
+        raise ExportError(f"cannot read {path}: {error}", where, "check the quoting") from None
+
+
+def _totals(path: Path, rows: Iterator[tuple[int, list[str]]]) -> list[Total]:
+    where = Position(str(path), 1, 1)
+    header = [h.strip().lower() for h in next(rows, (1, []))[1]]
     if tuple(header[:4]) != COLUMNS:
         raise ExportError(
             f"{path} is not a dynsolve gradebook: its header is {','.join(header[:4])!r}",
@@ -62,10 +72,10 @@ def read_gradebook(path: Path) -> list[Total]:
         )
     totals: list[Total] = []
     seen: set[str] = set()
-    for row in reader:
+    for line, row in rows:
         if not any(cell.strip() for cell in row):
             continue
-        totals.append(_total(row, Position(str(path), reader.line_num, 1), seen))
+        totals.append(_total(row, Position(str(path), line, 1), seen))
     if not totals:
         raise ExportError(f"{path} lists no students", where, "grade the class first")
     return totals
