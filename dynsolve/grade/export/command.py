@@ -29,9 +29,6 @@ from dynsolve.grade.export.target import (
 from dynsolve.grade.semantics import Rule
 from dynsolve.system import SolveOptions
 
-GRADEBOOK_FORMATS = ("canvas", "scores")
-QUIZ_FORMATS = ("moodle", "prairielearn")
-
 
 @dataclass(frozen=True)
 class GradebookRequest:

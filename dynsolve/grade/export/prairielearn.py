@@ -23,10 +23,14 @@ from collections.abc import Mapping
 from pathlib import Path
 from xml.etree import ElementTree
 
+from dynsolve.files import read_capped
 from dynsolve.grade.export.moodle import number
 from dynsolve.grade.export.statement import asked, statement, to_html
 from dynsolve.grade.export.table import Part, VariantTable
 from dynsolve.grade.export.target import ExportError
+from dynsolve.quantities import unit_info
+
+MAX_INFO_BYTES = 1 << 20
 
 SERVER = '''"""PrairieLearn server code written by dynsolve (dynsolve export prairielearn).
 
@@ -105,7 +109,7 @@ def number_attributes(part: Part) -> Mapping[str, str]:
     else:
         attributes["comparison"] = "relabs"
         attributes["rtol"] = number(rule.rtol)
-        attributes["atol"] = number(rule.atol / _factor(part.unit))
+        attributes["atol"] = number(rule.atol / unit_info(part.unit).factor)
     if rule.weight != 1:
         if rule.weight != int(rule.weight):
             raise ExportError(
@@ -120,13 +124,7 @@ def existing_uuid(folder: Path) -> str:
     """The UUID of a question already in ``folder`` (kept when it is written again, so
     PrairieLearn sees the same question), or "" when there is none."""
     try:
-        value = json.loads((folder / "info.json").read_text(encoding="utf-8")).get("uuid", "")
-        return str(uuids.UUID(str(value)))
-    except (OSError, ValueError, AttributeError):
+        info = json.loads(read_capped(folder / "info.json", MAX_INFO_BYTES))
+        return str(uuids.UUID(str(info.get("uuid", ""))))
+    except (OSError, ValueError, AttributeError):  # absent, unreadable, not a question
         return ""
-
-
-def _factor(unit: str) -> float:
-    from dynsolve.quantities import unit_info
-
-    return unit_info(unit).factor
