@@ -42,9 +42,7 @@ def calculated_questions(table: VariantTable) -> list[ElementTree.Element]:
     for part in table.parts:
         key = _key_name(part, table)
         html = to_html(statement("div", table.title, givens, [asked(part)]))
-        question = question_header(
-            "calculated", f"{table.title}: {part.name}", html, part, part.name
-        )
+        question = question_header("calculated", f"{table.title}: {part.name}", html, part)
         options = {"synchronize": "0", "single": "0", "answernumbering": "abc",
                    "shuffleanswers": "0"}  # fmt: skip
         for tag, value in options.items():

@@ -28,7 +28,6 @@ from dynsolve.grade.export.table import Part, Variant, VariantTable
 
 PENALTY = "0.3333333"  # Moodle's default penalty for each wrong try (interactive modes)
 MAX_NAME = 255  # Moodle's question name column
-MAX_IDNUMBER = 100
 
 
 def moodle_xml(
@@ -57,7 +56,6 @@ def _numerical(table: VariantTable, variant: Variant, part: Part) -> ElementTree
         f"{table.title}: {variant.student}: {part.name}",
         question_html(table, variant, part),
         part,
-        f"{variant.student}:{part.name}",
     )
     key = ElementTree.SubElement(question, "answer", fraction="100", format="moodle_auto_format")
     text(key, number(answer.value))
@@ -67,11 +65,10 @@ def _numerical(table: VariantTable, variant: Variant, part: Part) -> ElementTree
     return question
 
 
-def question_header(
-    kind: str, name: str, html: str, part: Part, idnumber: str
-) -> ElementTree.Element:
+def question_header(kind: str, name: str, html: str, part: Part) -> ElementTree.Element:
     """A ``<question>`` with the fields every type shares: name, HTML question text,
-    general feedback, default grade (the part's weight), penalty, hidden, idnumber."""
+    general feedback, default grade (the part's weight), penalty, hidden. No idnumber:
+    Moodle wants it unique in a category, and two quizzes may share one."""
     question = ElementTree.Element("question", type=kind)
     text(ElementTree.SubElement(question, "name"), name[:MAX_NAME])
     text(ElementTree.SubElement(question, "questiontext", format="html"), html)
@@ -79,7 +76,6 @@ def question_header(
     ElementTree.SubElement(question, "defaultgrade").text = f"{part.rule.weight:g}"
     ElementTree.SubElement(question, "penalty").text = PENALTY
     ElementTree.SubElement(question, "hidden").text = "0"
-    ElementTree.SubElement(question, "idnumber").text = idnumber[:MAX_IDNUMBER]
     return question
 
 

@@ -27,6 +27,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 
+from dynsolve.grade.cells import CellError, read_cell, same_dim
 from dynsolve.grade.expected import expected_answers
 from dynsolve.grade.export.target import ExportError
 from dynsolve.grade.semantics import SIGFIG_SLACK, Rule, rules_for
@@ -145,8 +146,6 @@ def with_atol(rules: dict[str, Rule], dims: Mapping[str, Dim], text: str) -> dic
     >>> rules["a"].atol, rules["T"].atol
     (0.02, 0.0)
     """
-    from dynsolve.grade.cells import CellError, read_cell, same_dim
-
     try:
         cell = read_cell(text)
     except CellError as error:
