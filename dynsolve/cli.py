@@ -19,7 +19,8 @@ from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
     from dynsolve.errors import ErrorReport
-    from dynsolve.grade.export.command import GradebookRequest
+    from dynsolve.grade.export.command import GradebookRequest, QuizRequest
+    from dynsolve.grade.semantics import Rule
     from dynsolve.results import Check, Solution
     from dynsolve.system import SolveOptions
 
@@ -750,7 +751,10 @@ Force = Annotated[bool, typer.Option("--force", help="Replace a non-empty output
 Points = Annotated[
     float | None,
     typer.Option(
-        "--points", min=0.01, help="Scale every total to this many points (default: the weights)."
+        "--points",
+        min=0.01,
+        metavar="N",
+        help="Scale every total to N points (default: out of the sum of the weights).",
     ),
 ]
 GradebookFile = Annotated[
@@ -760,6 +764,9 @@ GradebookFile = Annotated[
         show_default=False,
         metavar="GRADEBOOK",
     ),
+]
+OutputFile = Annotated[
+    Path, typer.Option("--output", "-o", help="The file to write.", metavar="FILE")
 ]
 
 
@@ -777,18 +784,20 @@ CANVAS_COLUMNS = {"sis-user-id": "SIS User ID", "sis-login-id": "SIS Login ID", 
 @export_app.command("canvas")
 def export_canvas(
     gradebook: GradebookFile,
-    output: Annotated[Path, typer.Option("--output", "-o", help="The Canvas import CSV.")],
+    output: OutputFile,
     assignment: Annotated[
         str,
         typer.Option(
+            metavar="NAME",
             help="The assignment column: 'Name (12345)' with the Canvas assignment id updates "
-            "that assignment; a new name creates one."
+            "that assignment; a new name creates one.",
         ),
     ],
     points: Points = None,
     roster: Annotated[
         Path | None,
         typer.Option(
+            metavar="FILE",
             help="Canvas's own gradebook export: ids matched against its ID, SIS User ID and "
             "SIS Login ID; names and sections copied.",
         ),
@@ -814,10 +823,7 @@ def export_canvas(
 
 @export_app.command("scores")
 def export_scores(
-    gradebook: GradebookFile,
-    output: Annotated[Path, typer.Option("--output", "-o", help="The scores CSV.")],
-    points: Points = None,
-    force: Force = False,
+    gradebook: GradebookFile, output: OutputFile, points: Points = None, force: Force = False
 ) -> None:
     """Write the graded class as SID,Total Score,Max Points for Gradescope or Moodle.
 
@@ -847,31 +853,39 @@ QuizProblem = Annotated[
 QuizVariants = Annotated[
     Path | None,
     typer.Option(
-        help="Each student's givens (dynsolve variants); default: the problem as written."
+        metavar="FILE",
+        help="Each student's givens (dynsolve variants); default: the problem as written.",
     ),
 ]
-QuizRtol = Annotated[str | None, typer.Option("--rtol", help="Relative tolerance: '1%' or 0.01.")]
+QuizRtol = Annotated[
+    str | None, typer.Option("--rtol", help="Relative tolerance: '1%' or 0.01.", metavar="TOL")
+]
 QuizAtol = Annotated[
     str | None,
     typer.Option(
-        "--atol", help="Absolute tolerance with a unit: '0.01 m/s' (parts of its dimension)."
+        "--atol",
+        metavar="QUANTITY",
+        help="Absolute tolerance with a unit ('0.01 m/s'), for the parts of its dimension.",
     ),
 ]
 QuizSigfig = Annotated[
-    int | None, typer.Option("--sigfig", min=1, max=15, help="Grade to N significant figures.")
+    int | None,
+    typer.Option("--sigfig", min=1, max=15, metavar="N", help="Grade to N significant figures."),
 ]
 QuizDecdig = Annotated[
-    int | None, typer.Option("--decdig", min=0, max=15, help="Grade to N decimal digits.")
+    int | None,
+    typer.Option("--decdig", min=0, max=15, metavar="N", help="Grade to N decimal digits."),
 ]
 
 
 @export_app.command("moodle-xml")
 def export_moodle(
     problem: QuizProblem,
-    output: Annotated[Path, typer.Option("--output", "-o", help="The Moodle XML file.")],
+    output: OutputFile,
     variants: QuizVariants = None,
     category: Annotated[
-        str, typer.Option(help="Question bank category (default: dynsolve/TITLE).")
+        str,
+        typer.Option(metavar="PATH", help="Question bank category (default: dynsolve/TITLE)."),
     ] = "",
     calculated: Annotated[
         bool,
@@ -892,19 +906,29 @@ def export_moodle(
     Each question states the student's givens and has their answer with its unit and
     the tolerance of the part's grading rule (Question bank > Import > Moodle XML).
     """
+    from dynsolve.grade.export.command import QuizRequest
+
+    overrides = _quiz_rules(rtol, sigfig, decdig)
     _export_quiz(
-        problem, output, "moodle", variants, rtol, sigfig, decdig, force, category,
-        calculated=calculated, atol=atol or "",
+        QuizRequest(
+            problem, output, "moodle", variants, overrides, atol or "", category, calculated,
+            force=force,
+        )
     )  # fmt: skip
 
 
 @export_app.command("prairielearn")
 def export_prairielearn(
     problem: QuizProblem,
-    output: Annotated[Path, typer.Option("--output", "-o", help="The question folder to create.")],
+    output: Annotated[
+        Path,
+        typer.Option("--output", "-o", help="The question folder to create.", metavar="FOLDER"),
+    ],
     variants: QuizVariants = None,
-    topic: Annotated[str, typer.Option(help="info.json topic.")] = "Dynamics",
-    tag: Annotated[list[str] | None, typer.Option(help="An info.json tag (repeatable).")] = None,
+    topic: Annotated[str, typer.Option(help="info.json topic.", metavar="TEXT")] = "Dynamics",
+    tag: Annotated[
+        list[str] | None, typer.Option(help="An info.json tag (repeatable).", metavar="TEXT")
+    ] = None,
     rtol: QuizRtol = None,
     atol: QuizAtol = None,
     sigfig: QuizSigfig = None,
@@ -917,40 +941,32 @@ def export_prairielearn(
     server.py, whose generate() draws a row of the pre-computed variant table: the
     course server needs no dynsolve.
     """
+    from dynsolve.grade.export.command import QuizRequest
+
+    overrides = _quiz_rules(rtol, sigfig, decdig)
     _export_quiz(
-        problem, output, "prairielearn", variants, rtol, sigfig, decdig, force, "", topic,
-        tuple(tag or ()), atol=atol or "",
+        QuizRequest(
+            problem, output, "prairielearn", variants, overrides, atol or "", topic=topic,
+            tags=tuple(tag or ()), force=force,
+        )
     )  # fmt: skip
 
 
-def _export_quiz(
-    problem: Path,
-    output: Path,
-    kind: str,
-    variants: Path | None,
-    rtol: str | None,
-    sigfig: int | None,
-    decdig: int | None,
-    force: bool,
-    category: str = "",
-    topic: str = "Dynamics",
-    tags: tuple[str, ...] = (),
-    calculated: bool = False,
-    atol: str = "",
-) -> None:
-    from dynsolve.errors import DynsolveError
-    from dynsolve.grade.export.command import QuizRequest, export_quiz
+def _quiz_rules(rtol: str | None, sigfig: int | None, decdig: int | None) -> Rule:
+    """The grading options of a quiz export, as overrides of the spec's rules."""
     from dynsolve.grade.semantics import Rule
 
-    overrides = Rule(
+    return Rule(
         rtol=_fraction_option("--rtol", rtol) if rtol else Rule().rtol,
         sigfig=sigfig or 0,
         decdig=decdig or 0,
     )
-    request = QuizRequest(
-        problem, output, kind, variants, overrides, category=category, calculated=calculated,
-        topic=topic, tags=tags, force=force, atol=atol,
-    )  # fmt: skip
+
+
+def _export_quiz(request: QuizRequest) -> None:
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.export.command import export_quiz
+
     try:
         table = export_quiz(request)
     except DynsolveError as error:
@@ -958,7 +974,7 @@ def _export_quiz(
         raise typer.Exit(ExitCode.BAD_INPUT) from None
     count = len(table.variants)
     stderr.out(
-        f"wrote {output}: {count} variant{'s' * (count != 1)} x {len(table.parts)} parts",
+        f"wrote {request.output}: {count} variant{'s' * (count != 1)} x {len(table.parts)} parts",
         highlight=False,
     )
 
