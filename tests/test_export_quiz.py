@@ -130,8 +130,11 @@ def _check_moodle(quiz: ElementTree.Element) -> list[ElementTree.Element]:
             assert -100 <= float(answer.get("fraction")) <= 100
             assert math.isfinite(float(answer.findtext("text")))
             assert float(answer.findtext("tolerance")) >= 0
-        for unit in question.findall("units/unit"):
-            assert float(unit.findtext("multiplier")) == 1.0
+        units = question.findall("units/unit")
+        if units:  # the answer's unit is the one with multiplier 1, listed first
+            assert float(units[0].findtext("multiplier")) == 1.0
+        for unit in units:
+            assert float(unit.findtext("multiplier")) > 0
             assert unit.findtext("unit_name").strip()
         assert question.findtext("showunits") in {"0", "1", "2", "3"}
         assert question.findtext("unitgradingtype") in {"0", "1", "2"}
@@ -159,6 +162,15 @@ def test_moodle_quiz_of_the_drum_variants(tmp_path: Path) -> None:
         # the default rule: 1 % of the key
         assert float(question.findtext("answer/tolerance")) == pytest.approx(0.01 * expected)
         assert question.findtext("units/unit/unit_name") == units[part]
+        others = {u.findtext("unit_name"): float(u.findtext("multiplier"))
+                  for u in question.findall("units/unit")[1:]}  # fmt: skip
+        # the US customary unit too: 1 lb = 4.4482216152605 N, 1 ft = 0.3048 m
+        expected_others = {
+            "T": {"lb": pytest.approx(1 / 4.4482216152605)},
+            "a": {"ft/s^2": pytest.approx(1 / 0.3048)},
+            "alpha": {},
+        }
+        assert others == expected_others[part]
         text = question.findtext("questiontext/text")
         assert f"m_d = {rows[student]['m_d']}" in text
     alpha = next(q for q in questions if _who(q) == ("s001", "alpha"))

@@ -25,6 +25,8 @@ from xml.etree import ElementTree
 
 from dynsolve.grade.export.statement import asked, statement, to_html
 from dynsolve.grade.export.table import Part, Variant, VariantTable
+from dynsolve.quantities import unit_info
+from dynsolve.units import natural_unit
 
 PENALTY = "0.3333333"  # Moodle's default penalty for each wrong try (interactive modes)
 MAX_NAME = 255  # Moodle's question name column
@@ -80,16 +82,36 @@ def question_header(kind: str, name: str, html: str, part: Part) -> ElementTree.
 
 
 def unit_options(question: ElementTree.Element, part: Part) -> None:
-    """The part's unit (multiplier 1) and how units are graded: optional for the student
-    (``unitgradingtype`` 0, a bare number is read in the unit), typed in a box
+    """The part's units and how they are graded: optional for the student
+    (``unitgradingtype`` 0, a bare number is read in the part's unit), typed in a box
     (``showunits`` 0, qtype_numerical::UNITINPUT; 3, UNITNONE, without a unit)."""
     if part.unit:
-        unit = ElementTree.SubElement(ElementTree.SubElement(question, "units"), "unit")
-        ElementTree.SubElement(unit, "multiplier").text = "1"
-        ElementTree.SubElement(unit, "unit_name").text = part.unit
+        units = ElementTree.SubElement(question, "units")
+        for name, multiplier in accepted_units(part):
+            unit = ElementTree.SubElement(units, "unit")
+            ElementTree.SubElement(unit, "multiplier").text = number(multiplier)
+            ElementTree.SubElement(unit, "unit_name").text = name
     for tag, value in (("unitgradingtype", "0"), ("unitpenalty", "0.1000000"),
                        ("showunits", "0" if part.unit else "3"), ("unitsleft", "0")):  # fmt: skip
         ElementTree.SubElement(question, tag).text = value
+
+
+def accepted_units(part: Part) -> list[tuple[str, float]]:
+    """The units a student may answer in, with Moodle's multiplier (the value in that
+    unit is the value in the part's unit times it): the part's unit (1), then the unit
+    of the same dimension in the other system (SI or US customary) when it differs.
+
+    >>> from dynsolve.grade.semantics import Rule
+    >>> [(u, round(m, 5)) for u, m in accepted_units(Part("T", "N", Rule(), False))]
+    [('N', 1.0), ('lb', 0.22481)]
+    """
+    info = unit_info(part.unit)
+    out = [(part.unit, 1.0)]
+    for system in ("SI", "FPS"):
+        other = natural_unit(info.dim, system, part.name)
+        if all(other != name for name, _ in out):
+            out.append((other, info.factor / unit_info(other).factor))
+    return out
 
 
 def question_html(table: VariantTable, variant: Variant, part: Part) -> str:
