@@ -404,3 +404,19 @@ def test_atol_sets_the_tolerance_of_its_dimension(tmp_path: Path) -> None:
     refused = runner.invoke(app, [*args, "--atol", "1 kg", "--force"])
     assert refused.exit_code == ExitCode.BAD_INPUT
     assert "matches the dimension of no part" in refused.output
+
+
+def test_an_angle_is_asked_in_its_display_unit(tmp_path: Path) -> None:
+    spec = tmp_path / "angle.dyn"
+    spec.write_text(
+        "problem: Angle\ngiven:\n  x = 3 m\n  y = 4 m\nequations:\n  theta = atan(y/x)\n"
+        "  d = sqrt(x^2 + y^2)\nfind: theta [deg], d\n"
+    )
+    out = tmp_path / "angle.xml"
+    assert runner.invoke(app, ["export", "moodle-xml", str(spec), "-o", str(out)]).exit_code == 0
+    theta, d = _check_moodle(ElementTree.parse(out).getroot())
+    # atan(4/3) = 53.130 deg; the 3-4-5 triangle's hypotenuse is 5 m
+    assert float(theta.findtext("answer/text")) == pytest.approx(53.13010235, rel=1e-9)
+    assert [u.findtext("unit_name") for u in theta.findall("units/unit")] == ["deg"]
+    assert float(d.findtext("answer/text")) == pytest.approx(5.0)
+    assert [u.findtext("unit_name") for u in d.findall("units/unit")] == ["m", "ft"]

@@ -109,7 +109,7 @@ def accepted_units(part: Part) -> list[tuple[str, float]]:
     out = [(part.unit, 1.0)]
     for system in ("SI", "FPS"):
         other = natural_unit(info.dim, system, part.name)
-        if all(other != name for name, _ in out):
+        if other and all(other != name for name, _ in out):
             out.append((other, info.factor / unit_info(other).factor))
     return out
 
