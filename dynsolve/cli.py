@@ -972,6 +972,8 @@ def _export_quiz(request: QuizRequest) -> None:
     except DynsolveError as error:
         _report(_reports(error, _where(error)))
         raise typer.Exit(ExitCode.BAD_INPUT) from None
+    for warning in table.warnings:
+        stderr.out(f"warning: {warning}", highlight=False)
     count = len(table.variants)
     stderr.out(
         f"wrote {request.output}: {count} variant{'s' * (count != 1)} x {len(table.parts)} parts",

@@ -420,3 +420,16 @@ def test_an_angle_is_asked_in_its_display_unit(tmp_path: Path) -> None:
     assert [u.findtext("unit_name") for u in theta.findall("units/unit")] == ["deg"]
     assert float(d.findtext("answer/text")) == pytest.approx(5.0)
     assert [u.findtext("unit_name") for u in d.findall("units/unit")] == ["m", "ft"]
+
+
+def test_a_zero_key_without_tolerance_is_a_warning(tmp_path: Path) -> None:
+    spec = tmp_path / "balance.dyn"
+    spec.write_text("given:\n  F1 = 10 N\n  F2 = 10 N\nequations:\n  R = F1 - F2\nfind: R\n")
+    out = tmp_path / "q.xml"
+    result = runner.invoke(app, ["export", "moodle-xml", str(spec), "-o", str(out)])
+    assert result.exit_code == 0  # R = 10 - 10 = 0 N: 1 % of 0 is no tolerance
+    assert "warning: the key of R is 0 for base with no tolerance" in result.output
+    assert "--atol '0.01 N'" in result.output
+    result = runner.invoke(app, ["export", "moodle-xml", str(spec), "-o", str(out), "--force",
+                                 "--atol", "0.01 N"])  # fmt: skip
+    assert result.exit_code == 0 and "warning" not in result.output

@@ -24,7 +24,7 @@ full solve elsewhere) and the rules from the spec's ``grading:`` section and the
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from dynsolve.grade.cells import CellError, read_cell, same_dim
@@ -83,6 +83,7 @@ class VariantTable:
     givens: tuple[GivenLine, ...]
     parts: tuple[Part, ...]
     variants: tuple[Variant, ...]
+    warnings: tuple[str, ...] = ()
 
 
 def variant_table(
@@ -135,7 +136,24 @@ def variant_table(
             answers[part.name] = Answer(value, expected.direction, tolerance(part, value))
         out.append(Variant(student, _given_texts(spec, cells), answers))
     lines = tuple(GivenLine(g.name, g.description) for g in spec.givens if g.quantity)
-    return VariantTable(spec.title or "dynsolve problem", lines, parts, tuple(out))
+    title = spec.title or "dynsolve problem"
+    return VariantTable(title, lines, parts, tuple(out), zero_key_warnings(parts, out))
+
+
+def zero_key_warnings(parts: Sequence[Part], variants: Sequence[Variant]) -> tuple[str, ...]:
+    """A warning per part whose key is 0 for some variant with no tolerance around it:
+    only an answer of exactly 0 would be accepted there."""
+    out = []
+    for part in parts:
+        zero = [v.student for v in variants if not v.answers[part.name].tolerance]
+        if zero:
+            out.append(
+                f"the key of {part.name} is 0 for {zero[0]}"
+                + (f" and {len(zero) - 1} more" if len(zero) > 1 else "")
+                + " with no tolerance: only exactly 0 is accepted; set one, e.g. "
+                + f"--atol '{f'0.01 {part.unit}'.strip()}'"
+            )
+    return tuple(out)
 
 
 def with_atol(rules: dict[str, Rule], dims: Mapping[str, Dim], text: str) -> dict[str, Rule]:
