@@ -28,6 +28,7 @@ from dynsolve.grade.export.moodle import number
 from dynsolve.grade.export.statement import asked, statement, to_html
 from dynsolve.grade.export.table import Part, VariantTable
 from dynsolve.grade.export.target import ExportError
+from dynsolve.names import latex_name
 from dynsolve.quantities import unit_info
 
 MAX_INFO_BYTES = 1 << 20
@@ -100,7 +101,7 @@ def question_html(table: VariantTable) -> str:
 def number_attributes(part: Part) -> Mapping[str, str]:
     """The ``pl-number-input`` attributes that grade ``part`` as its rule says."""
     rule = part.rule
-    attributes = {"answers-name": part.name, "label": f"{part.name} ="}
+    attributes = {"answers-name": part.name, "label": f"${latex_name(part.name)} =$"}
     if part.unit:
         attributes["suffix"] = part.unit
     if rule.sigfig or rule.decdig:

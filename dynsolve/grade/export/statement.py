@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from xml.etree import ElementTree
 
 from dynsolve.grade.export.table import Part
+from dynsolve.names import pretty
 
 _BRACE = "\ue000"  # a private-use stand-in for a "{" of the spec's text, until serialized
 
@@ -30,7 +31,7 @@ def statement(
     items = ElementTree.SubElement(root, "ul")
     for name, value, description in givens:
         note = f" ({_inert(description)})" if description else ""
-        ElementTree.SubElement(items, "li").text = f"{_inert(name)} = {value}{note}"
+        ElementTree.SubElement(items, "li").text = f"{_inert(pretty(name))} = {value}{note}"
     for line in asked:
         ElementTree.SubElement(root, "p").text = line
     return root
@@ -44,8 +45,9 @@ def to_html(element: ElementTree.Element) -> str:
 
 def asked(part: Part) -> str:
     """What the student is asked for: ``Find a in m/s^2.`` (``the magnitude of`` when the
-    key has a direction)."""
-    what = f"the magnitude of {part.name}" if part.directed else part.name
+    key has a direction; Greek names as letters, ``α``)."""
+    name = pretty(part.name)
+    what = f"the magnitude of {name}" if part.directed else name
     return f"Find {what}" + (f" in {part.unit}." if part.unit else ".")
 
 
