@@ -200,3 +200,15 @@ def test_a_broken_csv_is_an_error_with_its_line_not_a_traceback(tmp_path: Path) 
     args = ["export", "canvas", str(_gradebook(tmp_path)), "-o", str(out), "--assignment", "HW"]
     result = runner.invoke(app, [*args, "--roster", str(roster)])
     assert result.exit_code == ExitCode.BAD_INPUT and "roster.csv:" in result.output
+
+
+def test_two_graded_ids_of_one_canvas_student_stop(tmp_path: Path) -> None:
+    roster = tmp_path / "canvas_export.csv"
+    roster.write_text("Student,ID,SIS User ID,SIS Login ID,Section\nAda,101,s001,s002,A\n")
+    gradebook = _gradebook(tmp_path, "student,score,points,max_points\ns001,100,3,3\ns002,0,0,3\n")
+    out = tmp_path / "canvas.csv"
+    args = ["export", "canvas", str(gradebook), "-o", str(out), "--assignment", "HW"]
+    result = runner.invoke(app, [*args, "--roster", str(roster)])
+    assert result.exit_code == ExitCode.BAD_INPUT
+    assert "graded ids 's001' and 's002' are one Canvas student (Ada)" in result.output
+    assert not out.exists()

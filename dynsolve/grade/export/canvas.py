@@ -57,6 +57,7 @@ def canvas_csv(
             hint="ids are matched exactly against the roster's ID, SIS User ID and SIS Login "
             "ID columns; fix the answers file's ids or export the roster again",
         )
+    _refuse_two_ids_of_one_student(totals, roster)
     for total in totals:
         if roster is not None:
             cells = [roster[total.student].get(column, "") for column in IDENTITY]
@@ -64,6 +65,23 @@ def canvas_csv(
             cells = [total.student if column == id_column else "" for column in IDENTITY]
         rows.append([*cells, number_text(total.scaled(points))])
     return csv_text(rows)
+
+
+def _refuse_two_ids_of_one_student(totals: Sequence[Total], roster: Roster | None) -> None:
+    """Two graded ids that are one Canvas student (``s001`` their SIS User ID, ``ada``
+    their login) would give them two rows and two grades: refused."""
+    if roster is None:
+        return
+    seen: dict[tuple[str, ...], str] = {}
+    for total in totals:
+        who = tuple(roster[total.student].get(c, "") for c in IDENTITY)
+        if who in seen:
+            raise ExportError(
+                f"graded ids {seen[who]!r} and {total.student!r} are one Canvas student "
+                f"({who[0] or who[1]})",
+                hint="keep one row per student in the answers file",
+            )
+        seen[who] = total.student
 
 
 def check_assignment(name: str) -> None:
