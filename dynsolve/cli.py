@@ -19,6 +19,8 @@ from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
     from dynsolve.errors import ErrorReport
+    from dynsolve.grade.export.command import GradebookRequest, QuizRequest
+    from dynsolve.grade.semantics import Rule
     from dynsolve.results import Check, Solution
     from dynsolve.system import SolveOptions
 
@@ -737,6 +739,246 @@ def variants_command(
         _report(_reports(error, _where(error)))
         raise typer.Exit(ExitCode.BAD_INPUT) from None
     stderr.print(f"wrote {output}: {len(rows)} variants of {len(students)} students")
+
+
+export_app = typer.Typer(
+    help="Write grades and quizzes in the formats courses use (docs/grading.md).",
+    no_args_is_help=True,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+app.add_typer(export_app, name="export")
+Force = Annotated[bool, typer.Option("--force", help="Replace a non-empty output file or folder.")]
+Points = Annotated[
+    float | None,
+    typer.Option(
+        "--points",
+        min=0.01,
+        metavar="N",
+        help="Scale every total to N points (default: out of the sum of the weights).",
+    ),
+]
+GradebookFile = Annotated[
+    Path,
+    typer.Argument(
+        help="The gradebook CSV of 'dynsolve grade --gradebook' (student,score,points,max_points).",
+        show_default=False,
+        metavar="GRADEBOOK",
+    ),
+]
+OutputFile = Annotated[
+    Path, typer.Option("--output", "-o", help="The file to write.", metavar="FILE")
+]
+
+
+class CanvasId(enum.StrEnum):
+    """The Canvas column that holds the student ids of the answers file (without --roster)."""
+
+    sis_user_id = "sis-user-id"
+    sis_login_id = "sis-login-id"
+    canvas_id = "canvas-id"
+
+
+CANVAS_COLUMNS = {"sis-user-id": "SIS User ID", "sis-login-id": "SIS Login ID", "canvas-id": "ID"}
+
+
+@export_app.command("canvas")
+def export_canvas(
+    gradebook: GradebookFile,
+    output: OutputFile,
+    assignment: Annotated[
+        str,
+        typer.Option(
+            metavar="NAME",
+            help="The assignment column: 'Name (12345)' with the Canvas assignment id updates "
+            "that assignment; a new name creates one.",
+        ),
+    ],
+    points: Points = None,
+    roster: Annotated[
+        Path | None,
+        typer.Option(
+            metavar="FILE",
+            help="Canvas's own gradebook export: ids matched against its ID, SIS User ID and "
+            "SIS Login ID; names and sections copied.",
+        ),
+    ] = None,
+    id_column: Annotated[
+        CanvasId, typer.Option(help="Without --roster: the Canvas column the ids go in.")
+    ] = CanvasId.sis_user_id,
+    force: Force = False,
+) -> None:
+    """Write the graded class as a Canvas gradebook import (Grades > Import).
+
+    Columns Student, ID, SIS User ID, SIS Login ID, Section and the assignment, after a
+    Points Possible row. Every cell is escaped against formula injection.
+    """
+    from dynsolve.grade.export.command import GradebookRequest
+
+    column = CANVAS_COLUMNS[id_column.value]
+    request = GradebookRequest(
+        gradebook, output, "canvas", assignment, points, roster, column, force
+    )
+    _export_gradebook(request)
+
+
+@export_app.command("scores")
+def export_scores(
+    gradebook: GradebookFile, output: OutputFile, points: Points = None, force: Force = False
+) -> None:
+    """Write the graded class as SID,Total Score,Max Points for Gradescope or Moodle.
+
+    Moodle (Grades > Import > CSV file): map SID to the ID number and Total Score to the
+    grade item. Every cell is escaped against formula injection.
+    """
+    from dynsolve.grade.export.command import GradebookRequest
+
+    _export_gradebook(GradebookRequest(gradebook, output, "scores", "", points, None, "", force))
+
+
+def _export_gradebook(request: GradebookRequest) -> None:
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.export.command import export_gradebook
+
+    try:
+        count = export_gradebook(request)
+    except DynsolveError as error:
+        _report(_reports(error, _where(error)))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    stderr.out(f"wrote {request.output}: {count} students", highlight=False)
+
+
+QuizProblem = Annotated[
+    Path, typer.Argument(help="The .dyn problem.", metavar="PROBLEM", show_default=False)
+]
+QuizVariants = Annotated[
+    Path | None,
+    typer.Option(
+        metavar="FILE",
+        help="Each student's givens (dynsolve variants); default: the problem as written.",
+    ),
+]
+QuizRtol = Annotated[
+    str | None, typer.Option("--rtol", help="Relative tolerance: '1%' or 0.01.", metavar="TOL")
+]
+QuizAtol = Annotated[
+    str | None,
+    typer.Option(
+        "--atol",
+        metavar="QUANTITY",
+        help="Absolute tolerance with a unit ('0.01 m/s'), for the parts of its dimension.",
+    ),
+]
+QuizSigfig = Annotated[
+    int | None,
+    typer.Option("--sigfig", min=1, max=15, metavar="N", help="Grade to N significant figures."),
+]
+QuizDecdig = Annotated[
+    int | None,
+    typer.Option("--decdig", min=0, max=15, metavar="N", help="Grade to N decimal digits."),
+]
+
+
+@export_app.command("moodle-xml")
+def export_moodle(
+    problem: QuizProblem,
+    output: OutputFile,
+    variants: QuizVariants = None,
+    category: Annotated[
+        str,
+        typer.Option(metavar="PATH", help="Question bank category (default: dynsolve/TITLE)."),
+    ] = "",
+    calculated: Annotated[
+        bool,
+        typer.Option(
+            "--calculated",
+            help="One calculated question per part whose dataset items are the variants "
+            "(Moodle draws one per attempt), instead of a numerical question per student.",
+        ),
+    ] = False,
+    rtol: QuizRtol = None,
+    atol: QuizAtol = None,
+    sigfig: QuizSigfig = None,
+    decdig: QuizDecdig = None,
+    force: Force = False,
+) -> None:
+    """Write the variants as a Moodle XML quiz: a numerical question per student and part.
+
+    Each question states the student's givens and has their answer with its unit and
+    the tolerance of the part's grading rule (Question bank > Import > Moodle XML).
+    """
+    from dynsolve.grade.export.command import QuizRequest
+
+    overrides = _quiz_rules(rtol, sigfig, decdig)
+    _export_quiz(
+        QuizRequest(
+            problem, output, "moodle", variants, overrides, atol or "", category, calculated,
+            force=force,
+        )
+    )  # fmt: skip
+
+
+@export_app.command("prairielearn")
+def export_prairielearn(
+    problem: QuizProblem,
+    output: Annotated[
+        Path,
+        typer.Option("--output", "-o", help="The question folder to create.", metavar="FOLDER"),
+    ],
+    variants: QuizVariants = None,
+    topic: Annotated[str, typer.Option(help="info.json topic.", metavar="TEXT")] = "Dynamics",
+    tag: Annotated[
+        list[str] | None, typer.Option(help="An info.json tag (repeatable).", metavar="TEXT")
+    ] = None,
+    rtol: QuizRtol = None,
+    atol: QuizAtol = None,
+    sigfig: QuizSigfig = None,
+    decdig: QuizDecdig = None,
+    force: Force = False,
+) -> None:
+    """Write the variants as a PrairieLearn question folder.
+
+    info.json, question.html (pl-number-input per part, graded by the part's rule) and
+    server.py, whose generate() draws a row of the pre-computed variant table: the
+    course server needs no dynsolve.
+    """
+    from dynsolve.grade.export.command import QuizRequest
+
+    overrides = _quiz_rules(rtol, sigfig, decdig)
+    _export_quiz(
+        QuizRequest(
+            problem, output, "prairielearn", variants, overrides, atol or "", topic=topic,
+            tags=tuple(tag or ()), force=force,
+        )
+    )  # fmt: skip
+
+
+def _quiz_rules(rtol: str | None, sigfig: int | None, decdig: int | None) -> Rule:
+    """The grading options of a quiz export, as overrides of the spec's rules."""
+    from dynsolve.grade.semantics import Rule
+
+    return Rule(
+        rtol=_fraction_option("--rtol", rtol) if rtol else Rule().rtol,
+        sigfig=sigfig or 0,
+        decdig=decdig or 0,
+    )
+
+
+def _export_quiz(request: QuizRequest) -> None:
+    from dynsolve.errors import DynsolveError
+    from dynsolve.grade.export.command import export_quiz
+
+    try:
+        table = export_quiz(request)
+    except DynsolveError as error:
+        _report(_reports(error, _where(error)))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    for warning in table.warnings:
+        stderr.out(f"warning: {warning}", highlight=False)
+    count = len(table.variants)
+    stderr.out(
+        f"wrote {request.output}: {count} variant{'s' * (count != 1)} x {len(table.parts)} parts",
+        highlight=False,
+    )
 
 
 def _where(error: Exception) -> tuple[str, str] | None:
