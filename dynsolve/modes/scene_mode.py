@@ -601,12 +601,19 @@ def _interval_checks(
     from dynsolve.principles.impulse_momentum import energy_check
 
     formulation = problem.formulation
-    intervals = [("", formulation.interval_energy, 1)] + [
-        (f"stage {r.stage.number}", r.energy, r.stage.number) for r in formulation.stages
+    kinetic = {  # kinetic friction (a known μk N) on the instant's free bodies
+        f.name
+        for forces in formulation.forces.values()
+        for f in forces
+        if f.kind == "friction" and f.known
+    }
+    intervals = [("", formulation.interval_energy, 1, kinetic)] + [
+        (f"stage {r.stage.number}", r.energy, r.stage.number, {f"F_{s.support}" for s in r.slides})
+        for r in formulation.stages
     ]
     checks = (
-        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state)
-        for what, energy, state in intervals
+        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state, kinetic)
+        for what, energy, state, kinetic in intervals
         if energy is not None
     )
     return tuple(c for c in checks if c is not None)
@@ -1526,13 +1533,14 @@ def _slides_kept(
     formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
 ) -> list[Assumption]:
     """Each contact sliding at the start of an interval (impulse and momentum) slides to
-    its end: a block that stops before it (friction alone would bring it back) fails."""
+    its end: a block that stops before it (friction alone would bring it back) fails. A
+    slide stated from rest is judged by ``_declared_slide``."""
     from dynsolve.principles.stage_chain import slide_kept
 
     checks = []
     for name, (start, end) in formulation.interval_slips.items():
         first, last = real_value(start, substitution), real_value(end, substitution)
-        if first is not None and last is not None:
+        if first is not None and last is not None and abs(first) > SENSE_TOLERANCE * abs(last):
             checks.append(slide_kept(f"sliding at {name} through the interval", first, last, 1))
     return checks
 
@@ -1657,6 +1665,9 @@ def _declared_slide(
     if v is None:
         return None
     along = -support.friction_sense  # the slide's sense along the tangent
+    over = problem.formulation.interval_slips.get(support.name)
+    if a is None and over is not None and abs(v) <= SENSE_TOLERANCE:
+        return _slide_from_rest(support, along, real_value(over[1], substitution))
     if along * v > SENSE_TOLERANCE:
         return Assumption(name, True, f"its contact point slides that way (v_P = {abs(v):.4g})")
     if along * v < -SENSE_TOLERANCE:
@@ -1684,6 +1695,41 @@ def _declared_slide(
         False,
         f"from rest, F = μk N opposing the slide would accelerate the contact point the other "
         f"way ({abs(a):.4g}): it cannot start to slide; re-solved with no slip",
+    )
+
+
+def _slide_from_rest(support: object, along: int, end: float | None) -> Assumption | None:
+    """A slide stated from rest over an interval of constant forces (impulse and momentum):
+    the contact point's slip at the end, ``end``, must be along the stated sense ``along``;
+    kinetic friction that would drive it the other way is friction pushing, so the scene is
+    re-solved with no slip (and, with μs given, a slide from rest starts only if static
+    friction cannot hold it)."""
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support)
+    if end is None:
+        return None
+    name = f"sliding at {support.name}"
+    if along * end > SENSE_TOLERANCE and support.mu_s is not None:
+        return Assumption(
+            name,
+            False,
+            "from rest, a slide starts only if static friction cannot hold the contact: "
+            "re-solved with no slip to check |F| ≤ μs N",
+        )
+    if along * end > SENSE_TOLERANCE:
+        return Assumption(
+            name,
+            True,
+            f"from rest, its contact point slides that way, at {abs(end):.4g} m/s at the end "
+            "of the interval (no mu_s: static friction is not checked)",
+        )
+    return Assumption(
+        name,
+        False,
+        f"from rest, F = μk N opposing the slide would drive the contact point the other way "
+        f"({abs(end):.4g} m/s at the end of the interval): kinetic friction cannot push, so "
+        "it cannot start to slide; re-solved with no slip",
     )
 
 
