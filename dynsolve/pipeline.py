@@ -670,7 +670,8 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
             heading, method = f"{pretty(target.name)}, the steepest slope without slip", "limit"
         else:
             result = view.definition(target)
-            results, note = ((*view.stated(target), result) if result is not None else ()), ""
+            results = (*view.stated(target), result) if result is not None else ()
+            note = target.note
             heading, method = f"{pretty(target.name)} from the values found", "substituted"
         if results:
             index = len(steps) + len(extra) + 1

@@ -275,7 +275,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
-    stage_functions = {*STAGE_FUNCTIONS, "V", "F_avg"}
+    stage_functions = {*STAGE_FUNCTIONS, "V", *AVERAGE_FORCES}
     impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
     return (
         len(events) > 1
@@ -287,7 +287,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
 
 # find functions that take a state number (or a body) and are not a reaction at a state
 _NOT_REACTIONS = frozenset(
-    {"T", "V", "work", "energy_lost", "impulse", "F_avg", "power", "speed", "omega2"}
+    {"T", "V", "work", "energy_lost", "impulse", "F_avg", "F_net_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
     | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
 )
@@ -811,6 +811,8 @@ def _target(
         if len(args) != 1:
             raise SpecError("trial takes one name: trial(F_A)", where, "write trial(NAME)")
         function, args, trial = args[0], (), True
+    if function in AVERAGE_FORCES and len(args) > 1:
+        _contact_time_positive(spec, args[1], item)
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
     if item.unit is None and function in ("T", "work", "energy_lost", "V"):
@@ -818,6 +820,20 @@ def _target(
     if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
+
+
+def _contact_time_positive(spec: Spec, name: str, item: FindItem) -> None:
+    """An average force's contact time t_c is a given and positive (an error at it)."""
+    from dynsolve.model.physical import POSITIVE, check_sign
+    from dynsolve.spec.ast import Name
+
+    givens = {g.name: g for g in spec.givens}
+    given = givens.get(name)
+    if given is None or given.quantity is None:
+        return
+    value = sympy.Rational(given.quantity.value.numerator, given.quantity.value.denominator)
+    used = Name(name, item.line, item.column)
+    check_sign(value, used, "a contact time", POSITIVE, {}, spec.file, givens)
 
 
 def _unit(item: FindItem, dim: Dim, spec: Spec, where: Position) -> tuple[str, Dim]:
@@ -862,9 +878,11 @@ def _quantity(
         )
     if function == "power":
         return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
-    if function == "F_avg":
-        kind, dim, vector = _average_force(args, scene, formulation, symbols, dims, where)
-        return target(kind, dim, vector=vector)
+    if function in AVERAGE_FORCES:
+        kind, dim, vector, note = _average_force(
+            function, args, scene, formulation, symbols, dims, where
+        )
+        return target(kind, dim, vector=vector, note=note)
 
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
@@ -1078,20 +1096,30 @@ def _power(
     raise SpecError(f"'{name}' is not a force or couple of the scene", where, hint)
 
 
+AVERAGE_FORCES = ("F_avg", "F_net_avg")  # the contact force, the net force over t_c
+
+
 def _average_force(
+    function: str,
     args: tuple[str, ...],
     scene: Scene,
     formulation: Formulation,
     symbols: Mapping[str, sympy.Symbol],
     dims: Mapping[str, Dim],
     where: Position,
-) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr]]:
-    """F_avg(B, t_c [, k]) = impulse(B [, k]) / t_c over a given contact time."""
+) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr], str]:
+    """An average force on B over a given contact time t_c of its impact (stage k): the net
+    force ``F_net_avg(B, t_c [, k])`` = impulse(B [, k])/t_c = m Δv/t_c, every force on B
+    included; the contact (impact) force ``F_avg(B, t_c [, k])`` = m Δv/t_c − W, the weight's
+    impulse W t_c over the contact taken out (the impact keeps the velocity across its
+    line, so the contact also held the weight). Returns kind, dimension, vector and what
+    it is, in words."""
     from dynsolve.stage_finds import stage_quantity
 
     if len(args) not in (2, 3) or args[1] not in symbols:
         raise SpecError(
-            "F_avg takes the body and the contact time: F_avg(B, t_c) or F_avg(B, t_c, k)",
+            f"{function} takes the body and the contact time: {function}(B, t_c) or "
+            f"{function}(B, t_c, k)",
             where,
             hint="t_c is a given time, e.g. t_c = 0.002 s",
         )
@@ -1101,7 +1129,28 @@ def _average_force(
     _, _, _, vector = stage_quantity("impulse", impulse_args, scene, formulation, where)
     assert vector is not None
     t_c = symbols[args[1]]
-    return "vector", Dim.of("force"), (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
+    net = (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
+    body = scene.bodies[args[0]]
+    if function == "F_net_avg":
+        note = (
+            f"the average net force on {body.name} over t_c, m Δv/t_c: every force on it "
+            f"included (its weight too); F_avg({body.name}, {args[1]}) is the contact force"
+        )
+        return "vector", Dim.of("force"), net, note
+    if scene.gravity is None:
+        note = (
+            f"the average contact force on {body.name} over t_c, m Δv/t_c (no gravity: "
+            "the net force)"
+        )
+        return "vector", Dim.of("force"), net, note
+    W = body.mass * symbols.get("g", sympy.Symbol("g", positive=True))
+    contact = tuple(tidy(net[i] - W * scene.gravity[i]) for i in range(2))
+    note = (
+        f"the average contact (impact) force on {body.name} over t_c: m Δv/t_c − W, its "
+        f"weight's impulse over the contact taken out; F_net_avg({body.name}, {args[1]}) "
+        "is the net force m Δv/t_c"
+    )
+    return "vector", Dim.of("force"), (contact[0], contact[1]), note
 
 
 SteepestLimit = tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol]
