@@ -688,7 +688,7 @@ def _resolved(assumption: Assumption) -> bool:
     return (
         not assumption.holds
         and assumption.name.startswith(
-            ("no slip", "sliding", "cord ", "contact at ", "elastic cord ")
+            ("no slip", "sliding", "cord ", "contact at ", "elastic cord ", "sense of ")
         )
         and "re-solved" in assumption.detail
     )

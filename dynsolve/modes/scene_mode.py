@@ -19,7 +19,7 @@ from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
-from dynsolve.model.scene import Body, Path, Scene, Support, Vec, build_scene
+from dynsolve.model.scene import Body, Load, Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
@@ -80,6 +80,7 @@ def build_scene_problem(
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
     scene = _cord_states(scene, slipping or {})
+    scene = _load_senses(scene, slipping or {})
     removed: dict[str, object] = {}
     if released:
         removed = {c.name: c for c in scene.cords if c.name in released}
@@ -516,6 +517,18 @@ def _cord_states(scene: Scene, slipping: Mapping[str, int]) -> Scene:
         for s in scene.springs
     )
     return replace(scene, springs=springs)
+
+
+def _load_senses(scene: Scene, slipping: Mapping[str, int]) -> Scene:
+    """Each load of unknown size in its stated sense, or reversed where a solve found it
+    acting the other way (``slipping["sense:NAME"]`` = −1)."""
+    loads = []
+    for load in scene.loads:
+        if slipping.get(f"sense:{load.name}", 1) < 0:
+            x, y = load.direction
+            load = replace(load, direction=(-x, -y), sense=-load.sense)
+        loads.append(load)
+    return replace(scene, loads=tuple(loads))
 
 
 def _with_energy(
@@ -1386,8 +1399,62 @@ def assess(
     """Check every assumption against a solution; return them and any contacts that slip.
 
     A no-slip contact whose friction exceeds μs N, and that has a μk, is returned in
-    the second item with the sense of its (kinetic) friction along the tangent.
+    the second item with the sense of its (kinetic) friction along the tangent; a load of
+    unknown size that came out against its stated sense, as ``"sense:NAME"``: −1.
     """
+    checks, slips = _assess(problem, values)
+    senses, flipped = _load_senses_kept(problem, {**problem.system.knowns, **values})
+    return checks + senses, slips | flipped
+
+
+def _load_senses_kept(
+    problem: SceneProblem, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """Each force or couple whose size is an unknown acts in the sense the scene states
+    (``couple M on B: ccw``, ``force R on B at G: up``): a size that comes out negative
+    is that load acting the other way, a failed assumption re-solved with the sense
+    reversed (``"sense:NAME"``), and said so, as a friction's sense is."""
+    checks, flipped = [], {}
+    unknowns = {s.name: s for s in problem.formulation.unknowns}
+    for load in problem.scene.loads:
+        symbol = unknowns.get(load.name)
+        size = real_value(symbol, substitution) if symbol is not None else None
+        if size is None:
+            continue
+        word = _sense_word(load)
+        reversed_ = problem.slipping.get(f"sense:{load.name}", 1) < 0
+        name = f"sense of {load.kind} {load.name}"
+        stated = f" (stated the other way: re-solved {word})" if reversed_ else ""
+        if size >= -SENSE_TOLERANCE * max(1.0, abs(size)):
+            checks.append(Assumption(name, True, f"{load.name} = {size:.4g} ≥ 0 {word}{stated}"))
+            continue
+        other = _sense_word(load, -1)
+        checks.append(
+            Assumption(
+                name,
+                False,
+                f"{load.name} = {size:.4g} against its stated sense ({word}): it acts {other}; "
+                f"re-solved with {load.name} {other}",
+            )
+        )
+        flipped[f"sense:{load.name}"] = -1 if not reversed_ else 1
+    return tuple(checks), flipped
+
+
+def _sense_word(load: Load, flip: int = 1) -> str:
+    """A load's sense in words: cw/ccw for a couple, its direction for a force."""
+    if load.kind == "couple":
+        return "ccw" if load.sense * flip > 0 else "cw"
+    x, y = (real_value(flip * c, {}) for c in load.direction)
+    if x is None or y is None:
+        return "the other way" if flip < 0 else "as stated"
+    return direction_word(x, y)
+
+
+def _assess(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """The assumptions of the scene's friction, cords, contacts and events (:func:`assess`)."""
     knowns = problem.system.knowns
     substitution = {**knowns, **values}
     checks: list[Assumption] = []
