@@ -11,6 +11,7 @@ in the comment above it.
 
 import pytest
 
+from dynsolve.errors import DynsolveError
 from dynsolve.pipeline import solve_text
 from dynsolve.principles.impulse_momentum import energy_check
 from dynsolve.system import SolveOptions
@@ -100,3 +101,27 @@ def test_kinetic_friction_doing_positive_work_fails_the_energy_check() -> None:
     check = energy_check("", (0, {"P": -65.61, "F_G": 71.51}, 5.90), {}, 1e-2, kinetic={"F_G"})
     assert check is not None and not check.passed
     assert "kinetic friction does positive work" in check.detail
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_newton_at_the_instant_keeps_a_weakly_pushed_crate_at_rest(mode: str) -> None:
+    # at the instant: sliding right would need a_G = (P − μk N)/m = (90 − 98.1)/50
+    # = −0.162 m/s² (against the slide); re-solved with no slip: a_G = 0, F = 90 N left.
+    text = _crate("90 N", "for dt", find="a = a_G(crate) [m/s^2], F_G [N]")
+    text = text.replace("  travel crate: for dt\n", "")
+    values, solution = _values(text, mode)
+    assert values["a"] == pytest.approx(0.0, abs=1e-12)
+    assert abs(values["F_G"]) == pytest.approx(90.0, rel=1e-9)
+    slide = next(a for a in solution.assumptions if a.name == "sliding at G")
+    assert not slide.holds and "re-solved with no slip" in slide.detail
+
+
+def test_a_chain_refuses_a_slide_from_rest() -> None:
+    # two intervals from rest: a chain follows only contacts sliding at an interval's start,
+    # so the weak push is refused (never answered backwards).
+    text = _crate("90 N", "for dt", find="v_3 = speed(crate, 3) [m/s]")
+    text = text.replace(
+        "  travel crate: for dt\n", "  travel crate: for dt\n  travel crate: for dt\n"
+    )
+    with pytest.raises(DynsolveError, match="does not slide at G at the start"):
+        solve_text(text)
