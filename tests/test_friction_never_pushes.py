@@ -125,3 +125,29 @@ def test_a_chain_refuses_a_slide_from_rest() -> None:
     )
     with pytest.raises(DynsolveError, match="does not slide at G at the start"):
         solve_text(text)
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_a_stated_slide_that_reverses_inside_the_interval_fails(mode: str) -> None:
+    # given 1 m/s right, ``slides right``, no push, for 3 s: friction decelerates it at
+    # μk g = 1.962 m/s², so it stops after 1/1.962 = 0.51 s and stays; one interval would
+    # give v_2 = 1 − 1.962·3 = −4.886 m/s (backwards, friction doing +572 J). Was exit 0.
+    text = """given:
+  m = 50 kg
+  mu_k = 0.2
+  v_1 = 1 m/s
+  dt = 3 s
+scene:
+  body crate: particle, mass m, at (0, 0)
+  contact crate at G: normal up, mu_k mu_k, slides right
+  velocity crate: v_1, right
+  gravity
+  travel crate: for dt
+find: v_2 = speed(crate) [m/s]
+"""
+    solution = solve_text(text, options=SolveOptions(mode=mode))
+    assert not solution.passed
+    kept = next(a for a in solution.assumptions if a.name == "sliding at G through the interval")
+    assert not kept.holds and "stops sliding before the interval ends" in kept.detail
+    energy = next(c for c in solution.checks if c.name.startswith("second method: work"))
+    assert not energy.passed and "kinetic friction does positive work" in energy.detail
