@@ -5,9 +5,9 @@ body's size, a spring's stiffness, a density, g and a duration are positive, and
 weight, a coefficient of friction, an unstretched length and a principal moment of inertia
 are not negative (a massless pulley or link beside bodies with mass, μ = 0 frictionless, a
 spring with no free length, a slender rod with no inertia about its own axis); a scene in
-which every body is massless is refused. A value that breaks its bound is refused before anything is
-solved, at the given it comes from (or at the scene's text when it is an expression of
-several givens), with the role that fixes the bound.
+which every body is massless is refused. A value that breaks its bound is refused before
+anything is solved, at the given it comes from (or at the scene's text when it is an
+expression of several givens), with the role that fixes the bound.
 
 >>> from dynsolve.spec.ast import Name
 >>> try:
@@ -67,19 +67,19 @@ def check_sign(
 
 
 def check_some_mass(
-    masses: Sequence[tuple[Expr, sympy.Expr]],
+    masses: Sequence[sympy.Expr],
+    written: Sequence[Expr],
     given_values: Mapping[sympy.Symbol, sympy.Expr],
     file: str,
     givens: Mapping[str, Given] | None = None,
 ) -> None:
     """A massless body (a pulley, a link: mass 0) is an idealisation beside bodies with
-    mass; a scene whose every mass ``masses`` (each body's text and value) is zero has
-    nothing with inertia, and is refused at the first."""
-    numbers = [real_value(value, given_values) for _, value in masses]
-    if not masses or any(n is None or n != 0 for n in numbers):
+    mass; a scene whose every body's mass (``masses``) is zero has nothing with inertia,
+    and is refused at the first mass ``written`` (a ``mass`` or ``weight`` line's text)."""
+    numbers = [real_value(value, given_values) for value in masses]
+    if not masses or not written or any(n is None or n != 0 for n in numbers):
         return
-    expr = masses[0][0]
-    shown, where, used = _source(expr, 0.0, file, givens)
+    shown, where, used = _source(written[0], 0.0, file, givens)
     raise SpecError(
         f"{shown} is used as a mass{used}, and no body of the scene has mass: nothing has "
         "inertia, so no motion follows from the forces",

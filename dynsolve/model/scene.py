@@ -392,7 +392,7 @@ class _Builder:
         self.bodies: dict[str, Body] = {}
         self.fixed: dict[str, Vec] = {}
         self.parts: dict[str, list[tuple[SceneStmt, Part]]] = {}
-        self.masses: list[tuple[Expr, sympy.Expr]] = []  # each mass (or weight) as read
+        self.masses: list[Expr] = []  # each mass (or weight) line's text, as read
         self.gravity()
 
     def gravity(self) -> None:
@@ -552,12 +552,11 @@ class _Builder:
 
     def mass(self, props: dict[str, Prop], stmt: SceneStmt) -> sympy.Expr | None:
         if "mass" in props:
-            mass = self.value(props["mass"].values[0], MASS, "a mass", NOT_NEGATIVE)
-            self.masses.append((props["mass"].values[0], mass))
-            return mass
+            self.masses.append(props["mass"].values[0])
+            return self.value(props["mass"].values[0], MASS, "a mass", NOT_NEGATIVE)
         if "weight" in props:
+            self.masses.append(props["weight"].values[0])
             weight = self.value(props["weight"].values[0], FORCE, "a weight", NOT_NEGATIVE)
-            self.masses.append((props["weight"].values[0], weight))
             return weight / self.symbols["g"]
         return None
 
@@ -822,7 +821,13 @@ def _build_scene(
     builder.finish_composites()
     builder.body_points()
     givens = {g.name: g for g in spec.givens}
-    check_some_mass(builder.masses, builder.given_values, builder.file, givens)
+    check_some_mass(
+        [b.mass for b in builder.bodies.values()],
+        builder.masses,
+        builder.given_values,
+        builder.file,
+        givens,
+    )
     supports: list[Support] = []
     cords: list[Cord] = []
     loads: list[Load] = []
