@@ -670,7 +670,8 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
             heading, method = f"{pretty(target.name)}, the steepest slope without slip", "limit"
         else:
             result = view.definition(target)
-            results, note = ((*view.stated(target), result) if result is not None else ()), ""
+            results = (*view.stated(target), result) if result is not None else ()
+            note = target.note
             heading, method = f"{pretty(target.name)} from the values found", "substituted"
         if results:
             index = len(steps) + len(extra) + 1
@@ -687,7 +688,7 @@ def _resolved(assumption: Assumption) -> bool:
     return (
         not assumption.holds
         and assumption.name.startswith(
-            ("no slip", "sliding", "cord ", "contact at ", "elastic cord ")
+            ("no slip", "sliding", "cord ", "contact at ", "elastic cord ", "sense of ")
         )
         and "re-solved" in assumption.detail
     )

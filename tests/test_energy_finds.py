@@ -57,11 +57,13 @@ def test_potential_energy_of_the_ball_before_and_after_its_fall():
 
 def test_average_force_of_the_bounce_over_its_contact_time():
     # v_2 = √(2 g h) = 6.2642 m/s down, v_3 = e v_2 up: J = m (1 + e) v_2 = 5.0114 N·s up,
-    # F_avg = J / t_c = 2505.7 N up (hand derivation).
-    got = answers(BOUNCE.format(find="F = F_avg(ball, t_c)"))
-    expected = 0.5 * 1.6 * math.sqrt(2 * G * 2) / 0.002
-    assert got["F"].value == pytest.approx(expected, rel=1e-12)
-    assert got["F"].direction == "up"
+    # the net force J / t_c = 2505.7 N up; the floor's push (contact force) also holds the
+    # weight over t_c: F_avg = J / t_c + m g = 2505.7 + 4.905 = 2510.6 N up (hand derivation).
+    got = answers(BOUNCE.format(find="F = F_avg(ball, t_c), F_net = F_net_avg(ball, t_c)"))
+    net = 0.5 * 1.6 * math.sqrt(2 * G * 2) / 0.002
+    assert got["F_net"].value == pytest.approx(net, rel=1e-12)
+    assert got["F"].value == pytest.approx(net + 0.5 * G, rel=1e-12)
+    assert got["F"].direction == "up" and got["F_net"].direction == "up"
 
 
 def test_f_avg_needs_a_given_time():

@@ -240,6 +240,8 @@ def _phases(spec: Spec, options: SolveOptions) -> list[_Phase]:
         return [_Phase(problem, lambda p, output: _assumptions(p, assumptions, output))]
     if 0 in slips.values():
         raise NotClosedForm("a stated slide the answer contradicts is solved per variant")
+    if any(key.startswith("sense:") for key in slips):
+        raise NotClosedForm("a load found acting against its stated sense is solved per variant")
     resolved = build_scene_problem(spec, slips)
     after, more = assess(resolved, solve_system(resolved.system, options).values)
     if more and not more.items() <= slips.items():
@@ -272,7 +274,7 @@ def _assumptions(
 ) -> list[Condition]:
     """A scene's assumptions as conditions: contact kept, no slip (and, for a failed no-slip
     trial in ``slips``, the sense of the slip), cord taut, a stated slide, no tipping, the
-    slip of a re-solved contact."""
+    slip of a re-solved contact, a load of unknown size acting in its stated sense."""
     reactions = problem.formulation.reactions
     supports = {s.name: s for s in problem.scene.supports}
     out = []
@@ -305,6 +307,9 @@ def _assumptions(
             out.extend(_slide(problem, supports[name[11:]], assumption, output))
         elif name.startswith("no tipping on base ") and name[19:] in supports:
             out.append(_tipping(problem, supports[name[19:]], assumption, output))
+        elif name.startswith(("sense of force ", "sense of couple ")):
+            size = {s.name: s for s in problem.formulation.unknowns}[name.split(" ")[-1]]
+            out.append(Condition(name, ">=0", (output(size),), assumption.holds))
         else:
             raise NotClosedForm(f"assumption '{name}' is checked per variant")
     return out

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, replace
 import sympy
 
 from dynsolve.errors import Position, SpecError
+from dynsolve.model.physical import NOT_NEGATIVE, POSITIVE
 from dynsolve.model.scene import SceneReader, Vec, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.spec.ast import Prop, SceneStmt, Spec
@@ -329,12 +330,14 @@ def read_linkage(spec: Spec) -> Linkage:
             _bar_named(stmt.body, bars, where)
             assert stmt.value is not None
             normal = reader.direction(stmt.direction) if stmt.direction else UP
-            radius = reader.value(stmt.value, LENGTH, "a wheel's radius")
+            radius = reader.value(stmt.value, LENGTH, "a wheel's radius", POSITIVE)
             wheels[stmt.body] = Wheel(stmt.body, radius, normal, stmt.line, stmt.column)
         elif stmt.kind == "mesh":
             _bar_named(stmt.body, bars, where)
             _bar_named(stmt.other, bars, where)
-            radii = tuple(reader.value(e, LENGTH, "a gear's radius") for e in stmt.vectors[0])
+            radii = tuple(
+                reader.value(e, LENGTH, "a gear's radius", POSITIVE) for e in stmt.vectors[0]
+            )
             internal = stmt.word == "internal"
             pressure = reader.value(stmt.value, Dim(), "a pressure angle") if stmt.value else None
             meshes.append(
@@ -414,9 +417,11 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
     if "gyration" in props:
         if mass is None:
             raise SpecError(f"bar {stmt.name}: a gyration needs a mass", where, "add 'mass m'")
-        gyration = reader.value(props["gyration"].values[0], LENGTH, "a radius of gyration")
+        gyration = reader.value(
+            props["gyration"].values[0], LENGTH, "a radius of gyration", POSITIVE
+        )
     if "length" in props:
-        length = reader.value(props["length"].values[0], LENGTH, "a bar's length")
+        length = reader.value(props["length"].values[0], LENGTH, "a bar's length", POSITIVE)
     if "angle" in props:
         angle = reader.value(props["angle"].values[0], Dim(), "a bar's angle")
     return Bar(stmt.name, points, length, angle, stmt.line, stmt.column, mass, gyration)
@@ -425,11 +430,11 @@ def _bar(stmt: SceneStmt, reader: SceneReader, where: Position) -> Bar:
 def _mass(prop: Prop, reader: SceneReader, symbols: Mapping, where: Position) -> sympy.Expr:
     """A bar's or a block's mass: ``mass m``, or ``weight W`` (m = W/g, as a body's)."""
     if prop.key == "mass":
-        return reader.value(prop.values[0], Dim.of("mass"), "a mass")
+        return reader.value(prop.values[0], Dim.of("mass"), "a mass", NOT_NEGATIVE)
     g = symbols.get("g")
     if g is None:
         raise SpecError("a weight needs g", where, "give 'g' or write the mass ('mass m')")
-    return reader.value(prop.values[0], Dim.of("force"), "a weight") / g
+    return reader.value(prop.values[0], Dim.of("force"), "a weight", NOT_NEGATIVE) / g
 
 
 def _joint_named(

@@ -559,7 +559,42 @@ def cross_checks(
         + _power_check(problem, values)
         + _lagrange_check(problem, values)
         + _pressure_checks(problem, values)
+        + _load_senses(problem, values)
     )
+
+
+def _load_senses(
+    problem: LinkageProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[Check, ...]:
+    """Each couple or force of unknown size acts in the sense the scene states: a size
+    that comes out negative is the load acting the other way, a failed check that says
+    which way (never an answer with its sign silently against its words)."""
+    known = {**problem.system.knowns, **values}
+    unknowns = {s.name: s for s in problem.system.unknowns}
+    checks = []
+    for load in problem.linkage.loads:
+        symbol = unknowns.get(load.name)
+        size = known.get(symbol) if symbol is not None else None
+        if size is None or not getattr(size, "is_number", False):
+            continue
+        number = float(size)
+        if load.kind == "couple":
+            stated, other = ("ccw", "cw") if load.sense > 0 else ("cw", "ccw")
+        else:
+            stated, other = "as stated", "the other way"
+        holds = number >= -1e-9 * max(1.0, abs(number))
+        detail = f"{load.name} = {number:.4g} ≥ 0: {stated}, as stated"
+        if not holds:
+            detail = (
+                f"{load.name} = {number:.4g} against its stated sense ({stated}): it acts "
+                f"{other}; state it so in the scene ('{load.kind} {load.name} on {load.bar}: "
+                f"{other}')"
+                if load.kind == "couple"
+                else f"{load.name} = {number:.4g} against its stated direction: it acts the "
+                "other way; state its direction reversed in the scene"
+            )
+        checks.append(Check(f"sense of {load.kind} {load.name}", holds, detail))
+    return tuple(checks)
 
 
 def _tooth_values(

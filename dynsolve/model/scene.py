@@ -29,6 +29,7 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+from dynsolve.model.physical import NOT_NEGATIVE, POSITIVE, check_sign, check_some_mass
 
 if TYPE_CHECKING:
     from dynsolve.system import Constraint
@@ -391,15 +392,39 @@ class _Builder:
         self.bodies: dict[str, Body] = {}
         self.fixed: dict[str, Vec] = {}
         self.parts: dict[str, list[tuple[SceneStmt, Part]]] = {}
+        self.masses: list[Expr] = []  # each mass (or weight) line's text, as read
+        self.gravity()
+
+    def gravity(self) -> None:
+        """g, where weights act (a ``gravity`` line or a ``weight`` given), is positive:
+        checked first, as the masses ``W/g`` are read from it."""
+        weighed = (
+            s
+            for s in self.spec.scene
+            if s.kind == "gravity" or any(p.key == "weight" for p in s.props)
+        )
+        stmt = next(weighed, None)
+        if stmt is not None and "g" in self.symbols:
+            self.value(Name("g", stmt.line, stmt.column), Dim(1, 0, -2), "gravity g", POSITIVE)
 
     # ---- helpers
     def where(self, line: int, column: int) -> Position:
         return Position(self.file, line, column)
 
-    def value(self, expr: Expr, dim: Dim, what: str) -> sympy.Expr:
-        """An expression of the givens, checked to have dimension ``dim`` (0 fits any)."""
+    def value(self, expr: Expr, dim: Dim, what: str, sign: str = "") -> sympy.Expr:
+        """An expression of the givens, checked to have dimension ``dim`` (0 fits any) and,
+        where physics fixes its sign (``sign``: :data:`~dynsolve.model.physical.POSITIVE`
+        or ``NOT_NEGATIVE``), to keep it. A literal 0 is always allowed (``mass 0``)."""
         if constant_value(expr) == 0:
             return sympy.Integer(0)
+        converted = self._value(expr, dim, what)
+        if sign:
+            givens = {g.name: g for g in self.spec.givens}
+            check_sign(converted, expr, what, sign, self.given_values, self.file, givens)
+        return converted
+
+    def _value(self, expr: Expr, dim: Dim, what: str) -> sympy.Expr:
+        """An expression of the givens, checked to have dimension ``dim``."""
         for name in iter_names(expr):
             if name.text not in self.symbols and name.text != "pi":
                 close = difflib.get_close_matches(name.text, list(self.symbols), n=1)
@@ -527,9 +552,12 @@ class _Builder:
 
     def mass(self, props: dict[str, Prop], stmt: SceneStmt) -> sympy.Expr | None:
         if "mass" in props:
-            return self.value(props["mass"].values[0], MASS, "a mass")
+            self.masses.append(props["mass"].values[0])
+            return self.value(props["mass"].values[0], MASS, "a mass", NOT_NEGATIVE)
         if "weight" in props:
-            return self.value(props["weight"].values[0], FORCE, "a weight") / self.symbols["g"]
+            self.masses.append(props["weight"].values[0])
+            weight = self.value(props["weight"].values[0], FORCE, "a weight", NOT_NEGATIVE)
+            return weight / self.symbols["g"]
         return None
 
     def simple_body(self, stmt: SceneStmt) -> Body:
@@ -559,7 +587,7 @@ class _Builder:
             )
         shape = props["shape"].word if "shape" in props else ""
         sizes = tuple(
-            self.value(v, LENGTH, f"a size of the {shape}")
+            self.value(v, LENGTH, f"a size of the {shape}", POSITIVE)
             for v in props.get("shape", Prop("")).values
         )
         I_G, note = self.inertia(stmt, props, mass, shape, sizes, at)
@@ -593,14 +621,14 @@ class _Builder:
         where = self.where(stmt.line, stmt.column)
         if "gyration" in props:
             prop = props["gyration"]
-            k = self.value(prop.values[0], LENGTH, "a radius of gyration")
+            k = self.value(prop.values[0], LENGTH, "a radius of gyration", POSITIVE)
             about = from_gyration(mass, k)
             if not prop.about:
                 return about, "I_G = m k_G²"
             return self.moved(about, mass, prop.about, at, where), f"I_{prop.about} = m k²"
         if "inertia" in props:
             prop = props["inertia"]
-            given = self.value(prop.values[0], Dim(2, 1, 0), "a moment of inertia")
+            given = self.value(prop.values[0], Dim(2, 1, 0), "a moment of inertia", POSITIVE)
             if not prop.about:
                 return given, "I_G given"
             return self.moved(given, mass, prop.about, at, where), f"I_{prop.about} given"
@@ -630,7 +658,7 @@ class _Builder:
         where = self.where(stmt.line, stmt.column)
         shape = props["shape"].word if "shape" in props else "particle"
         sizes = tuple(
-            self.value(v, LENGTH, f"a size of the {shape}")
+            self.value(v, LENGTH, f"a size of the {shape}", POSITIVE)
             for v in props.get("shape", Prop("")).values
         )
         at = self.vector(props["at"].vector, "a position") if "at" in props else ZERO
@@ -638,9 +666,9 @@ class _Builder:
         if mass is None and "density" in props:
             from dynsolve.model.inertia import mass_from_density
 
-            density = self.value(props["density"].values[0], Dim(-3, 1, 0), "a density")
+            density = self.value(props["density"].values[0], Dim(-3, 1, 0), "a density", POSITIVE)
             thickness = (
-                self.value(props["thickness"].values[0], LENGTH, "a thickness")
+                self.value(props["thickness"].values[0], LENGTH, "a thickness", POSITIVE)
                 if "thickness" in props
                 else None
             )
@@ -792,6 +820,14 @@ def _build_scene(
         builder.declare(stmt)
     builder.finish_composites()
     builder.body_points()
+    givens = {g.name: g for g in spec.givens}
+    check_some_mass(
+        [b.mass for b in builder.bodies.values()],
+        builder.masses,
+        builder.given_values,
+        builder.file,
+        givens,
+    )
     supports: list[Support] = []
     cords: list[Cord] = []
     loads: list[Load] = []
@@ -821,8 +857,12 @@ def _build_scene(
                     Link(stmt.name, body, point, other, other_point, stmt.line, stmt.column)
                 )
             else:
-                k = builder.value(stmt.props[0].values[0], Dim(0, 1, -2), "a spring stiffness")
-                free = builder.value(stmt.props[1].values[0], LENGTH, "an unstretched length")
+                k = builder.value(
+                    stmt.props[0].values[0], Dim(0, 1, -2), "a spring stiffness", POSITIVE
+                )
+                free = builder.value(
+                    stmt.props[1].values[0], LENGTH, "an unstretched length", NOT_NEGATIVE
+                )
                 wound = any(p.key == "wound" for p in stmt.props)
                 tension_only = any(p.key == "tension_only" for p in stmt.props)
                 compression_only = any(p.key == "compression_only" for p in stmt.props)
@@ -929,8 +969,16 @@ def _support(builder: _Builder, stmt: SceneStmt) -> Support:
     body = builder.body(stmt.body, stmt.line, stmt.column)
     props = {p.key: p for p in stmt.props}
     normal = builder.direction(props["normal"].direction) if "normal" in props else WORDS["up"]
-    mu_s = builder.value(props["mu_s"].values[0], Dim(), "μs") if "mu_s" in props else None
-    mu_k = builder.value(props["mu_k"].values[0], Dim(), "μk") if "mu_k" in props else None
+    mu_s = (
+        builder.value(props["mu_s"].values[0], Dim(), "μs", NOT_NEGATIVE)
+        if "mu_s" in props
+        else None
+    )
+    mu_k = (
+        builder.value(props["mu_k"].values[0], Dim(), "μk", NOT_NEGATIVE)
+        if "mu_k" in props
+        else None
+    )
     slides = builder.direction(props["slides"].direction) if "slides" in props else None
     smooth = "smooth" in props or (mu_s is None and mu_k is None and stmt.kind == "contact")
     two_sided = "guide" in props
@@ -1277,7 +1325,7 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
         )
     if stmt.word == "for":
         assert stmt.value is not None
-        duration = builder.value(stmt.value, Dim(0, 0, 1), "a duration")
+        duration = builder.value(stmt.value, Dim(0, 0, 1), "a duration", POSITIVE)
         return Travel(stmt.body, "for", duration=duration, stops=stops, line=line, column=column,
                       until=until.word if until else "")  # fmt: skip
     if stmt.vectors:
@@ -1295,7 +1343,7 @@ def _travel(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Travel:
         angle = -angle if stmt.word == "cw" else angle
         return Travel(stmt.body, "turns", angle=angle, stops=stops, line=line, column=column)
     assert stmt.direction is not None
-    distance = builder.value(stmt.value, LENGTH, "a distance")
+    distance = builder.value(stmt.value, LENGTH, "a distance", POSITIVE)
     direction = builder.direction(stmt.direction)
     return Travel(
         stmt.body,

@@ -77,6 +77,7 @@ class Target:
     parts: tuple[Term, ...] = ()  # a composite's I about a point, one line per part
     # quantities its derivation states first, (name, value, dimension): κ_max before a_max
     before: tuple[tuple[str, sympy.Expr, Dim], ...] = ()
+    note: str = ""  # what the quantity is, where its name alone does not say (F_avg)
 
 
 @dataclass(frozen=True)

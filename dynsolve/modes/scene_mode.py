@@ -19,7 +19,7 @@ from dynsolve.dimensions import DimensionReport, sympy_dimension
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
-from dynsolve.model.scene import Body, Path, Scene, Support, Vec, build_scene
+from dynsolve.model.scene import Body, Load, Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
@@ -80,6 +80,7 @@ def build_scene_problem(
     )
     given_values = {g.symbol: g.value for g in givens if g.value is not None}
     scene = _cord_states(scene, slipping or {})
+    scene = _load_senses(scene, slipping or {})
     removed: dict[str, object] = {}
     if released:
         removed = {c.name: c for c in scene.cords if c.name in released}
@@ -275,7 +276,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
-    stage_functions = {*STAGE_FUNCTIONS, "V", "F_avg"}
+    stage_functions = {*STAGE_FUNCTIONS, "V", *AVERAGE_FORCES}
     impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
     return (
         len(events) > 1
@@ -287,7 +288,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
 
 # find functions that take a state number (or a body) and are not a reaction at a state
 _NOT_REACTIONS = frozenset(
-    {"T", "V", "work", "energy_lost", "impulse", "F_avg", "power", "speed", "omega2"}
+    {"T", "V", "work", "energy_lost", "impulse", "F_avg", "F_net_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
     | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
 )
@@ -518,6 +519,18 @@ def _cord_states(scene: Scene, slipping: Mapping[str, int]) -> Scene:
     return replace(scene, springs=springs)
 
 
+def _load_senses(scene: Scene, slipping: Mapping[str, int]) -> Scene:
+    """Each load of unknown size in its stated sense, or reversed where a solve found it
+    acting the other way (``slipping["sense:NAME"]`` = −1)."""
+    loads = []
+    for load in scene.loads:
+        if slipping.get(f"sense:{load.name}", 1) < 0:
+            x, y = load.direction
+            load = replace(load, direction=(-x, -y), sense=-load.sense)
+        loads.append(load)
+    return replace(scene, loads=tuple(loads))
+
+
 def _with_energy(
     formulation: Formulation,
     scene: Scene,
@@ -601,12 +614,19 @@ def _interval_checks(
     from dynsolve.principles.impulse_momentum import energy_check
 
     formulation = problem.formulation
-    intervals = [("", formulation.interval_energy, 1)] + [
-        (f"stage {r.stage.number}", r.energy, r.stage.number) for r in formulation.stages
+    kinetic = {  # kinetic friction (a known μk N) on the instant's free bodies
+        f.name
+        for forces in formulation.forces.values()
+        for f in forces
+        if f.kind == "friction" and f.known
+    }
+    intervals = [("", formulation.interval_energy, 1, kinetic)] + [
+        (f"stage {r.stage.number}", r.energy, r.stage.number, {f"F_{s.support}" for s in r.slides})
+        for r in formulation.stages
     ]
     checks = (
-        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state)
-        for what, energy, state in intervals
+        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state, kinetic)
+        for what, energy, state, kinetic in intervals
         if energy is not None
     )
     return tuple(c for c in checks if c is not None)
@@ -804,6 +824,8 @@ def _target(
         if len(args) != 1:
             raise SpecError("trial takes one name: trial(F_A)", where, "write trial(NAME)")
         function, args, trial = args[0], (), True
+    if function in AVERAGE_FORCES and len(args) > 1:
+        _contact_time_positive(spec, args[1], item)
     target = _quantity(function, args, item, scene, formulation, symbols, dims, where)
     unit, dim = _unit(item, target.dim, spec, where)
     if item.unit is None and function in ("T", "work", "energy_lost", "V"):
@@ -811,6 +833,20 @@ def _target(
     if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
+
+
+def _contact_time_positive(spec: Spec, name: str, item: FindItem) -> None:
+    """An average force's contact time t_c is a given and positive (an error at it)."""
+    from dynsolve.model.physical import POSITIVE, check_sign
+    from dynsolve.spec.ast import Name
+
+    givens = {g.name: g for g in spec.givens}
+    given = givens.get(name)
+    if given is None or given.quantity is None:
+        return
+    value = sympy.Rational(given.quantity.value.numerator, given.quantity.value.denominator)
+    used = Name(name, item.line, item.column)
+    check_sign(value, used, "a contact time", POSITIVE, {}, spec.file, givens)
 
 
 def _unit(item: FindItem, dim: Dim, spec: Spec, where: Position) -> tuple[str, Dim]:
@@ -855,9 +891,11 @@ def _quantity(
         )
     if function == "power":
         return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
-    if function == "F_avg":
-        kind, dim, vector = _average_force(args, scene, formulation, symbols, dims, where)
-        return target(kind, dim, vector=vector)
+    if function in AVERAGE_FORCES:
+        kind, dim, vector, note = _average_force(
+            function, args, scene, formulation, symbols, dims, where
+        )
+        return target(kind, dim, vector=vector, note=note)
 
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
@@ -1071,20 +1109,30 @@ def _power(
     raise SpecError(f"'{name}' is not a force or couple of the scene", where, hint)
 
 
+AVERAGE_FORCES = ("F_avg", "F_net_avg")  # the contact force, the net force over t_c
+
+
 def _average_force(
+    function: str,
     args: tuple[str, ...],
     scene: Scene,
     formulation: Formulation,
     symbols: Mapping[str, sympy.Symbol],
     dims: Mapping[str, Dim],
     where: Position,
-) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr]]:
-    """F_avg(B, t_c [, k]) = impulse(B [, k]) / t_c over a given contact time."""
+) -> tuple[str, Dim, tuple[sympy.Expr, sympy.Expr], str]:
+    """An average force on B over a given contact time t_c of its impact (stage k): the net
+    force ``F_net_avg(B, t_c [, k])`` = impulse(B [, k])/t_c = m Δv/t_c, every force on B
+    included; the contact (impact) force ``F_avg(B, t_c [, k])`` = m Δv/t_c − W, the weight's
+    impulse W t_c over the contact taken out (the impact keeps the velocity across its
+    line, so the contact also held the weight). Returns kind, dimension, vector and what
+    it is, in words."""
     from dynsolve.stage_finds import stage_quantity
 
     if len(args) not in (2, 3) or args[1] not in symbols:
         raise SpecError(
-            "F_avg takes the body and the contact time: F_avg(B, t_c) or F_avg(B, t_c, k)",
+            f"{function} takes the body and the contact time: {function}(B, t_c) or "
+            f"{function}(B, t_c, k)",
             where,
             hint="t_c is a given time, e.g. t_c = 0.002 s",
         )
@@ -1094,7 +1142,28 @@ def _average_force(
     _, _, _, vector = stage_quantity("impulse", impulse_args, scene, formulation, where)
     assert vector is not None
     t_c = symbols[args[1]]
-    return "vector", Dim.of("force"), (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
+    net = (tidy(vector[0] / t_c), tidy(vector[1] / t_c))
+    body = scene.bodies[args[0]]
+    if function == "F_net_avg":
+        note = (
+            f"the average net force on {body.name} over t_c, m Δv/t_c: every force on it "
+            f"included (its weight too); F_avg({body.name}, {args[1]}) is the contact force"
+        )
+        return "vector", Dim.of("force"), net, note
+    if scene.gravity is None:
+        note = (
+            f"the average contact force on {body.name} over t_c, m Δv/t_c (no gravity: "
+            "the net force)"
+        )
+        return "vector", Dim.of("force"), net, note
+    W = body.mass * symbols.get("g", sympy.Symbol("g", positive=True))
+    contact = tuple(tidy(net[i] - W * scene.gravity[i]) for i in range(2))
+    note = (
+        f"the average contact (impact) force on {body.name} over t_c: m Δv/t_c − W, its "
+        f"weight's impulse over the contact taken out; F_net_avg({body.name}, {args[1]}) "
+        "is the net force m Δv/t_c"
+    )
+    return "vector", Dim.of("force"), (contact[0], contact[1]), note
 
 
 SteepestLimit = tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol]
@@ -1330,8 +1399,62 @@ def assess(
     """Check every assumption against a solution; return them and any contacts that slip.
 
     A no-slip contact whose friction exceeds μs N, and that has a μk, is returned in
-    the second item with the sense of its (kinetic) friction along the tangent.
+    the second item with the sense of its (kinetic) friction along the tangent; a load of
+    unknown size that came out against its stated sense, as ``"sense:NAME"``: −1.
     """
+    checks, slips = _assess(problem, values)
+    senses, flipped = _load_senses_kept(problem, {**problem.system.knowns, **values})
+    return checks + senses, slips | flipped
+
+
+def _load_senses_kept(
+    problem: SceneProblem, substitution: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """Each force or couple whose size is an unknown acts in the sense the scene states
+    (``couple M on B: ccw``, ``force R on B at G: up``): a size that comes out negative
+    is that load acting the other way, a failed assumption re-solved with the sense
+    reversed (``"sense:NAME"``), and said so, as a friction's sense is."""
+    checks, flipped = [], {}
+    unknowns = {s.name: s for s in problem.formulation.unknowns}
+    for load in problem.scene.loads:
+        symbol = unknowns.get(load.name)
+        size = real_value(symbol, substitution) if symbol is not None else None
+        if size is None:
+            continue
+        word = _sense_word(load)
+        reversed_ = problem.slipping.get(f"sense:{load.name}", 1) < 0
+        name = f"sense of {load.kind} {load.name}"
+        stated = f" (stated the other way: re-solved {word})" if reversed_ else ""
+        if size >= -SENSE_TOLERANCE * max(1.0, abs(size)):
+            checks.append(Assumption(name, True, f"{load.name} = {size:.4g} ≥ 0 {word}{stated}"))
+            continue
+        other = _sense_word(load, -1)
+        checks.append(
+            Assumption(
+                name,
+                False,
+                f"{load.name} = {size:.4g} against its stated sense ({word}): it acts {other}; "
+                f"re-solved with {load.name} {other}",
+            )
+        )
+        flipped[f"sense:{load.name}"] = -1 if not reversed_ else 1
+    return tuple(checks), flipped
+
+
+def _sense_word(load: Load, flip: int = 1) -> str:
+    """A load's sense in words: cw/ccw for a couple, its direction for a force."""
+    if load.kind == "couple":
+        return "ccw" if load.sense * flip > 0 else "cw"
+    x, y = (real_value(flip * c, {}) for c in load.direction)
+    if x is None or y is None:
+        return "the other way" if flip < 0 else "as stated"
+    return direction_word(x, y)
+
+
+def _assess(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], dict[str, int]]:
+    """The assumptions of the scene's friction, cords, contacts and events (:func:`assess`)."""
     knowns = problem.system.knowns
     substitution = {**knowns, **values}
     checks: list[Assumption] = []
@@ -1526,13 +1649,14 @@ def _slides_kept(
     formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
 ) -> list[Assumption]:
     """Each contact sliding at the start of an interval (impulse and momentum) slides to
-    its end: a block that stops before it (friction alone would bring it back) fails."""
+    its end: a block that stops before it (friction alone would bring it back) fails. A
+    slide stated from rest is judged by ``_declared_slide``."""
     from dynsolve.principles.stage_chain import slide_kept
 
     checks = []
     for name, (start, end) in formulation.interval_slips.items():
         first, last = real_value(start, substitution), real_value(end, substitution)
-        if first is not None and last is not None:
+        if first is not None and last is not None and abs(first) > SENSE_TOLERANCE * abs(last):
             checks.append(slide_kept(f"sliding at {name} through the interval", first, last, 1))
     return checks
 
@@ -1657,6 +1781,9 @@ def _declared_slide(
     if v is None:
         return None
     along = -support.friction_sense  # the slide's sense along the tangent
+    over = problem.formulation.interval_slips.get(support.name)
+    if a is None and over is not None and abs(v) <= SENSE_TOLERANCE:
+        return _slide_from_rest(support, along, real_value(over[1], substitution))
     if along * v > SENSE_TOLERANCE:
         return Assumption(name, True, f"its contact point slides that way (v_P = {abs(v):.4g})")
     if along * v < -SENSE_TOLERANCE:
@@ -1684,6 +1811,41 @@ def _declared_slide(
         False,
         f"from rest, F = μk N opposing the slide would accelerate the contact point the other "
         f"way ({abs(a):.4g}): it cannot start to slide; re-solved with no slip",
+    )
+
+
+def _slide_from_rest(support: object, along: int, end: float | None) -> Assumption | None:
+    """A slide stated from rest over an interval of constant forces (impulse and momentum):
+    the contact point's slip at the end, ``end``, must be along the stated sense ``along``;
+    kinetic friction that would drive it the other way is friction pushing, so the scene is
+    re-solved with no slip (and, with μs given, a slide from rest starts only if static
+    friction cannot hold it)."""
+    from dynsolve.model.scene import Support
+
+    assert isinstance(support, Support)
+    if end is None:
+        return None
+    name = f"sliding at {support.name}"
+    if along * end > SENSE_TOLERANCE and support.mu_s is not None:
+        return Assumption(
+            name,
+            False,
+            "from rest, a slide starts only if static friction cannot hold the contact: "
+            "re-solved with no slip to check |F| ≤ μs N",
+        )
+    if along * end > SENSE_TOLERANCE:
+        return Assumption(
+            name,
+            True,
+            f"from rest, its contact point slides that way, at {abs(end):.4g} m/s at the end "
+            "of the interval (no mu_s: static friction is not checked)",
+        )
+    return Assumption(
+        name,
+        False,
+        f"from rest, F = μk N opposing the slide would drive the contact point the other way "
+        f"({abs(end):.4g} m/s at the end of the interval): kinetic friction cannot push, so "
+        "it cannot start to slide; re-solved with no slip",
     )
 
 

@@ -22,7 +22,7 @@ A direction (or point) with no external impulse is named: momentum is conserved 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import replace as replaced
 
 import sympy
@@ -217,14 +217,19 @@ def impulse_formulation(
                 f"the slip of {rolls.name} reaches zero after Δt = {{value:.4g}} s",
             ),
         )
-    slips = {}  # each contact sliding at the start: its slip at both ends of the interval
+    slips = {}  # each contact sliding at the start (or stated to): its slip at both ends
     for support in scene.supports:
-        if support.name in motion.sliding and support.body in ends and rolls is None:
+        declared = support.friction_sense is not None and slipping.get(support.name) != 0
+        sliding = support.name in motion.sliding or declared
+        if sliding and support.body in ends and rolls is None:
             body, ((v_x, v_y), spin) = scene.bodies[support.body], ends[support.body]
             r = (support.point[0] - body.G[0], support.point[1] - body.G[1])
             v_P2 = (v_x - spin * r[1], v_y + spin * r[0])  # v_G2 + ω₂ k × r_P/G
             end_slip = tidy(v_P2[0] * support.tangent[0] + v_P2[1] * support.tangent[1])
-            slips[support.name] = (motion.sliding[support.name], end_slip)
+            v_1, w_1 = scene.velocities.get(support.body, ZERO), motion.kinematics[body.name].omega
+            v_P1 = (v_1[0] - w_1 * r[1], v_1[1] + w_1 * r[0])  # 0 from rest
+            start = tidy(v_P1[0] * support.tangent[0] + v_P1[1] * support.tangent[1])
+            slips[support.name] = (start, end_slip)
     return Formulation(
         equations=equations,
         unknowns=unknowns,
@@ -280,15 +285,20 @@ def energy_check(
     values: Mapping[sympy.Symbol, sympy.Expr],
     agreement: float,
     state: int = 1,
+    kinetic: Collection[str] = (),
 ) -> Check | None:
     """T_k + ΣU = T_{k+1} over an interval solved by impulse and momentum (from
     ``state`` k), with the work of each force from the motion found (None where symbols
-    remain).
+    remain). Kinetic friction (the forces named in ``kinetic``) opposes the slip of the
+    point it acts on, so its work relative to the fixed surface is never positive: where
+    it is, the slide assumed is wrong and the check fails, however well the sum agrees.
 
     >>> import sympy
     >>> m = sympy.Symbol("m")
     >>> energy_check("stage 2", (m * 8, {"F_C": -m * 8}, 0), {m: 2}, 1e-6).passed
     True
+    >>> energy_check("", (0, {"P": -6, "F_C": 7}, 1), {}, 1e-6, kinetic={"F_C"}).passed
+    False
     """
     T_1, works, T_2 = energy
     numbers = [real_value(e, values) for e in (T_1, *works.values(), T_2)]
@@ -298,12 +308,25 @@ def energy_check(
     scale = max(abs(n) for n in numbers) or 1.0  # type: ignore[arg-type]
     gap = abs(t_1 + sum(u) - t_2) / scale  # type: ignore[operator]
     terms = ", ".join(f"U_{n} = {v:.6g}" for n, v in zip(works, u, strict=True))
-    return Check(
-        f"second method: work and energy ({what})" if what else "second method: work and energy",
-        gap <= agreement,
+    pushing = [
+        f"U_{n} = {v:+.4g}"
+        for n, v in zip(works, u, strict=True)
+        if n in kinetic and v > 1e-9 * scale  # type: ignore[operator]
+    ]
+    detail = (
         f"T{state} + ΣU = {t_1:.7g} + ({terms}) = {t_1 + sum(u):.7g}; "
         f"T{state + 1} = {t_2:.7g}; "
-        f"relative difference {gap:.1e}",
+        f"relative difference {gap:.1e}"
+    )
+    if pushing:
+        detail = (
+            f"kinetic friction does positive work ({', '.join(pushing)}): friction cannot push "
+            f"a body along the surface it slides on, so the slide assumed is wrong; {detail}"
+        )
+    return Check(
+        f"second method: work and energy ({what})" if what else "second method: work and energy",
+        gap <= agreement and not pushing,
+        detail,
     )
 
 

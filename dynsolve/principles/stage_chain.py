@@ -93,7 +93,7 @@ def chain_formulation(
     stage 3), where the first guess was contradicted. ``instants`` are the states whose
     reactions are asked (``cord(2)``): Newton–Euler at that instant, from the motion there."""
     loads = {
-        load.name: sympy.Symbol(load.name, positive=True)
+        load.name: sympy.Symbol(load.name, real=True)  # its sense: checked
         for load in scene.loads
         if load.name not in symbols
     }

@@ -47,6 +47,7 @@ import sympy
 from dynsolve.dimensions import check_dimensions
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import relation, to_sympy
+from dynsolve.model.physical import NOT_NEGATIVE, POSITIVE
 from dynsolve.model.scene import SceneReader, scene_reader
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.rigid3d.inertia import Vec3, body_axes, physical_problem, principal, tensor, unit
@@ -432,10 +433,10 @@ def _body(
             hint="write 'at (x, y, z)'",
         )
     if "mass" in props:
-        m = reader.value(props["mass"].values[0], MASS, "a mass")
+        m = reader.value(props["mass"].values[0], MASS, "a mass", POSITIVE)
     elif "weight" in props:
         g = reader.symbols.get("g")
-        m = reader.value(props["weight"].values[0], Dim.of("force"), "a weight") / g
+        m = reader.value(props["weight"].values[0], Dim.of("force"), "a weight", POSITIVE) / g
     else:
         raise SpecError(f"body {stmt.name} needs a mass", where, "add 'mass m'")
     G = (
@@ -448,7 +449,7 @@ def _body(
     products: tuple[sympy.Expr, ...] | None = None
     if explicit:
         moments = tuple(
-            reader.value(e, MOMENT_OF_INERTIA, "a moment of inertia")
+            reader.value(e, MOMENT_OF_INERTIA, "a moment of inertia", NOT_NEGATIVE)
             for e in explicit[0].vectors[0]
         )
         shape = "given principal moments"
@@ -459,7 +460,7 @@ def _body(
             )
             shape = "given moments and products of inertia"
     elif shapes:
-        sizes = tuple(reader.value(v, LENGTH, "a size") for v in shapes[0].values)
+        sizes = tuple(reader.value(v, LENGTH, "a size", POSITIVE) for v in shapes[0].values)
         try:
             moments = principal(shapes[0].word, m, sizes)
         except ValueError as error:
