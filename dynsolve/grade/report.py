@@ -17,14 +17,13 @@ s2,0.00,0,1
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 from collections import Counter
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from dynsolve.grade.run import StudentResult, parts_of
+from dynsolve.safe_csv import csv_text
 
 BINS = 10  # score distribution: 0-10, 10-20, …, 90-100 %
 TOP_MISTAKES = 3
@@ -33,19 +32,17 @@ TOP_MISTAKES = 3
 def results_csv(results: Sequence[StudentResult]) -> str:
     """One row per student: id, score, then per part its answer, verdict, credit, feedback."""
     parts = parts_of(results)
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
     header = ["student", "score"]
     for part in parts:
         header += [f"{part} answer", f"{part} verdict", f"{part} credit", f"{part} feedback"]
-    writer.writerow(header)
+    rows: list[list[str]] = [header]
     for result in results:
         row = [result.student, f"{result.score:.2f}"]
         for part in parts:
             cell = result.parts[part]
             row += [cell["answer"], cell["verdict"], f"{cell['credit']:g}", cell["feedback"]]
-        writer.writerow(row)
-    return out.getvalue()
+        rows.append(row)
+    return csv_text(rows)
 
 
 def results_json(
@@ -66,13 +63,11 @@ def gradebook_csv(results: Sequence[StudentResult], weights: Mapping[str, float]
     """A gradebook import: ``student,score,points,max_points`` (score in %, 2 decimals;
     points = weighted credit earned, max_points = sum of the weights)."""
     total = sum(weights.values())
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["student", "score", "points", "max_points"])
+    rows = [["student", "score", "points", "max_points"]]
     for result in results:
         points = sum(weights[p] * float(c["credit"]) for p, c in result.parts.items())
-        writer.writerow([result.student, f"{result.score:.2f}", f"{points:g}", f"{total:g}"])
-    return out.getvalue()
+        rows.append([result.student, f"{result.score:.2f}", f"{points:g}", f"{total:g}"])
+    return csv_text(rows)
 
 
 def class_summary(results: Sequence[StudentResult]) -> dict[str, Any]:

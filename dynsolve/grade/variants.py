@@ -24,6 +24,7 @@ from pathlib import Path
 
 from dynsolve.errors import Position, SpecError
 from dynsolve.files import read_capped, write_text
+from dynsolve.safe_csv import csv_text, unescape_cell
 
 MAX_BYTES = 64 * 1024 * 1024
 MAX_ROWS = 200_000
@@ -48,12 +49,8 @@ class VariantRow:
 
 def write_variants(path: Path, rows: Iterable[VariantRow], names: Sequence[str]) -> None:
     """Write the rows, with a column per given in ``names`` (atomic, as every output)."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(("student", "units", *names))
-    for row in rows:
-        writer.writerow((row.student, row.units, *(row.cells.get(n, "") for n in names)))
-    write_text(path, buffer.getvalue())
+    table = [(row.student, row.units, *(row.cells.get(n, "") for n in names)) for row in rows]
+    write_text(path, csv_text([("student", "units", *names), *table]))
 
 
 def read_variants(path: str | Path) -> dict[str, dict[str, str]]:
@@ -137,7 +134,7 @@ def _read_table(path: str | Path, what: str) -> tuple[list[str], list[tuple[int,
                 raise CsvError(
                     f"a cell is over {MAX_CELL} characters", Position(str(path), line, 1), ""
                 )
-            rows.append((line, [cell.strip() for cell in row]))
+            rows.append((line, [unescape_cell(cell.strip()) for cell in row]))
     except csv.Error as error:
         raise CsvError(
             f"cannot read the {what} file: {error}",
