@@ -115,3 +115,191 @@ def test_variants_command_escapes_hostile_roster_ids(tmp_path: Path) -> None:
 @pytest.mark.parametrize("cell", ["-4.52", "-1e-07", "-inf", "0", "12"])
 def test_plain_numbers_are_left_alone(cell: str) -> None:
     assert csv_text([[cell]]) == cell + "\n"
+
+
+# F = m a with F = 10 N: a = 10/m, so a = 2.5 m/s^2 for m = 4 kg, 2 m/s^2 for m = 5 kg,
+# 1 m/s^2 for m = 10 kg; the base problem's m = 2 kg gives 5 m/s^2
+NEWTON = "given:\n  m = 2 kg\n  F = 10 N\nequations:\n  F = m*a\nfind: a\n"
+VARIANTS = "student,units,m\nu001,SI,4 kg\nu002,SI,5 kg\nu003,SI,10 kg\n"
+
+
+def _class(tmp_path: Path, answers: str, variants: str = VARIANTS) -> list[str]:
+    problem = tmp_path / "p.dyn"
+    problem.write_text(NEWTON)
+    (tmp_path / "a.csv").write_text(answers)
+    (tmp_path / "v.csv").write_text(variants)
+    return ["grade", str(problem), str(tmp_path / "a.csv"), "--variants", str(tmp_path / "v.csv")]
+
+
+def _rows(path: Path) -> dict[str, dict[str, str]]:
+    return {r["student"]: r for r in csv.DictReader(io.StringIO(path.read_text()))}
+
+
+def test_an_answer_id_without_a_variant_is_not_graded_against_the_base(tmp_path: Path) -> None:
+    # U002 wrote the base problem's 5 m/s^2; its variant is u002's: not graded, warned, exit 1
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\nU002,5 m/s^2\n")
+    report = tmp_path / "r.csv"
+    result = runner.invoke(app, [*command, "-o", str(report)])
+    assert result.exit_code == 1, result.output
+    assert "student 'U002' has no row in" in result.output
+    assert "(closest: 'u002')" in result.output
+    rows = _rows(report)
+    assert rows["u001"]["a verdict"] == "correct"
+    assert rows["U002"]["a verdict"] == "no variant" and rows["U002"]["score"] == "0.00"
+    # the variant students with no row are listed and graded missing
+    assert "2 students of" in result.output and "u002, u003" in result.output
+    assert rows["u002"]["a verdict"] == rows["u003"]["a verdict"] == "missing"
+    assert rows["U002"]["a answer"] == "5 m/s^2"  # shown as written
+    assert "not graded (no variant or no key): U002" in result.output
+
+
+def test_a_twin_answers_for_its_student(tmp_path: Path) -> None:
+    variants = VARIANTS + "u001@US,US,0.2741 slug\n"
+    command = _class(
+        tmp_path, "student,a\nu001@US,8.2 ft/s^2\nu002,2 m/s^2\nu003,1 m/s^2\n", variants
+    )
+    result = runner.invoke(app, [*command, "--json", str(tmp_path / "r.json")])
+    assert result.exit_code == 0, result.output
+    assert "have no row" not in result.output  # u001 answered through its twin
+
+
+def test_a_bad_variants_cell_is_a_positioned_error(tmp_path: Path) -> None:
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\n", VARIANTS.replace("5 kg", "5 kgg"))
+    result = runner.invoke(app, command)
+    assert result.exit_code == 2, result.output
+    assert "v.csv:3:9:" in result.output and "u002" in result.output  # line 3, column 9
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\n", VARIANTS.replace("10 kg", "10 m"))
+    result = runner.invoke(app, command)
+    assert result.exit_code == 2 and "v.csv:4:9:" in result.output, result.output
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\n", "student,units,mass\nu001,SI,4 kg\n")
+    result = runner.invoke(app, command)
+    assert result.exit_code == 2 and "v.csv:1:15:" in result.output, result.output
+
+
+def test_two_outputs_on_one_path_are_refused(tmp_path: Path) -> None:
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\n")
+    report = tmp_path / "r.csv"
+    result = runner.invoke(app, [*command, "-o", str(report), "--json", str(report)])
+    assert result.exit_code == 2 and "one report would overwrite the other" in result.output
+    journal = tmp_path / "r.csv.journal"
+    result = runner.invoke(app, [*command, "-o", str(report), "--json", str(journal)])
+    assert result.exit_code == 2 and "journal" in result.output
+    assert not report.exists()
+
+
+def test_a_second_run_on_one_report_is_refused(tmp_path: Path) -> None:
+    from dynsolve.grade.journal import Journal
+
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\n")
+    report = tmp_path / "r.csv"
+    with Journal.open(tmp_path / "r.csv.journal") as running:  # another run holds the lock
+        running.start("stamp", resume=False)
+        result = runner.invoke(app, [*command, "-o", str(report)])
+        assert result.exit_code == 2, result.output
+        assert "another 'dynsolve grade' is writing" in result.output
+        assert (tmp_path / "r.csv.journal").read_text() == '{"fingerprint": "stamp"}\n'
+
+
+def _interrupt_after(monkeypatch: pytest.MonkeyPatch, rows: int) -> None:
+    """Ctrl-C while grading row ``rows + 1``."""
+    from dynsolve.grade import run
+
+    real, calls = run.grade_row, []
+
+    def grade_row(*args: object, **kwargs: object) -> object:
+        calls.append(1)
+        if len(calls) > rows:
+            raise KeyboardInterrupt
+        return real(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(run, "grade_row", grade_row)
+
+
+ANSWERS = "student,a\nu001,2.5 m/s^2\nu002,2.1 m/s^2\nu003,10 m/s^2\n"
+
+
+def test_ctrl_c_says_how_to_resume_and_a_rerun_does_not_truncate(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    command = _class(tmp_path, ANSWERS)
+    clean, report = tmp_path / "clean.csv", tmp_path / "r.csv"
+    assert runner.invoke(app, [*command, "-o", str(clean)]).exit_code == 0
+    with monkeypatch.context() as patch:
+        _interrupt_after(patch, 2)
+        result = runner.invoke(app, [*command, "-o", str(report)])
+    assert result.exit_code == 130, result.output
+    assert "--resume" in result.output
+    journal = tmp_path / "r.csv.journal"
+    kept = journal.read_text()
+    assert kept.count("\n") == 3  # the fingerprint and 2 rows
+    result = runner.invoke(app, [*command, "-o", str(report)])  # no --resume: refused
+    assert result.exit_code == 2 and "interrupted run" in result.output
+    assert "--resume" in result.output and "--fresh" in result.output
+    assert journal.read_text() == kept
+    result = runner.invoke(app, [*command, "-o", str(report), "--resume"])
+    assert result.exit_code == 0, result.output
+    assert report.read_bytes() == clean.read_bytes() and not journal.exists()
+
+
+@pytest.mark.parametrize("change", ["variants", "--no-diagnose", "--atol"])
+def test_resume_refuses_a_journal_of_other_variants_or_options(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, change: str
+) -> None:
+    command = _class(tmp_path, ANSWERS)
+    report = tmp_path / "r.csv"
+    with monkeypatch.context() as patch:
+        _interrupt_after(patch, 1)
+        assert runner.invoke(app, [*command, "-o", str(report)]).exit_code == 130
+    extra: list[str] = []
+    if change == "variants":
+        (tmp_path / "v.csv").write_text(VARIANTS.replace("4 kg", "8 kg"))
+    elif change == "--no-diagnose":
+        extra = ["--no-diagnose"]
+    else:
+        extra = ["--atol", "0.5 m/s^2"]
+    result = runner.invoke(app, [*command, "-o", str(report), "--resume", *extra])
+    assert result.exit_code == 2 and "journal of another run" in result.output, result.output
+    result = runner.invoke(app, [*command, "-o", str(report), "--fresh", *extra])
+    assert result.exit_code == 0, result.output
+
+
+def test_a_journal_write_error_is_an_error_that_keeps_the_rows(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import errno
+    import os
+
+    from dynsolve.grade import journal as module
+
+    real = os.fdopen
+
+    class Full:  # the file after two rows: the disk is full
+        def __init__(self, handle: io.TextIOWrapper) -> None:
+            self.handle, self.writes = handle, 0
+
+        def write(self, text: str) -> int:
+            self.writes += 1
+            if self.writes > 3:
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+            return self.handle.write(text)
+
+        def __getattr__(self, name: str) -> object:
+            return getattr(self.handle, name)
+
+        def __iter__(self) -> object:
+            return iter(self.handle)
+
+    command = _class(tmp_path, ANSWERS)
+    report = tmp_path / "r.csv"
+    with monkeypatch.context() as patch:
+        patch.setattr(module.os, "fdopen", lambda *a, **k: Full(real(*a, **k)))
+        result = runner.invoke(app, [*command, "-o", str(report)])
+    assert result.exit_code == 2, result.output
+    assert result.exception is None or isinstance(result.exception, SystemExit)
+    assert "no space left on device" in result.output and "2 rows" in result.output
+    assert "--resume" in result.output
+    journal = tmp_path / "r.csv.journal"
+    assert journal.read_text().count("\n") == 3  # the fingerprint and the 2 rows written
+    result = runner.invoke(app, [*command, "-o", str(report), "--resume"])
+    assert result.exit_code == 0, result.output
+    assert _rows(report)["u003"]["a verdict"] == "wrong"
