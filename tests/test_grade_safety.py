@@ -303,3 +303,44 @@ def test_a_journal_write_error_is_an_error_that_keeps_the_rows(
     result = runner.invoke(app, [*command, "-o", str(report), "--resume"])
     assert result.exit_code == 0, result.output
     assert _rows(report)["u003"]["a verdict"] == "wrong"
+
+
+def test_a_hundred_thousand_columns_are_a_few_warning_lines(tmp_path: Path) -> None:
+    import time
+
+    extra = [f"c{i}" for i in range(100_000)]
+    answers = tmp_path / "wide.csv"
+    answers.write_text(
+        ",".join(["student", "alpha", "T", "a", *extra])
+        + "\n"
+        + ",".join(["s1", "11.3 rad/s^2", "106 N", "4.52 m/s^2", *["1"] * len(extra)])
+        + "\n"
+    )
+    start = time.perf_counter()
+    result = runner.invoke(app, ["grade", str(DRUM), str(answers)])
+    seconds = time.perf_counter() - start
+    assert result.exit_code == 0, result.output[:2000]
+    warnings = [line for line in result.output.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 6, warnings[:8]  # the first 5, then one line counting the rest
+    assert "... and 99,995 more like:" in warnings[-1]
+    assert seconds < 20  # 14-28 s when every warning was printed; about 1 s now
+
+
+def test_a_nul_byte_is_refused_with_its_position(tmp_path: Path) -> None:
+    answers = tmp_path / "a.csv"
+    answers.write_text("student,alpha\ns1,11.3 rad/s^2\ns2,11\x00.3 rad/s^2\n")
+    report = tmp_path / "r.csv"
+    result = runner.invoke(app, ["grade", str(DRUM), str(answers), "-o", str(report)])
+    assert result.exit_code == 2, result.output
+    assert "a.csv:3:6:" in result.output and "NUL" in result.output
+    assert not report.exists()
+
+
+def test_a_tab_around_an_id_is_said(tmp_path: Path) -> None:
+    answers = tmp_path / "a.csv"
+    answers.write_text("student,alpha\n\ts1,11.3 rad/s^2\ns2 ,11.3 rad/s^2\n")
+    js = tmp_path / "r.json"
+    result = runner.invoke(app, ["grade", str(DRUM), str(answers), "--json", str(js)])
+    assert result.exit_code == 0, result.output
+    assert "student id '\\ts1' has a tab or other blank around it; read as 's1'" in result.output
+    assert "'s2 '" not in result.output  # plain spaces are trimmed quietly, as always

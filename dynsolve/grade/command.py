@@ -240,7 +240,7 @@ def limit_warnings(warnings: Sequence[str], keep: int = 5) -> list[str]:
     for kind, same in kinds.items():
         out += same[:keep]
         if len(same) > keep:
-            out.append(f"... and {len(same) - keep} more like: {kind}")
+            out.append(f"... and {len(same) - keep:,} more like: {kind}")
     return out
 
 
