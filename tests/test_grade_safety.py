@@ -344,3 +344,60 @@ def test_a_tab_around_an_id_is_said(tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     assert "student id '\\ts1' has a tab or other blank around it; read as 's1'" in result.output
     assert "'s2 '" not in result.output  # plain spaces are trimmed quietly, as always
+
+
+def test_each_row_shows_what_was_expected(tmp_path: Path) -> None:
+    # Hibbeler 17.11 by hand (module docstring): alpha = 78.48/6.95 = 11.29209 rad/s^2,
+    # T = 3.75 alpha/0.4 = 105.8633 N, a = 0.4 alpha = 4.516835 m/s^2
+    answers = tmp_path / "a.csv"
+    answers.write_text("student,alpha,T,a\ns1,12.6 rad/s^2,106 N,4.52 m/s^2\n")
+    report, js = tmp_path / "r.csv", tmp_path / "r.json"
+    result = runner.invoke(
+        app, ["grade", str(DRUM), str(answers), "-o", str(report), "--json", str(js)]
+    )
+    assert result.exit_code == 0, result.output
+    row = _rows(report)["s1"]
+    assert "givens" not in row  # no variants: one key for all
+    assert float(row["alpha expected"]) == pytest.approx(11.29209, rel=1e-5)
+    assert row["alpha expected unit"] == "rad/s^2" and row["alpha verdict"] == "wrong"
+    assert float(row["T expected"]) == pytest.approx(105.8633, rel=1e-5)
+    assert row["T expected unit"] == "N"
+    assert float(row["a expected"]) == pytest.approx(4.516835, rel=1e-5)
+    import json
+
+    part = json.loads(js.read_text())["students"][0]["parts"]["alpha"]
+    assert part["expected"] == pytest.approx(11.29209, rel=1e-5)
+    assert part["expected_unit"] == "rad/s^2"
+
+
+def test_each_row_shows_the_students_own_key_and_givens(tmp_path: Path) -> None:
+    # a = 10 N / m: 2.5 m/s^2 for u001 (m = 4 kg), 1 m/s^2 for u003 (m = 10 kg); u002 wrote
+    # 2.1 where 10/5 = 2 is expected
+    command = _class(tmp_path, "student,a\nu001,2.5 m/s^2\nu002,2.1 m/s^2\nW9,1 m/s^2\n")
+    report, js = tmp_path / "r.csv", tmp_path / "r.json"
+    result = runner.invoke(app, [*command, "-o", str(report), "--json", str(js)])
+    assert result.exit_code == 1, result.output  # W9 has no variant
+    rows = _rows(report)
+    assert rows["u001"]["givens"] == "m = 4 kg"
+    assert (rows["u001"]["a expected"], rows["u001"]["a expected unit"]) == ("2.5", "m/s^2")
+    assert rows["u002"]["a expected"] == "2" and rows["u002"]["a verdict"] == "wrong"
+    assert rows["u003"]["givens"] == "m = 10 kg" and rows["u003"]["a expected"] == "1"
+    assert rows["u003"]["a verdict"] == "missing"
+    assert rows["W9"]["givens"] == "" and rows["W9"]["a expected"] == ""
+    import json
+
+    students = {s["student"]: s for s in json.loads(js.read_text())["students"]}
+    assert students["u002"]["givens"] == {"m": "5 kg"}
+    assert students["u002"]["parts"]["a"]["expected"] == 2.0
+
+
+def test_a_clockwise_key_is_shown_signed(tmp_path: Path) -> None:
+    # the scene drum turns clockwise: alpha = -11.292 rad/s^2 by the convention (ccw positive)
+    from dynsolve.grade.command import GradeRequest, grade
+
+    scene = ROOT / "problems" / "seed" / "fa_hib_drum.dyn"
+    (tmp_path / "a.csv").write_text("student,alpha\ns1,11.3 rad/s^2 cw\n")
+    run = grade(GradeRequest(scene, tmp_path / "a.csv"))
+    part = run.results[0].parts["alpha"]
+    assert part["expected"] == pytest.approx(-11.292, rel=1e-4)
+    assert (part["expected_unit"], part["verdict"]) == ("rad/s^2", "correct")

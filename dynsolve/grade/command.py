@@ -25,7 +25,7 @@ from dynsolve.grade.diagnose import Diagnoser
 from dynsolve.grade.journal import Journal, journal_path
 from dynsolve.grade.key import Keys, base_keys, variant_keys
 from dynsolve.grade.report import gradebook_csv, results_csv, results_json
-from dynsolve.grade.run import StudentResult, fingerprint, grade_row, grade_sheet, not_graded
+from dynsolve.grade.run import StudentResult, fingerprint, grade_sheet, graded
 from dynsolve.grade.semantics import Rule, rules_for
 from dynsolve.grade.substitute import with_variant
 from dynsolve.grade.variants import TWIN_SUFFIX, VariantTable, read_variant_table
@@ -135,10 +135,7 @@ def _grade(
     )
     results = grade_sheet(sheet, keys, rules, doctor, journal, stamp, request.resume, progress)
     for student in absent:  # variant students without a row: graded missing, listed
-        if student in keys.errors:
-            results.append(not_graded(student, keys, "no key", keys.errors[student]))
-        else:
-            results.append(grade_row(student, {}, keys.for_student(student), rules, {}, None))
+        results.append(graded(student, {}, keys, rules, {}, None))
     warnings = limit_warnings(warnings)
     written = _write(request, results, rules, spec.title, keys.path, warnings)
     return GradeRun(results, rules, tuple(warnings), keys.path, spec.title, written)

@@ -30,17 +30,25 @@ TOP_MISTAKES = 3
 
 
 def results_csv(results: Sequence[StudentResult]) -> str:
-    """One row per student: id, score, then per part its answer, verdict, credit, feedback."""
+    """One row per student: id, score, (with variants) their givens, then per part their
+    answer, the expected value and its unit, verdict, credit, feedback."""
     parts = parts_of(results)
-    header = ["student", "score"]
+    givens = any(r.givens for r in results)
+    header = ["student", "score", *(["givens"] if givens else [])]
     for part in parts:
-        header += [f"{part} answer", f"{part} verdict", f"{part} credit", f"{part} feedback"]
+        header += [f"{part} answer", f"{part} expected", f"{part} expected unit"]
+        header += [f"{part} verdict", f"{part} credit", f"{part} feedback"]
     rows: list[list[str]] = [header]
     for result in results:
         row = [result.student, f"{result.score:.2f}"]
+        if givens:
+            row.append("; ".join(f"{n} = {v}" for n, v in result.givens.items()))
         for part in parts:
             cell = result.parts[part]
-            row += [cell["answer"], cell["verdict"], f"{cell['credit']:g}", cell["feedback"]]
+            expected = cell.get("expected")
+            row += [cell["answer"], "" if expected is None else f"{expected:.6g}"]
+            row += [cell.get("expected_unit", ""), cell["verdict"], f"{cell['credit']:g}"]
+            row.append(cell["feedback"])
         rows.append(row)
     return csv_text(rows)
 

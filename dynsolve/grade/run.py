@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import hashlib
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from dynsolve.grade.answers import AnswerSheet
@@ -34,15 +34,22 @@ class StudentResult:
     student: str
     score: float
     parts: Mapping[str, Mapping[str, Any]]
+    givens: Mapping[str, str] = field(default_factory=dict)  # their variant's, as written
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON form (also a journal line)."""
-        return {"student": self.student, "score": self.score, "parts": dict(self.parts)}
+        return {
+            "student": self.student,
+            "score": self.score,
+            "givens": dict(self.givens),
+            "parts": dict(self.parts),
+        }
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> StudentResult:
         """Read back :meth:`as_dict`."""
-        return cls(str(data["student"]), float(data["score"]), dict(data["parts"]))
+        givens = dict(data.get("givens", {}))
+        return cls(str(data["student"]), float(data["score"]), dict(data["parts"]), givens)
 
 
 def grade_row(
@@ -66,6 +73,8 @@ def grade_row(
             feedback = f"{named} ({result.detail})" if named else result.detail
         parts[name] = {
             "answer": text.strip(),
+            "expected": float(f"{key.value / key.factor:.6g}"),
+            "expected_unit": key.unit,
             "verdict": result.verdict,
             "credit": result.credit,
             "feedback": feedback,
@@ -109,7 +118,7 @@ def grade_sheet(
         if student in done:
             results.append(done[student])
         else:
-            row = _graded(student, cells, keys, rules, sheet.units, doctor)
+            row = graded(student, cells, keys, rules, sheet.units, doctor)
             results.append(row)
             if journal is not None:
                 journal.append(row.as_dict())
@@ -118,7 +127,7 @@ def grade_sheet(
     return results
 
 
-def _graded(
+def graded(
     student: str,
     cells: Mapping[str, str],
     keys: Keys,
@@ -126,12 +135,16 @@ def _graded(
     units: Mapping[str, str],
     doctor: Diagnoser | None,
 ) -> StudentResult:
-    if student in keys.errors:
-        return not_graded(student, keys, "no key", keys.errors[student], cells)
+    """One student's row: graded against their keys, with their variant's givens; or not
+    graded ("no key": their variant failed; "no variant": the variants file lacks them)."""
     if keys.unknown(student):
         why = f"no row for '{student}' in the variants file"
         return not_graded(student, keys, "no variant", why, cells)
-    return grade_row(student, cells, keys.for_student(student), rules, units, doctor)
+    if student in keys.errors:
+        row = not_graded(student, keys, "no key", keys.errors[student], cells)
+    else:
+        row = grade_row(student, cells, keys.for_student(student), rules, units, doctor)
+    return replace(row, givens=dict(keys.variants.get(student, {})))
 
 
 def not_graded(
@@ -142,6 +155,8 @@ def not_graded(
     parts = {
         name: {
             "answer": (cells or {}).get(name, "").strip(),
+            "expected": None,
+            "expected_unit": "",
             "verdict": verdict,
             "credit": 0.0,
             "feedback": why,
