@@ -283,7 +283,7 @@ def check_variant_cells(spec: Spec, table: VariantTable) -> None:
         for name, text in cells.items():
             if (name, text) in checked:
                 continue
-            where = table.where[student, name] if name in givens else table.headers[name]
+            where = table.where(student, name) if name in givens else table.heading(name)
             with_variant(spec, {name: text}, student, where)
             checked.add((name, text))
 

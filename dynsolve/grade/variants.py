@@ -57,9 +57,20 @@ def write_variants(path: Path, rows: Iterable[VariantRow], names: Sequence[str])
 class VariantTable:
     """A variants file as read: each student's cells, and where each cell and header is."""
 
+    path: str
     cells: dict[str, dict[str, str]]  # student -> {given: cell text}, empty cells left out
-    where: dict[tuple[str, str], Position]  # (student, given) -> the cell's position
-    headers: dict[str, Position]  # given -> its header's position
+    lines: dict[str, tuple[int, list[int]]]  # student -> their line, each cell's column
+    columns: dict[str, int]  # given -> its index in a row (and in the header)
+    header: list[int]  # the header cells' columns
+
+    def where(self, student: str, given: str) -> Position:
+        """The position of ``student``'s cell of ``given``."""
+        line, columns = self.lines[student]
+        return Position(self.path, line, columns[self.columns[given]])
+
+    def heading(self, given: str) -> Position:
+        """The position of ``given``'s header."""
+        return Position(self.path, 1, self.header[self.columns[given]])
 
 
 def read_variants(path: str | Path) -> dict[str, dict[str, str]]:
@@ -74,20 +85,18 @@ def read_variant_table(path: str | Path) -> VariantTable:
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "v.csv"
     >>> _ = path.write_text("student,units,m,r\\ns1,SI,45 kg,0.4 m\\n")
     >>> table = read_variant_table(path)
-    >>> str(table.where["s1", "r"]).split(":", 1)[1], str(table.headers["m"]).split(":", 1)[1]
+    >>> str(table.where("s1", "r")).split(":", 1)[1], str(table.heading("m")).split(":", 1)[1]
     ('2:13', '1:15')
     """
     header, top, rows = _read_table(path, "variants")
     named = [(i, h) for i, h in enumerate(header) if i > 0 and h != "units"]
-    headers = {h: Position(str(path), 1, top[i]) for i, h in named}
     out: dict[str, dict[str, str]] = {}
-    where: dict[tuple[str, str], Position] = {}
+    lines: dict[str, tuple[int, list[int]]] = {}
     for line, row, columns in rows:
         student = _student(row[0], path, line, out)
         out[student] = {h: row[i] for i, h in named if row[i]}
-        for i, h in named:
-            where[student, h] = Position(str(path), line, columns[i])
-    return VariantTable(out, where, headers)
+        lines[student] = (line, columns)
+    return VariantTable(str(path), out, lines, {h: i for i, h in named}, top)
 
 
 def read_roster(path: str | Path) -> list[str]:
@@ -182,11 +191,16 @@ def _field_columns(row: Sequence[str], raw: Sequence[str]) -> list[int]:
     >>> _field_columns(["a", "b,c", "d"], ['a,"b,c",d'])
     [1, 3, 9]
     """
+    text = raw[0] if len(raw) == 1 else ""
     columns = [1]
-    quoted = False
-    for index, char in enumerate(raw[0] if len(raw) == 1 else ""):
-        if char == '"':
-            quoted = not quoted
-        elif char == "," and not quoted:
-            columns.append(index + 2)
+    if '"' not in text:  # the common case: the cells as they are, one comma apart
+        for cell in text.split(",")[:-1]:
+            columns.append(columns[-1] + len(cell) + 1)
+    else:
+        quoted = False
+        for index, char in enumerate(text):
+            if char == '"':
+                quoted = not quoted
+            elif char == "," and not quoted:
+                columns.append(index + 2)
     return columns if len(columns) == len(row) else [1] * len(row)
