@@ -22,6 +22,7 @@ import re
 from collections.abc import Iterable, Sequence
 
 TRIGGERS = ("=", "+", "-", "@", "\t", "\r")
+_FIRST = frozenset((*TRIGGERS, " "))  # a first character that needs a closer look
 _NUMBER = re.compile(r"[+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf|nan)", re.IGNORECASE)
 
 
@@ -33,7 +34,9 @@ def escape_cell(cell: object) -> str:
     >>> escape_cell("\\t=1+1"), escape_cell("  +1+1")
     ("'\\t=1+1", "'  +1+1")
     """
-    text = str(cell)
+    text = cell if isinstance(cell, str) else str(cell)
+    if not text or text[0] not in _FIRST:  # the common case: a letter or a digit first
+        return text
     stripped = text.lstrip(" ")
     if not stripped or stripped[0] not in TRIGGERS or _NUMBER.fullmatch(stripped):
         return text

@@ -6,7 +6,7 @@ ends, however it ends), so a second run on the same report is refused instead of
 truncating the first one's rows. Its first line is a fingerprint of everything that
 decides a verdict; a journal holding rows is an interrupted run's: it is resumed
 (``resume``), started over (``fresh``), or the run is refused. Each row is flushed as it
-is written and fsync'd every ``SYNC_EVERY`` rows; a write error (disk full, file-size
+is written and fsync'd at most every ``SYNC_SECONDS``; a write error (disk full, file-size
 limit) is a :class:`JournalError` that keeps what was written.
 
 >>> import pathlib, tempfile
@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import json
 import os
+import time
 from collections.abc import Mapping
 from pathlib import Path
 from types import TracebackType
@@ -36,7 +37,7 @@ except ImportError:  # Windows: no advisory lock; two runs on one report are not
     fcntl = None  # type: ignore[assignment]
 
 JOURNAL_SUFFIX = ".journal"
-SYNC_EVERY = 200  # rows between fsyncs; each row is flushed to the OS as it is finished
+SYNC_SECONDS = 1.0  # between fsyncs; each row is flushed to the OS as it is finished
 
 
 class JournalError(SpecError):
@@ -55,7 +56,7 @@ class Journal:
         self.path = path
         self.handle = handle
         self.rows = 0  # rows in the journal (resumed and new)
-        self.unsynced = 0
+        self.synced = time.monotonic()
 
     @classmethod
     def open(cls, path: Path, resume: bool = False, fresh: bool = False) -> Journal:
@@ -107,10 +108,9 @@ class Journal:
         return {}
 
     def append(self, row: Mapping[str, Any]) -> None:
-        """One graded row, flushed (a killed process loses nothing flushed), fsync'd every
-        ``SYNC_EVERY`` rows (a crash of the machine loses at most those)."""
-        self.unsynced += 1
-        self._write(row, sync=self.unsynced >= SYNC_EVERY)
+        """One graded row, flushed (a killed process loses nothing flushed), fsync'd once
+        ``SYNC_SECONDS`` have passed (a crash of the machine loses at most those)."""
+        self._write(row, sync=time.monotonic() - self.synced >= SYNC_SECONDS)
         self.rows += 1
 
     def remove(self) -> None:
@@ -145,7 +145,7 @@ class Journal:
             self.handle.flush()
             if sync:
                 os.fsync(self.handle.fileno())
-                self.unsynced = 0
+                self.synced = time.monotonic()
         except OSError as error:
             raise _unwritable(self.path, error, self.rows) from None
 

@@ -144,6 +144,8 @@ def graded(
         row = not_graded(student, keys, "no key", keys.errors[student], cells)
     else:
         row = grade_row(student, cells, keys.for_student(student), rules, units, doctor)
+    if not keys.by_variant:
+        return row
     return replace(row, givens=dict(keys.variants.get(student, {})))
 
 
