@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import io
+import os
 from pathlib import Path
 
 import pytest
@@ -267,32 +268,20 @@ def test_a_journal_write_error_is_an_error_that_keeps_the_rows(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     import errno
-    import os
 
-    from dynsolve.grade import journal as module
+    real, rows = os.write, []
 
-    real = os.fdopen
-
-    class Full:  # the file after two rows: the disk is full
-        def __init__(self, handle: io.TextIOWrapper) -> None:
-            self.handle, self.writes = handle, 0
-
-        def write(self, text: str) -> int:
-            self.writes += 1
-            if self.writes > 3:
+    def write(descriptor: int, data: bytes) -> int:  # the disk fills after two rows
+        if b'"student"' in bytes(data):
+            rows.append(1)
+            if len(rows) > 2:
                 raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
-            return self.handle.write(text)
-
-        def __getattr__(self, name: str) -> object:
-            return getattr(self.handle, name)
-
-        def __iter__(self) -> object:
-            return iter(self.handle)
+        return real(descriptor, data)
 
     command = _class(tmp_path, ANSWERS)
     report = tmp_path / "r.csv"
     with monkeypatch.context() as patch:
-        patch.setattr(module.os, "fdopen", lambda *a, **k: Full(real(*a, **k)))
+        patch.setattr(os, "write", write)
         result = runner.invoke(app, [*command, "-o", str(report)])
     assert result.exit_code == 2, result.output
     assert result.exception is None or isinstance(result.exception, SystemExit)
@@ -303,6 +292,44 @@ def test_a_journal_write_error_is_an_error_that_keeps_the_rows(
     result = runner.invoke(app, [*command, "-o", str(report), "--resume"])
     assert result.exit_code == 0, result.output
     assert _rows(report)["u003"]["a verdict"] == "wrong"
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="RLIMIT_FSIZE is POSIX")
+def test_a_file_size_limit_is_a_clear_error_not_a_traceback(tmp_path: Path) -> None:
+    import resource
+    import subprocess
+    import sys
+
+    rows = ["student,alpha,T,a"] + [f"s{i:03d},11.3 rad/s^2,106 N,4.52 m/s^2" for i in range(300)]
+    answers = tmp_path / "a.csv"
+    answers.write_text("\n".join(rows) + "\n")
+    report = tmp_path / "r.csv"
+    command = [sys.executable, "-m", "dynsolve", "grade", str(DRUM), str(answers)]
+
+    def limit() -> None:  # writes past 20,000 bytes fail with EFBIG (Python ignores SIGXFSZ)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (20_000, 20_000))
+
+    done = subprocess.run(
+        [*command, "-o", str(report), "--no-diagnose"],
+        preexec_fn=limit,
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
+    assert done.returncode == 2, done.stderr[-2000:]
+    assert "Traceback" not in done.stderr and "file too large" in done.stderr
+    assert "rows graded so far are kept" in done.stderr and "--resume" in done.stderr
+    journal = tmp_path / "r.csv.journal"
+    kept = journal.read_text().count("\n") - 1
+    assert 0 < kept < 300
+    resumed = subprocess.run(
+        [*command, "-o", str(report), "--no-diagnose", "--resume"],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
+    assert resumed.returncode == 0, resumed.stderr[-2000:]
+    assert report.read_text().count("\n") == 301 and not journal.exists()
 
 
 def test_a_hundred_thousand_columns_are_a_few_warning_lines(tmp_path: Path) -> None:

@@ -98,7 +98,7 @@ def grade(request: GradeRequest, progress: Callable[[int, int], None] | None = N
             journal.remove()
         return run
     except BaseException:
-        if journal is not None and not journal.graded_rows():
+        if journal is not None and journal.empty():
             journal.remove()  # nothing graded yet: no journal to resume from
         raise
     finally:

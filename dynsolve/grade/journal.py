@@ -27,7 +27,7 @@ import time
 from collections.abc import Mapping
 from pathlib import Path
 from types import TracebackType
-from typing import Any, TextIO
+from typing import Any
 
 from dynsolve.errors import SpecError
 
@@ -50,12 +50,15 @@ def journal_path(report: Path) -> Path:
 
 
 class Journal:
-    """An open, locked journal (use :meth:`open`, as a context manager)."""
+    """An open, locked journal (use :meth:`open`, as a context manager). Written with
+    ``os.write`` on its descriptor: no buffer holds a row back, or fails again at close."""
 
-    def __init__(self, path: Path, handle: TextIO) -> None:
+    def __init__(self, path: Path, descriptor: int) -> None:
         self.path = path
-        self.handle = handle
-        self.rows = 0  # rows in the journal (resumed and new)
+        self.descriptor = descriptor
+        self.held = 0  # graded rows the journal held when opened (an interrupted run's)
+        self.rows = 0  # graded rows written since start (resumed ones included)
+        self.started = False
         self.synced = time.monotonic()
 
     @classmethod
@@ -66,67 +69,65 @@ class Journal:
             descriptor = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
         except OSError as error:
             raise _unwritable(path, error, 0) from None
-        handle = os.fdopen(descriptor, "r+", encoding="utf-8", newline="")
-        if not _lock(handle):
-            handle.close()
+        if not _lock(descriptor):
+            os.close(descriptor)
             raise JournalError(
                 f"another 'dynsolve grade' is writing {path.name.removesuffix(JOURNAL_SUFFIX)}"
                 f" now (its journal {path} is locked)",
                 None,
                 "wait for it to finish, or choose another -o",
             )
-        if not _same_file(path, handle):  # the run before removed the journal we locked
-            handle.close()
+        if not _same_file(path, descriptor):  # the run before removed the journal we locked
+            os.close(descriptor)
             return cls.open(path, resume, fresh)
-        journal = cls(path, handle)
-        rows = journal.graded_rows()
-        if rows and not resume and not fresh:
-            handle.close()
+        journal = cls(path, descriptor)
+        journal.held = max(0, journal._text().count("\n") - 1)
+        if journal.held and not resume and not fresh:
+            os.close(descriptor)
             raise JournalError(
-                f"{path} holds {rows} graded rows of an interrupted run",
+                f"{path} holds {journal.held} graded rows of an interrupted run",
                 None,
                 "add --resume to keep them and grade the rest, or --fresh to start over",
             )
         return journal
 
-    def graded_rows(self) -> int:
-        """How many graded rows the journal holds (its lines after the fingerprint)."""
-        self.handle.seek(0)
-        return max(0, sum(1 for line in self.handle if line.endswith("\n")) - 1)
+    def empty(self) -> bool:
+        """Nothing to resume from: no graded row written, none held from before."""
+        return self.rows == 0 and (self.started or self.held == 0)
 
     def start(self, stamp: str, resume: bool) -> dict[str, Mapping[str, Any]]:
         """With ``resume``, the rows recorded under ``stamp`` (student → row), the journal
         positioned after them; otherwise the journal emptied and stamped."""
+        self.started = True
         if resume:
             done = self._read(stamp)
             if done is not None:
                 return done
-        self.handle.seek(0)
-        self.handle.truncate()
+        self._rewrite(json.dumps({"fingerprint": stamp}) + "\n")
         self.rows = 0
-        self._write({"fingerprint": stamp}, sync=True)
         return {}
 
     def append(self, row: Mapping[str, Any]) -> None:
-        """One graded row, flushed (a killed process loses nothing flushed), fsync'd once
-        ``SYNC_SECONDS`` have passed (a crash of the machine loses at most those)."""
-        self._write(row, sync=time.monotonic() - self.synced >= SYNC_SECONDS)
+        """One graded row, written through to the OS (a killed process loses nothing
+        written), fsync'd once ``SYNC_SECONDS`` have passed (a crash of the machine loses
+        at most those)."""
+        self._write(json.dumps(row) + "\n")  # key order kept: parts in find order
         self.rows += 1
+        if time.monotonic() - self.synced >= SYNC_SECONDS:
+            self._sync()
 
     def remove(self) -> None:
         """Delete the journal (the reports are written), still holding the lock."""
         self.path.unlink(missing_ok=True)
 
     def close(self) -> None:
-        """Sync and close (which releases the lock)."""
+        """Sync and close (which releases the lock); never raises."""
         try:
-            if not self.handle.closed:
-                self.handle.flush()
-                os.fsync(self.handle.fileno())
+            os.fsync(self.descriptor)
         except OSError:
-            pass  # the write error was reported; what was written stays
+            pass  # a write error was reported; what was written stays
         finally:
-            self.handle.close()
+            os.close(self.descriptor)
 
     def __enter__(self) -> Journal:
         return self
@@ -135,27 +136,47 @@ class Journal:
         self,
         kind: type[BaseException] | None,
         error: BaseException | None,
-        tb: TracebackType | None,
+        trace: TracebackType | None,
     ) -> None:
         self.close()
 
-    def _write(self, record: Mapping[str, Any], sync: bool) -> None:
+    def _text(self) -> str:
+        os.lseek(self.descriptor, 0, os.SEEK_SET)
+        chunks = []
+        while chunk := os.read(self.descriptor, 1 << 20):
+            chunks.append(chunk)
+        return b"".join(chunks).decode("utf-8", "replace")
+
+    def _write(self, text: str) -> None:
+        data = memoryview(text.encode("utf-8"))
         try:
-            self.handle.write(json.dumps(record) + "\n")  # key order kept: parts in find order
-            self.handle.flush()
-            if sync:
-                os.fsync(self.handle.fileno())
-                self.synced = time.monotonic()
+            while data:
+                data = data[os.write(self.descriptor, data) :]
         except OSError as error:
             raise _unwritable(self.path, error, self.rows) from None
+
+    def _sync(self) -> None:
+        try:
+            os.fsync(self.descriptor)
+        except OSError as error:
+            raise _unwritable(self.path, error, self.rows) from None
+        self.synced = time.monotonic()
+
+    def _rewrite(self, text: str) -> None:
+        """The journal replaced by ``text`` (then appended to), synced."""
+        try:
+            os.ftruncate(self.descriptor, 0)
+            os.lseek(self.descriptor, 0, os.SEEK_SET)
+        except OSError as error:
+            raise _unwritable(self.path, error, 0) from None
+        self._write(text)
+        self._sync()
 
     def _read(self, stamp: str) -> dict[str, Mapping[str, Any]] | None:
         """The rows a killed run finished (None for an empty journal); a torn last line
         (killed mid-write) is dropped."""
-        self.handle.seek(0)
-        lines = self.handle.read().split("\n")
         records = []
-        for line in lines:
+        for line in self._text().split("\n"):
             try:
                 records.append(json.loads(line))
             except json.JSONDecodeError:
@@ -169,30 +190,27 @@ class Journal:
                 None,
                 "rerun with --fresh to start over, or with the options of the interrupted run",
             )
-        self.handle.seek(0)
-        self.handle.truncate()  # rewritten whole: appends start on a fresh line
-        self.handle.write("".join(json.dumps(r) + "\n" for r in records))
-        self.handle.flush()
+        self._rewrite("".join(json.dumps(r) + "\n" for r in records))  # no torn tail
         self.rows = len(records) - 1
         return {str(r["student"]): r for r in records[1:]}
 
 
-def _lock(handle: TextIO) -> bool:
+def _lock(descriptor: int) -> bool:
     if fcntl is None:
         return True
     try:
-        fcntl.flock(handle.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+        fcntl.flock(descriptor, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
         return False
     return True
 
 
-def _same_file(path: Path, handle: TextIO) -> bool:
+def _same_file(path: Path, descriptor: int) -> bool:
     try:
         on_disk = os.stat(path)
     except FileNotFoundError:
         return False
-    mine = os.fstat(handle.fileno())
+    mine = os.fstat(descriptor)
     return (on_disk.st_dev, on_disk.st_ino) == (mine.st_dev, mine.st_ino)
 
 
