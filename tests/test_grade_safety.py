@@ -154,6 +154,25 @@ def test_an_answer_id_without_a_variant_is_not_graded_against_the_base(tmp_path:
     assert "not graded (no variant or no key): U002" in result.output
 
 
+def test_a_whole_class_of_unknown_ids_is_quick_and_brief(tmp_path: Path) -> None:
+    import time
+
+    # 3,000 variants s0000..s2999; the answers file spells every id in capitals
+    variants = "student,units,m\n" + "".join(f"s{i:04d},SI,4 kg\n" for i in range(3000))
+    answers = "student,a\n" + "".join(f"S{i:04d},2.5 m/s^2\n" for i in range(3000))
+    command = _class(tmp_path, answers, variants)
+    start = time.perf_counter()
+    result = runner.invoke(app, command)
+    assert time.perf_counter() - start < 60
+    assert result.exit_code == 1, result.output[-2000:]
+    assert (
+        "student 'S0000' has no row in" in result.output and "(closest: 's0000')" in result.output
+    )
+    assert "2990 more students have no row" in result.output
+    assert "3000 students of" in result.output  # none of the variant students answered
+    assert result.output.count("warning:") < 15
+
+
 def test_a_twin_answers_for_its_student(tmp_path: Path) -> None:
     variants = VARIANTS + "u001@US,US,0.2741 slug\n"
     command = _class(

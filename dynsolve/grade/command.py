@@ -191,11 +191,17 @@ def variant_mismatches(
         return [], []
     answers, variants = request.answers, request.variants
     unknown = [s for s in students if keys.unknown(s)]
+    folded = {v.casefold(): v for v in keys.variants}
     warnings = [
-        f"{answers}: student '{s}' has no row in {variants}{_closest(s, keys.variants)}: "
+        f"{answers}: student '{s}' has no row in {variants}{_closest(s, folded)}: "
         "not graded ('no variant')"
-        for s in unknown
+        for s in unknown[:MAX_NAMED]
     ]
+    if len(unknown) > MAX_NAMED:
+        warnings.append(
+            f"{answers}: {len(unknown) - MAX_NAMED} more students have no row in {variants}: "
+            "not graded ('no variant')"
+        )
     answered = {s.removesuffix(TWIN_SUFFIX) for s in students}
     absent: dict[str, str] = {}
     for student in keys.variants:
@@ -212,12 +218,12 @@ def variant_mismatches(
     return list(absent.values()), warnings
 
 
-def _closest(student: str, variants: Mapping[str, object]) -> str:
-    """' (closest: 'u002')' for the variant id nearest ``student``, or ''."""
-    folded = {v.casefold(): v for v in variants}
+def _closest(student: str, folded: Mapping[str, str]) -> str:
+    """' (closest: 'u002')' for the variant id nearest ``student`` (``folded``: the variant
+    ids by their case-folded form), or ''."""
     match = folded.get(student.strip().casefold())
     if match is None:
-        near = difflib.get_close_matches(student, list(variants)[:MAX_COMPARED], n=1)
+        near = difflib.get_close_matches(student, list(folded.values())[:MAX_COMPARED], n=1)
         match = near[0] if near else None
     return f" (closest: '{match}')" if match is not None else ""
 
