@@ -19,6 +19,7 @@ from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
     from dynsolve.errors import ErrorReport
+    from dynsolve.grade.command import GradeRequest
     from dynsolve.results import Check, Solution
     from dynsolve.system import SolveOptions
 
@@ -492,12 +493,12 @@ def grade(
     raise typer.Exit(ExitCode.OK)
 
 
-def _interrupted(request: object) -> NoReturn:
+def _interrupted(request: GradeRequest) -> NoReturn:
     """Ctrl-C: say what was kept and how to finish, exit 130."""
     from dynsolve.grade.command import check_outputs
     from dynsolve.grade.journal import journal_path
 
-    anchor = check_outputs(request)  # type: ignore[arg-type]
+    anchor = check_outputs(request)
     journal = journal_path(anchor) if anchor is not None else None
     if journal is not None and journal.exists():
         stderr.out(

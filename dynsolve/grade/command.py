@@ -115,7 +115,6 @@ def _grade(
     journal: Journal | None,
     progress: Callable[[int, int], None] | None,
 ) -> GradeRun:
-    variants_text = _variants_text(request.variants)
     keys = _keys(request, spec)
     rules = rules_for(list(keys.shared), spec.grading, request.overrides)
     warnings = list(sheet.warnings)
@@ -128,7 +127,7 @@ def _grade(
     stamp = fingerprint(
         spec_bytes.decode("utf-8", "replace"),
         answers_text,
-        variants_text,
+        repr(keys.variants),  # the variants file's content, as read
         repr(rules),
         f"diagnose={request.diagnose}",
         repr(request.options),
@@ -263,13 +262,6 @@ def _text(path: Path) -> str:
             "a NUL is not text (a binary or UTF-16 file?): save the CSV as UTF-8 text",
         )
     return text
-
-
-def _variants_text(path: Path | None) -> str:
-    """The variants file's text, for the fingerprint ('' without one)."""
-    if path is None:
-        return ""
-    return read_capped(path, MAX_ANSWERS_BYTES).decode("utf-8", "replace")
 
 
 def _keys(request: GradeRequest, spec: Spec) -> Keys:

@@ -73,7 +73,7 @@ def grade_row(
             feedback = f"{named} ({result.detail})" if named else result.detail
         parts[name] = {
             "answer": text.strip(),
-            "expected": float(f"{key.value / key.factor:.6g}"),
+            "expected": float(f"{key.value / key.factor:.12g}"),  # no conversion noise
             "expected_unit": key.unit,
             "verdict": result.verdict,
             "credit": result.credit,
