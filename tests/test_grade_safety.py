@@ -447,3 +447,35 @@ def test_a_clockwise_key_is_shown_signed(tmp_path: Path) -> None:
     part = run.results[0].parts["alpha"]
     assert part["expected"] == pytest.approx(-11.292, rel=1e-4)
     assert (part["expected_unit"], part["verdict"]) == ("rad/s^2", "correct")
+
+
+def test_a_real_sigint_exits_130_and_says_resume(tmp_path: Path) -> None:
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    rows = ["student,alpha,T,a"]
+    rows += [f"s{i:05d},{11.29 + i * 1e-7:.7f} rad/s^2,106 N,4.52 m/s^2" for i in range(20_000)]
+    answers = tmp_path / "a.csv"
+    answers.write_text("\n".join(rows) + "\n")
+    report, journal = tmp_path / "r.csv", tmp_path / "r.csv.journal"
+    command = [sys.executable, "-m", "dynsolve", "grade", str(DRUM), str(answers)]
+    process = subprocess.Popen(
+        [*command, "-o", str(report), "--no-diagnose"],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=ROOT,
+    )
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and process.poll() is None:
+        if journal.exists() and journal.stat().st_size > 2_000:
+            break
+        time.sleep(0.002)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130, stderr[-2000:]
+    assert f"kept in {journal}" in stderr and "--resume" in stderr
+    assert "Traceback" not in stderr and not report.exists()
+    assert journal.read_text().count("\n") > 1
