@@ -19,6 +19,7 @@ from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
     from dynsolve.errors import ErrorReport
+    from dynsolve.grade.command import GradeRequest
     from dynsolve.grade.export.command import GradebookRequest, QuizRequest
     from dynsolve.grade.semantics import Rule
     from dynsolve.results import Check, Solution
@@ -131,6 +132,7 @@ stdout = Console(highlight=False)
 stderr = Console(stderr=True, highlight=False)
 CHECK_PROGRESS_THRESHOLD = 8  # show a progress bar from this many files on
 STDIN_NAME = "<stdin>"
+INTERRUPTED = 130  # the shell's code for a run stopped by Ctrl-C (128 + SIGINT)
 
 
 def _version(value: bool) -> None:
@@ -429,6 +431,9 @@ def grade(
     resume: Annotated[
         bool, typer.Option("--resume", help="Continue a killed run from its journal.")
     ] = False,
+    fresh: Annotated[
+        bool, typer.Option("--fresh", help="Start over, discarding a killed run's journal.")
+    ] = False,
     diagnose: Annotated[
         bool, typer.Option("--diagnose/--no-diagnose", help="Name the classic mistakes.")
     ] = True,
@@ -438,7 +443,8 @@ def grade(
     Each cell is a number with a unit ('11.3 rad/s^2', '4.52 m/s^2 down', '23.8 lb') or a
     bare number in the column header's unit ('alpha [rad/s^2]'). Rules come from the
     spec's grading: section and these options (docs/grading.md). Prints the class
-    summary; exit code 0 when the run completed, 2 on bad input.
+    summary; exit code 0 when every student was graded, 1 when some could not be (no
+    variant, no key), 2 on bad input, 130 when interrupted (rerun with --resume).
     """
     from dynsolve.errors import DynsolveError
     from dynsolve.grade.command import GradeRequest
@@ -465,12 +471,16 @@ def grade(
     )
     request = GradeRequest(
         problem, answers, output, json_report, gradebook, histogram, variants, overrides,
-        atol or "", resume, diagnose,
+        atol or "", resume, diagnose, fresh,
     )  # fmt: skip
+    if resume and fresh:
+        _fail("--resume and --fresh exclude each other", "keep the rows (--resume) or not")
     try:
         run = _with_progress(lambda progress: grade_answers(request, progress))
     except DynsolveError as error:
         _fail_with(error)
+    except KeyboardInterrupt:
+        _interrupted(request)
     for warning in run.warnings:
         stderr.out(f"warning: {warning}", highlight=False)
     for renderable in summary_renderables(run.results, run.title):
@@ -478,7 +488,29 @@ def grade(
     stdout.out(f"keys: {run.path}", highlight=False)
     for path in run.written:
         stderr.out(f"wrote {path}", highlight=False)
+    if run.ungraded:
+        shown = ", ".join(run.ungraded[:10]) + (" ..." if len(run.ungraded) > 10 else "")
+        stderr.out(f"not graded (no variant or no key): {shown}", highlight=False)
+        raise typer.Exit(ExitCode.FAILED)
     raise typer.Exit(ExitCode.OK)
+
+
+def _interrupted(request: GradeRequest) -> NoReturn:
+    """Ctrl-C: say what was kept and how to finish, exit 130."""
+    from dynsolve.grade.command import check_outputs
+    from dynsolve.grade.journal import journal_path
+
+    anchor = check_outputs(request)
+    journal = journal_path(anchor) if anchor is not None else None
+    if journal is not None and journal.exists():
+        stderr.out(
+            f"interrupted: the rows graded so far are kept in {journal}; rerun the same "
+            "command with --resume to grade the rest",
+            highlight=False,
+        )
+    else:
+        stderr.out("interrupted: nothing was kept; rerun the same command", highlight=False)
+    raise typer.Exit(INTERRUPTED)
 
 
 def _fraction_option(option: str, text: str) -> float:

@@ -17,7 +17,8 @@ import pytest
 from typer.testing import CliRunner
 
 from dynsolve.cli import ExitCode, app
-from dynsolve.grade.export.csvsafe import csv_text, safe_cell, unescape_cell
+from dynsolve.safe_csv import csv_text, unescape_cell
+from dynsolve.safe_csv import escape_cell as safe_cell
 
 runner = CliRunner()
 HOSTILE = (

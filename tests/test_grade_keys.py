@@ -108,14 +108,16 @@ def test_grading_against_variants(monkeypatch: pytest.MonkeyPatch, tmp_path: Pat
     spec = tmp_path / "one.dyn"
     spec.write_text("given:\n  w = 2 rad/s^2\nequations:\n  alpha = w\nfind: alpha [rad/s^2]\n")
     answers = tmp_path / "answers.csv"
-    # s1's own alpha is 7.334 rad/s^2 cw, so 73.3 is x10; s2 has no key; s3 has the base's 2
+    # s1's own alpha is 7.334 rad/s^2 cw, so 73.3 is x10; s2 has no key; s3 has no variant,
+    # so is not graded (never against the base problem, whose 2 rad/s^2 it wrote)
     answers.write_text("student,alpha\ns1,73.3 rad/s^2 cw\ns3,2 rad/s^2\ns2,1 rad/s^2\n")
     variants = tmp_path / "variants.csv"
-    variants.write_text("student,m\ns1,3 kg\n")
+    variants.write_text("student,w\ns1,3 rad/s^2\ns2,4 rad/s^2\n")
     run = grade(GradeRequest(spec, answers, variants=variants))
     rows = {r.student: r for r in run.results}
     assert rows["s1"].parts["alpha"]["verdict"] == "wrong"
     assert "power-of-ten slip (x10)" in rows["s1"].parts["alpha"]["feedback"]
     assert rows["s2"].parts["alpha"]["verdict"] == "no key"
-    assert rows["s3"].parts["alpha"]["verdict"] == "correct"
+    assert rows["s3"].parts["alpha"]["verdict"] == "no variant"
+    assert run.ungraded == ["s3", "s2"]
     assert run.path == "vectorized"

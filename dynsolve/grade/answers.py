@@ -119,7 +119,13 @@ def read_answers(stream: TextIO, finds: Sequence[str], name: str) -> AnswerSheet
     rows: list[tuple[str, dict[str, str]]] = []
     seen: dict[str, int] = {}
     for line, record in body:
-        student = record[id_index].strip() if id_index < len(record) else ""
+        raw = record[id_index] if id_index < len(record) else ""
+        student = raw.strip()
+        if raw.strip(" ") != student:  # a tab, a line break, a no-break space: said, not hidden
+            warnings.append(
+                f"{name}:{line}: student id {raw!r} has a tab or other blank around it; "
+                f"read as '{student}'"
+            )
         if not student:
             raise SpecError("a row without a student id", Position(name, line, 1), "fill it in")
         if student in seen:

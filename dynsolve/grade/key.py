@@ -35,10 +35,16 @@ class Keys:
     errors: Mapping[str, str] = field(default_factory=dict)  # student -> why no key
     path: str = "one solve"
     variants: Mapping[str, Mapping[str, str]] = field(default_factory=dict)  # their givens
+    by_variant: bool = False  # a variants file was given: every student needs a row in it
 
     def for_student(self, student: str) -> Mapping[str, Key]:
         """The keys ``student`` is graded against (their variant's, else the base's)."""
         return self.per_student.get(student, self.shared)
+
+    def unknown(self, student: str) -> bool:
+        """Graded by variants, but ``student`` has no row in the variants file (never
+        graded against the base problem instead)."""
+        return self.by_variant and student not in self.per_student and student not in self.errors
 
     expected_for = for_student  # the name the variants interface agreed on
 
@@ -100,4 +106,4 @@ def variant_keys(
             )
     base = keys_of(solve_spec(spec, options))
     path = getattr(result, "path", "per-variant")
-    return Keys(base, per_student, errors, path, variants)
+    return Keys(base, per_student, errors, path, variants, by_variant=True)

@@ -7,45 +7,48 @@ Pure functions from results to text or data; the CLI writes and prints them.
 ...         "credit": 1.0, "feedback": ""}}),
 ...         StudentResult("s2", 0.0, {"a": {"answer": "45.2 m/s^2", "verdict": "wrong",
 ...         "credit": 0.0, "feedback": "a power-of-ten slip (x10): check the unit prefix"}})]
->>> print(gradebook_csv(rows, {"a": 1.0}), end="")
-student,score,points,max_points
-s1,100.00,1,1
-s2,0.00,0,1
+>>> gradebook_csv(rows, {"a": 1.0}).splitlines()
+['student,score,points,max_points', 's1,100.00,1,1', 's2,0.00,0,1']
 >>> class_summary(rows)["parts"]["a"]["correct"]
 0.5
 """
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 from collections import Counter
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from dynsolve.grade.run import StudentResult, parts_of
+from dynsolve.safe_csv import csv_text
 
 BINS = 10  # score distribution: 0-10, 10-20, …, 90-100 %
 TOP_MISTAKES = 3
 
 
 def results_csv(results: Sequence[StudentResult]) -> str:
-    """One row per student: id, score, then per part its answer, verdict, credit, feedback."""
+    """One row per student: id, score, (with variants) their givens, then per part their
+    answer, the expected value and its unit, verdict, credit, feedback."""
     parts = parts_of(results)
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    header = ["student", "score"]
+    givens = any(r.givens for r in results)
+    header = ["student", "score", *(["givens"] if givens else [])]
     for part in parts:
-        header += [f"{part} answer", f"{part} verdict", f"{part} credit", f"{part} feedback"]
-    writer.writerow(header)
+        header += [f"{part} answer", f"{part} expected", f"{part} expected unit"]
+        header += [f"{part} verdict", f"{part} credit", f"{part} feedback"]
+    rows: list[list[str]] = [header]
     for result in results:
         row = [result.student, f"{result.score:.2f}"]
+        if givens:
+            row.append("; ".join(f"{n} = {v}" for n, v in result.givens.items()))
         for part in parts:
             cell = result.parts[part]
-            row += [cell["answer"], cell["verdict"], f"{cell['credit']:g}", cell["feedback"]]
-        writer.writerow(row)
-    return out.getvalue()
+            expected = cell.get("expected")
+            row += [cell["answer"], "" if expected is None else f"{expected:.6g}"]
+            row += [cell.get("expected_unit", ""), cell["verdict"], f"{cell['credit']:g}"]
+            row.append(cell["feedback"])
+        rows.append(row)
+    return csv_text(rows)
 
 
 def results_json(
@@ -66,13 +69,11 @@ def gradebook_csv(results: Sequence[StudentResult], weights: Mapping[str, float]
     """A gradebook import: ``student,score,points,max_points`` (score in %, 2 decimals;
     points = weighted credit earned, max_points = sum of the weights)."""
     total = sum(weights.values())
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["student", "score", "points", "max_points"])
+    rows = [["student", "score", "points", "max_points"]]
     for result in results:
         points = sum(weights[p] * float(c["credit"]) for p, c in result.parts.items())
-        writer.writerow([result.student, f"{result.score:.2f}", f"{points:g}", f"{total:g}"])
-    return out.getvalue()
+        rows.append([result.student, f"{result.score:.2f}", f"{points:g}", f"{total:g}"])
+    return csv_text(rows)
 
 
 def class_summary(results: Sequence[StudentResult]) -> dict[str, Any]:

@@ -1,10 +1,9 @@
 """Grade every row of an answers sheet: verdicts, credit, feedback; journaled for --resume.
 
-Each finished row is appended to a journal (JSON lines, flushed and fsync'd) next to the
+Each finished row is appended to a :class:`~dynsolve.grade.journal.Journal` next to the
 report. A rerun with ``resume`` reads the journal, keeps its rows and grades only the
 rest, so the report is identical to an uninterrupted run's. The journal's first line is
-a fingerprint of the problem, the answers and the rules: a journal of another run is
-refused. It is removed once the reports are written.
+a fingerprint of everything that decides a verdict: a journal of another run is refused.
 
 >>> from dynsolve.grade.semantics import Key, Rule
 >>> from dynsolve.units import Dim
@@ -17,21 +16,15 @@ refused. It is removed once the reports are written.
 from __future__ import annotations
 
 import hashlib
-import json
-import os
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
-from pathlib import Path
+from dataclasses import dataclass, field, replace
 from typing import Any
 
-from dynsolve.errors import SpecError
 from dynsolve.grade.answers import AnswerSheet
 from dynsolve.grade.diagnose import Diagnoser
+from dynsolve.grade.journal import Journal
 from dynsolve.grade.key import Keys
 from dynsolve.grade.semantics import Key, Rule, judge
-
-JOURNAL_SUFFIX = ".journal"
-SYNC_EVERY = 200  # rows between fsyncs; each row is flushed to the OS as it is finished
 
 
 @dataclass(frozen=True)
@@ -41,15 +34,22 @@ class StudentResult:
     student: str
     score: float
     parts: Mapping[str, Mapping[str, Any]]
+    givens: Mapping[str, str] = field(default_factory=dict)  # their variant's, as written
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON form (also a journal line)."""
-        return {"student": self.student, "score": self.score, "parts": dict(self.parts)}
+        return {
+            "student": self.student,
+            "score": self.score,
+            "givens": dict(self.givens),
+            "parts": dict(self.parts),
+        }
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> StudentResult:
         """Read back :meth:`as_dict`."""
-        return cls(str(data["student"]), float(data["score"]), dict(data["parts"]))
+        givens = dict(data.get("givens", {}))
+        return cls(str(data["student"]), float(data["score"]), dict(data["parts"]), givens)
 
 
 def grade_row(
@@ -74,6 +74,8 @@ def grade_row(
             feedback = f"{named} ({result.detail})" if named else result.detail
         parts[name] = {
             "answer": text.strip(),
+            "expected": float(f"{key.value / key.factor:.12g}"),  # no conversion noise
+            "expected_unit": key.unit,
             "verdict": result.verdict,
             "credit": result.credit,
             "feedback": feedback,
@@ -101,103 +103,74 @@ def grade_sheet(
     keys: Keys,
     rules: Mapping[str, Rule],
     doctor: Diagnoser | None,
-    journal: Path | None = None,
+    journal: Journal | None = None,
     stamp: str = "",
     resume: bool = False,
     progress: Callable[[int, int], None] | None = None,
 ) -> list[StudentResult]:
     """Grade every row in order; with a ``journal``, record each row as it is finished
     and, with ``resume``, reuse the rows a previous run recorded under the same ``stamp``."""
-    done = _read_journal(journal, stamp) if (journal and resume) else {}
+    recorded = journal.start(stamp, resume) if journal is not None else {}
+    done = {student: StudentResult.from_dict(row) for student, row in recorded.items()}
     if doctor is not None and keys.per_student:  # variants: each student's own model
         doctor = Diagnoser(doctor.spec, doctor.options, doctor.model, keys.variants)
     results: list[StudentResult] = []
-    handle = _open_journal(journal, stamp, bool(done)) if journal else None
-    try:
-        for index, (student, cells) in enumerate(sheet.rows, start=1):
-            if student in done:
-                results.append(done[student])
-            else:
-                if student in keys.errors:
-                    row = _no_key(student, keys, keys.errors[student])
-                else:
-                    mine = keys.for_student(student)
-                    row = grade_row(
-                        student, cells, mine, rules, sheet.units, doctor, sheet.decimal_comma
-                    )
-                results.append(row)
-                if handle is not None:
-                    _append(handle, row.as_dict(), sync=index % SYNC_EVERY == 0)
-            if progress is not None:
-                progress(index, len(sheet.rows))
-    finally:
-        if handle is not None:
-            _sync(handle)
-            handle.close()
+    for index, (student, cells) in enumerate(sheet.rows, start=1):
+        if student in done:
+            results.append(done[student])
+        else:
+            row = graded(student, cells, keys, rules, sheet.units, doctor, sheet.decimal_comma)
+            results.append(row)
+            if journal is not None:
+                journal.append(row.as_dict())
+        if progress is not None:
+            progress(index, len(sheet.rows))
     return results
 
 
-def _no_key(student: str, keys: Keys, why: str) -> StudentResult:
+def graded(
+    student: str,
+    cells: Mapping[str, str],
+    keys: Keys,
+    rules: Mapping[str, Rule],
+    units: Mapping[str, str],
+    doctor: Diagnoser | None,
+    decimal_comma: bool = False,
+) -> StudentResult:
+    """One student's row: graded against their keys, with their variant's givens; or not
+    graded ("no key": their variant failed; "no variant": the variants file lacks them);
+    ``decimal_comma``: the answers file writes 4,52."""
+    if keys.unknown(student):
+        why = f"no row for '{student}' in the variants file"
+        return not_graded(student, keys, "no variant", why, cells)
+    if student in keys.errors:
+        row = not_graded(student, keys, "no key", keys.errors[student], cells)
+    else:
+        row = grade_row(
+            student, cells, keys.for_student(student), rules, units, doctor, decimal_comma
+        )
+    if not keys.by_variant:
+        return row
+    return replace(row, givens=dict(keys.variants.get(student, {})))
+
+
+def not_graded(
+    student: str, keys: Keys, verdict: str, why: str, cells: Mapping[str, str] | None = None
+) -> StudentResult:
+    """A row graded 0 in every part with ``verdict`` ("no key", "no variant") and ``why``;
+    the student's ``cells`` are shown as they wrote them."""
     parts = {
-        name: {"answer": "", "verdict": "no key", "credit": 0.0, "feedback": why}
+        name: {
+            "answer": (cells or {}).get(name, "").strip(),
+            "expected": None,
+            "expected_unit": "",
+            "verdict": verdict,
+            "credit": 0.0,
+            "feedback": why,
+        }
         for name in keys.shared
     }
     return StudentResult(student, 0.0, parts)
-
-
-def _open_journal(path: Path, stamp: str, keep: bool) -> Any:
-    if keep:
-        return path.open("a", encoding="utf-8")
-    handle = path.open("w", encoding="utf-8")
-    _append(handle, {"fingerprint": stamp})
-    return handle
-
-
-def _append(handle: Any, record: Mapping[str, Any], sync: bool = True) -> None:
-    """One record as one line, flushed (a killed process loses nothing flushed); fsync'd
-    when ``sync`` (a crash of the machine loses at most the rows since)."""
-    handle.write(json.dumps(record) + "\n")  # key order kept: parts in find order
-    handle.flush()
-    if sync:
-        _sync(handle)
-
-
-def _sync(handle: Any) -> None:
-    handle.flush()
-    os.fsync(handle.fileno())
-
-
-def _read_journal(path: Path, stamp: str) -> dict[str, StudentResult]:
-    """Rows a killed run finished; a torn last line (killed mid-write) is dropped."""
-    if not path.exists():
-        return {}
-    lines = path.read_text(encoding="utf-8").split("\n")
-    records = []
-    for line in lines:
-        try:
-            records.append(json.loads(line))
-        except json.JSONDecodeError:
-            break  # the torn tail: everything before it was fsync'd whole
-    if not records or records[0].get("fingerprint") != stamp:
-        raise SpecError(
-            f"{path} is the journal of another run (other problem, answers or rules)",
-            None,
-            "delete it, or rerun without --resume",
-        )
-    rows = (StudentResult.from_dict(r) for r in records[1:])
-    good = _whole(lines, len(records))
-    if not good:  # rewrite without the torn tail, so that appends start on a fresh line
-        path.write_text("".join(json.dumps(r) + "\n" for r in records))
-    return {row.student: row for row in rows}
-
-
-def _whole(lines: list[str], parsed: int) -> bool:
-    return all(not line for line in lines[parsed:])
-
-
-def journal_path(report: Path) -> Path:
-    """The journal kept next to ``report`` while grading."""
-    return report.with_name(report.name + JOURNAL_SUFFIX)
 
 
 def parts_of(results: Iterable[StudentResult]) -> list[str]:

@@ -24,6 +24,7 @@ from pathlib import Path
 
 from dynsolve.errors import Position, SpecError
 from dynsolve.files import read_capped, write_text
+from dynsolve.safe_csv import csv_text, unescape_cell
 
 MAX_BYTES = 64 * 1024 * 1024
 MAX_ROWS = 200_000
@@ -48,24 +49,54 @@ class VariantRow:
 
 def write_variants(path: Path, rows: Iterable[VariantRow], names: Sequence[str]) -> None:
     """Write the rows, with a column per given in ``names`` (atomic, as every output)."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(("student", "units", *names))
-    for row in rows:
-        writer.writerow((row.student, row.units, *(row.cells.get(n, "") for n in names)))
-    write_text(path, buffer.getvalue())
+    table = [(row.student, row.units, *(row.cells.get(n, "") for n in names)) for row in rows]
+    write_text(path, csv_text([("student", "units", *names), *table]))
+
+
+@dataclass(frozen=True)
+class VariantTable:
+    """A variants file as read: each student's cells, and where each cell and header is."""
+
+    path: str
+    cells: dict[str, dict[str, str]]  # student -> {given: cell text}, empty cells left out
+    lines: dict[str, tuple[int, list[int]]]  # student -> their line, each cell's column
+    columns: dict[str, int]  # given -> its index in a row (and in the header)
+    header: list[int]  # the header cells' columns
+
+    def where(self, student: str, given: str) -> Position:
+        """The position of ``student``'s cell of ``given``."""
+        line, columns = self.lines[student]
+        return Position(self.path, line, columns[self.columns[given]])
+
+    def heading(self, given: str) -> Position:
+        """The position of ``given``'s header."""
+        return Position(self.path, 1, self.header[self.columns[given]])
 
 
 def read_variants(path: str | Path) -> dict[str, dict[str, str]]:
     """Each student's (or twin's) id → {given name: cell text}; empty cells are left out."""
-    header, rows = _read_table(path, "variants")
-    names = [h for h in header[1:] if h != "units"]
-    indices = [i for i, h in enumerate(header) if i > 0 and h != "units"]
+    return read_variant_table(path).cells
+
+
+def read_variant_table(path: str | Path) -> VariantTable:
+    """The variants file with the position of every cell (for errors that point at it).
+
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "v.csv"
+    >>> _ = path.write_text("student,units,m,r\\ns1,SI,45 kg,0.4 m\\n")
+    >>> table = read_variant_table(path)
+    >>> str(table.where("s1", "r")).split(":", 1)[1], str(table.heading("m")).split(":", 1)[1]
+    ('2:13', '1:15')
+    """
+    header, top, rows = _read_table(path, "variants")
+    named = [(i, h) for i, h in enumerate(header) if i > 0 and h != "units"]
     out: dict[str, dict[str, str]] = {}
-    for line, row in rows:
+    lines: dict[str, tuple[int, list[int]]] = {}
+    for line, row, columns in rows:
         student = _student(row[0], path, line, out)
-        out[student] = {n: row[i] for n, i in zip(names, indices, strict=True) if row[i]}
-    return out
+        out[student] = {h: row[i] for i, h in named if row[i]}
+        lines[student] = (line, columns)
+    return VariantTable(str(path), out, lines, {h: i for i, h in named}, top)
 
 
 def read_roster(path: str | Path) -> list[str]:
@@ -78,11 +109,11 @@ def read_roster(path: str | Path) -> list[str]:
     >>> read_roster(path)
     ['s1', 's2']
     """
-    header, rows = _read_table(path, "roster")
+    header, _, rows = _read_table(path, "roster")
     lowered = [h.lower() for h in header]
     column = next((lowered.index(c) for c in ID_COLUMNS if c in lowered), 0)
     seen: dict[str, None] = {}
-    for line, row in rows:
+    for line, row, _ in rows:
         seen[_student(row[column], path, line, seen)] = None
     if not seen:
         raise CsvError(f"{path} lists no students", Position(str(path), 1, 1), "add rows")
@@ -103,7 +134,11 @@ def _student(text: str, path: str | Path, line: int, seen: Mapping[str, object])
     return student
 
 
-def _read_table(path: str | Path, what: str) -> tuple[list[str], list[tuple[int, list[str]]]]:
+def _read_table(
+    path: str | Path, what: str
+) -> tuple[list[str], list[int], list[tuple[int, list[str], list[int]]]]:
+    """The header and its cells' columns, and the non-empty rows, each with its line and
+    its cells' columns."""
     raw = read_capped(path, MAX_BYTES)
     where = Position(str(path), 1, 1)
     if len(raw) > MAX_BYTES:
@@ -112,6 +147,7 @@ def _read_table(path: str | Path, what: str) -> tuple[list[str], list[tuple[int,
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise CsvError(f"the {what} file is not UTF-8 text", where, "save it as UTF-8") from None
+    lines = text.split("\n")
     reader = csv.reader(io.StringIO(text, newline=""))
     try:
         header = [h.strip() for h in next(reader)]
@@ -137,11 +173,34 @@ def _read_table(path: str | Path, what: str) -> tuple[list[str], list[tuple[int,
                 raise CsvError(
                     f"a cell is over {MAX_CELL} characters", Position(str(path), line, 1), ""
                 )
-            rows.append((line, [cell.strip() for cell in row]))
+            cells = [unescape_cell(cell.strip()) for cell in row]
+            rows.append((line, cells, _field_columns(row, lines[line - 1 : line])))
     except csv.Error as error:
         raise CsvError(
             f"cannot read the {what} file: {error}",
             Position(str(path), reader.line_num, 1),
             hint="check the quoting",
         ) from None
-    return header, rows
+    return header, _field_columns(header, lines[:1]), rows
+
+
+def _field_columns(row: Sequence[str], raw: Sequence[str]) -> list[int]:
+    """The 1-based column where each cell of ``row`` starts on its ``raw`` line (1 for
+    every cell when the record spans lines or does not match).
+
+    >>> _field_columns(["a", "b,c", "d"], ['a,"b,c",d'])
+    [1, 3, 9]
+    """
+    text = raw[0] if len(raw) == 1 else ""
+    columns = [1]
+    if '"' not in text:  # the common case: the cells as they are, one comma apart
+        for cell in text.split(",")[:-1]:
+            columns.append(columns[-1] + len(cell) + 1)
+    else:
+        quoted = False
+        for index, char in enumerate(text):
+            if char == '"':
+                quoted = not quoted
+            elif char == "," and not quoted:
+                columns.append(index + 2)
+    return columns if len(columns) == len(row) else [1] * len(row)

@@ -13,11 +13,11 @@ Pure functions of a :class:`~dynsolve.simulate.run.History`: the CLI writes the 
 
 from __future__ import annotations
 
-import csv
 import io
 import json
 import math
 
+from dynsolve.safe_csv import csv_text
 from dynsolve.simulate.chain_run import ChainHistory
 from dynsolve.simulate.run import History
 
@@ -73,12 +73,8 @@ def _contact(history: History | ChainHistory) -> dict[str, object] | None:
 
 def history_csv(history: History | ChainHistory) -> str:
     """The time history, one row per sample, with a header of names and units."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(history.columns())
-    for row in history.rows():
-        writer.writerow([repr(v) for v in row])
-    return buffer.getvalue()
+    rows = ([repr(v) for v in row] for row in history.rows())
+    return csv_text([history.columns(), *rows])
 
 
 def history_json(history: History | ChainHistory) -> str:

@@ -22,9 +22,9 @@ from pathlib import Path
 
 from dynsolve.errors import Position
 from dynsolve.files import read_capped
-from dynsolve.grade.export.csvsafe import csv_text
 from dynsolve.grade.export.gradebook import MAX_BYTES, Total, number_text
 from dynsolve.grade.export.target import ExportError
+from dynsolve.safe_csv import csv_text
 
 IDENTITY = ("Student", "ID", "SIS User ID", "SIS Login ID", "Section")
 ID_COLUMNS = ("ID", "SIS User ID", "SIS Login ID")

@@ -19,8 +19,8 @@ from pathlib import Path
 
 from dynsolve.errors import Position
 from dynsolve.files import read_capped
-from dynsolve.grade.export.csvsafe import unescape_cell
 from dynsolve.grade.export.target import ExportError
+from dynsolve.safe_csv import unescape_cell
 
 MAX_BYTES = 64 * 1024 * 1024
 COLUMNS = ("student", "score", "points", "max_points")

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from dynsolve.grade.export.csvsafe import csv_text
 from dynsolve.grade.export.gradebook import Total, number_text
+from dynsolve.safe_csv import csv_text
 
 HEADER = ("SID", "Total Score", "Max Points")
 
