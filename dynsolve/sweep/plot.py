@@ -52,6 +52,11 @@ def sweep_plot(result: Sweep, suffix: str = ".png") -> bytes:
 
     if len(result.axes) not in (1, 2):
         raise not_plottable(len(result.axes))
+    if len(result.axes) == 2 and len(result.shape) != 2:
+        raise SpecError(
+            "two givens are drawn as contours over a grid; these points are not one",
+            hint="sweep two ranges, or pass values shaped as a grid (numpy.meshgrid)",
+        )
     answers = result.answers[:MAX_PANELS]
     if len(result.axes) == 1:
         figure, panels = plt.subplots(len(answers), 1, figsize=(7, 2.3 * len(answers) + 0.6))

@@ -144,3 +144,42 @@ def grid(axes: Sequence[Axis]) -> tuple[tuple[np.ndarray, ...], tuple[int, ...]]
         )
     meshes = np.meshgrid(*(axis.values for axis in axes), indexing="ij")
     return tuple(mesh.ravel() for mesh in meshes), shape
+
+
+def axis_of_values(name: str, values: object, unit: str | None, spec: Spec) -> Axis:
+    """A swept given from values passed in Python: numbers in ``unit`` (pint's text, as
+    ``str(quantity.units)``), or, with ``unit`` None, in the unit the spec gives it in.
+    The values are flattened (:class:`Axis` holds one per point).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W", "p.dyn")
+    >>> axis_of_values("m", [500.0, 1500.0], "gram", spec).values.tolist()
+    [0.5, 1.5]
+    >>> axis_of_values("m", [1, 3], None, spec).unit
+    'kg'
+    """
+    import pint
+
+    from dynsolve.errors import UnitError
+    from dynsolve.units import registry
+
+    given = valued_given(spec, name, None)
+    assert given.quantity is not None
+    written = given.quantity.unit.text if given.quantity.unit else ""
+    array = np.asarray(values, dtype=float).ravel()
+    if array.size == 0:
+        raise SpecError(f"the values of '{name}' are empty", hint="pass at least one value")
+    if not np.all(np.isfinite(array)):
+        raise SpecError(f"the values of '{name}' are not all finite", hint="drop NaN and inf")
+    if unit is not None:
+        ureg = registry()
+        try:
+            factor = ureg.Quantity(1.0, unit).to(written or "dimensionless").magnitude
+        except (pint.errors.DimensionalityError, pint.errors.UndefinedUnitError) as error:
+            raise UnitError(
+                f"'{name}' is given in {written or 'no unit'}; its values are in {unit} "
+                f"({type(error).__name__})",
+                hint=f"pass a quantity in a unit of the same dimension, e.g. '{written}'",
+            ) from None
+        array = array * float(factor)
+    return Axis(name, written, array, unit_factor(written, spec))
