@@ -26,7 +26,7 @@ from dynsolve.results import Check, Solution
 if TYPE_CHECKING:
     import pint
 
-    from dynsolve.sweep.result import SweepResult
+    from dynsolve.parametric.result import SweepResult
 
 Mode = Literal["exact", "numeric", "auto"]
 BLOCK_SECONDS = 5.0  # symbolic solve of one nonlinear block, before the numeric fallback
@@ -214,7 +214,7 @@ def sweep(
     outcome = run(_sweep_in_worker, job, budget)
     if isinstance(outcome, DynsolveError):
         raise outcome
-    from dynsolve.sweep.result import SweepResult
+    from dynsolve.parametric.result import SweepResult
 
     return SweepResult(outcome)
 
@@ -243,10 +243,10 @@ def _sweep_in_worker(
     """The worker's job for :func:`sweep`: the Sweep, or the DynsolveError to raise."""
     import numpy as np
 
+    from dynsolve.parametric.command import sweep_spec
+    from dynsolve.parametric.evaluate import sweep_points
+    from dynsolve.parametric.ranges import axis_of_values
     from dynsolve.spec.parser import parse_file, parse_spec
-    from dynsolve.sweep.command import sweep_spec
-    from dynsolve.sweep.evaluate import sweep_points
-    from dynsolve.sweep.ranges import axis_of_values
     from dynsolve.system import SolveOptions
 
     options = SolveOptions(mode=mode, time_budget=min(BLOCK_SECONDS, seconds / 4))
@@ -254,7 +254,8 @@ def _sweep_in_worker(
     try:
         spec = parse_file(value) if kind == "file" else parse_spec(value, "<spec>")
         if inputs[0][1] == "range":
-            return sweep_spec(spec, [text for _, _, text, _ in inputs], points, answers, options)
+            ranges = [f"{name}={text}" for name, _, text, _ in inputs]
+            return sweep_spec(spec, ranges, points, answers, options)
         try:
             arrays = np.broadcast_arrays(*(array for _, _, array, _ in inputs))
         except ValueError:

@@ -19,8 +19,8 @@ from dynsolve.budget import DEFAULT_MEGABYTES, DEFAULT_SECONDS, Budget
 
 if TYPE_CHECKING:
     from dynsolve.errors import ErrorReport
+    from dynsolve.parametric.command import SweepOutput, SweepRequest
     from dynsolve.results import Check, Solution
-    from dynsolve.sweep.command import SweepOutput, SweepRequest
     from dynsolve.system import SolveOptions
 
 
@@ -729,9 +729,9 @@ def sweep_command(
     for bad input or past the time or memory budget.
     """
     from dynsolve.errors import DynsolveError
+    from dynsolve.parametric.command import TABLE_FORMATS, SweepRequest, parse_answers
+    from dynsolve.parametric.terminal import sweep_renderables
     from dynsolve.plots import FORMATS
-    from dynsolve.sweep.command import TABLE_FORMATS, SweepRequest, parse_answers
-    from dynsolve.sweep.terminal import sweep_renderables
 
     for path, suffixes in ((output, TABLE_FORMATS), (plot, FORMATS)):
         if path is not None and path.suffix.lower() not in suffixes:
@@ -767,7 +767,7 @@ def sweep_in_worker(
 
     import_solver()
     from dynsolve.errors import DynsolveError
-    from dynsolve.sweep.command import input_text, sweep_job
+    from dynsolve.parametric.command import input_text, sweep_job
 
     try:
         return sweep_job(request, _options(mode, budget))

@@ -8,8 +8,8 @@ matplotlib's Agg backend draws it (no display needed).
 
 >>> import numpy as np
 >>> from dynsolve.spec.parser import parse_spec
->>> from dynsolve.sweep.evaluate import sweep_points
->>> from dynsolve.sweep.ranges import Axis
+>>> from dynsolve.parametric.evaluate import sweep_points
+>>> from dynsolve.parametric.ranges import Axis
 >>> text = "given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a"
 >>> spec = parse_spec(text, "p.dyn")
 >>> axis = Axis("m", "kg", np.array([1.0, 2.0, 4.0]), 1.0)
@@ -27,8 +27,8 @@ import numpy as np
 
 from dynsolve.errors import SpecError
 from dynsolve.names import pretty
-from dynsolve.sweep.evaluate import Answer, Sweep
-from dynsolve.sweep.table import header
+from dynsolve.parametric.evaluate import Answer, Sweep
+from dynsolve.parametric.table import header
 
 FORMATS = (".png", ".svg", ".pdf")
 MAX_PANELS = 6  # answers drawn (the table has every one)

@@ -8,8 +8,8 @@ in JSON). Text cells are written safely for spreadsheets (:func:`safe_cell`).
 
 >>> import numpy as np
 >>> from dynsolve.spec.parser import parse_spec
->>> from dynsolve.sweep.evaluate import sweep_points
->>> from dynsolve.sweep.ranges import Axis
+>>> from dynsolve.parametric.evaluate import sweep_points
+>>> from dynsolve.parametric.ranges import Axis
 >>> text = "given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a"
 >>> spec = parse_spec(text, "p.dyn")
 >>> axis = Axis("m", "kg", np.array([1.0, 4.0]), 1.0)
@@ -28,7 +28,7 @@ import math
 import re
 from collections.abc import Iterator
 
-from dynsolve.sweep.evaluate import Sweep
+from dynsolve.parametric.evaluate import Sweep
 
 _PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
 

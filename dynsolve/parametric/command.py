@@ -15,11 +15,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from dynsolve.errors import DynsolveError, Position, SpecError
+from dynsolve.parametric.evaluate import ANSWERS_FILE, Sweep, sweep_points
+from dynsolve.parametric.plot import not_plottable, sweep_plot
+from dynsolve.parametric.ranges import Axis, grid, label, parse_range
+from dynsolve.parametric.table import csv_text, json_text
 from dynsolve.spec.ast import Spec
-from dynsolve.sweep.evaluate import ANSWERS_FILE, Sweep, sweep_points
-from dynsolve.sweep.plot import not_plottable, sweep_plot
-from dynsolve.sweep.ranges import Axis, grid, label, parse_range
-from dynsolve.sweep.table import csv_text, json_text
 from dynsolve.system import SolveOptions
 
 TABLE_FORMATS = (".csv", ".json")

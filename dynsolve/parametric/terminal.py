@@ -6,8 +6,8 @@ figures (the CSV or JSON table has full precision).
 
 >>> import numpy as np
 >>> from dynsolve.spec.parser import parse_spec
->>> from dynsolve.sweep.evaluate import sweep_points
->>> from dynsolve.sweep.ranges import Axis
+>>> from dynsolve.parametric.evaluate import sweep_points
+>>> from dynsolve.parametric.ranges import Axis
 >>> text = "given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a"
 >>> spec = parse_spec(text, "p.dyn")
 >>> axis = Axis("m", "kg", np.array([1.0, 4.0]), 1.0)
@@ -26,8 +26,8 @@ from rich.table import Table
 from rich.text import Text
 
 from dynsolve.format import sig
-from dynsolve.sweep.evaluate import CLOSED, PER_POINT, Sweep
-from dynsolve.sweep.table import columns, rows
+from dynsolve.parametric.evaluate import CLOSED, PER_POINT, Sweep
+from dynsolve.parametric.table import columns, rows
 
 MAX_ROWS = 25  # rows shown before the table is abridged
 MAX_REASONS = 3

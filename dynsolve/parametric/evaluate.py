@@ -14,7 +14,7 @@ not finite, a given past the sign its symbol assumes) are solved one by one, as
 
 >>> import numpy as np
 >>> from dynsolve.spec.parser import parse_spec
->>> from dynsolve.sweep.ranges import Axis
+>>> from dynsolve.parametric.ranges import Axis
 >>> text = "given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a"
 >>> spec = parse_spec(text, "p.dyn")
 >>> axis = Axis("m", "kg", np.array([1.0, 2.0, 5.0]), 1.0)
@@ -37,10 +37,10 @@ from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.grade.expected import verify
 from dynsolve.grade.substitute import with_variant
 from dynsolve.grade.vectorized import NotClosedForm, build_closed_form, evaluate_arrays
+from dynsolve.parametric.ranges import Axis
 from dynsolve.quantities import unit_info
 from dynsolve.results import Solution
 from dynsolve.spec.ast import Spec
-from dynsolve.sweep.ranges import Axis
 from dynsolve.system import SolveOptions
 
 MAX_REGIMES = 4  # closed forms built for one sweep (each: one symbolic solve, ~0.1-0.5 s)

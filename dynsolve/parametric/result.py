@@ -2,8 +2,8 @@
 
 >>> import numpy as np
 >>> from dynsolve.spec.parser import parse_spec
->>> from dynsolve.sweep.evaluate import sweep_points
->>> from dynsolve.sweep.ranges import Axis
+>>> from dynsolve.parametric.evaluate import sweep_points
+>>> from dynsolve.parametric.ranges import Axis
 >>> text = "given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a"
 >>> axis = Axis("m", "kg", np.array([1.0, 2.0, 4.0, 5.0]), 1.0)
 >>> result = SweepResult(sweep_points(parse_spec(text, "p.dyn"), (axis,), (axis.values,), (2, 2)))
@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from dynsolve.sweep.evaluate import Sweep
+from dynsolve.parametric.evaluate import Sweep
 
 if TYPE_CHECKING:
     import pint
@@ -95,13 +95,13 @@ class SweepResult:
 
     def to_csv(self) -> str:
         """The table as CSV text (one row per point), as ``dynsolve sweep -o x.csv``."""
-        from dynsolve.sweep.table import csv_text
+        from dynsolve.parametric.table import csv_text
 
         return csv_text(self.sweep)
 
     def plot(self, suffix: str = ".png") -> bytes:
         """The plot as image bytes (.png, .svg or .pdf), as ``dynsolve sweep --plot``."""
-        from dynsolve.sweep.plot import sweep_plot
+        from dynsolve.parametric.plot import sweep_plot
 
         return sweep_plot(self.sweep, suffix)
 
