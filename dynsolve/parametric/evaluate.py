@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -148,7 +148,7 @@ def sweep_points(
         with step("checking the closed form against full solves"):
             labels = _Labels(remaining)
             disagreement = verify(regime_spec, form, batch, labels, points.at(remaining), options)
-            regime = regime_of(_solve(regime_spec, options))
+        regime = regime_words((c.label, c.holds) for c in form.conditions)
         state.build_seconds += time.perf_counter() - start
         if disagreement:
             reasons.append(disagreement.removeprefix("student "))
@@ -199,24 +199,37 @@ def sweep_points(
 
 
 def regime_of(solution: Solution | str) -> str:
-    """The regime of a solve in words: the assumptions that fail there ("slips at C",
-    "cord T goes slack", "tips on B", "loses contact at A"), "as assumed" when every one
-    holds, "" when none is made; "not solved" when the solve failed.
+    """The regime of a solve in words (:func:`regime_words` of its assumptions); "not
+    solved" when the solve failed.
 
-    >>> from dynsolve.results import Assumption
     >>> from dynsolve.pipeline import solve_text
     >>> solution = solve_text("given:\\n  m = 2 kg\\nequations:\\n  W = m*g\\nfind: W\\n")
     >>> regime_of(solution), regime_of("no solution")
     ('', 'not solved')
-    >>> regime_of(replace(solution, assumptions=(Assumption("no slip at C", False, ""),)))
-    'slips at C'
     """
     if isinstance(solution, str):
         return "not solved"
+    return regime_words((a.name, a.holds) for a in solution.assumptions)
+
+
+def regime_words(assumptions: Iterable[tuple[str, bool]]) -> str:
+    """The assumptions that fail, in words ("slips at C", "cord T goes slack", "tips on B",
+    "loses contact at A"); "as assumed" when every one holds, "" when none is made. Also
+    reads a closed form's conditions (their labels are the assumptions' names; a root's
+    constraint and the sense of a slip are not assumptions).
+
+    >>> regime_words([("no slip at C", False), ("contact at C kept", True)])
+    'slips at C'
+    >>> regime_words([("cord T taut", True)]), regime_words([("constraint v >= 0", True)])
+    ('as assumed', '')
+    """
     words = []
-    for assumption in solution.assumptions:
-        name = assumption.name
-        if assumption.holds:
+    made = False
+    for name, holds in assumptions:
+        if name.startswith(("constraint ", "sense of the slip at ")):
+            continue
+        made = True
+        if holds:
             continue
         if name.startswith("no slip at "):
             words.append(f"slips at {name.removeprefix('no slip at ')}")
@@ -230,7 +243,7 @@ def regime_of(solution: Solution | str) -> str:
             words.append(f"{name}: fails")
     if words:
         return "; ".join(words)
-    return "as assumed" if solution.assumptions else ""
+    return "as assumed" if made else ""
 
 
 def _solve(spec: Spec, options: SolveOptions) -> Solution | str:
