@@ -20,6 +20,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pint
 import pytest
 from typer.testing import CliRunner, Result
 
@@ -31,6 +32,7 @@ from dynsolve.parametric.evaluate import sweep_points
 from dynsolve.parametric.ranges import Axis
 from dynsolve.parametric.table import safe_cell
 from dynsolve.spec.parser import parse_file
+from dynsolve.units import registry
 
 ROOT = Path(__file__).resolve().parent.parent
 DRUM = ROOT / "problems" / "seed" / "fa_hib_drum.dyn"
@@ -217,8 +219,7 @@ def test_closed_form_agrees_with_exact_solves_at_10000_points() -> None:
 
 
 def test_api_returns_pint_arrays() -> None:
-    units = dynsolve.solve(DRUM)["alpha"]._REGISTRY
-    masses = units.Quantity(np.array([10.0, 20.0, 30.0]), "kg")
+    masses = registry().Quantity(np.array([10.0, 20.0, 30.0]), "kg")
     result = dynsolve.sweep(DRUM, m_b=masses)
     alpha = result["alpha"]
     assert alpha.shape == (3,)
@@ -233,9 +234,29 @@ def test_api_plain_numbers_grids_and_errors() -> None:
     result = dynsolve.sweep(DRUM, m_b=grid[0], r=grid[1], answers=["alpha"])
     assert result["alpha"].shape == (2, 2)
     assert result["alpha"].magnitude[1, 0] == pytest.approx(drum_alpha(20, 0.3), rel=1e-9)
+    other = pint.UnitRegistry()  # a quantity of the caller's own registry converts too
+    grams = dynsolve.sweep(DRUM, m_b=other.Quantity([20_000.0], "gram"), answers=["alpha"])
+    assert grams["alpha"].magnitude[0] == pytest.approx(78.48 / 6.95, rel=1e-9)  # 17.11
+    with pytest.raises(DynsolveError, match="'m_b' is given in kg; its values are in meter"):
+        dynsolve.sweep(DRUM, m_b=other.Quantity([1.0], "m"))
     ranges = dynsolve.sweep(DRUM, m_b="10..30 kg", r="0.3..0.5 m", points=3)
     assert ranges["T"].shape == (3, 3)
     with pytest.raises(DynsolveError, match="not a given"):
         dynsolve.sweep(DRUM, mass=[1.0])
     with pytest.raises(DynsolveError, match="cannot be mixed"):
         dynsolve.sweep(DRUM, m_b="10..30 kg", r=[0.3])
+
+
+def test_example_notebook_runs(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the notebook is the project's own file: its code cells run in order in one namespace
+    notebook = json.loads((ROOT / "examples" / "sweep.ipynb").read_text(encoding="utf-8"))
+    assert all(not c.get("outputs") for c in notebook["cells"])  # outputs cleared
+    monkeypatch.chdir(ROOT)
+    namespace: dict[str, object] = {}
+    for cell in notebook["cells"]:
+        if cell["cell_type"] == "code":
+            exec(compile("".join(cell["source"]), "sweep.ipynb", "exec"), namespace)
+    assert namespace["largest"] < 1e-12  # the closed form against Hibbeler 17.11's formula
+    # the first slipping slope: past tan β* = 3 μs = 0.6, the next point of 0.3..0.9 by 0.01
+    assert namespace["first_slip"] == pytest.approx(0.61)
+    assert namespace["grid"]._repr_png_()[:4] == b"\x89PNG"  # type: ignore[attr-defined]
