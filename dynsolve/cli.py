@@ -692,7 +692,9 @@ class UnitsChoice(enum.StrEnum):
 
 @app.command("sweep")
 def sweep_command(
-    file: Annotated[Path, typer.Argument(help="The .dyn spec.", show_default=False)],
+    file: Annotated[
+        Path, typer.Argument(help="The .dyn spec.", show_default=False, metavar="FILE")
+    ],
     ranges: Annotated[
         list[str],
         typer.Argument(
@@ -704,7 +706,9 @@ def sweep_command(
     ],
     points: Annotated[
         int | None,
-        typer.Option(min=2, max=1_000_000, help="Points of a range without a step [default: 51]."),
+        typer.Option(
+            min=2, max=1_000_000, help="Points of a range without a step (default 51).", metavar="N"
+        ),
     ] = None,
     output: Annotated[
         Path | None,
@@ -712,10 +716,14 @@ def sweep_command(
     ] = None,
     plot: Annotated[
         Path | None,
-        typer.Option(help="Plot the answers (contours over two givens): .png, .svg or .pdf."),
+        typer.Option(
+            help="Plot the answers (contours over two givens): .png, .svg or .pdf.",
+            metavar="FILE",
+        ),
     ] = None,
     answers: Annotated[
-        str | None, typer.Option(help="Only these finds, comma-separated: 'alpha,T'.")
+        str | None,
+        typer.Option(help="Only these finds, comma-separated: 'alpha,T'.", metavar="NAMES"),
     ] = None,
     mode: Annotated[Mode, typer.Option(help="Solve mode of the full solves.")] = Mode.exact,
     time_budget: TimeBudget = DEFAULT_SECONDS,

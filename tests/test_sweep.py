@@ -260,3 +260,17 @@ def test_example_notebook_runs(monkeypatch: pytest.MonkeyPatch) -> None:
     # the first slipping slope: past tan β* = 3 μs = 0.6, the next point of 0.3..0.9 by 0.01
     assert namespace["first_slip"] == pytest.approx(0.61)
     assert namespace["grid"]._repr_png_()[:4] == b"\x89PNG"  # type: ignore[attr-defined]
+
+
+def test_a_point_whose_check_fails_has_no_values(tmp_path: Path) -> None:
+    # equation mode writes no slip as the constraint F <= mu_s*N; with F = m g sin β / 3
+    # (rolling) and N = m g cos β, it fails where tan β > 3 μs: μs = 0.1 at tan β = 0.6
+    spec = ROOT / "problems" / "equations" / "gpm_seed_incline_threshold.dyn"
+    out = tmp_path / "eq.csv"
+    result = run(spec, "mu_s=0.1..0.3", "--points", "3", "-o", out)
+    assert result.exit_code == 0, result.output
+    rows = read_csv(out)
+    assert rows[0]["regime"] == "a check fails"
+    assert rows[0]["a_G [m/s^2]"] == ""  # no value computed under a failed constraint
+    assert "no root satisfies the constraints" in rows[0]["note"]
+    assert float(rows[2]["a_G [m/s^2]"]) == pytest.approx(2 / 3 * G * 0.6 / math.hypot(1, 0.6))

@@ -191,7 +191,7 @@ def sweep_points(
         state.regimes,
         state.paths,
         state.notes,
-        tuple(reasons),
+        tuple(dict.fromkeys(r.replace("per variant", "per point") for r in reasons)),
         state.build_seconds,
         state.evaluate_seconds,
         state.solve_seconds,
@@ -333,6 +333,8 @@ class _State:
         failed = [c for c in solution.checks if not c.passed and not c.name.startswith("answer ")]
         if failed:
             self.notes[i] = f"check '{failed[0].name}' fails: {failed[0].detail}"
+            if self.regimes[i] in ("", "as assumed"):
+                self.regimes[i] = "a check fails"
             return
         for row in solution.answers:
             if row.value is None or not math.isfinite(row.value):
