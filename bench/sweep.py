@@ -48,7 +48,10 @@ DRUM = ROOT / "problems" / "seed" / "fa_hib_drum.dyn"
 HEADING = "## Parametric sweep: `bench/sweep.py`"
 ABOUT = """`dynsolve sweep` of the drum's block mass (Hibbeler 17.11,
 `problems/seed/fa_hib_drum.dyn`, m_b over scale·(1..100) kg; α, T and a at every point). See
-the script's docstring for what each figure includes."""
+the script's docstring for what each figure includes. The closed form's total is mostly its
+one-time build (the first row also warms sympy's caches); the evaluation grows with the
+points. Numeric mode gives the exact solve's floats here (the drum is linear: both round
+once). On a shared machine wall times wait for other work; CPU times are steadier."""
 
 
 def timed(command: list[str]) -> tuple[float, float]:
