@@ -241,6 +241,8 @@ def _sweep_in_worker(
     seconds: float,
 ) -> Any:
     """The worker's job for :func:`sweep`: the Sweep, or the DynsolveError to raise."""
+    import time
+
     import numpy as np
 
     from dynsolve.parametric.command import sweep_spec
@@ -250,12 +252,13 @@ def _sweep_in_worker(
     from dynsolve.system import SolveOptions
 
     options = SolveOptions(mode=mode, time_budget=min(BLOCK_SECONDS, seconds / 4))
+    deadline = time.perf_counter() + seconds
     kind, value = source
     try:
         spec = parse_file(value) if kind == "file" else parse_spec(value, "<spec>")
         if inputs[0][1] == "range":
             ranges = [f"{name}={text}" for name, _, text, _ in inputs]
-            return sweep_spec(spec, ranges, points, answers, options)
+            return sweep_spec(spec, ranges, points, answers, options, deadline)
         try:
             arrays = np.broadcast_arrays(*(array for _, _, array, _ in inputs))
         except ValueError:
@@ -269,7 +272,8 @@ def _sweep_in_worker(
             for (name, _, _, unit), array in zip(inputs, arrays, strict=True)
         ]
         shape = arrays[0].shape or (1,)
-        return sweep_points(spec, axes, [a.values for a in axes], shape, answers, options)
+        columns = [a.values for a in axes]
+        return sweep_points(spec, axes, columns, shape, answers, options, deadline=deadline)
     except DynsolveError as error:
         return error
 

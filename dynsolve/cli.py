@@ -778,7 +778,7 @@ def sweep_in_worker(
     from dynsolve.parametric.command import input_text, sweep_job
 
     try:
-        return sweep_job(request, _options(mode, budget))
+        return sweep_job(request, _options(mode, budget), budget.seconds)
     except DynsolveError as error:
         text = input_text(error, request.ranges, answers)
         return _Refused(

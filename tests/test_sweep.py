@@ -31,7 +31,7 @@ from dynsolve.parametric.command import sweep_spec
 from dynsolve.parametric.evaluate import sweep_points
 from dynsolve.parametric.ranges import Axis
 from dynsolve.parametric.table import safe_cell
-from dynsolve.spec.parser import parse_file
+from dynsolve.spec.parser import parse_file, parse_spec
 from dynsolve.units import registry
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -274,3 +274,22 @@ def test_a_point_whose_check_fails_has_no_values(tmp_path: Path) -> None:
     assert rows[0]["a_G [m/s^2]"] == ""  # no value computed under a failed constraint
     assert "no root satisfies the constraints" in rows[0]["note"]
     assert float(rows[2]["a_G [m/s^2]"]) == pytest.approx(2 / 3 * G * 0.6 / math.hypot(1, 0.6))
+
+
+def test_too_many_full_solves_stop_early_with_the_reason() -> None:
+    # beta_max (steepest) has no closed form: 1000 full solves of ~0.1-0.5 s each cannot
+    # fit in 10 s, which the first few solves show
+    result = run(INCLINE, "tan_beta=0.3..0.9", "--points", "1000", "--time-budget", "10")
+    assert result.exit_code == 2
+    stderr = " ".join(result.stderr.split())
+    assert (
+        "1000 points need a full solve each (beta_max (steepest) is answered per point)" in stderr
+    )
+    assert "--answers" in stderr
+
+
+def test_vary_sections_still_need_a_step() -> None:
+    # the sweep's optional step is the sweep's only: a vary: line without one is an error
+    text = "given:\n  m = 50 kg\nvary:\n  m = 40..60 kg\nequations:\n  W = m*g\nfind: W\n"
+    with pytest.raises(DynsolveError, match="cannot read the variation of 'm'"):
+        parse_spec(text, "p.dyn")

@@ -46,16 +46,22 @@ class SweepOutput:
     plot: bytes | None = None
 
 
-def sweep_job(request: SweepRequest, options: SolveOptions) -> SweepOutput:
-    """Read, sweep and write (raises :class:`~dynsolve.errors.DynsolveError` on bad input)."""
+def sweep_job(
+    request: SweepRequest, options: SolveOptions, seconds: float | None = None
+) -> SweepOutput:
+    """Read, sweep and write (raises :class:`~dynsolve.errors.DynsolveError` on bad input);
+    ``seconds`` is the time the job has (its full solves stop early past it)."""
+    import time
+
     from dynsolve.budget import step
     from dynsolve.spec.parser import parse_file
 
+    deadline = time.perf_counter() + seconds if seconds is not None else None
     with step("parsing the spec"):
         spec = parse_file(request.spec)
     if request.plot and len(request.ranges) > 2:
         raise not_plottable(len(request.ranges))
-    result = sweep_spec(spec, request.ranges, request.points, request.answers, options)
+    result = sweep_spec(spec, request.ranges, request.points, request.answers, options, deadline)
     with step("writing the table"):
         table = (
             json_text(result)
@@ -75,8 +81,10 @@ def sweep_spec(
     points: int | None = None,
     answers: Sequence[str] | None = None,
     options: SolveOptions | None = None,
+    deadline: float | None = None,
 ) -> Sweep:
-    """``spec`` swept over the grid of ``ranges`` (each in the ``vary:`` grammar)."""
+    """``spec`` swept over the grid of ``ranges`` (each in the ``vary:`` grammar); see
+    :func:`~dynsolve.parametric.evaluate.sweep_points` for ``deadline``."""
     if not ranges:
         raise SpecError("a sweep needs a range", hint="e.g. 'm_b=10..30 kg'")
     axes: list[Axis] = []
@@ -90,7 +98,7 @@ def sweep_spec(
             )
         axes.append(axis)
     columns, shape = grid(axes)
-    return sweep_points(spec, axes, columns, shape, answers, options)
+    return sweep_points(spec, axes, columns, shape, answers, options, deadline=deadline)
 
 
 def parse_answers(text: str) -> tuple[str, ...]:

@@ -117,9 +117,13 @@ def sweep_points(
     answers: Sequence[str] | None = None,
     options: SolveOptions | None = None,
     vectorize: bool = True,
+    deadline: float | None = None,
 ) -> Sweep:
     """Every point of ``spec`` with its ``axes``' givens set to ``columns`` (one flat array
-    per axis, in the axis's unit); ``vectorize=False`` solves every point (the baseline)."""
+    per axis, in the axis's unit); ``vectorize=False`` solves every point (the baseline).
+    ``deadline`` (a ``time.perf_counter()`` instant) stops the full solves early, with an
+    :class:`~dynsolve.budget.OverBudget` that says how long they would take, when the
+    first of them show that the rest cannot finish by then."""
     options = options or SolveOptions()
     spec = selected(spec, answers)
     names = tuple(axis.name for axis in axes)
@@ -180,6 +184,8 @@ def sweep_points(
     for k, i in enumerate(todo):
         with step(f"solving point {k + 1} of {len(todo)} one by one"):
             state.solved(int(i), _solve(with_variant(spec, points[int(i)], "sweep"), options))
+        if deadline is not None:
+            _within(deadline, start, k + 1, len(todo), reasons)
     state.solve_seconds = time.perf_counter() - start
     return Sweep(
         spec.file,
@@ -191,10 +197,33 @@ def sweep_points(
         state.regimes,
         state.paths,
         state.notes,
-        tuple(dict.fromkeys(r.replace("per variant", "per point") for r in reasons)),
+        tuple(dict.fromkeys(_said(r) for r in reasons)),
         state.build_seconds,
         state.evaluate_seconds,
         state.solve_seconds,
+    )
+
+
+def _said(reason: str) -> str:
+    """A reason from grading's closed form, in a sweep's words."""
+    return reason.replace("per variant", "per point")
+
+
+def _within(deadline: float, start: float, done: int, total: int, reasons: list[str]) -> None:
+    """Stop (OverBudget) when the full solves so far show the rest cannot end by ``deadline``."""
+    from dynsolve.budget import OverBudget
+
+    now = time.perf_counter()
+    each = (now - start) / done
+    if done < 3 or now + each * (total - done) <= deadline:
+        return
+    why = f" ({_said(reasons[0])})" if reasons else ""
+    raise OverBudget(
+        f"{total} points need a full solve each{why}: about {each:.2g} s a point, "
+        f"{each * total:.0f} s in all, past the time budget",
+        "solving the points one by one",
+        hint="use fewer --points, leave out a find that has no closed form (--answers), "
+        "or give a larger --time-budget",
     )
 
 
