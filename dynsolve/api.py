@@ -208,6 +208,11 @@ def sweep(
             "ranges (text) and values (arrays) cannot be mixed in one sweep",
             hint="pass every given as a range, or every one as values",
         )
+    if points is not None and "values" in kinds:
+        raise DynsolveError(
+            "points spreads a range (text); values passed as arrays are the points already",
+            hint="leave points out, or pass ranges such as m_b='10..30 kg'",
+        )
     chosen = tuple(answers) if answers is not None else None
     budget = Budget(time_budget, memory_budget)
     job = (_source(source), tuple(inputs), chosen, points, mode, budget.seconds)

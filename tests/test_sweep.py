@@ -293,3 +293,27 @@ def test_vary_sections_still_need_a_step() -> None:
     text = "given:\n  m = 50 kg\nvary:\n  m = 40..60 kg\nequations:\n  W = m*g\nfind: W\n"
     with pytest.raises(DynsolveError, match="cannot read the variation of 'm'"):
         parse_spec(text, "p.dyn")
+
+
+def test_a_crate_that_tips_is_marked_and_left_without_values(tmp_path: Path) -> None:
+    # problems/scenes/crate_push_tips.dyn (hand derivation in its header): sliding right,
+    # N = m g = 490.5 N, F = μk N = 98.1 N, a = (P − 98.1)/50; ΣM_G = 0 puts N at
+    # x = (0.45 P + 73.575)/490.5 from G, inside the base while x ≤ 0.5 m: P ≤ 381.5 N
+    spec = ROOT / "problems" / "scenes" / "crate_push_tips.dyn"
+    out = tmp_path / "tip.csv"
+    plot = tmp_path / "tip.pdf"
+    result = run(
+        spec, "P=100..500 N", "--points", "9", "--answers", "a,x_C", "-o", out, "--plot", plot
+    )
+    assert result.exit_code == 0, result.output
+    for row in read_csv(out):
+        push = float(row["P [N]"])
+        if push <= 381.5:
+            assert row["regime"] == "as assumed"
+            assert float(row["a [m/s^2]"]) == pytest.approx((push - 98.1) / 50, rel=1e-9)
+            assert float(row["x_C [m]"]) == pytest.approx((0.45 * push + 73.575) / 490.5)
+        else:
+            assert row["regime"] == "tips on C"
+            assert row["a [m/s^2]"] == row["x_C [m]"] == ""
+    assert "as assumed → tips on C" in result.stdout
+    assert plot.read_bytes()[:5] == b"%PDF-"

@@ -107,7 +107,8 @@ def _line(panel: object, result: Sweep, answer: Answer) -> None:
     if answer.directions:
         words = np.asarray(answer.directions, dtype=object)[order]
         for i in np.flatnonzero(words[1:] != words[:-1]):
-            if not re.search(r"\d", words[i] + words[i + 1]):  # cw → ccw, not 16.7° → 16.8°
+            turned = words[i] and words[i + 1] and not re.search(r"\d", words[i] + words[i + 1])
+            if turned:  # cw → ccw; not 16.7° → 16.8°, nor a point without an answer
                 middle = (x[i] + x[i + 1]) / 2
                 panel.axvline(middle, color="grey", linestyle=":", linewidth=1)  # type: ignore[attr-defined]
                 panel.annotate(  # type: ignore[attr-defined]
