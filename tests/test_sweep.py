@@ -317,3 +317,10 @@ def test_a_crate_that_tips_is_marked_and_left_without_values(tmp_path: Path) -> 
             assert row["a [m/s^2]"] == row["x_C [m]"] == ""
     assert "as assumed → tips on C" in result.stdout
     assert plot.read_bytes()[:5] == b"%PDF-"
+
+
+def test_an_unknown_unit_in_a_range_points_into_the_range() -> None:
+    result = run(DRUM, "m_b=1..2 kgs")
+    assert result.exit_code == 2
+    assert "<range 1>:1:10: unknown unit 'kgs'" in result.stderr  # not the spec's line 1
+    assert "did you mean 'kg'" in result.stderr

@@ -117,7 +117,7 @@ def variation(stmt: VaryStmt, given: Given, spec: Spec, file: str | None = None)
             stmt.name, value - spread, value + spread, Fraction(0), stmt.sigfig, unit, dim,
             stmt.line,
         )  # fmt: skip
-    unit_dim = resolve_unit(stmt.unit, spec.file).dim if stmt.unit else Dim()
+    unit_dim = resolve_unit(stmt.unit, file).dim if stmt.unit else Dim()
     if unit_dim != dim:
         column = stmt.unit.column if stmt.unit else stmt.column
         written = given.quantity.unit.text if given.quantity.unit else "no unit"
