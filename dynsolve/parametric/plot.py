@@ -30,7 +30,6 @@ from dynsolve.names import pretty
 from dynsolve.parametric.evaluate import Answer, Sweep
 from dynsolve.parametric.table import header
 
-FORMATS = (".png", ".svg", ".pdf")
 MAX_PANELS = 6  # answers drawn (the table has every one)
 _SHADES = ("#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860")
 

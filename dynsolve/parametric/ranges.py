@@ -37,17 +37,13 @@ MAX_POINTS = 1_000_000  # points of a whole sweep (every range's points multipli
 
 @dataclass(frozen=True)
 class Axis:
-    """One swept given: its values in ``unit`` (as written in its range)."""
+    """One swept given: its values in ``unit`` (as written in its range, or the spec's unit
+    for values from Python): a range's values, or for values from Python one per point."""
 
     name: str
     unit: str  # pint-parsable text, "" for a pure number
     values: np.ndarray
     factor: float  # the size of ``unit`` in the problem's base units (SI or FPS)
-
-    @property
-    def base(self) -> np.ndarray:
-        """The values in the problem's base units, as the closed form takes them."""
-        return self.values * self.factor
 
 
 def label(index: int) -> str:
