@@ -13,10 +13,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
-__all__ = ["FileCheck", "Result", "check", "solve"]
+__all__ = ["FileCheck", "Result", "check", "solve", "sweep"]
 
 if TYPE_CHECKING:
-    from dynsolve.api import FileCheck, Result, check, solve
+    from dynsolve.api import FileCheck, Result, check, solve, sweep
 
 
 def __getattr__(name: str) -> Any:

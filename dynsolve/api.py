@@ -1,4 +1,5 @@
-"""The Python API: solve or check specs (a path or the text itself) and get pint quantities.
+"""The Python API: solve, check or sweep specs (a path or the text itself) and get pint
+quantities.
 
 Each solve runs in a worker process under a time and memory budget, exactly as the
 command line does, so a hostile or runaway spec cannot hang a notebook.
@@ -24,6 +25,8 @@ from dynsolve.results import Check, Solution
 
 if TYPE_CHECKING:
     import pint
+
+    from dynsolve.parametric.result import SweepResult
 
 Mode = Literal["exact", "numeric", "auto"]
 BLOCK_SECONDS = 5.0  # symbolic solve of one nonlinear block, before the numeric fallback
@@ -164,6 +167,122 @@ def check(
     return checks
 
 
+def sweep(
+    source: str | os.PathLike[str],
+    *,
+    answers: Iterable[str] | None = None,
+    points: int | None = None,
+    mode: Mode = "exact",
+    time_budget: float = DEFAULT_SECONDS,
+    memory_budget: int | None = DEFAULT_MEGABYTES,
+    **givens: Any,
+) -> SweepResult:
+    """Sweep givens of one spec (a path or its text) and get every answer at every point.
+
+    Each keyword names a given: a pint quantity (an array or a number), plain numbers (in
+    the unit the spec gives it in), or a range as ``dynsolve sweep`` reads one
+    (``"10..30 kg"``, ``"10..30 kg step 0.5"``, ``"±10%"``; ``points`` spreads a range
+    without a step). Arrays broadcast together, point by point; ranges form a grid. The
+    whole sweep runs in one worker process under the budget: the closed form where the
+    answers have one, full solves elsewhere (``result.path`` says which, per point).
+    ``answers`` names the finds to report (default: every one).
+
+    >>> import numpy as np
+    >>> result = sweep("problems/seed/fa_hib_drum.dyn", m_b=np.array([10.0, 20.0]))  # 17.11
+    >>> result["alpha"].to("rad/s^2").magnitude.round(3).tolist(), result.path.tolist()
+    ([7.335, 11.292], ['closed form', 'closed form'])
+    """
+    if not givens:
+        raise DynsolveError("name a given to sweep", hint="e.g. sweep(spec, m_b=values)")
+    inputs = []
+    for name, value in givens.items():
+        if isinstance(value, str):
+            inputs.append((name, "range", value, None))
+        elif hasattr(value, "magnitude") and hasattr(value, "units"):
+            inputs.append((name, "values", _plain(value.magnitude), str(value.units)))
+        else:
+            inputs.append((name, "values", _plain(value), None))
+    kinds = {kind for _, kind, _, _ in inputs}
+    if len(kinds) > 1:
+        raise DynsolveError(
+            "ranges (text) and values (arrays) cannot be mixed in one sweep",
+            hint="pass every given as a range, or every one as values",
+        )
+    if points is not None and "values" in kinds:
+        raise DynsolveError(
+            "points spreads a range (text); values passed as arrays are the points already",
+            hint="leave points out, or pass ranges such as m_b='10..30 kg'",
+        )
+    chosen = tuple(answers) if answers is not None else None
+    budget = Budget(time_budget, memory_budget)
+    job = (_source(source), tuple(inputs), chosen, points, mode, budget.seconds)
+    outcome = run(_sweep_in_worker, job, budget)
+    if isinstance(outcome, DynsolveError):
+        raise outcome
+    from dynsolve.parametric.result import SweepResult
+
+    return SweepResult(outcome)
+
+
+def _plain(value: object) -> Any:
+    """A value as a float array (numbers, lists, numpy arrays)."""
+    import numpy as np
+
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise DynsolveError(
+            f"cannot read {type(value).__name__} values as numbers",
+            hint="pass numbers, a numpy array, a pint quantity or a range text",
+        ) from None
+
+
+def _sweep_in_worker(
+    source: tuple[str, str],
+    inputs: tuple[tuple[str, str, Any, str | None], ...],
+    answers: tuple[str, ...] | None,
+    points: int | None,
+    mode: str,
+    seconds: float,
+) -> Any:
+    """The worker's job for :func:`sweep`: the Sweep, or the DynsolveError to raise."""
+    import time
+
+    import numpy as np
+
+    from dynsolve.parametric.command import sweep_spec
+    from dynsolve.parametric.evaluate import sweep_points
+    from dynsolve.parametric.ranges import axis_of_values
+    from dynsolve.spec.parser import parse_file, parse_spec
+    from dynsolve.system import SolveOptions
+
+    options = SolveOptions(mode=mode, time_budget=min(BLOCK_SECONDS, seconds / 4))
+    deadline = time.perf_counter() + seconds
+    kind, value = source
+    try:
+        spec = parse_file(value) if kind == "file" else parse_spec(value, "<spec>")
+        if inputs[0][1] == "range":
+            ranges = [f"{name}={text}" for name, _, text, _ in inputs]
+            return sweep_spec(spec, ranges, points, answers, options, deadline)
+        try:
+            arrays = np.broadcast_arrays(*(array for _, _, array, _ in inputs))
+        except ValueError:
+            shapes = ", ".join(f"{n} {np.shape(a)}" for n, _, a, _ in inputs)
+            raise DynsolveError(
+                f"the values' shapes do not broadcast together: {shapes}",
+                hint="pass arrays of one shape, or a grid from numpy.meshgrid",
+            ) from None
+        axes = [
+            axis_of_values(name, array, unit, spec)
+            for (name, _, _, unit), array in zip(inputs, arrays, strict=True)
+        ]
+        shape = arrays[0].shape or (1,)
+        columns = [a.values for a in axes]
+        return sweep_points(spec, axes, columns, shape, answers, options, deadline=deadline)
+    except DynsolveError as error:
+        return error
+
+
 def _source(source: str | os.PathLike[str]) -> tuple[str, str]:
     """("file", path) or ("text", spec text)."""
     if isinstance(source, os.PathLike):
@@ -204,4 +323,4 @@ def _messages(error: BaseException) -> tuple[str, ...]:
     return tuple(str(each) for each in (error, *others))
 
 
-__all__ = ["FileCheck", "Result", "check", "solve"]
+__all__ = ["FileCheck", "Result", "check", "solve", "sweep"]

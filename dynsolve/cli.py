@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from dynsolve.grade.command import GradeRequest
     from dynsolve.grade.export.command import GradebookRequest, QuizRequest
     from dynsolve.grade.semantics import Rule
+    from dynsolve.parametric.command import SweepOutput, SweepRequest
     from dynsolve.results import Check, Solution
     from dynsolve.system import SolveOptions
 
@@ -721,6 +722,102 @@ class UnitsChoice(enum.StrEnum):
     si = "si"
     us = "us"
     both = "both"
+
+
+@app.command("sweep")
+def sweep_command(
+    file: Annotated[
+        Path, typer.Argument(help="The .dyn spec.", show_default=False, metavar="FILE")
+    ],
+    ranges: Annotated[
+        list[str],
+        typer.Argument(
+            help="Ranges in the vary: grammar: 'm_b=10..30 kg', 'm_b=10..30 kg step 0.5', "
+            "'k=±10%'. Two ranges give a grid.",
+            show_default=False,
+            metavar="RANGE...",
+        ),
+    ],
+    points: Annotated[
+        int | None,
+        typer.Option(
+            min=2, max=1_000_000, help="Points of a range without a step (default 51).", metavar="N"
+        ),
+    ] = None,
+    output: Annotated[
+        Path | None,
+        typer.Option("--output", "-o", help="Write the table: .csv or .json.", metavar="FILE"),
+    ] = None,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            help="Plot the answers (contours over two givens): .png, .svg or .pdf.",
+            metavar="FILE",
+        ),
+    ] = None,
+    answers: Annotated[
+        str | None,
+        typer.Option(help="Only these finds, comma-separated: 'alpha,T'.", metavar="NAMES"),
+    ] = None,
+    mode: Annotated[Mode, typer.Option(help="Solve mode of the full solves.")] = Mode.exact,
+    time_budget: TimeBudget = DEFAULT_SECONDS,
+    memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
+) -> None:
+    """Sweep givens over ranges and tabulate every answer at every point (docs/sweep.md).
+
+    Answers come from the problem's closed form where it has one (one per regime: the
+    no-slip check fails and the point is solved slipping, ...), from a full solve per point
+    elsewhere; the table's path and regime columns say which. Exit code 0 when swept, 2
+    for bad input or past the time or memory budget.
+    """
+    from dynsolve.errors import DynsolveError
+    from dynsolve.parametric.command import TABLE_FORMATS, SweepRequest, parse_answers
+    from dynsolve.parametric.terminal import sweep_renderables
+    from dynsolve.plots import FORMATS
+
+    for path, suffixes in ((output, TABLE_FORMATS), (plot, FORMATS)):
+        if path is not None and path.suffix.lower() not in suffixes:
+            _fail(f"cannot write {path}: use {' or '.join(suffixes)}", "choose another name")
+        if path is not None:
+            _refuse_overwriting_input(file, path)
+    try:
+        names = parse_answers(answers) if answers is not None else None
+    except DynsolveError as error:
+        _report(_reports(error, ("text", answers or "")))
+        raise typer.Exit(ExitCode.BAD_INPUT) from None
+    suffixes = (output.suffix.lower() if output else "", plot.suffix.lower() if plot else "")
+    request = SweepRequest(str(file), tuple(ranges), points, names, *suffixes)
+    budget = Budget(time_budget, memory_budget)
+    outcome = _in_worker(sweep_in_worker, (request, answers or "", mode.value, budget), budget)
+    if isinstance(outcome, _Refused):
+        _report(outcome.errors)
+        raise typer.Exit(ExitCode.BAD_INPUT)
+    for renderable in sweep_renderables(outcome.result):
+        stdout.print(renderable)
+    if output is not None:
+        _write_output(output, outcome.table)
+    if plot is not None and outcome.plot is not None:
+        _write_output(plot, outcome.plot)
+    raise typer.Exit(ExitCode.OK)
+
+
+def sweep_in_worker(
+    request: SweepRequest, answers: str, mode: str, budget: Budget
+) -> SweepOutput | _Refused:
+    """The worker's job for ``sweep``: every point answered, the table and plot made."""
+    from dynsolve.startup import import_solver
+
+    import_solver()
+    from dynsolve.errors import DynsolveError
+    from dynsolve.parametric.command import input_text, sweep_job
+
+    try:
+        return sweep_job(request, _options(mode, budget), budget.seconds)
+    except DynsolveError as error:
+        text = input_text(error, request.ranges, answers)
+        return _Refused(
+            _reports(error, ("text", text) if text is not None else ("file", request.spec))
+        )
 
 
 @app.command("variants")

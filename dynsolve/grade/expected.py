@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 from dynsolve.errors import DynsolveError
@@ -128,7 +128,7 @@ def expected_answers(
         batch = evaluate(form, rows)
         out = _from_batch(form, batch, students)
         evaluate_seconds = time.perf_counter() - start
-        disagreement = _verify(spec, form, batch, students, rows, options)
+        disagreement = verify(spec, form, batch, students, rows, options)
         verify_seconds = time.perf_counter() - start - evaluate_seconds
         if disagreement:
             reason, form, out = disagreement, None, {}
@@ -181,15 +181,17 @@ def _from_batch(form: ClosedForm, batch: Batch, students: list[str]) -> dict[str
     return out
 
 
-def _verify(
+def verify(
     spec: Spec,
     form: ClosedForm,
     batch: Batch,
-    students: list[str],
-    rows: list[dict[str, str]],
+    students: Sequence[str],
+    rows: Sequence[Mapping[str, str]],
     options: SolveOptions,
 ) -> str:
-    """Full solves of a few fast rows must agree with the closed form ("" when they do)."""
+    """Full solves of a few fast rows (the first, middle and last, and each condition's
+    closest to its edge) must take ``spec``'s branch and agree with the closed form within
+    ``AGREE`` ("" when they do, else why not)."""
     fast = [i for i in range(len(rows)) if batch.fast[i]]
     if not fast:
         return ""

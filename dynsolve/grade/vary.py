@@ -87,7 +87,7 @@ def vary_plan(spec: Spec) -> tuple[Variation, ...]:
     """Each ``vary`` line checked against its given (same dimension) and resolved."""
     givens = {g.name: g for g in spec.givens}
     return tuple(
-        _variation(stmt, givens[stmt.name], spec) for stmt in spec.vary if stmt.kind != "allow"
+        variation(stmt, givens[stmt.name], spec) for stmt in spec.vary if stmt.kind != "allow"
     )
 
 
@@ -96,8 +96,12 @@ def allows_changes(spec: Spec) -> bool:
     return any(stmt.kind == "allow" for stmt in spec.vary)
 
 
-def _variation(stmt: VaryStmt, given: Given, spec: Spec) -> Variation:
+def variation(stmt: VaryStmt, given: Given, spec: Spec, file: str | None = None) -> Variation:
+    """A ``vary`` line resolved against its ``given`` (a :class:`UnitError` when the range's
+    unit is not of the given's dimension); ``file`` is where ``stmt`` was written (default:
+    the spec), for the error's position."""
     assert given.quantity is not None  # the parser lets only valued givens vary
+    file = file or spec.file
     _, dim = resolve_quantity(given.quantity, spec.system, spec.file)
     if stmt.kind == "percent":
         value = given.quantity.value
@@ -106,20 +110,20 @@ def _variation(stmt: VaryStmt, given: Given, spec: Spec) -> Variation:
         if value == 0:
             raise UnitError(
                 f"'{stmt.name}' is 0: a spread of ±{stmt.percent * 100}% of it is empty",
-                Position(spec.file, stmt.line, stmt.column),
+                Position(file, stmt.line, stmt.column),
                 hint="give a range instead, e.g. 'x = -1..1 m step 0.5'",
             )
         return Variation(
             stmt.name, value - spread, value + spread, Fraction(0), stmt.sigfig, unit, dim,
             stmt.line,
         )  # fmt: skip
-    unit_dim = resolve_unit(stmt.unit, spec.file).dim if stmt.unit else Dim()
+    unit_dim = resolve_unit(stmt.unit, file).dim if stmt.unit else Dim()
     if unit_dim != dim:
         column = stmt.unit.column if stmt.unit else stmt.column
         written = given.quantity.unit.text if given.quantity.unit else "no unit"
         raise UnitError(
             f"'{stmt.name}' is {dim.name} (given in {written}), but its range is {unit_dim.name}",
-            Position(spec.file, stmt.line, column),
+            Position(file, stmt.line, column),
             hint=f"write the range in a unit of {dim.name}, e.g. '{written}'",
         )
     return Variation(

@@ -445,7 +445,22 @@ def _given_arrays(
 def evaluate(form: ClosedForm, rows: Sequence[Mapping[str, str]]) -> Batch:
     """Every row at once (see the module docstring for the rows it leaves to a full solve)."""
     arrays, errors = _given_arrays(form, rows)
-    n = len(rows)
+    return evaluate_arrays(form, arrays, errors)
+
+
+def evaluate_arrays(
+    form: ClosedForm, arrays: Sequence[np.ndarray], errors: Mapping[int, str] | None = None
+) -> Batch:
+    """Every row at once from the varied givens' values (one array each, in ``form.names``'
+    order, in the problem's base units); ``errors`` are rows already known to be unreadable.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  m = 2 kg\\n  F = 10 N\\nequations:\\n  F = m*a\\nfind: a")
+    >>> evaluate_arrays(build_closed_form(spec, ("m",)), [np.array([4.0, 5.0])]).values["a"]
+    array([2.5, 2. ])
+    """
+    errors = dict(errors or {})
+    n = len(arrays[0]) if arrays else 0
     with np.errstate(all="ignore"):
         raw = [np.broadcast_to(_real(v), (n,)) for v in form.function(*arrays)]
     fast = np.ones(n, dtype=bool)

@@ -32,6 +32,10 @@ _RANGE = re.compile(
     rf"(?P<low>-?{_NUMBER})\s*\.\.\s*(?P<high>-?{_NUMBER})(?P<unit>.*?)"
     rf"\s+step\s+(?P<step>{_NUMBER})\s*$"
 )
+_SPAN = re.compile(  # a range whose step may be left out (a sweep: ``--points`` sets it)
+    rf"(?P<low>-?{_NUMBER})\s*\.\.\s*(?P<high>-?{_NUMBER})(?P<unit>.*?)"
+    rf"(?:\s+step\s+(?P<step>{_NUMBER}))?\s*$"
+)
 _PERCENT = re.compile(
     rf"(?:\+-|±)\s*(?P<percent>{_NUMBER})\s*%\s*(?:sigfig\s+(?P<sigfig>\d+))?\s*$"
 )
@@ -39,11 +43,16 @@ _ALLOW = re.compile(r"\s*allow\s+changes\s*")
 _FORMS = "'NAME = LOW..HIGH UNIT step STEP' or 'NAME = ±P% sigfig N'"
 
 
-def parse_vary_line(text: str, file: str, line: int, offset: int) -> VaryStmt:
+def parse_vary_line(
+    text: str, file: str, line: int, offset: int, step_optional: bool = False
+) -> VaryStmt:
     """Parse ``text`` (a ``vary`` line without its comment); ``offset`` columns precede it.
+    With ``step_optional`` a range may leave out its step (``step`` is then 0).
 
     >>> parse_vary_line("allow changes", "p.dyn", 9, 2).kind
     'allow'
+    >>> parse_vary_line("m = 10..30 kg", "<range>", 1, 0, step_optional=True).step
+    Fraction(0, 1)
     """
     if _ALLOW.fullmatch(text):
         return VaryStmt("", "allow", text=text.strip(), line=line, column=offset + 1)
@@ -57,7 +66,7 @@ def parse_vary_line(text: str, file: str, line: int, offset: int) -> VaryStmt:
     name, start = head.group(1), head.end()
     rest = text[start:]
     column = offset + head.start(1) + 1
-    ranged = _RANGE.match(rest)
+    ranged = (_SPAN if step_optional else _RANGE).match(rest)
     if ranged is not None:
         return _range(name, ranged, text, file, line, offset + start, column)
     spread = _PERCENT.match(rest)
@@ -92,20 +101,21 @@ def _range(
 
     low = _number(match.group("low"), file, line, at("low"))
     high = _number(match.group("high"), file, line, at("high"))
-    step = _number(match.group("step"), file, line, at("step"))
+    stepped = match.group("step") is not None
+    step = _number(match.group("step"), file, line, at("step")) if stepped else Fraction(0)
     if high < low:
         raise SpecError(
             f"the range of '{name}' runs backwards ({match.group('low')} > {match.group('high')})",
             Position(file, line, at("low")),
             hint="write the smaller value first",
         )
-    if step <= 0:
+    if stepped and step <= 0:
         raise SpecError(
             "the step of a range must be positive",
             Position(file, line, at("step")),
             hint="e.g. 'step 5'",
         )
-    count = (high - low) // step + 1
+    count = (high - low) // step + 1 if stepped else 0
     if count > MAX_VALUES:
         raise SpecError(
             f"the range of '{name}' holds {count} values; the limit is {MAX_VALUES}",
