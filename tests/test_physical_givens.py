@@ -98,7 +98,8 @@ def test_negative_gyration_and_gravity_are_refused(mode: str) -> None:
 
 # ---- the mutation test over the bundled problems
 
-NEGATE_ONLY = {"mu_s", "mu_k", "unstretched"}  # zero is legitimate: smooth, no free length
+# zero is legitimate: smooth, no free length, a massless pulley (inertia 0: newcomer round 7)
+NEGATE_ONLY = {"mu_s", "mu_k", "unstretched", "inertia", "gyration"}
 ROLE_PROPS = {"mass", "weight", "gyration", "inertia", "density", "thickness", "k", "length"}
 
 
@@ -176,6 +177,8 @@ def test_every_bundled_role_given_negated_or_zeroed_is_refused() -> None:
         for name, zero_impossible in _roles(spec).items():
             given = by_name[name]
             assert given.quantity is not None
+            if float(given.quantity.text.split()[0]) == 0:
+                continue  # a zero (a pulley given inertia 0) has no negative to try
             numbers = ["-" + given.quantity.text] + (["0"] if zero_impossible else [])
             for number in numbers:
                 mutations += 1
@@ -204,3 +207,17 @@ def test_a_mutated_bundled_problem_exits_2_through_the_cli(tmp_path: Path) -> No
         result = CliRunner().invoke(app, ["solve", str(mutated)])
         assert result.exit_code == 2, (name, role, result.output)
         assert f"{path.name}:{given.line}:{given.column}" in result.output
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_a_pulley_given_inertia_zero_is_legitimate(mode: str) -> None:
+    """Newcomer round 7: `I_0 = 0 kg*m^2` for a massless movable pulley was refused ("must
+    be positive"). By hand (massless pulleys, s_A + 2 s_B = const, so a_A = 2 a_B):
+    T = m_A a_A and m_B g - 2 T = m_B a_B give a_B = m_B g/(m_B + 4 m_A) = 196.2/60
+    = 3.27 m/s^2 and a_A = 6.54 m/s^2 (m_A = 10 kg, m_B = 20 kg)."""
+    path = Path(__file__).parent.parent / "problems/scenes/movable_pulley_inertia_zero.dyn"
+    solution = solve_text(path.read_text(), path.name, options=SolveOptions(mode=mode))
+    values = {a.name: float(a.value) for a in solution.answers}
+    assert values["a_A"] == pytest.approx(6.54, rel=1e-9)
+    assert values["a_B"] == pytest.approx(3.27, rel=1e-9)
+    assert {a.name: a.direction for a in solution.answers}["a_B"] == "down"

@@ -1,10 +1,11 @@
 """Givens whose sign physics fixes: a value read for a role (a mass, μ, a stiffness …) is checked.
 
-A coefficient of restitution lies in [0, 1]; in the same way a radius of gyration, a
-body's size, a spring's stiffness, a density, g and a duration are positive, and a mass, a
-weight, a coefficient of friction, an unstretched length and a principal moment of inertia
-are not negative (a massless pulley or link beside bodies with mass, μ = 0 frictionless, a
-spring with no free length, a slender rod with no inertia about its own axis); a scene in
+A coefficient of restitution lies in [0, 1]; in the same way a body's size, a spring's
+stiffness, a density, g and a duration are positive, and a mass, a weight, a moment of
+inertia, a radius of gyration, a coefficient of friction and an unstretched length are not
+negative (a massless pulley or link beside bodies with mass, a pulley given inertia 0,
+μ = 0 frictionless, a spring with no free length, a slender rod with no inertia about its
+own axis); a scene in
 which every body is massless is refused. A value that breaks its bound is refused before
 anything is solved, at the given it comes from (or at the scene's text when it is an
 expression of several givens), with the role that fixes the bound.

@@ -621,14 +621,14 @@ class _Builder:
         where = self.where(stmt.line, stmt.column)
         if "gyration" in props:
             prop = props["gyration"]
-            k = self.value(prop.values[0], LENGTH, "a radius of gyration", POSITIVE)
+            k = self.value(prop.values[0], LENGTH, "a radius of gyration", NOT_NEGATIVE)
             about = from_gyration(mass, k)
             if not prop.about:
                 return about, "I_G = m k_G²"
             return self.moved(about, mass, prop.about, at, where), f"I_{prop.about} = m k²"
         if "inertia" in props:
             prop = props["inertia"]
-            given = self.value(prop.values[0], Dim(2, 1, 0), "a moment of inertia", POSITIVE)
+            given = self.value(prop.values[0], Dim(2, 1, 0), "a moment of inertia", NOT_NEGATIVE)
             if not prop.about:
                 return given, "I_G given"
             return self.moved(given, mass, prop.about, at, where), f"I_{prop.about} given"
