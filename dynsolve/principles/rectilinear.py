@@ -188,7 +188,45 @@ def _time_of_x(
     if not _elementary(antiderivative):
         return None
     antiderivative = antiderivative.xreplace(back)
-    return tidy(sense * (antiderivative.subs(u, X) - antiderivative.subs(u, x0)))
+    closed = tidy(sense * (antiderivative.subs(u, X) - antiderivative.subs(u, x0)))
+    return closed if _matches_quadrature(closed, squared, sense, x0, values) else None
+
+
+def _matches_quadrature(
+    closed: sympy.Expr, squared: sympy.Expr, sense: int, x0: sympy.Expr, values: Values
+) -> bool:
+    """Whether the closed form of t − t₀ agrees (to 1e-9) with the quadrature of ∫ dx/v at a
+    point just ahead of x₀ where v² > 0, the givens' ``values`` put in: a closed form on
+    another branch (a √x taken for x < 0, an asin past its range) is never used. True when
+    symbols remain (nothing to compare) or no such point is found.
+
+    >>> x_0 = sympy.Rational(1, 10)
+    >>> f = 4 * (x_0**2 - X**2)  # v² of a = −4x from rest at x₀; v < 0 moving in
+    >>> right = (sympy.pi / 2 - sympy.asin(X / x_0)) / 2  # −½ ∫ dx/√(x₀² − x²) from x₀
+    >>> _matches_quadrature(right, f, -1, x_0, {}), _matches_quadrature(-right, f, -1, x_0, {})
+    (True, False)
+    """
+    from dynsolve.numbers import quadratures
+
+    rule = dict(values)
+    f, law, start = (e.xreplace(rule) for e in (squared, closed, sympy.Integer(0) + x0))
+    if (f.free_symbols | law.free_symbols) - {X} or start.free_symbols:
+        return True
+    at_start = real_value(start) or 0.0
+    reach = abs(at_start) or 1.0
+    xi = sympy.Symbol("ξ", real=True)
+    for halving in range(60):
+        point = sympy.Float(at_start + sense * reach / 2 ** (halving + 1), 30)
+        speed_squared = real_value(f.xreplace({X: point}))
+        if speed_squared is None or speed_squared <= 0:
+            continue
+        found = real_value(law.xreplace({X: point}))
+        integral = sympy.Integral(sense / sympy.sqrt(f.xreplace({X: xi})), (xi, start, point))
+        expected = real_value(quadratures(integral))
+        if found is None or expected is None:
+            return False
+        return abs(found - expected) <= 1e-9 * max(abs(expected), 1e-300)
+    return True
 
 
 def _signed_stand_ins(
