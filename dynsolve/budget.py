@@ -140,15 +140,16 @@ def _outcomes(receiver: Connection, worker: Any, budget: Budget, count: int) -> 
     """The outcome of each job the worker runs, ending at the first that stops the worker."""
     for _ in range(count):
         started = time.monotonic()
-        backstop = started + max(budget.seconds * WALL_FACTOR, budget.seconds + WALL_SLACK)
-        used_before = cpu_seconds(worker.pid)
+        cpu_before = cpu_seconds(worker.pid)  # None: no CPU clock of the worker, wall time
+        backstop = started + (
+            budget.seconds
+            if cpu_before is None
+            else max(budget.seconds * WALL_FACTOR, budget.seconds + WALL_SLACK)
+        )
         last_step = "starting"
         while True:
             now = time.monotonic()
-            used = cpu_seconds(worker.pid)
-            if used is None or used_before is None:  # no CPU clock of the worker: wall time
-                used, used_before, backstop = now - started, 0.0, started + budget.seconds
-            if used - used_before >= budget.seconds:
+            if _used(worker.pid, cpu_before, now - started) >= budget.seconds:
                 yield _over_time(budget, last_step)
                 return
             if now >= backstop:
@@ -170,6 +171,16 @@ def _outcomes(receiver: Connection, worker: Any, budget: Budget, count: int) -> 
                 return
             yield payload if kind == "done" else WorkerFailed(payload)
             break
+
+
+def _used(pid: int | None, cpu_before: float | None, wall: float) -> float:
+    """The seconds of the budget a job has used: the worker's CPU seconds since
+    ``cpu_before``, or ``wall`` seconds where there is no CPU clock of it (0 once the
+    worker is gone: its end is read from the pipe)."""
+    if cpu_before is None:
+        return wall
+    now = cpu_seconds(pid)
+    return 0.0 if now is None else now - cpu_before
 
 
 _TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
