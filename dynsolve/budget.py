@@ -1,9 +1,14 @@
-"""The run budget: one unit of work in a worker process, stopped past its wall time or memory.
+"""The run budget: one unit of work in a worker process, stopped past its CPU time or memory.
 
 The worker is a child process (``fork`` on Linux, so it starts with the parent's
 modules already imported; ``spawn`` elsewhere), so parsing, solving, symbolic
 simplification, the numeric fallbacks and rendering are all covered, on every
-platform, without signals. Where ``resource.RLIMIT_AS`` exists the child's
+platform, without signals. The time budget counts the worker's CPU seconds (read from
+``/proc`` where it exists), so a busy machine, which slows the wall clock, never turns
+a solve that would finish into a failure; a generous wall-clock backstop
+(:data:`WALL_FACTOR` times the budget, at least :data:`WALL_SLACK` s more) still stops
+a worker that hangs without using the CPU. Where ``/proc`` is missing (macOS,
+Windows) the budget is wall time. Where ``resource.RLIMIT_AS`` exists the child's
 address space is capped, so an allocation past the budget raises MemoryError
 there instead of swapping the machine. The child names the step it is in with
 :func:`step`; the parent keeps the latest name, kills the child at the deadline
@@ -16,6 +21,7 @@ and raises :class:`OverBudget` naming that step.
 from __future__ import annotations
 
 import multiprocessing
+import os
 import sys
 import time
 import traceback
@@ -33,6 +39,10 @@ DEFAULT_MEGABYTES = 2048  # address space of the worker, libraries included
 # only spawn (a fresh interpreter) as a safe choice
 START_METHOD = "fork" if sys.platform.startswith("linux") else "spawn"
 _KILL_GRACE = 2.0  # seconds the child gets to exit after being terminated
+WALL_FACTOR = 10.0  # the wall-clock backstop: this many times the CPU budget …
+WALL_SLACK = 10.0  # … and at least this many seconds more than it (a load of 9 on 2
+# cores gives a worker about a fifth of a core: 1 s of CPU takes some 5 s)
+_POLL = 0.05  # wall seconds between two reads of the worker's CPU time
 
 _Result = TypeVar("_Result")
 _channel: Connection | None = None  # set in the worker: where step names go
@@ -42,7 +52,7 @@ _out_of_memory_in = [""]  # the step a MemoryError came from, in the worker
 
 @dataclass(frozen=True)
 class Budget:
-    """Wall-clock seconds and megabytes of address space for one run (None: no memory cap)."""
+    """CPU seconds and megabytes of address space for one run (None: no memory cap)."""
 
     seconds: float = DEFAULT_SECONDS
     megabytes: int | None = DEFAULT_MEGABYTES
@@ -129,13 +139,24 @@ def run_each(
 def _outcomes(receiver: Connection, worker: Any, budget: Budget, count: int) -> Iterator[Any]:
     """The outcome of each job the worker runs, ending at the first that stops the worker."""
     for _ in range(count):
-        deadline = time.monotonic() + budget.seconds
+        started = time.monotonic()
+        cpu_before = cpu_seconds(worker.pid)  # None: no CPU clock of the worker, wall time
+        backstop = started + (
+            budget.seconds
+            if cpu_before is None
+            else max(budget.seconds * WALL_FACTOR, budget.seconds + WALL_SLACK)
+        )
         last_step = "starting"
         while True:
-            left = deadline - time.monotonic()
-            if left <= 0 or not receiver.poll(left):
+            now = time.monotonic()
+            if _used(worker.pid, cpu_before, now - started) >= budget.seconds:
                 yield _over_time(budget, last_step)
                 return
+            if now >= backstop:
+                yield _over_wall_time(budget, now - started, last_step)
+                return
+            if not receiver.poll(min(_POLL, backstop - now)):
+                continue
             try:
                 kind, payload = receiver.recv()
             except EOFError:
@@ -150,6 +171,37 @@ def _outcomes(receiver: Connection, worker: Any, budget: Budget, count: int) -> 
                 return
             yield payload if kind == "done" else WorkerFailed(payload)
             break
+
+
+def _used(pid: int | None, cpu_before: float | None, wall: float) -> float:
+    """The seconds of the budget a job has used: the worker's CPU seconds since
+    ``cpu_before``, or ``wall`` seconds where there is no CPU clock of it (0 once the
+    worker is gone: its end is read from the pipe)."""
+    if cpu_before is None:
+        return wall
+    now = cpu_seconds(pid)
+    return 0.0 if now is None else now - cpu_before
+
+
+_TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+
+def cpu_seconds(pid: int | None) -> float | None:
+    """The CPU seconds (user + system) process ``pid`` has used, from ``/proc`` (Linux);
+    None where that cannot be read (another platform, or the process is gone).
+
+    >>> cpu_seconds(os.getpid()) is None or cpu_seconds(os.getpid()) >= 0
+    True
+    """
+    if pid is None:
+        return None
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as stat:
+            fields = stat.read().rsplit(b")", 1)[1].split()
+    except (OSError, IndexError):
+        return None
+    # after the command's ")": state is field 3, utime 14 and stime 15 (man 5 proc)
+    return (int(fields[11]) + int(fields[12])) / _TICKS
 
 
 def _work_in_child(
@@ -217,7 +269,18 @@ def _over_time(budget: Budget, step: str) -> OverBudget:
         else "try --mode numeric, or a larger --time-budget"
     )
     return OverBudget(
-        f"stopped after the time budget of {budget.seconds:g} s, while {step}", step, hint=hint
+        f"stopped after the time budget of {budget.seconds:g} s, while {step}",
+        step,
+        hint=hint,
+    )
+
+
+def _over_wall_time(budget: Budget, seconds: float, step: str) -> OverBudget:
+    return OverBudget(
+        f"stopped after {seconds:.3g} s of wall time, the backstop against a hang (the time "
+        f"budget is {budget.seconds:g} s of CPU), while {step}",
+        step,
+        hint="the worker was waiting, not computing: try again, or a larger --time-budget",
     )
 
 

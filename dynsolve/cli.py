@@ -110,7 +110,7 @@ TimeBudget = Annotated[
         "--time-budget",
         min=0.1,
         max=3600,
-        help="Seconds the whole run may take: parsing, solving, checks and output.",
+        help="CPU seconds the whole run may take: parsing, solving, checks and output.",
     ),
 ]
 MemoryBudget = Annotated[

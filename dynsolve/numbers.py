@@ -36,10 +36,48 @@ def _real_number(value: sympy.Expr) -> float | None:
     it is not real."""
     if value.free_symbols:
         return None
+    if value.has(sympy.Integral):
+        value = quadratures(value)
     number = complex(sympy.N(value, 30, maxn=MAX_DIGITS))
     if abs(number.imag) > IMAGINARY_TOLERANCE * abs(number.real):
         return None
     return number.real
+
+
+def quadratures(value: sympy.Expr, digits: int = 30) -> sympy.Expr:
+    """``value`` with each definite integral of numbers alone replaced by its quadrature
+    (mpmath's tanh-sinh to ``digits`` digits, which takes a 1/√ singularity at an end, as
+    ∫ dx/v has at a turning point): sympy's own evalf of such an integral substitutes into
+    the integrand at each node and takes seconds to minutes. An integral it cannot
+    evaluate so (nested, or an integrand mpmath cannot compute) is left as it is.
+
+    >>> u = sympy.Dummy("u")
+    >>> round(float(quadratures(sympy.Integral(1 / sympy.sqrt(1 - u**2), (u, 0, 1)))), 12)
+    1.570796326795
+    """
+    import mpmath
+
+    found: dict[sympy.Expr, sympy.Expr] = {}
+    for integral in value.atoms(sympy.Integral):
+        limits = integral.limits
+        if (
+            integral.free_symbols
+            or len(limits) != 1
+            or len(limits[0]) != 3
+            or integral.function.has(sympy.Integral)
+        ):
+            continue
+        variable, low, high = limits[0]
+        try:
+            f = sympy.lambdify(variable, integral.function, "mpmath")
+            with mpmath.workdps(digits):
+                ends = [mpmath.mpf(str(sympy.N(end, digits))) for end in (low, high)]
+                result = mpmath.quad(f, ends)
+        except (TypeError, ValueError, ArithmeticError, NameError):
+            continue
+        real, imaginary = (mpmath.nstr(part, digits) for part in (result.real, result.imag))
+        found[integral] = sympy.Float(real, digits) + sympy.I * sympy.Float(imaginary, digits)
+    return value.xreplace(found) if found else value
 
 
 SIMPLIFY_OPS = 40  # sympy.simplify, the last resort, only on forms at most this large

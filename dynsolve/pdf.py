@@ -1,8 +1,9 @@
 """Compile a LaTeX solution sheet to PDF with pdflatex (``-o sheet.pdf``).
 
 The document is dynsolve's own output (every spec text in it escaped); pdflatex runs
-with shell escape off, in a fresh temporary folder, non-interactively, under a time
-limit.
+with shell escape off, in a fresh temporary folder, non-interactively, under a limit of
+CPU seconds (``RLIMIT_CPU``, where the platform has it: a busy machine slows the wall
+clock, not the work) with a generous wall-clock backstop against a hang.
 
 >>> import shutil
 >>> shutil.which("pdflatex") is None or compile_pdf(
@@ -13,14 +14,16 @@ True
 from __future__ import annotations
 
 import shutil
+import signal
 import subprocess
 import tempfile
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
 
 from dynsolve.errors import DynsolveError
 
-PDFLATEX_SECONDS = 60
+PDFLATEX_SECONDS = 60  # CPU seconds per pass (wall seconds where there is no RLIMIT_CPU)
+WALL_FACTOR = 10  # the wall-clock backstop, in CPU limits
 PACKAGES = "texlive-latex-base texlive-latex-recommended texlive-pictures texlive-science"
 
 
@@ -44,20 +47,28 @@ def compile_pdf(latex: str, files: Mapping[str, bytes] | None = None) -> bytes:
         for name, data in (files or {}).items():
             (Path(folder) / Path(name).name).write_bytes(data)
         command = [pdflatex, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error"]
+        limit = cpu_limit()
         for _ in range(2):
             try:
                 done = subprocess.run(
                     [*command, source.name],
                     cwd=folder,
                     capture_output=True,
-                    timeout=PDFLATEX_SECONDS,
+                    timeout=PDFLATEX_SECONDS * (WALL_FACTOR if limit else 1),
                     check=False,
                     stdin=subprocess.DEVNULL,
+                    preexec_fn=limit,  # only sets a limit: safe between fork and exec
                 )
             except subprocess.TimeoutExpired:
                 raise PdfError(
-                    f"pdflatex ran past {PDFLATEX_SECONDS} s", hint="write the .tex instead"
+                    f"pdflatex ran past {PDFLATEX_SECONDS * (WALL_FACTOR if limit else 1)} s "
+                    "of wall time",
+                    hint="write the .tex instead",
                 ) from None
+            if limit is not None and done.returncode == -getattr(signal, "SIGXCPU", 0):
+                raise PdfError(
+                    f"pdflatex ran past {PDFLATEX_SECONDS} s of CPU", hint="write the .tex instead"
+                )
             if done.returncode != 0:
                 log = done.stdout.decode("utf-8", errors="replace")
                 first = next((line for line in log.splitlines() if line.startswith("!")), "")
@@ -69,3 +80,19 @@ def compile_pdf(latex: str, files: Mapping[str, bytes] | None = None) -> bytes:
                     else "write the .tex with -o sheet.tex and compile it yourself",
                 )
         return (Path(folder) / "sheet.pdf").read_bytes()
+
+
+def cpu_limit() -> Callable[[], None] | None:
+    """A function that caps the CPU seconds of the process it runs in (pdflatex, before it
+    starts), or None where the platform has no RLIMIT_CPU (Windows)."""
+    try:
+        import resource
+    except ImportError:
+        return None
+    if not hasattr(resource, "RLIMIT_CPU"):
+        return None
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_CPU, (PDFLATEX_SECONDS, PDFLATEX_SECONDS + 5))
+
+    return limit

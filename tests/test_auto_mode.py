@@ -47,3 +47,25 @@ def test_cli_accepts_mode_auto_and_says_what_ran() -> None:
     assert result.exit_code == 0, result.output
     assert "precision" in result.output
     assert "escalated to exact" in " ".join(result.output.split())
+
+
+def test_exact_past_its_share_of_the_budget_keeps_the_30_digit_answers() -> None:
+    # The same cancellation (z = 1/c = 1e10 exactly), with an exact solve that never ends
+    # (a stand-in for a symbolic cliff): auto must not fail the whole solve, but keep the
+    # 30-digit re-solve's answer, which has the digits float64 lost, and say so.
+    from dynsolve.pipeline import solve_spec
+    from dynsolve.precision import EXACT_SHARE, solve_auto
+    from dynsolve.spec.parser import parse_file
+
+    def endless_exact(spec, options):  # type: ignore[no-untyped-def]
+        if options.mode == "exact":
+            while True:
+                sum(range(1000))
+        return solve_spec(spec, options)
+
+    options = SolveOptions(mode="auto", time_budget=0.2)
+    auto = solve_auto(parse_file(DATA / "cancellation.dyn"), options, endless_exact)
+    assert {r.name: r.value for r in auto.answers}["z"] == pytest.approx(1e10, rel=1e-12)
+    detail = _precision(auto)
+    assert "ran past its share of the budget" in detail
+    assert f"({EXACT_SHARE * 0.2:g} s CPU)" in detail and "30-digit" in detail

@@ -1,4 +1,4 @@
-"""The run budget: wall time and memory for the whole run, the step named when it runs out.
+"""The run budget: CPU time and memory for the whole run, the step named when it runs out.
 
 The CLI tests go through CliRunner (in-process; the worker is forked from the test
 process). drag_fall takes about 4 s on this machine, far beyond half a second.
@@ -6,6 +6,7 @@ process). drag_fall takes about 4 s on this machine, far beyond half a second.
 
 from __future__ import annotations
 
+import os
 import shutil
 import threading
 import time
@@ -36,6 +37,15 @@ def _sleep_in_a_step(seconds: float) -> str:
     return "awake"
 
 
+def _burn_in_a_step(seconds: float) -> str:
+    """Compute (use the CPU) for ``seconds`` of this process's CPU time."""
+    with step("counting sheep"):
+        deadline = time.process_time() + seconds
+        while time.process_time() < deadline:
+            sum(range(1000))
+    return "tired"
+
+
 def _allocate(megabytes: int) -> int:
     with step("allocating"):
         return len(bytearray(megabytes * 1024 * 1024))
@@ -48,10 +58,25 @@ def _raise() -> None:
 def test_a_long_run_is_stopped_and_names_its_step():
     started = time.monotonic()
     with pytest.raises(OverBudget, match=r"time budget of 0\.5 s, while counting sheep") as info:
-        run(_sleep_in_a_step, (30.0,), Budget(seconds=0.5))
+        run(_burn_in_a_step, (30.0,), Budget(seconds=0.5))
     assert time.monotonic() - started < 10
     assert info.value.step == "counting sheep"
     assert "--mode numeric" in info.value.hint and "--time-budget" in info.value.hint
+
+
+@pytest.mark.skipif(budget.cpu_seconds(os.getpid()) is None, reason="no /proc: wall time")
+def test_waiting_for_the_cpu_does_not_spend_the_budget():
+    # a worker that waits (as on a busy machine, where it waits for a core) past its
+    # budget of CPU seconds is not stopped: the budget counts the CPU it used
+    assert run(_sleep_in_a_step, (1.5,), Budget(seconds=0.5)) == "awake"
+
+
+def test_a_hang_is_stopped_by_the_wall_clock_backstop():
+    started = time.monotonic()
+    with pytest.raises(OverBudget, match=r"backstop against a hang .* while counting sheep"):
+        run(_sleep_in_a_step, (60.0,), Budget(seconds=0.1))
+    # the backstop: 10 × 0.1 s, at least 10 s more than the budget
+    assert 10.0 <= time.monotonic() - started < 30
 
 
 def test_a_run_within_the_budget_returns_its_result():
@@ -66,8 +91,8 @@ def test_a_memory_hog_is_stopped():
 
 
 def test_each_job_gets_the_budget_and_a_stopped_worker_is_replaced():
-    outcomes = list(run_each(_sleep_in_a_step, [(0.01,), (30.0,), (0.01,)], Budget(seconds=1)))
-    assert outcomes[0] == "awake" and outcomes[2] == "awake"
+    outcomes = list(run_each(_burn_in_a_step, [(0.01,), (30.0,), (0.01,)], Budget(seconds=1)))
+    assert outcomes[0] == "tired" and outcomes[2] == "tired"
     assert isinstance(outcomes[1], OverBudget)
 
 
@@ -86,7 +111,9 @@ def test_steps_nest_and_restore():
 
 def _nested_steps() -> None:
     with step("outer"), step("inner"):
-        time.sleep(30)
+        deadline = time.process_time() + 30
+        while time.process_time() < deadline:
+            sum(range(1000))
 
 
 def test_solve_past_the_time_budget_exits_2_naming_the_step():
@@ -103,7 +130,7 @@ def test_check_goes_on_past_a_spec_over_the_budget(tmp_path: Path):
     result = cli("check", str(tmp_path), "--time-budget", "1")
     out = " ".join(result.stdout.split())
     assert result.exit_code == ExitCode.BAD_INPUT
-    assert "a_slow.dyn" in out and "time budget of 1 s" in out
+    assert "a_slow.dyn" in out and "time budget of 1 s" in out, out
     assert result.stdout.strip().splitlines()[-1] == "1 passed, 0 failed, 1 malformed"
 
 
@@ -144,4 +171,4 @@ def test_the_spawn_start_method_of_macos_and_windows_works(monkeypatch: pytest.M
     # Hibbeler 17.11: T = 106 N (14715/139 N by hand, see tests/test_cli.py)
     assert '"T"' in outcome.text and "105.86" in outcome.text
     with pytest.raises(OverBudget, match="while counting sheep"):
-        run(_sleep_in_a_step, (60.0,), Budget(seconds=8))  # spawn imports sympy first
+        run(_burn_in_a_step, (60.0,), Budget(seconds=8))  # spawn imports sympy first

@@ -219,3 +219,25 @@ def test_a_misspelt_given_is_a_warning(workdir: Path) -> None:
     (workdir / "t.dyn").write_text(text)
     data = json.loads(run("solve", "t.dyn", "-f", "json").stdout)
     assert "'omga' (line 6) looks like a misspelling of 'omega'" in " ".join(data["warnings"])
+
+
+def test_pdflatex_is_limited_in_cpu_seconds_not_wall_time(monkeypatch: pytest.MonkeyPatch) -> None:
+    # issue 25, item 12: on a busy machine (load 9 on 2 cores) a wall-clock limit stopped
+    # pdflatex; the limit is its CPU seconds (RLIMIT_CPU), with a wall-clock backstop of
+    # 10 times that against a hang. A process that computes past the limit gets SIGXCPU.
+    import signal
+    import subprocess
+    import sys
+
+    from dynsolve import pdf
+
+    monkeypatch.setattr(pdf, "PDFLATEX_SECONDS", 1)
+    limit = pdf.cpu_limit()
+    if limit is None:
+        pytest.skip("no RLIMIT_CPU on this platform")
+    burn = [sys.executable, "-c", "while True: pass"]
+    done = subprocess.run(burn, preexec_fn=limit, timeout=60, check=False)
+    assert done.returncode == -signal.SIGXCPU
+    # a process that waits (as behind others for a core) is not stopped by the limit
+    wait = [sys.executable, "-c", "import time; time.sleep(1.5)"]
+    assert subprocess.run(wait, preexec_fn=limit, timeout=60, check=False).returncode == 0

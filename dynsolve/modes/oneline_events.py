@@ -341,6 +341,8 @@ def _extreme(
     if law is None:
         if motion.given == "a(x)" and quantity == "x" and end is None:
             return _swing(largest, motion, x0, values)
+        if motion.given == "a(x)" and quantity == "v" and end is None:
+            return _speed_extreme(largest, motion, x0, values)
         raise ValueError(f"{quantity}(t) could not be found from {motion.given}")
     if end is None:
         found = extreme_time(law, t0, values, largest)
@@ -393,6 +395,105 @@ def _swing(largest: bool, motion: Motion, x0: sympy.Expr, values: Values) -> Eve
     behind = _turning_x(sympy.Integer(0), motion, x0, values, back=True)
     rule += " behind x₀, reached after turning back (a points back at the first turn)"
     return Event(behind.expr, rule, (*ahead.discarded, *behind.discarded))
+
+
+def _speed_extreme(largest: bool, motion: Motion, x0: sympy.Expr, values: Values) -> Event:
+    """v's largest or smallest value under an a(x) law, from v² = f(x) alone (when x(t)
+    is not known as a formula): v is stationary where a(x) = 0 (dv/dt = a), a maximum
+    where also d²v/dt² = a'(x) v < 0 (a minimum where > 0). Each such point is passed in
+    the senses the motion has there: the start's, from x₀ to the turning point ahead (or
+    for ever); the other, coming back when a at that turning point points back, as far as
+    the turning point behind (or for ever); both, between two turning points.
+
+    >>> k = sympy.Integer(4)
+    >>> from dynsolve.principles.rectilinear import integrate_motion
+    >>> zero = sympy.Integer(0)
+    >>> motion = integrate_motion(-k * X, "a(x)", zero, sympy.Integer(1), zero, invert=False)
+    >>> _speed_extreme(True, motion, sympy.Integer(1), {}).expr  # v = ω x₀ at x = 0
+    2
+    """
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
+
+    a = motion.formulas["a(x)"]
+    squared = tidy(motion.formulas["v(x)"] ** 2)
+    sense = _sign(motion.formulas["v(x)"].subs(X, x0), values) or _sign(a.subs(X, x0), values)
+    if not sense:
+        raise ValueError("the particle starts at rest where a = 0: it never moves")
+    segments = _passes(motion, x0, sense, values)
+    try:
+        with time_budget(0.5):
+            roots = [tidy(r) for r in sympy.solve(a, X, simplify=False)]
+    except (NotImplementedError, BudgetExceeded):
+        raise ValueError("sympy cannot solve a(x) = 0 for the stationary points of v") from None
+    slope = sympy.diff(a, X)
+    word = "largest" if largest else "smallest"
+    wanted = -1 if largest else 1  # the sign of d²v/dt² = a'(x) v at the extreme
+    candidates: list[sympy.Expr] = []
+    discarded: list[tuple[sympy.Expr, str]] = []
+    for root in roots:
+        if _sign(root, values) is None:
+            discarded.append((root, "not real"))
+            continue
+        senses = [segment[0] for segment in segments if _between(root, segment, values)]
+        if not senses:
+            discarded.append((root, "a = 0 where the motion never goes"))
+        for each in dict.fromkeys(senses):
+            speed = tidy(each * sympy.sqrt(squared.subs(X, root)))
+            if _sign(slope.subs(X, root) * each, values) == wanted:
+                candidates.append(speed)
+            else:
+                discarded.append((speed, f"not a {'maximum' if largest else 'minimum'} of v"))
+    if not candidates:
+        raise ValueError(
+            f"v has no {word} value after t₀ (no point where a = 0 is passed with "
+            f"d²v/dt² {'<' if largest else '>'} 0)"
+        )
+    best = candidates[0]
+    for speed in candidates[1:]:
+        if _sign(speed - best, values) == -wanted:
+            discarded.append((best, f"not the {word}"))
+            best = speed
+        else:
+            discarded.append((speed, f"not the {word}"))
+    rule = (
+        f"v is {word} where a(x) = 0 and d²v/dt² = a'(x) v {'<' if largest else '>'} 0, "
+        "v = ±√(v₀² + 2 ∫ a dx) there, in the sense the motion passes it"
+    )
+    return Event(best, rule, tuple(discarded))
+
+
+Segment = tuple[int, sympy.Expr, sympy.Expr | None]  # (sense, from, to; None: for ever)
+
+
+def _passes(motion: Motion, x0: sympy.Expr, sense: int, values: Values) -> list[Segment]:
+    """The stretches of x an a(x) motion covers after t₀, each with its sense: from x₀ to
+    the turning point ahead; back to the turning point behind when a points back at the
+    first; forward again between the two when a points back at both (an oscillation)."""
+    a = motion.formulas["a(x)"]
+    try:
+        ahead = _turning_x(sympy.Integer(0), motion, x0, values).expr
+    except ValueError:
+        return [(sense, x0, None)]
+    segments: list[Segment] = [(sense, x0, ahead)]
+    if _sign(a.subs(X, ahead), values) != -sense:
+        return segments  # it stops at the turning point (or a does not bring it back)
+    try:
+        behind = _turning_x(sympy.Integer(0), motion, x0, values, back=True).expr
+    except ValueError:
+        return [*segments, (-sense, ahead, None)]
+    segments.append((-sense, ahead, behind))
+    if _sign(a.subs(X, behind), values) == sense:
+        segments.append((sense, behind, ahead))
+    return segments
+
+
+def _between(point: sympy.Expr, segment: Segment, values: Values) -> bool:
+    """Whether ``point`` lies strictly inside ``segment``, going from its start in its
+    sense (to its end, or for ever when it has none)."""
+    sense, start, end = segment
+    if _sign(point - start, values) != sense:
+        return False
+    return end is None or _sign(end - point, values) == sense
 
 
 def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values) -> Event:

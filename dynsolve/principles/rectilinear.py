@@ -100,14 +100,16 @@ def integrate_motion(
             keep("a(t)", expr.subs(V, found["v(t)"]), "a(t) = a(v(t))")
     elif kind == "a(x)":
         keep("a(x)", expr, "given")
-        squared = v0**2 + 2 * sympy.integrate(expr.subs(X, u), (u, x0, X))
+        squared = v0**2 + 2 * _definite(expr.subs(X, u), u, x0, X)
         sign = _start_sense(v0, expr.subs(X, x0), values or {})
         keep("v(x)", sign * sympy.sqrt(squared), "v² = v₀² + 2 ∫ a dx")
-        keep(
-            "t(x)",
-            t0 + sympy.integrate(1 / found["v(x)"].subs(X, u), (u, x0, X)),
-            "t = t₀ + ∫ dx/v",
-        )
+        closed = _time_of_x(squared, sign, x0, values or {})
+        if closed is not None:
+            keep("t(x)", t0 + closed, "t = t₀ + ∫ dx/v")
+        else:  # left as the integral: its values come by quadrature
+            xi = sympy.Symbol("ξ", real=True)  # shown as the integral's variable
+            integral = sympy.Integral(sign / sympy.sqrt(squared.subs(X, xi)), (xi, x0, X))
+            keep("t(x)", t0 + integral, QUADRATURE)
         keep("x(t)", _invert(found["t(x)"], X, T, t0, x0), "x(t) by inverting t(x)")
         if "x(t)" in found:
             keep("v(t)", sympy.diff(found["x(t)"], T), "v = dx/dt")
@@ -118,6 +120,150 @@ def integrate_motion(
         a = expr if kind == "a(t)" else None
         _time_inverses(found, keep, a, t0, invert, quick, values or {})
     return Motion(kind, found, tuple(steps), invert)
+
+
+QUADRATURE = (
+    "t = t₀ + ∫ dx/v: no closed form within the budget, so its values come by quadrature "
+    "(mpmath's tanh-sinh, which takes the 1/√ ends at turning points)"
+)
+INTEGRATE_BUDGET = 0.5  # CPU seconds for sympy to integrate a(x) or 1/v(x) in closed form
+_ELEMENTARY = (
+    sympy.exp, sympy.log, sympy.sin, sympy.cos, sympy.tan, sympy.asin, sympy.acos, sympy.atan,
+    sympy.sinh, sympy.cosh, sympy.tanh, sympy.asinh, sympy.acosh, sympy.atanh,
+)  # fmt: skip
+
+
+def _definite(
+    integrand: sympy.Expr, u: sympy.Symbol, low: sympy.Expr, high: sympy.Expr
+) -> sympy.Expr:
+    """∫ integrand du from ``low`` to ``high``: sympy's closed form within
+    :data:`INTEGRATE_BUDGET` CPU seconds, else the integral itself (valued by quadrature).
+
+    >>> u = sympy.Dummy("u", real=True)
+    >>> _definite(-4 * u, u, sympy.Integer(0), X)
+    -2*x**2
+    """
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
+
+    try:
+        with time_budget(INTEGRATE_BUDGET):
+            found = sympy.integrate(integrand, (u, low, high))
+    except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
+        return sympy.Integral(integrand, (u, low, high))
+    return found if _elementary(found) else sympy.Integral(integrand, (u, low, high))
+
+
+def _elementary(expr: sympy.Expr) -> bool:
+    """Whether ``expr`` is a closed form built of powers and elementary functions only
+    (no Integral, Piecewise, polar_lift, hypergeometric or imaginary unit)."""
+    if expr.has(sympy.I) or expr.has(sympy.Integral):
+        return False
+    return all(isinstance(f, _ELEMENTARY) for f in expr.atoms(sympy.Function))
+
+
+def _time_of_x(
+    squared: sympy.Expr, sense: int, x0: sympy.Expr, values: Values
+) -> sympy.Expr | None:
+    """t − t₀ = ∫ dx/v from x₀ to x in closed form, where v² = ``squared`` and v has the
+    sign ``sense``; None when sympy finds none of elementary functions within
+    :data:`INTEGRATE_BUDGET` CPU seconds (the caller leaves the integral for quadrature).
+
+    v² is first written as a ratio of polynomials in x whose coefficients are stand-ins
+    of known sign (m a = −k x gives k/m, which sympy integrates to asin only when it
+    sees a positive coefficient; at 1e-9 kg its floats would cost it tens of seconds).
+
+    >>> k, m, x_0 = sympy.symbols("k m x_0", positive=True)
+    >>> _time_of_x(k / m * (x_0**2 - X**2), -1, x_0, {})
+    sqrt(m)*(-asin(x/x_0) + pi/2)/sqrt(k)
+    """
+    from dynsolve.solver.blocks import BudgetExceeded, time_budget
+
+    u = sympy.Dummy("u", real=True)
+    canonical, back = _signed_stand_ins(squared.subs(X, u), u, values)
+    try:
+        with time_budget(INTEGRATE_BUDGET):
+            antiderivative = sympy.integrate(1 / sympy.sqrt(canonical), u)
+    except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
+        return None
+    if not _elementary(antiderivative):
+        return None
+    antiderivative = antiderivative.xreplace(back)
+    closed = tidy(sense * (antiderivative.subs(u, X) - antiderivative.subs(u, x0)))
+    return closed if _matches_quadrature(closed, squared, sense, x0, values) else None
+
+
+def _matches_quadrature(
+    closed: sympy.Expr, squared: sympy.Expr, sense: int, x0: sympy.Expr, values: Values
+) -> bool:
+    """Whether the closed form of t − t₀ agrees (to 1e-9) with the quadrature of ∫ dx/v at a
+    point just ahead of x₀ where v² > 0, the givens' ``values`` put in: a closed form on
+    another branch (a √x taken for x < 0, an asin past its range) is never used. True when
+    symbols remain (nothing to compare) or no such point is found.
+
+    >>> x_0 = sympy.Rational(1, 10)
+    >>> f = 4 * (x_0**2 - X**2)  # v² of a = −4x from rest at x₀; v < 0 moving in
+    >>> right = (sympy.pi / 2 - sympy.asin(X / x_0)) / 2  # −½ ∫ dx/√(x₀² − x²) from x₀
+    >>> _matches_quadrature(right, f, -1, x_0, {}), _matches_quadrature(-right, f, -1, x_0, {})
+    (True, False)
+    """
+    from dynsolve.numbers import quadratures
+
+    rule = dict(values)
+    f, law, start = (e.xreplace(rule) for e in (squared, closed, sympy.Integer(0) + x0))
+    if (f.free_symbols | law.free_symbols) - {X} or start.free_symbols:
+        return True
+    at_start = real_value(start) or 0.0
+    reach = abs(at_start) or 1.0
+    xi = sympy.Symbol("ξ", real=True)
+    for halving in range(60):
+        point = sympy.Float(at_start + sense * reach / 2 ** (halving + 1), 30)
+        speed_squared = real_value(f.xreplace({X: point}))
+        if speed_squared is None or speed_squared <= 0:
+            continue
+        found = real_value(law.xreplace({X: point}))
+        integral = sympy.Integral(sense / sympy.sqrt(f.xreplace({X: xi})), (xi, start, point))
+        expected = real_value(quadratures(integral))
+        if found is None or expected is None:
+            return False
+        return abs(found - expected) <= 1e-9 * max(abs(expected), 1e-300)
+    return True
+
+
+def _signed_stand_ins(
+    f: sympy.Expr, u: sympy.Symbol, values: Values
+) -> tuple[sympy.Expr, dict[sympy.Symbol, sympy.Expr]]:
+    """``f`` as a ratio of polynomials in ``u`` with each coefficient c replaced by ±p, p a
+    positive stand-in, the sign that of c at ``values`` (by assumptions without them);
+    and the stand-ins' values. ``f`` as it is (no stand-ins) when it is not such a ratio
+    or a sign cannot be told.
+
+    >>> k, m = sympy.symbols("k m", positive=True)
+    >>> u = sympy.Symbol("u")
+    >>> canonical, back = _signed_stand_ins(1 - k * u**2 / m, u, {})  # (m − k u²)/m
+    >>> sorted(back.values(), key=str), canonical.xreplace(back)
+    ([k, m, m], (-k*u**2 + m)/m)
+    """
+    numerator, denominator = sympy.fraction(sympy.together(f))
+    try:
+        polys = [sympy.Poly(numerator, u), sympy.Poly(denominator, u)]
+    except sympy.PolynomialError:
+        return f, {}
+    back: dict[sympy.Symbol, sympy.Expr] = {}
+    sides = []
+    for poly in polys:
+        side = sympy.Integer(0)
+        for (power,), coefficient in poly.terms():
+            try:
+                sign = _sign(coefficient, values)
+            except ValueError:
+                return f, {}
+            if not sign:
+                return f, {}
+            stand_in = sympy.Dummy("p", positive=True)
+            back[stand_in] = sign * coefficient
+            side += sign * stand_in * u**power
+        sides.append(side)
+    return sides[0] / sides[1], back
 
 
 def _time_inverses(
