@@ -27,7 +27,7 @@ from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
-from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
+from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem, check_find_names
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import abs_resolved, real_value, tidy, tidying_lightly
 from dynsolve.quantities import convert
@@ -117,6 +117,8 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
             step("building the equations"),
             light_tidying(options is not None and options.mode == "numeric"),
         ):
+            if spec.kinematics or spec.scene:
+                check_find_names(spec)
             if spec.kinematics:
                 options = options or SolveOptions()
                 return solve_problem(_kinematics_problem(spec, options), options)
