@@ -50,7 +50,7 @@ class Signature:
     """What must not change between the base problem and a variant."""
 
     status: str
-    assumptions: tuple[tuple[str, bool], ...]
+    assumptions: tuple[tuple[str, str], ...]  # name, "passed", "failed" or "not_run"
     failed: tuple[str, ...]  # checks that fail (answer key left out)
 
     def differs(self, other: Signature, allow_changes: bool = False) -> str:
@@ -82,8 +82,8 @@ def signature(solution: Solution) -> Signature:
     """
     return Signature(
         solution.status,
-        tuple((a.name, a.holds) for a in solution.assumptions),
-        tuple(c.name for c in solution.checks if not c.passed and not c.name.startswith("answer ")),
+        tuple((a.name, a.status) for a in solution.assumptions),
+        tuple(c.name for c in solution.checks if c.failed and not c.name.startswith("answer ")),
     )
 
 
