@@ -1366,7 +1366,15 @@ def _literal_value(expr: Expr) -> Fraction | None:
 
 def _finish(parts: _Sections, file: str, lines: Mapping[str, int]) -> Spec:
     """The sections frozen into a Spec; ``lines`` are their headers' lines. Sections no
-    front end reads together are an error, never one of them silently ignored."""
+    front end reads together are an error, never one of them silently ignored; so is a
+    section header with nothing under it."""
+    for key, line in lines.items():
+        if key in _FIELDS and key != "find" and not getattr(parts, _FIELDS[key]):
+            raise SpecError(
+                f"section '{key}:' is empty",
+                Position(file, line, 1),
+                hint=f"indent the lines of '{key}:' under it, or remove the header",
+            )
     if parts.scene and parts.kinematics:
         raise SpecError(
             f"a scene: section cannot yet be combined with a kinematics: section "
