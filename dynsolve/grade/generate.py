@@ -62,10 +62,11 @@ class Signature:
         if other.status != self.status:
             return f"the solve ends '{other.status}', not '{self.status}'"
         mine = dict(self.assumptions)
-        for name, holds in other.assumptions:
-            if mine.get(name) != holds:
-                return f"assumption '{name}' {'holds' if holds else 'fails'} (base: " + (
-                    "not made)" if name not in mine else f"{'holds' if mine[name] else 'fails'})"
+        words = {"passed": "holds", "failed": "fails", "not_run": "is not decided"}
+        for name, status in other.assumptions:
+            if mine.get(name) != status:
+                return f"assumption '{name}' {words[status]} (base: " + (
+                    "not made)" if name not in mine else f"{words[mine[name]]})"
                 )
         if len(other.assumptions) != len(self.assumptions):
             return "its assumptions are not the base problem's"
