@@ -46,6 +46,28 @@ scene:
   gravity
 find: a = a_G(crate) [m/s^2]
 """
+# a drum lowering a block on a cord, every given a letter: Newton–Euler at state 1 has no
+# numbers, so whether the cord stays taut between the states is not checked
+CORD = """\
+given:
+  m_d: mass
+  k_O: length
+  r: length
+  m_b: mass
+  h: length
+scene:
+  point O: (0, 0)
+  body drum: mass m_d, gyration k_O, at (0, 0)
+  body block: particle, mass m_b, at (r, -2*r)
+  point A on drum: (r, 0)
+  pin drum at O
+  cord T: drum at A to block, down
+  gravity
+  travel block: by h, down
+find: v = speed(block) [m/s]
+"""
+# a disk that rolls between two states: the friction rolling needs is not computed
+ROLLS = ROOT / "problems" / "seed" / "rwe_seed_disk40lb.dyn"
 # a projectile: the motion is integrated, there are no equations for a structure check
 PROJECTILE = ROOT / "problems" / "kinematics" / "projectile.dyn"
 
@@ -66,6 +88,8 @@ CASES = [
     (TIPPING, "assumption: no tipping on base C", "cannot be decided"),
     (TIPPING, "assumption: contact at C kept", "cannot be decided"),
     (PROJECTILE, "structure", "no equations to solve"),
+    (CORD, "assumption: cord T taut between the states", "so it is not checked"),
+    (ROLLS, "assumption: no slip at C", "the friction it needs between the states"),
 ]
 
 
@@ -88,11 +112,9 @@ def test_a_check_that_did_not_run_is_marked_in_the_terminal(
 ):
     result = run(tmp_path, source)
     assert result.exit_code == 0
-    rows = [line for line in result.stdout.splitlines() if f"  {name}  " in line]
+    head = name[:30]  # a long name wraps in its column
+    rows = [line for line in result.stdout.splitlines() if f"  {head}" in line]
     assert rows and all(row.startswith("–") for row in rows), result.stdout
-    assert not any(
-        line.startswith("✓") and f" {name} " in line for line in result.stdout.splitlines()
-    )
 
 
 @pytest.mark.parametrize(("source", "name", "why"), CASES[:3])

@@ -1779,9 +1779,8 @@ def _between_states(
     for support in problem.scene.supports:
         if support.kind == "rolls":
             checks.append(
-                Assumption(
+                Assumption.undecided(
                     f"no slip at {support.name}",
-                    True,
                     "stated by 'rolls' for the whole travel; the friction it needs between "
                     "the states is not computed",
                 )
