@@ -162,7 +162,7 @@ def check(
             detail = (str(outcome).strip().splitlines() or ["no detail"])[-1]
             checks.append(FileCheck(str(file), (), (f"internal error: {detail}",)))
         else:
-            failed = tuple(c for c in outcome.checks if not c.passed)
+            failed = tuple(c for c in outcome.checks if c.failed)
             checks.append(FileCheck(str(file), failed, ()))
     return checks
 

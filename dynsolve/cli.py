@@ -1286,7 +1286,7 @@ def solve_and_check(file: Path, mode: str, budget: Budget) -> tuple[Check, ...] 
         solution = solve_file(file, _options(mode, budget))
     except DynsolveError as error:
         return _Refused(_reports(error, ("file", str(file))))
-    return tuple(c for c in solution.checks if not c.passed)
+    return tuple(c for c in solution.checks if c.failed)
 
 
 def _options(mode: str, budget: Budget) -> SolveOptions:

@@ -99,6 +99,10 @@ def called_functions(spec: Spec) -> set[str]:
 
 
 def _signed(target: Target) -> sympy.Expr:
+    """The target's value in a define line: steepest(C) kept as a call, put in once solved."""
+    if target.kind == "steepest":
+        assert isinstance(target.expr, sympy.Symbol)
+        return sympy.Function("steepest")(target.expr)
     if target.vector is not None:
         x, y = target.vector
         return sympy.sqrt(x**2 + y**2)

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
 import sympy
+from sympy.core.function import AppliedUndef
 
 from dynsolve.answer_key import compare, compare_magnitude, sense_word
 from dynsolve.budget import step
@@ -27,7 +28,7 @@ from dynsolve.errors import DynsolveError, Position, SpecError
 from dynsolve.format import NOT_FINITE, latex_number, latex_unit, pretty_unit, sig
 from dynsolve.format import quantity as format_quantity
 from dynsolve.magnitude import OutOfRange
-from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem
+from dynsolve.modes.equation_mode import GivenInfo, Target, build_problem, check_find_names
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import abs_resolved, real_value, tidy, tidying_lightly
 from dynsolve.quantities import convert
@@ -117,6 +118,8 @@ def solve_spec(spec: Spec, options: SolveOptions | None = None) -> Solution:
             step("building the equations"),
             light_tidying(options is not None and options.mode == "numeric"),
         ):
+            if spec.kinematics or spec.scene:
+                check_find_names(spec)
             if spec.kinematics:
                 options = options or SolveOptions()
                 return solve_problem(_kinematics_problem(spec, options), options)
@@ -455,6 +458,7 @@ def solve_problem(
     checks = (
         view.checks()
         + overflowed
+        + _valueless(problem, view, answers)
         + _undefined_equations(problem.system)
         + notes
         + second_methods
@@ -490,6 +494,35 @@ def solve_problem(
 
 
 MASS = Dim(0, 1, 0)
+
+
+def _valueless(
+    problem: SolvableProblem, view: _View, answers: tuple[AnswerRow, ...]
+) -> tuple[Check, ...]:
+    """A failed check for each answer that should be a number and is not: every letter
+    left in it has a value (or it calls a quantity left unevaluated), yet it has none. A
+    formula in symbolic givens, or in the motion's t (x(t)), is an answer as it is."""
+    from dynsolve.modes.kinematics_mode import VARIABLES
+
+    letters = {g.symbol for g in problem.givens if g.value is None}
+    letters |= {symbol for symbol, _ in VARIABLES.values()}
+    failed = []
+    for target, answer in zip(problem.targets, answers, strict=True):
+        if answer.value is not None or answer.shown == NOT_FINITE:
+            continue
+        value = view.computed(target.name)
+        if value is None:
+            why = "it was not determined"
+        else:
+            left = (sympy.Integer(0) + value).xreplace(view.knowns)
+            calls = sorted(str(c) for c in left.atoms(AppliedUndef))
+            if not calls and left.free_symbols and left.free_symbols <= letters:
+                continue
+            why = f"{', '.join(calls)} has no value" if calls else "it was not evaluated"
+        failed.append(
+            Check(f"value of {answer.name}", False, f"{answer.name} = {answer.shown}: {why}")
+        )
+    return tuple(failed)
 
 
 def _remarks(
@@ -610,7 +643,7 @@ def _at_zero(spec: Spec, given: str) -> Solution | None:
     except (DynsolveError, ValueError, OverflowError):
         return None
     checks = [c for c in solution.checks if c.name != "finite"]
-    if solution.status != "solved" or not all(c.passed for c in checks):
+    if solution.status != "solved" or any(c.failed for c in checks):
         return None
     return solution
 
@@ -713,10 +746,25 @@ def _releases(assumptions: tuple[Assumption, ...]) -> dict[str, str]:
 
 
 def _assumption_checks(assumptions: tuple[Assumption, ...]) -> tuple[Check, ...]:
-    """Final assumptions as checks; a failed friction trial that was re-solved passes."""
-    return tuple(
-        Check(f"assumption: {a.name}", a.holds or _resolved(a), a.detail) for a in assumptions
-    )
+    """Final assumptions as checks, agreeing with the assumptions table: one that could not
+    be decided did not run; one that failed and was re-solved the other way (a friction
+    trial, a cord found slack) passes as rejected, saying the answers are the re-solve's.
+
+    >>> rejected = Assumption("no slip at G", False, "|F| > μs N; re-solved with F = μk N")
+    >>> [(c.name, c.status) for c in _assumption_checks((rejected,))]
+    [('assumption: no slip at G rejected', 'passed')]
+    """
+    checks = []
+    for a in assumptions:
+        name = f"assumption: {a.name}"
+        if not a.decided:
+            checks.append(Check.not_run(name, a.detail))
+        elif _resolved(a):
+            detail = f"the answers are for the re-solved case: {a.detail}"
+            checks.append(Check(f"{name} rejected", True, detail))
+        else:
+            checks.append(Check(name, a.holds, a.detail))
+    return tuple(checks)
 
 
 _ANGLE_UNITS = frozenset({"deg", "degree", "degrees", "°", "rad", "radian", "radians"})
@@ -1063,19 +1111,8 @@ class _View:
     def scene_value(self, target: Target) -> sympy.Expr | None:
         """A scene target's value: signed along its axis, or a vector's magnitude."""
         if target.kind == "steepest":
-            from dynsolve.modes.scene_mode import steepest
-
             assert target.expr is not None
-            contact = target.expr.name
-            if contact not in self.thresholds:
-                self.thresholds[contact] = steepest(
-                    self.problem,  # type: ignore[arg-type]
-                    contact,
-                    self.outcome.values,
-                    self.options,
-                    self.steepest_limit(contact),  # type: ignore[arg-type]
-                )
-            return self.thresholds[contact]
+            return self.steepest_value(target.expr.name)
         if target.kind == "threshold":
             from dynsolve.thresholds import threshold
 
@@ -1085,6 +1122,11 @@ class _View:
                 self.thresholds[key] = threshold(self.problem, target.expr, self.options)
             return self.thresholds[key]
         values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
+        if target.expr is not None and target.expr.atoms(AppliedUndef):  # a define: P/slips(G, P)
+            expr = self.with_thresholds(target.expr)
+            if expr is None:
+                return None
+            target = replace(target, expr=expr)
         if target.vector is not None:
             x, y = (sympy.Integer(0) + c for c in target.vector)
             x, y = x.xreplace(values), y.xreplace(values)
@@ -1098,6 +1140,43 @@ class _View:
         if value.free_symbols & set(self.problem.system.unknowns):
             return None
         return value
+
+    def steepest_value(self, contact: str) -> sympy.Expr | None:
+        """steepest(C): the steepest slope the contact C holds on, computed once."""
+        from dynsolve.modes.scene_mode import steepest
+
+        if contact not in self.thresholds:
+            self.thresholds[contact] = steepest(
+                self.problem,  # type: ignore[arg-type]
+                contact,
+                self.outcome.values,
+                self.options,
+                self.steepest_limit(contact),  # type: ignore[arg-type]
+            )
+        return self.thresholds[contact]
+
+    def with_thresholds(self, expr: sympy.Expr) -> sympy.Expr | None:
+        """``expr`` with each threshold it calls (``slips(G, P)``, ``steepest(C)`` in a
+        define line) put in as its value; None where one has no value (no size of the load
+        reaches it)."""
+        from dynsolve.thresholds import THRESHOLDS, threshold
+
+        found: dict[sympy.Expr, sympy.Expr] = {}
+        for call in expr.atoms(AppliedUndef):
+            name = type(call).__name__
+            if name == "steepest":
+                value = self.steepest_value(call.args[0].name)
+            elif name in THRESHOLDS:
+                key = sympy.srepr(call)
+                if key not in self.thresholds:
+                    self.thresholds[key] = threshold(self.problem, call, self.options)
+                value = self.thresholds[key]
+            else:
+                continue
+            if value is None:
+                return None
+            found[call] = value
+        return expr.xreplace(found)
 
     def direction(self, target: Target, value: float) -> str:
         from dynsolve.modes.scene_mode import direction_of
@@ -1493,6 +1572,8 @@ class _View:
         if outcome.status == "failed":
             return Check("structure", False, "; ".join(outcome.messages) or "the solve failed")
         unknowns = [pretty(s.name) for s in self.problem.system.unknowns]
+        if not unknowns and not lines:
+            return Check.not_run("structure", "no equations to solve: nothing to check")
         named = ", ".join(unknowns[:NAMED_UNKNOWNS]) + (
             ", …" if len(unknowns) > NAMED_UNKNOWNS else ""
         )
@@ -1543,7 +1624,7 @@ class _View:
         name = f"constraint {constraint.text} (line {constraint.line})"
         verdict = truth(constraint.relation, self.solved)
         if verdict is None:
-            return Check(name, True, "cannot be decided for symbolic givens")
+            return Check.not_run(name, "cannot be decided for symbolic givens")
         symbolic = any(v.free_symbols for v in self.outcome.values.values())
         how = " (at sampled values of the givens)" if symbolic else ""
         return Check(name, verdict, ("holds" if verdict else "violated by the solution") + how)

@@ -5,6 +5,7 @@ Built by :mod:`dynsolve.pipeline`; frozen, no sympy objects, so renderers stay p
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from dynsolve.names import pretty
@@ -76,13 +77,56 @@ class AnswerRow:
     direction: str  # "cw", "ccw" … when the answer key states one, else ""
 
 
+PASSED, FAILED, NOT_RUN = "passed", "failed", "not_run"
+
+
 @dataclass(frozen=True)
 class Check:
-    """A check that passed or failed: dimensions, residuals, roots, answer key."""
+    """A check (dimensions, residuals, roots, answer key, simulation …) that passed, failed,
+    or did not run: it could not run or could not decide (``ran`` False, ``detail`` says
+    why). A check that did not run is never a pass, and never fails the solution.
+
+    >>> Check.not_run("simulation", "symbolic givens have no values").status
+    'not_run'
+    >>> Check("dimensions", True, "").status, Check("root", False, "").failed
+    ('passed', True)
+    """
 
     name: str
     passed: bool
     detail: str
+    ran: bool = True
+
+    @classmethod
+    def not_run(cls, name: str, reason: str) -> Check:
+        """A check that could not run or could not decide, and why."""
+        return cls(name, False, reason, ran=False)
+
+    @property
+    def status(self) -> str:
+        """ "passed", "failed" or "not_run"."""
+        return NOT_RUN if not self.ran else PASSED if self.passed else FAILED
+
+    @property
+    def failed(self) -> bool:
+        """True when the check ran and failed."""
+        return self.ran and not self.passed
+
+    @property
+    def shown_detail(self) -> str:
+        """The detail as shown: led by "not run: " for a check that did not run, unless it
+        says so itself ("not simulated: …", "cannot be decided …")."""
+        return _led(self.status, self.detail, "not run")
+
+
+def check_counts(checks: Iterable[Check]) -> tuple[int, int, int]:
+    """How many checks passed, failed and did not run.
+
+    >>> check_counts([Check("a", True, ""), Check.not_run("b", "no values")])
+    (1, 0, 1)
+    """
+    statuses = [c.status for c in checks]
+    return statuses.count(PASSED), statuses.count(FAILED), statuses.count(NOT_RUN)
 
 
 @dataclass(frozen=True)
@@ -132,11 +176,40 @@ class FreeBody:
 
 @dataclass(frozen=True)
 class Assumption:
-    """An assumption made to solve (no slip, no tipping, contact kept, cord taut) and its check."""
+    """An assumption made to solve (no slip, no tipping, contact kept, cord taut) and its
+    check; ``decided`` is False where the check could not decide (``detail`` says why)."""
 
     name: str
     holds: bool
     detail: str
+    decided: bool = True
+
+    @classmethod
+    def undecided(cls, name: str, reason: str) -> Assumption:
+        """An assumption made, whose check could not decide it, and why."""
+        return cls(name, False, reason, decided=False)
+
+    @property
+    def status(self) -> str:
+        """ "passed" (it holds), "failed" or "not_run" (undecided)."""
+        return NOT_RUN if not self.decided else PASSED if self.holds else FAILED
+
+    @property
+    def shown_detail(self) -> str:
+        """The detail as shown: led by "not decided: " for an undecided assumption, unless
+        it says so itself."""
+        return _led(self.status, self.detail, "not decided")
+
+
+def _led(status: str, detail: str, words: str) -> str:
+    """``detail`` led by ``words`` when the status is not run and it does not say so.
+
+    >>> _led(NOT_RUN, "0 = 0 checks nothing", "not run"), _led(NOT_RUN, "cannot be", "x")
+    ('not run: 0 = 0 checks nothing', 'cannot be')
+    """
+    if status != NOT_RUN or detail.startswith(("not ", "cannot ")):
+        return detail
+    return f"{words}: {detail}"
 
 
 @dataclass(frozen=True)
@@ -296,5 +369,6 @@ class Solution:
 
     @property
     def passed(self) -> bool:
-        """True when every check (answer key included) passed."""
-        return all(c.passed for c in self.checks)
+        """True when no check (answer key included) failed; a check that did not run
+        does not fail the solution (it is shown as not run)."""
+        return not any(c.failed for c in self.checks)

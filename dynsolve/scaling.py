@@ -134,10 +134,10 @@ def mismatches(base: Solution, scaled: Solution, k: int, tolerance: float = 1e-9
         want = old.value * float(unit_scale(old.unit, k))
         if abs(row.value - want) > tolerance * abs(want):
             found.append(f"{row.name}: expected {want!r} ({old.value!r} scaled), got {row.value!r}")
-    verdicts = {c.name: c.passed for c in base.checks}
+    verdicts = {c.name: c.status for c in base.checks}
     for check in scaled.checks:
         if check.name == "unused givens" and check.name not in verdicts:
             continue  # the default g added as a given by scale_spec, when nothing uses it
-        if verdicts.get(check.name, check.passed) != check.passed:
-            found.append(f"check {check.name}: {verdicts.get(check.name)} became {check.passed}")
+        if verdicts.get(check.name, check.status) != check.status:
+            found.append(f"check {check.name}: {verdicts.get(check.name)} became {check.status}")
     return found

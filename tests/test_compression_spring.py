@@ -44,7 +44,7 @@ def test_a_bumper_has_one_compression_not_a_root_through_the_wall():
     d, x = solution.answers
     assert d.value == pytest.approx(0.2 + 3 * math.sqrt(5 / 2000), rel=1e-12)
     assert x.value == pytest.approx(0.15, rel=1e-12)
-    assert all(c.passed for c in solution.checks)  # no "several roots remain"
+    assert not any(c.failed for c in solution.checks)  # no "several roots remain"
 
 
 def test_a_spring_is_tension_only_or_compression_only_not_both():
@@ -66,4 +66,4 @@ def test_the_simulation_finds_the_top_at_any_scale(k):
     solution = solve_spec(scale_spec(parse_file(SCENES / "spring_shoots_ball_up.dyn"), k))
     (h,) = solution.answers
     assert h.value == pytest.approx(1.0193679918 * 10**k, rel=1e-9)
-    assert all(c.passed for c in solution.checks), [c for c in solution.checks if not c.passed]
+    assert not any(c.failed for c in solution.checks), [c for c in solution.checks if c.failed]

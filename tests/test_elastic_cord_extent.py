@@ -43,7 +43,7 @@ def test_a_slow_launch_leaves_the_cord_slack_and_is_re_solved_so(tmp_path):
     # hand: v²/2g = 36/19.62 = 1.834862 m < L_0 = 3 m; the taut trial has no real root
     solution, d = launch(tmp_path, "6 m/s")
     assert d == pytest.approx(36 / (2 * G), rel=1e-9)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     trial = next(a for a in solution.assumptions if a.name == "elastic cord S taut at state 2")
     assert not trial.holds and "re-solved" in trial.detail
     final = next(a for a in solution.assumptions if a.name == "elastic cord S slack at state 2")
@@ -57,7 +57,7 @@ def test_a_fast_launch_stretches_the_cord_and_keeps_the_stretched_root(tmp_path)
     b, c = 0.5 * 9.81 - 200 * 3, 100 * 9 - 0.5 * 0.5 * 144
     assert d == pytest.approx((-b + math.sqrt(b * b - 400 * c)) / 200, rel=1e-9)
     assert d == pytest.approx(3.437483, rel=1e-6)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     assert any(a.name == "elastic cord S taut at state 2" and a.holds for a in solution.assumptions)
 
 
@@ -65,7 +65,7 @@ def test_the_bundled_bungee_falls_to_its_hand_derived_lowest_point():
     # hand (problems/scenes/bungee_lowest_point.dyn): d = 21.00504 m, F_max = 4804.02 N
     path = Path(__file__).parent.parent / "problems" / "scenes" / "bungee_lowest_point.dyn"
     solution = solve_file(path)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = {a.name: a.value for a in solution.answers}
     assert got["d"] == pytest.approx(21.00504, rel=1e-6)
     assert got["F_max"] == pytest.approx(4804.02, rel=1e-6)
@@ -76,7 +76,7 @@ def test_the_bundled_two_stage_bungee_stops_where_the_one_travel_jump_does():
     # 400 d² − 686.7 d − 10300.5 = 0 → d = 6.005030 m: 21.00503 m in all, as in one travel
     path = Path(__file__).parent.parent / "problems" / "stages" / "bungee_two_stages.dyn"
     solution = solve_file(path)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = {a.name: a.value for a in solution.answers}
     assert got["d"] + 15 == pytest.approx(21.00503, rel=1e-6)
     # the second stage starts with the cord just taut (15 m below its anchor) and goes down
@@ -110,7 +110,7 @@ def test_two_travels_in_a_row_keep_their_speeds_apart(tmp_path):
     path = tmp_path / "chain.dyn"
     path.write_text(CHAIN.format(h="5 m"))
     solution = solve_file(path)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     (v,) = solution.answers
     assert v.value == pytest.approx(10.32888, rel=1e-6)
 

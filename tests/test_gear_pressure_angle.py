@@ -41,7 +41,7 @@ def variant(sense: str = "ccw", phi: str = "20 deg", M: str = "20 N*m") -> str:
 @pytest.mark.parametrize("mode", ["exact", "numeric"])
 def test_the_bundled_gears_by_hand(mode):
     solution = solve_file(SPEC, SolveOptions(mode=mode))
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     assert any(c.name.startswith("pressure angle") for c in solution.checks)
     found = {a.name: a for a in solution.answers}
     alpha_A, F_t, F_r = by_hand(20.0, 20.0)
@@ -59,7 +59,7 @@ def test_the_radial_part_parts_the_gears_whichever_way_they_turn(sense):
     re-solves); M cw: up. Either way B's bearing pulls B back toward A: B_x = −F_r, and
     A's pushes A toward B: A_x = +F_r."""
     solution = solve_text(variant(sense), "gears.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = {a.name: a for a in solution.answers}
     _, F_t, F_r = by_hand(20.0, 20.0)
     assert found["B_x"].value == pytest.approx(-F_r, rel=1e-12)
@@ -78,7 +78,7 @@ def test_ideal_teeth_have_no_radial_part():
 def test_any_pressure_angle_and_couple(phi, M):
     text = variant(phi=f"{phi} deg", M=f"{M} N*m")
     solution = solve_text(text, "gears.dyn", SolveOptions(mode="numeric"))
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = {a.name: a for a in solution.answers}
     alpha_A, F_t, F_r = by_hand(float(M), float(phi))
     assert found["B_x"].value == pytest.approx(-F_r, rel=1e-9)

@@ -73,7 +73,7 @@ def test_a_chain_of_50_bars_moves_as_the_first_slider():
     assert found["v_end"].value == pytest.approx(0.4, rel=1e-12)
     assert found["v_end"].direction == "left"
     assert found["w_2"].value == pytest.approx(2, rel=1e-12) and found["w_2"].direction == "cw"
-    assert all(check.passed for check in solution.checks)
+    assert not any(check.failed for check in solution.checks)
 
 
 def test_a_chain_of_40_blocks_accelerates_as_one_mass():
@@ -83,7 +83,7 @@ def test_a_chain_of_40_blocks_accelerates_as_one_mass():
     values = {a.name: a.value for a in solution.answers}
     assert values["a"] == pytest.approx(0.125, rel=1e-12)
     assert values["T0"] == pytest.approx(0.25, rel=1e-12)
-    assert all(check.passed for check in solution.checks)
+    assert not any(check.failed for check in solution.checks)
 
 
 def test_a_chain_of_160_equations():

@@ -40,7 +40,7 @@ def test_blocks_in_slots_hibbeler_16_6():
     0 = −v_A + ω L cos 45°, v_B = ω L sin 45°)."""
     solution = solve_file(PROBLEMS / "blocks_in_slots.dyn")
     found = answers(solution)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     omega = 2 / (0.2 * math.cos(math.radians(45)))
     assert found["omega"].value == pytest.approx(omega, rel=1e-12)
     assert found["omega"].direction == "ccw"
@@ -70,7 +70,7 @@ def slider_crank_by_hand(L_AB, L_BC, theta, omega_AB, alpha_AB=0.0):
 def test_slider_crank_rpm_input():
     solution = solve_file(PROBLEMS / "slider_crank_rpm.dyn")
     found = answers(solution)
-    assert all(c.passed for c in solution.checks), [c for c in solution.checks if not c.passed]
+    assert not any(c.failed for c in solution.checks), [c for c in solution.checks if c.failed]
     omega_AB = -2000 * 2 * math.pi / 60  # 2000 rpm clockwise
     w, vC, alpha, aC = slider_crank_by_hand(0.075, 0.2, math.radians(60), omega_AB)
     assert signed(found["w_BC"], "ccw") == pytest.approx(w, rel=1e-12)
@@ -116,7 +116,7 @@ def four_bar_by_hand(d, L_AB, L_BC, L_CD, theta, omega_AB, upper=True):
 def test_four_bar_open_assembly():
     solution = solve_file(PROBLEMS / "four_bar_open.dyn")
     found = answers(solution)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     wBC, wCD, vC, aBC, aCD, _ = four_bar_by_hand(0.25, 0.1, 0.25, 0.15, math.radians(60), 6.0)
     assert signed(found["w_BC"], "ccw") == pytest.approx(wBC, rel=1e-12)
     assert signed(found["w_CD"], "ccw") == pytest.approx(wCD, rel=1e-12)
@@ -436,7 +436,7 @@ def test_quick_return_slot_with_coriolis():
     u = v_B·e, ω_CD = v_B·e⊥/|r|; a_B = −ω_AB² r_B;
     a_rel = a_B·e + ω_CD² |r|, α_CD = (a_B·e⊥ − 2 ω_CD u)/|r|."""
     solution = solve_file(PROBLEMS / "quick_return.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     B = (0.2 * math.cos(math.radians(30)), 0.2 * math.sin(math.radians(30)))
     r = (B[0], B[1] + 0.4)
@@ -466,7 +466,7 @@ def test_slider_crank_forces_by_hand():
     B_x = −m a_Gx; −B_y + N_C − m g = m a_Gy; h × B + h_x N_C = I_G α_BC (I_G = m L²/12);
     the light crank: (r_B − r_A) × B + M = 0."""
     solution = solve_file(PROBLEMS / "slider_crank_forces.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     m, L, g = 1.5, 0.2, 9.81
     theta, w_AB = math.radians(60), -100.0
@@ -526,7 +526,7 @@ def test_bar_driven_by_a_rolling_wheel():
     ground. By hand: K the contact point, v_A = ω k × r_A/K; B = (x_A + √(L² − y_A²), 0);
     y: 0 = v_Ay + ω_AB (x_B − x_A); x: v_B = v_Ax − ω_AB (0 − y_A)."""
     solution = solve_file(PROBLEMS / "wheel_and_bar.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     w, r, L = -4.0, 0.5, 1.5
     xA, yA = r * math.cos(math.pi / 4), r + r * math.sin(math.pi / 4)
@@ -547,7 +547,7 @@ def test_planet_gear_on_a_rotating_arm():
     """Fixed sun (r_S = 0.1 m), arm at ω_0 = 5 rad/s ccw, planet r_P = 0.05 m: the planet's
     pitch point on the sun is at rest, so v_B = ω_0 (r_S + r_P) = ω_P r_P."""
     solution = solve_file(PROBLEMS / "planetary.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     assert signed(found["w_P"], "ccw") == pytest.approx(5 * 0.15 / 0.05, rel=1e-12)
     assert found["v_B"].value == pytest.approx(5 * 0.15, rel=1e-12)
@@ -580,7 +580,7 @@ scene:
 find: w_B = omega(gB), w_C = omega(gC), al_C = alpha(gC)
 """
     solution = solve_text(text, "train.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     assert signed(found["w_B"], "ccw") == pytest.approx(10 * math.pi * 0.4, rel=1e-12)
     assert signed(found["w_C"], "ccw") == pytest.approx(-10 * math.pi * 40 / 60, rel=1e-12)

@@ -35,7 +35,7 @@ def values(solution) -> dict[str, tuple[float, str]]:
 @pytest.mark.parametrize("mode", ["exact", "numeric"])
 def test_a_coupler_that_translates_has_its_ic_at_infinity(mode):
     solution = solve_file(PROBLEMS / "ic_translating_coupler.dyn", SolveOptions(mode=mode))
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = values(solution)
     assert found["w_BC"][0] == 0
     assert found["w_CD"][0] == pytest.approx(4.0, rel=1e-12) and found["w_CD"][1] == "ccw"
@@ -65,7 +65,7 @@ find: w_BC = omega(BC), v_C = v(C)
 def test_a_rod_that_translates_moves_its_piston_with_the_crank_pin():
     text = SLIDER.format(L_AB=0.15, extra_given="", extra="")
     solution = solve_text(text, "slider.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = values(solution)
     assert found["w_BC"][0] == 0
     assert found["v_C"][0] == pytest.approx(1.2, rel=1e-12) and found["v_C"][1] == "down"
@@ -133,7 +133,7 @@ def test_parallel_crank_and_rocker_at_any_angle(degrees, L_AB, L_CD, w):
     text = text.replace("omega_0 = 6 rad/s", f"omega_0 = {w} rad/s")
     text = text.replace("up = 90 deg", f"up = {degrees} deg")
     solution = solve_text(text, "parallel.dyn", SolveOptions(mode="numeric"))
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = values(solution)
     assert found["w_BC"][0] == 0
     assert found["w_CD"][0] == pytest.approx(w * L_AB / L_CD, rel=1e-9)
@@ -149,7 +149,7 @@ def test_the_heavy_block_linkage_by_instantaneous_centres():
     C_y = 3 (9.81 + 7.2)."""
     text = (PROBLEMS / "piston_vertical_guide.dyn").read_text()
     solution = solve_text(text.replace("  gravity\n", "  gravity\n  method ic\n"), "ic.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = values(solution)
     C_y = 3 * (9.81 + 7.2)
     assert found["M"][0] == pytest.approx(0.15 * (2 * (3.6 + 9.81) + C_y), rel=1e-9)

@@ -51,7 +51,7 @@ def test_engine_piston_with_a_gas_force(mode):
     """problems/linkages/piston_gas_force.dyn: r = 0.1 m, l = 0.4 m, θ = 30°, 1500 rpm,
     m = 6 kg, P = 18 kN: a_C = −2455.10 m/s², F = 3295.26 N, N = 411.91 N, M = 199.14 N·m."""
     solution = solve_file(PROBLEMS / "piston_gas_force.dyn", SolveOptions(mode=mode))
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     assert any(c.name == "power equation" for c in solution.checks)
     found = answers(solution)
     a_C, F, N, M = engine_by_hand(0.1, 0.4, math.radians(30), 50 * math.pi, 6.0, 18e3)
@@ -70,7 +70,7 @@ def test_heavy_block_in_a_vertical_guide():
     C_y = 3 (9.81 + 7.2); the rod: B_y = 2 (3.6 + 9.81) + C_y, B_x − C_x = −9.6,
     0.075 (B_y + C_y) + 0.1 (B_x + C_x) = I_G α = −0.5; the crank: M = 0.15 B_y."""
     solution = solve_file(PROBLEMS / "piston_vertical_guide.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     found = answers(solution)
     C_y = 3 * (9.81 + 7.2)
     B_y = 2 * (3.6 + 9.81) + C_y
@@ -231,7 +231,7 @@ def test_a_loaded_slotted_link_solves_and_its_collar_can_have_mass():
     for spec in (text, text.replace("along bar CD\n", "along bar CD, mass m_B\n")):
         solution = solve_text(spec, "slotted.dyn", NUMERIC)
         power = next(c for c in solution.checks if c.name == "power equation")
-        assert power.passed and all(c.passed for c in solution.checks)
+        assert power.passed and not any(c.failed for c in solution.checks)
     light, heavy = (
         answers(solve_text(t, "s.dyn", NUMERIC))["M"].value
         for t in (text, text.replace("along bar CD\n", "along bar CD, mass m_B\n"))

@@ -56,8 +56,8 @@ def test_projectile_numbers_first_gives_the_hand_values() -> None:
 def test_projectile_numeric_keeps_exact_modes_checks() -> None:
     exact = solve_text(PROJECTILE, "p.dyn", SolveOptions(mode="exact"))
     numeric = solve_text(PROJECTILE, "p.dyn", NUMERIC)
-    assert [(c.name, c.passed) for c in exact.checks] == [
-        (c.name, c.passed) for c in numeric.checks
+    assert [(c.name, c.status) for c in exact.checks] == [
+        (c.name, c.status) for c in numeric.checks
     ]
 
 

@@ -108,8 +108,8 @@ def test_numeric_mode_agrees_with_exact(name: str) -> None:
     path = ROOT / "problems" / f"{name}.dyn"
     exact = solve_file(path, SolveOptions(mode="exact"))
     numeric = solve_file(path, SolveOptions(mode="numeric"))
-    assert [(c.name, c.passed) for c in numeric.checks] == [
-        (c.name, c.passed) for c in exact.checks
+    assert [(c.name, c.status) for c in numeric.checks] == [
+        (c.name, c.status) for c in exact.checks
     ]
     got = {row.name: row.value for row in numeric.answers}
     for row in exact.answers:

@@ -48,7 +48,7 @@ def answers(solution) -> dict:
 def test_the_bundled_pendulum_pulls_its_cord_by_m_g_3_minus_2_cos_theta():
     # hand (problems/stages/pendulum_tension_bottom.dyn): T_2 = 39.24 N, T_1 = 9.81 N
     solution = solve_file(PROBLEMS / "stages" / "pendulum_tension_bottom.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = answers(solution)
     assert got["T_2"].value == pytest.approx(39.24, rel=1e-9)
     assert got["T_1"].value == pytest.approx(9.81, rel=1e-9)
@@ -57,7 +57,7 @@ def test_the_bundled_pendulum_pulls_its_cord_by_m_g_3_minus_2_cos_theta():
 def test_the_cord_just_after_a_bullet_embeds_carries_both_masses():
     # hand (problems/stages/bullet_bob_slack.dyn): T_2 = (m_b + M)(g + v_2²/L) = 83.62676 N
     solution = solve_file(PROBLEMS / "stages" / "bullet_bob_slack.dyn")
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     assert answers(solution)["T_2"].value == pytest.approx(83.62676, rel=1e-7)
 
 
@@ -209,7 +209,7 @@ scene:
 find: v_3 = speed(bob), T_3 = cord(3)
 """
     solution = solve(tmp_path, text)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = answers(solution)
     v_3 = 2.114504
     assert got["v_3"].value == pytest.approx(v_3, rel=1e-6)

@@ -67,7 +67,7 @@ def write(tmp_path: Path, text: str, name: str = "scene.dyn") -> Path:
 
 
 def failed(solution) -> list[str]:
-    return [f"{c.name}: {c.detail}" for c in solution.checks if not c.passed]
+    return [f"{c.name}: {c.detail}" for c in solution.checks if c.failed]
 
 
 def test_drum_scene_reproduces_the_textbook(tmp_path):

@@ -131,12 +131,12 @@ CASES: list[Case] = [
         SpecError, 1, 1, ("found 'find'",), "did you mean 'find:'?",
     ),
     Case(
-        "unit-system-US",
+        "unit-system-imperial",
         spec(
-            "units: US",
+            "units: imperial",
             "#      ^",
         ),
-        SpecError, 1, 8, ("unknown unit system 'US'",), "write 'units: FPS'",
+        SpecError, 1, 8, ("unknown unit system 'imperial'",), "write 'units: FPS'",
     ),
     Case(
         "unit-system-unknown",

@@ -23,7 +23,7 @@ def test_drag_fall_integrates_numerically_without_waiting_for_an_inversion() -> 
     solution = solve_file(DRAG_FALL)
     notes = " ".join(step.note for step in solution.steps)
     assert "no relation is inverted" in notes
-    assert all(check.passed for check in solution.checks)
+    assert not any(check.failed for check in solution.checks)
 
 
 def test_a_formula_find_still_inverts_the_relation() -> None:

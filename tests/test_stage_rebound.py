@@ -46,7 +46,7 @@ def answers(solution) -> dict:
 def test_the_bundled_rod_meets_its_hand_derivation():
     path = Path(__file__).parent.parent / "problems" / "stages" / "rod_falls_rebounds.dyn"
     solution = solve_file(path)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = answers(solution)
     v_2 = math.sqrt(2 * G * 0.5)
     assert got["J_P"].value == pytest.approx(0.75 * v_2, rel=1e-9)
@@ -64,7 +64,7 @@ def test_the_bundled_rod_meets_its_hand_derivation():
 def test_the_fall_feeds_the_rebound_and_energy_never_grows(tmp_path_factory, m, L, h, e):
     text = ROD.format(m=f"{m!r} kg", L=f"{L!r} m", h=f"{h!r} m", e=repr(e))
     solution = solve(tmp_path_factory.mktemp("r"), text)
-    assert all(c.passed for c in solution.checks)
+    assert not any(c.failed for c in solution.checks)
     got = answers(solution)
     v = math.sqrt(2 * G * h)  # the fall's speed is the impact's speed before
     J = (1 + e) * m * v / 4

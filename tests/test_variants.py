@@ -161,7 +161,7 @@ def test_every_variant_solves_with_the_base_problems_checks() -> None:
     for row in make_variants(spec, [f"s{i}" for i in range(8)], seed=1):
         assert cells_in_range(plan, row.cells)
         solution = solve_spec(with_variant(spec, row.cells, row.student))
-        assert all(c.passed for c in solution.checks), row
+        assert not any(c.failed for c in solution.checks), row
 
 
 def test_a_variant_that_slips_is_redrawn() -> None:

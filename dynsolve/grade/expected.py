@@ -253,7 +253,7 @@ def _solve(
 
 
 def _from_solution(student: str, solution: Solution) -> StudentExpected:
-    failed = [c for c in solution.checks if not c.passed and not c.name.startswith("answer ")]
+    failed = [c for c in solution.checks if c.failed and not c.name.startswith("answer ")]
     if failed:
         detail = f"check '{failed[0].name}' fails: {failed[0].detail}"
         return StudentExpected(student, {}, "per-variant", detail)

@@ -50,7 +50,7 @@ class Signature:
     """What must not change between the base problem and a variant."""
 
     status: str
-    assumptions: tuple[tuple[str, bool], ...]
+    assumptions: tuple[tuple[str, str], ...]  # name, "passed", "failed" or "not_run"
     failed: tuple[str, ...]  # checks that fail (answer key left out)
 
     def differs(self, other: Signature, allow_changes: bool = False) -> str:
@@ -62,10 +62,11 @@ class Signature:
         if other.status != self.status:
             return f"the solve ends '{other.status}', not '{self.status}'"
         mine = dict(self.assumptions)
-        for name, holds in other.assumptions:
-            if mine.get(name) != holds:
-                return f"assumption '{name}' {'holds' if holds else 'fails'} (base: " + (
-                    "not made)" if name not in mine else f"{'holds' if mine[name] else 'fails'})"
+        words = {"passed": "holds", "failed": "fails", "not_run": "is not decided"}
+        for name, status in other.assumptions:
+            if mine.get(name) != status:
+                return f"assumption '{name}' {words[status]} (base: " + (
+                    "not made)" if name not in mine else f"{words[mine[name]]})"
                 )
         if len(other.assumptions) != len(self.assumptions):
             return "its assumptions are not the base problem's"
@@ -82,8 +83,8 @@ def signature(solution: Solution) -> Signature:
     """
     return Signature(
         solution.status,
-        tuple((a.name, a.holds) for a in solution.assumptions),
-        tuple(c.name for c in solution.checks if not c.passed and not c.name.startswith("answer ")),
+        tuple((a.name, a.status) for a in solution.assumptions),
+        tuple(c.name for c in solution.checks if c.failed and not c.name.startswith("answer ")),
     )
 
 

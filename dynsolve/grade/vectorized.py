@@ -280,6 +280,8 @@ def _assumptions(
     out = []
     for assumption in assumptions:
         name = assumption.name
+        if not assumption.decided:  # nothing to compare a variant's verdict with
+            raise NotClosedForm(f"assumption '{name}' is not decided in the base problem")
         if name.startswith("contact at ") and name.endswith(" kept"):
             support = name.removeprefix("contact at ").removesuffix(" kept")
             index = output(reactions[f"N_{support}"][0])

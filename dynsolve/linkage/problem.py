@@ -644,8 +644,11 @@ def _pressure_checks(
         assert mesh.pressure is not None
         taken = "F < 0" if sense < 0 else "F ≥ 0"
         if value is None:
-            detail = f"the radial push |F| tan φ parting the gears is written for {taken} (assumed)"
-            checks.append(Check(f"pressure angle ({name})", True, detail))
+            detail = (
+                f"the radial push |F| tan φ parting the gears is written for {taken} "
+                "(assumed: F has no value to check it with)"
+            )
+            checks.append(Check.not_run(f"pressure angle ({name})", detail))
             continue
         phi = float(sympy.N(_full(mesh.pressure, dict(problem.system.knowns)), 20))
         again = " (re-solved: the first solve found F the other way)" if sense < 0 else ""
@@ -774,7 +777,7 @@ def _power_check(
     known = {**problem.system.knowns, **values}
     if all(_full(sympy.Integer(0) + w, known) == 0 for w in rates):
         detail = "every bar is at rest: the power equation reads 0 = 0 and checks nothing"
-        return (Check("power equation", True, detail),)
+        return (Check.not_run("power equation", detail),)
     supplied, stored = balance
     scale = max(abs(supplied), abs(stored), 1e-300)
     error = abs(supplied - stored) / scale
@@ -807,7 +810,7 @@ def _lagrange_check(
     try:
         chain = chain_of(problem.spec)
     except (NotSimulable, SpecError) as exc:
-        return (Check("second method: Lagrange", True, f"not checked: {exc}"),)
+        return (Check.not_run("second method: Lagrange", f"not checked: {exc}"),)
     rates = chain.rates(0.0, [0.0] * chain.size + list(chain.qd0))[chain.size :]
     known = {**problem.system.knowns, **values}
     worst, shown = 0.0, []

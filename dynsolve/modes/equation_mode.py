@@ -119,7 +119,7 @@ def build_problem(spec: Spec) -> Problem:
     try:
         report = check_dimensions(
             spec.equations, known_dims, file, spec.system, requested,
-            wanted=tuple(f.name for f in spec.finds),
+            wanted=tuple(asked_name(f) for f in spec.finds),
         )  # fmt: skip
     except DynsolveError as error:  # a misspelt name is a new unknown of unknown dimension
         typos = likely_typos(spec)
@@ -194,9 +194,21 @@ def _requested_dimensions(spec: Spec) -> dict[str, Dim]:
         if a.quantity is not None and a.quantity.unit is not None
     }
     requested.update(
-        {f.name: resolve_unit(f.unit, spec.file).dim for f in spec.finds if f.unit is not None}
+        {asked_name(f): resolve_unit(f.unit, spec.file).dim for f in spec.finds if f.unit}
     )
     return requested
+
+
+def asked_name(item: FindItem) -> str:
+    """The equations' name a find item asks for: ``g_p`` for ``find: g = g_p``.
+
+    >>> from dynsolve.spec.ast import QuantityRef
+    >>> asked_name(FindItem("g", None, 1, 7, QuantityRef("g_p", (), 1, 11)))
+    'g_p'
+    >>> asked_name(FindItem("a", None, 1, 7))
+    'a'
+    """
+    return item.ref.function if item.ref is not None else item.name
 
 
 def _plain(statement: EquationStmt) -> str:
@@ -259,11 +271,94 @@ def _check_finds(spec: Spec, unknowns: list[str], given: set[str]) -> None:
         if item.name in seen:
             raise SpecError(f"'{item.name}' is listed twice in find", where, "remove one")
         seen.add(item.name)
-        if item.name not in unknowns and item.name not in given:
-            close = difflib.get_close_matches(item.name, unknowns + sorted(given), n=1)
+        if item.ref is not None:
+            _check_alias(spec, item, unknowns)
+            where = Position(spec.file, item.ref.line, item.ref.column)
+        name = asked_name(item)
+        if name not in unknowns and name not in given:
+            close = difflib.get_close_matches(name, unknowns + sorted(given), n=1)
             hint = f"did you mean '{close[0]}'?" if close else "use a name from the equations"
-            raise SpecError(f"'{item.name}' in find appears in no equation", where, hint)
+            raise SpecError(f"'{name}' in find appears in no equation", where, hint)
     check_answers_in_find(spec)
+
+
+def check_find_names(spec: Spec) -> None:
+    """Refuse, in a scene or a motion, a find ``NAME = quantity`` whose NAME is a given
+    (or g, pi): the answer would wear the given's name, and read as its value.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> text = "given:\\n  b = 5 m/s^2\\nkinematics:\\n  a = -b\\nfind: b = x(2)"
+    >>> check_find_names(parse_spec(text, "k.dyn"))
+    Traceback (most recent call last):
+    dynsolve.errors.SpecError: k.dyn:5:7: 'b' in find would name x(2), but b is a given \
+(line 2) (hint: name the answer otherwise, e.g. 'b_1 = x(2)')
+    """
+    givens = {g.name: g.line for g in spec.givens}
+    for item in spec.finds:
+        ref = item.ref
+        if ref is None or (ref.function == item.name and not ref.args):
+            continue
+        if item.name in givens:
+            clash = f"{item.name} is a given (line {givens[item.name]})"
+        elif item.name == "g":
+            clash = "g is the gravitational acceleration"
+        elif item.name == "pi":
+            clash = "pi is the constant 3.14159…"
+        else:
+            continue
+        asked = ref.function + (f"({', '.join(ref.args)})" if ref.args else "")
+        raise SpecError(
+            f"'{item.name}' in find would name {asked}, but {clash}",
+            Position(spec.file, item.line, item.column),
+            hint=f"name the answer otherwise, e.g. '{item.name}_1 = {asked}'",
+        )
+
+
+def _check_alias(spec: Spec, item: FindItem, unknowns: list[str]) -> None:
+    """Refuse ``find: NAME = OTHER`` where NAME already means something else in the spec
+    (a given, an unknown, g in the equations, pi), or OTHER is a scene quantity.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  L = 1 m\\nequations:\\n  L = g*g_p\\nfind: g = g_p", "p.dyn")
+    >>> try:
+    ...     _check_alias(spec, spec.finds[0], ["g_p"])
+    ... except SpecError as error:
+    ...     print(error.position.column, error.message.split(", but ")[1])
+    7 g is the gravitational acceleration the equations use (9.81 m/s² unless given)
+    """
+    assert item.ref is not None
+    ref, name = item.ref, item.name
+    if ref.args:
+        raise SpecError(
+            f"{ref.function}({', '.join(ref.args)}) is a scene quantity: equation mode has "
+            "no scene to read it from",
+            Position(spec.file, ref.line, ref.column),
+            hint=f"find a name from the equations, e.g. 'find: {name}'",
+        )
+    if ref.function == name:
+        return
+    in_equations = {n.text for s in spec.equations for side in (s.lhs, s.rhs)
+                    for n in iter_names(side)}  # fmt: skip
+    given = next((g for g in spec.givens if g.name == name), None)
+    if given is not None:
+        clash = f"{name} is a given (line {given.line})"
+    elif name == "pi":
+        clash = "pi is the constant 3.14159…"
+    elif name == "g" and "g" in in_equations:
+        clash = (
+            "g is the gravitational acceleration the equations use "
+            f"({'9.81 m/s²' if spec.system == 'SI' else '32.2 ft/s²'} unless given)"
+        )
+    elif name in unknowns:
+        clash = f"{name} is another unknown of the equations"
+    else:
+        return
+    raise SpecError(
+        f"'{name}' in find would name {ref.function}, but {clash}",
+        Position(spec.file, item.line, item.column),
+        hint=f"name the answer otherwise, e.g. 'find: {name}_local = {ref.function}', "
+        f"or ask for {ref.function} itself",
+    )
 
 
 def check_answers_in_find(spec: Spec, also: Iterable[str] = ()) -> None:
@@ -294,7 +389,7 @@ def _target(
     given: set[str],
     spec: Spec,
 ) -> Target:
-    dim = report.dims[item.name]
+    dim = report.dims[asked_name(item)]
     if item.unit is not None:
         unit_dim = resolve_unit(item.unit, spec.file).dim
         if unit_dim != dim:
@@ -305,10 +400,13 @@ def _target(
                 hint=f"use a unit of {dim.name}, e.g. '{natural_unit(dim, spec.system) or '1'}'",
             )
         unit = item.unit.text
-    elif dim.dimensionless and item.name in report.angles:
+    elif dim.dimensionless and asked_name(item) in report.angles:
         unit = "deg"
     else:
         unit = natural_unit(dim, spec.system, item.name)
+    if item.ref is not None and item.ref.function != item.name:  # another name for it
+        symbol = symbols[item.ref.function]
+        return Target(item.name, symbol, dim, unit, item.unit is not None, False, expr=symbol)
     return Target(
         item.name, symbols[item.name], dim, unit, item.unit is not None, item.name in given
     )

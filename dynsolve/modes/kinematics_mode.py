@@ -109,14 +109,18 @@ def build_kinematics_problem(spec: Spec, numbers_first: bool = False) -> Kinemat
         return build_plane_problem(spec, numbers_first)
     file = spec.file
     if len(spec.kinematics) != 1:
+        left = {str(st.lhs) for st in spec.kinematics}
         raise SpecError(
             "kinematics takes exactly one relation",
             Position(file, spec.kinematics[1].line if spec.kinematics[1:] else 1, 1),
-            hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
+            hint="dynsolve names the position x and y: write 'x = …' and 'y = …' for plane motion"
+            if left & {"s", "s_x", "s_y"}
+            else "give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
         )
     spec = combine_sections(spec)
     check_answers_in_find(spec, (d.lhs.text for d in spec.defines))  # type: ignore[union-attr]
     givens = givens_of(spec)
+    check_motion_names(givens, ("t", "x", "v", "a"), file)
     symbols: dict[str, sympy.Symbol] = {g.name: g.symbol for g in givens}
     statement = spec.kinematics[0]
     mass = _mass_times_a(statement, symbols)
@@ -338,6 +342,45 @@ def _check_usage(
     return unused_note(givens, used | starts, starts)
 
 
+START = {"x": "x_0", "v": "v_0", "y": "y_0", "v_x": "v_x0", "v_y": "v_y0"}
+MOTION_WORDS = {
+    "t": "the time the motion is a function of",
+    "x": "the position x(t)",
+    "y": "the position y(t)",
+    "r": "the radial coordinate r(t)",
+}
+
+
+def check_motion_names(givens: Sequence[GivenInfo], reserved: Sequence[str], file: str) -> None:
+    """Refuse a given named as one of the motion's own variables (``t``, ``x``, ``v``,
+    ``a``, …): the motion would read the variable and ignore the given. A SpecError at
+    the given, naming the collision and the fix (another name, and the quantity at it).
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> spec = parse_spec("given:\\n  t = 2 s\\nkinematics:\\n  x = 3*t\\nfind: X = x(t)", "k.dyn")
+    >>> try:
+    ...     check_motion_names(givens_of(spec), ("t", "x", "v", "a"), "k.dyn")
+    ... except SpecError as error:
+    ...     print(error.position.line, error.message)
+    2 a given cannot be named t: in kinematics t is the time the motion is a function of
+    """
+    for info in givens:
+        if info.name not in reserved or info.given is None:
+            continue
+        name = info.name
+        what = MOTION_WORDS.get(name, f"the motion's {name}(t)")
+        if name == "t":
+            fix = "name it t_1 (t_1 = …) and ask for x(t_1), v(t_1) …"
+        else:
+            fix = f"give it another name, e.g. {name}_1"
+            fix += f" (its value at the start is {START[name]})" if name in START else ""
+        raise SpecError(
+            f"a given cannot be named {name}: in kinematics {name} is {what}",
+            Position(file, info.given.line, info.given.column),
+            hint=fix,
+        )
+
+
 def _call_args(expr: object) -> set[str]:
     """The names passed to quantity calls in a define line (``x(t_2)`` reads t_2)."""
     from dynsolve.spec.ast import Binary, Call, Name, Unary
@@ -382,10 +425,11 @@ def _kind(statement: EquationStmt, given: set[str], file: str, newton: bool = Fa
     unknown = names - set(VARIABLES)
     where = Position(file, statement.line, statement.column)
     if unknown:
+        first = sorted(unknown)[0]
         raise SpecError(
-            f"'{sorted(unknown)[0]}' is neither a given nor t, x or v",
+            f"'{first}' is neither a given nor t, x or v",
             where,
-            hint="declare it under given:",
+            hint=POSITION_HINT if first == "s" else "declare it under given:",
         )
     if len(variables) > 1:
         raise SpecError(
@@ -399,11 +443,15 @@ def _kind(statement: EquationStmt, given: set[str], file: str, newton: bool = Fa
         raise SpecError(
             f"'{left} = …' in {variable} is not a kinematic relation dynsolve integrates",
             where,
-            hint="give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
+            hint=POSITION_HINT
+            if str(left) == "s"
+            else "give one of a = f(t), a = f(v), a = f(x), x = f(t) or v = f(t)",
         )
     return kind
 
 
+# the position, written s in many textbooks
+POSITION_HINT = "dynsolve names the position x: write 'x = …' (x_0, x(t), t_at(x, …))"
 _DIMS = {"t": Dim.of("time"), "x": Dim.of("length"), "v": Dim.of("velocity"), "a": ACCELERATION}
 
 

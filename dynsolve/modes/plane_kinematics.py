@@ -44,7 +44,7 @@ from dynsolve.expressions import to_sympy
 from dynsolve.format import latex_number, latex_unit, pretty_unit
 from dynsolve.format import quantity as format_quantity
 from dynsolve.modes.equation_mode import Target, check_answers_in_find, givens_of
-from dynsolve.modes.kinematics_mode import KinematicsProblem, relation_row
+from dynsolve.modes.kinematics_mode import KinematicsProblem, check_motion_names, relation_row
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.curvilinear import path_components, polar_components
@@ -62,6 +62,7 @@ from dynsolve.spec.ast import EquationStmt, FindItem, Name, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
 from dynsolve.units import GRAVITY, Dim, natural_unit
+from dynsolve.usage import unused_note
 
 LENGTH, TIME = Dim.of("length"), Dim.of("time")
 VELOCITY, ACCELERATION = Dim.of("velocity"), Dim.of("acceleration")
@@ -177,6 +178,7 @@ class _Builder:
 
     def problem(self) -> KinematicsProblem:
         self._classify()
+        check_motion_names(self.givens, ("t", *QUANTITIES[self.components]), self.file)
         self._check_names()
         statements = self.spec.kinematics
         lhs_dims = {n: DIMS.get(n) or INITIAL[n] for n in (*self.relations, *self.initial_lines)}
@@ -624,13 +626,25 @@ class _Builder:
         if used and default:
             value, unit = GRAVITY[self.spec.system]
             notes.append(("standard gravity", f"g = {value} {pretty_unit(unit)} (default)"))
-        return tuple(notes)
+        return (*notes, *unused_note(self.givens, self._read()))
+
+    def _read(self) -> set[str]:
+        """The givens' names the motion and the finds read: the relations, the initial
+        conditions and t_0, the finds' arguments, and m where a force is asked."""
+        read = {n.text for st in self.spec.kinematics for n in iter_names(st.rhs)}
+        read |= {*INITIAL, "t_0"}
+        for item in self.spec.finds:
+            if item.ref is not None:
+                read |= set(item.ref.args) | ({"m"} if item.ref.function in FORCES else set())
+        return read
 
 
 def _lhs_hint(name: str) -> str:
     """What to write instead of a left side that is not a component of plane motion."""
     if name in ("a", "v"):
         return f"plane motion takes components: {name}_x = … and {name}_y = …"
+    if name in ("s", "s_x", "s_y"):
+        return "dynsolve names the position x and y: write 'x = …' and 'y = …'"
     choices = [n for names in AXES.values() for n in names] + ["r", "theta", *INITIAL]
     close = difflib.get_close_matches(name, choices, n=1)
     if close:

@@ -1488,6 +1488,8 @@ def _assess(
         N = real_value(formulation.reactions[f"N_{support.name}"][0], substitution)
         if N is not None and support.two_sided and not _is_zero_expr(support.normal_acceleration):
             checks += _path_side(scene, support, N, substitution)
+        if N is None and not support.two_sided:
+            checks.append(Assumption.undecided(f"contact at {support.name} kept", UNDECIDED))
         if N is not None and not support.two_sided:
             checks.append(
                 Assumption(
@@ -1529,6 +1531,12 @@ def _assess(
                 checks.append(assumption)
                 if sense:
                     slips[support.name] = sense
+            elif support.mu_s is not None or support.mu_k is not None:
+                checks.append(Assumption.undecided(f"no slip at {support.name}", UNDECIDED))
+        elif friction_name in formulation.reactions and (
+            support.mu_s is not None or support.mu_k is not None
+        ):  # a rough contact without a coefficient holds whatever it must: nothing to check
+            checks.append(Assumption.undecided(f"no slip at {support.name}", UNDECIDED))
         if support.kind == "base":
             x = real_value(
                 formulation.reactions.get(
@@ -1540,6 +1548,8 @@ def _assess(
     checks += _held_at_rest(scene, checks)
     for cord in scene.cords:
         T = real_value(formulation.reactions[cord.name][0], substitution)
+        if T is None:
+            checks.append(Assumption.undecided(f"cord {cord.name} taut", UNDECIDED))
         if T is not None:
             checks.append(
                 Assumption(
@@ -1554,6 +1564,7 @@ def _assess(
 
 
 RELEASED = "re-solved without it (its force zero)"
+UNDECIDED = "cannot be decided: the force has no numeric value (symbolic givens)"
 
 
 def _released_checks(
@@ -1930,9 +1941,8 @@ def _between_states(
     for support in problem.scene.supports:
         if support.kind == "rolls":
             checks.append(
-                Assumption(
+                Assumption.undecided(
                     f"no slip at {support.name}",
-                    True,
                     "stated by 'rolls' for the whole travel; the friction it needs between "
                     "the states is not computed",
                 )
@@ -1941,7 +1951,12 @@ def _between_states(
         from dynsolve.principles.constant_motion import taut_details
 
         found = taut_details(problem.scene, problem.symbols, substitution)
-        checks += [Assumption(*taut) for taut in found]
+        checks += [
+            Assumption(name, holds, detail)
+            if holds is not None
+            else Assumption.undecided(name, detail)
+            for name, holds, detail in found
+        ]
     if any(t.stops for t in problem.scene.travels.values()):
         return tuple(checks)
     checks.append(
@@ -1969,7 +1984,10 @@ def _tipping(
     length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), along)
     low, high = real_value(-foot, substitution), real_value(length - foot, substitution)
     if x is None or low is None or high is None:
-        return Assumption(f"no tipping on base {support.name}", True, "cannot be decided")
+        return Assumption.undecided(
+            f"no tipping on base {support.name}",
+            "cannot be decided: where N acts, or the base's ends, have no numeric value",
+        )
     lo, hi = min(low, high), max(low, high)
     holds = lo <= x <= hi
     detail = f"N_{support.name} acts at x = {x:.4g} from G's line, within [{lo:.4g}, {hi:.4g}]"

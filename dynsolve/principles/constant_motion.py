@@ -200,8 +200,9 @@ def taut_details(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
-) -> list[tuple[str, bool, str]]:
-    """``(name, holds, detail)`` for each cord assumed taut between the states: its tension
+) -> list[tuple[str, bool | None, str]]:
+    """``(name, holds, detail)`` for each cord assumed taut between the states (``holds``
+    None where it could not be checked: no tension at state 1 to check it with): its tension
     at state 1 from Newton–Euler, which is its tension throughout when the accelerations are
     constant; otherwise also at :data:`~dynsolve.principles.cord_travel.SAMPLES` states
     along the travel up to state 2 (Newton–Euler at each, with its geometry, spring forces
@@ -216,7 +217,7 @@ def taut_details(
         from dynsolve.principles.cord_travel import tensions_along
 
         along = tensions_along(scene, symbols, values, slipping)
-    found = []
+    found: list[tuple[str, bool | None, str]] = []
     for cord in scene.cords:
         name = f"cord {cord.name} taut between the states"
         T = None if motion is None else motion.tensions.get(cord.name)
@@ -225,7 +226,7 @@ def taut_details(
                 "assumed (inextensible, its tension doing no net work): Newton–Euler at "
                 "state 1 does not give its tension, so it is not checked"
             )
-            found.append((name, True, detail))
+            found.append((name, None, detail))
             continue
         holds = T >= 0
         detail = f"{cord.name} = {T:.4g} {'≥' if holds else '<'} 0 at state 1 (Newton–Euler)"

@@ -15,7 +15,9 @@ from typing import Any
 
 from dynsolve.results import Solution
 
-SCHEMA_VERSION = 2  # 2: givens' "si" became "base" (the system's base units)
+# 2: givens' "si" became "base" (the system's base units); 3: checks and assumptions have a
+# "status": "passed", "failed" or "not_run" (could not run or decide; "passed" is then false)
+SCHEMA_VERSION = 3
 
 
 def solution_dict(solution: Solution) -> dict[str, Any]:
@@ -43,10 +45,16 @@ def solution_dict(solution: Solution) -> dict[str, Any]:
             }
             for a in solution.answers
         ],
-        "checks": [asdict(c) for c in solution.checks],
+        "checks": [
+            {"name": c.name, "status": c.status, "passed": c.passed, "detail": c.detail}
+            for c in solution.checks
+        ],
         "key": [asdict(k) for k in solution.key],
         "free_body": [asdict(b) for b in solution.free_body],
-        "assumptions": [asdict(a) for a in solution.assumptions],
+        "assumptions": [
+            {"name": a.name, "status": a.status, "holds": a.holds, "detail": a.detail}
+            for a in solution.assumptions
+        ],
         "messages": list(solution.messages),
         "warnings": list(solution.warnings),
         "remarks": [r.text for r in solution.remarks],

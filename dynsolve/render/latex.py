@@ -26,6 +26,9 @@ from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.fbd_tikz import free_body_tikz
 from dynsolve.results import (
+    FAILED,
+    NOT_RUN,
+    PASSED,
     AnswerRow,
     Assumption,
     Check,
@@ -41,6 +44,7 @@ from dynsolve.results import (
     Solution,
     Step,
     Trial,
+    check_counts,
 )
 
 PREAMBLE = r"""\documentclass[11pt]{article}
@@ -698,21 +702,29 @@ def _mark(passed: bool) -> str:
     return "$\\checkmark$" if passed else "$\\times$"
 
 
+def _status_mark(status: str) -> str:
+    """✓ passed, × failed, – not run (could not run or decide)."""
+    return "--" if status == NOT_RUN else _mark(status == PASSED)
+
+
 def _checks_section(checks: Sequence[Check]) -> str:
     if not checks:
         return "\\subsection*{Checks}\nNo checks."
-    failed = sum(not c.passed for c in checks)
+    _, failed, not_run = check_counts(checks)
     verdict = f"All {len(checks)} checks passed."
+    if not_run:
+        verdict = f"{len(checks) - not_run} of {len(checks)} checks passed; {not_run} not run."
     if failed:
         verdict = f"\\textbf{{{failed} of {len(checks)} checks failed.}}"
-    items = [f"\\item[{_mark(c.passed)}] {_check_text(c)}" for c in checks]
+        verdict += f" {not_run} not run." if not_run else ""
+    items = [f"\\item[{_status_mark(c.status)}] {_check_text(c)}" for c in checks]
     return "\n".join(["\\subsection*{Checks}", verdict, r"\begin{itemize}", *items,
                       r"\end{itemize}"])  # fmt: skip
 
 
 def _check_text(check: Check) -> str:
     detail = f": {escape_latex(pretty_unit(check.detail))}" if check.detail.strip() else ""
-    status = "" if check.passed else " (failed)"
+    status = {PASSED: "", FAILED: " (failed)", NOT_RUN: " (not run)"}[check.status]
     return f"\\textbf{{{escape_latex(check.name)}}}{status}{detail}"
 
 
@@ -828,7 +840,7 @@ def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
     """The "Assumptions" subsection: each assumption made to solve, and whether it held."""
     if not assumptions:
         return []
-    items = [f"\\item[{_mark(a.holds)}] {_assumption_text(a)}" for a in assumptions]
+    items = [f"\\item[{_status_mark(a.status)}] {_assumption_text(a)}" for a in assumptions]
     return ["\n".join(["\\subsection*{Assumptions}", r"\begin{itemize}", *items,
                        r"\end{itemize}"])]  # fmt: skip
 
@@ -836,5 +848,5 @@ def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
 def _assumption_text(assumption: Assumption) -> str:
     detail = pretty_unit(assumption.detail)
     detail = f": {caption_latex(detail)}" if detail.strip() else ""
-    status = "holds" if assumption.holds else "\\textbf{fails}"
+    status = {PASSED: "holds", FAILED: "\\textbf{fails}", NOT_RUN: "not decided"}[assumption.status]
     return f"\\textbf{{{escape_latex(assumption.name) or '?'}}} ({status}){detail}"

@@ -17,6 +17,8 @@ from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.results import (
+    NOT_RUN,
+    PASSED,
     AnswerRow,
     Assumption,
     Check,
@@ -30,6 +32,7 @@ from dynsolve.results import (
     Solution,
     Step,
     Trial,
+    check_counts,
 )
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|$~#&])")
@@ -141,6 +144,11 @@ def _table(header: Sequence[str], align: Sequence[str], rows: Sequence[Sequence[
 
 def _mark(passed: bool) -> str:
     return "✓" if passed else "✗"
+
+
+def _status_mark(status: str) -> str:
+    """✓ passed, ✗ failed, – not run (could not run or decide)."""
+    return "–" if status == NOT_RUN else _mark(status == PASSED)
 
 
 # ---- sections
@@ -297,18 +305,21 @@ def _answer_cells(answer: AnswerRow, key: KeyComparison | None, keyed: bool) -> 
 def _checks_section(checks: Sequence[Check]) -> str:
     if not checks:
         return "## Checks\n\nNo checks."
-    failed = sum(not c.passed for c in checks)
+    _, failed, not_run = check_counts(checks)
     verdict = f"All {len(checks)} checks passed."
+    if not_run:
+        verdict = f"{len(checks) - not_run} of {len(checks)} checks passed; {not_run} not run."
     if failed:
         verdict = f"**{failed} of {len(checks)} checks failed.**"
-    rows = [[_mark(c.passed), escape_markdown(c.name), _check_detail(c)] for c in checks]
+        verdict += f" {not_run} not run." if not_run else ""
+    rows = [[_status_mark(c.status), escape_markdown(c.name), _check_detail(c)] for c in checks]
     return f"## Checks\n\n{verdict}\n\n" + _table(
         ["", "Check", "Detail"], [":-:", ":--", ":--"], rows
     )
 
 
 def _check_detail(check: Check | Assumption) -> str:
-    return escape_markdown(pretty_unit(check.detail))
+    return escape_markdown(pretty_unit(check.shown_detail))
 
 
 # ---- scene mode
@@ -371,6 +382,9 @@ def _assumptions_section(assumptions: Sequence[Assumption]) -> list[str]:
     """The "Assumptions" table: each assumption made to solve, and whether it held."""
     if not assumptions:
         return []
-    rows = [[_mark(a.holds), escape_markdown(a.name) or "?", _check_detail(a)] for a in assumptions]
+    rows = [
+        [_status_mark(a.status), escape_markdown(a.name) or "?", _check_detail(a)]
+        for a in assumptions
+    ]
     table = _table(["", "Assumption", "Detail"], [":-:", ":--", ":--"], rows)
     return [f"## Assumptions\n\n{table}"]

@@ -22,6 +22,8 @@ from rich.text import Text
 from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import pretty
 from dynsolve.results import (
+    NOT_RUN,
+    PASSED,
     Assumption,
     Check,
     EquationRow,
@@ -197,9 +199,15 @@ def _answers(solution: Solution) -> Table:
 def _checks(checks: tuple[Check, ...]) -> Table:
     table = _table("", "check", "detail")
     for c in checks:
-        mark = Text("✓", style="green") if c.passed else Text("✗", style="bold red")
-        table.add_row(mark, Text(c.name), Text(c.detail))
+        table.add_row(_status_mark(c.status), Text(c.name), Text(c.shown_detail))
     return table
+
+
+def _status_mark(status: str) -> Text:
+    """✓ passed, ✗ failed, – not run (could not run or decide)."""
+    if status == NOT_RUN:
+        return Text("–", style="yellow")
+    return Text("✓", style="green") if status == PASSED else Text("✗", style="bold red")
 
 
 def _free_body(body: FreeBody) -> RenderableType:
@@ -230,8 +238,7 @@ def _free_body(body: FreeBody) -> RenderableType:
 def _assumptions(assumptions: tuple[Assumption, ...]) -> Table:
     table = _table("", "assumption", "detail")
     for a in assumptions:
-        mark = Text("✓", style="green") if a.holds else Text("✗", style="bold red")
-        table.add_row(mark, Text(a.name), Text(pretty_unit(a.detail)))
+        table.add_row(_status_mark(a.status), Text(a.name), Text(pretty_unit(a.shown_detail)))
     return table
 
 

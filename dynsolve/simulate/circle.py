@@ -110,7 +110,7 @@ def circle_check(
         angle, speed, why = circle_event(scene, travel, symbols, values)
         theta, v = (_numbers(values)(a) for a in answers)
     except (NotOnCircle, ValueError, ArithmeticError) as exc:
-        return Check(name, True, f"not simulated: {exc}")
+        return Check.not_run(name, f"not simulated: {exc}")
     how = "R φ'' = g·t̂ in φ, solve_ivp DOP853 (rtol 1e-12) to the event side·(R φ'² + g·ê) = 0; "
     if why:
         return Check(name, False, how + f"{why}, where the principle finds the event")

@@ -70,9 +70,9 @@ def simulate_leg(
         qd0 = start_rate(motion, leg.scene, values)
         run = _run(motion, q_end, qd0)
     except NotSimulable as exc:
-        return Check(name, True, f"not simulated: {exc}")
+        return Check.not_run(name, f"not simulated: {exc}")
     except (ArithmeticError, ValueError, TypeError) as exc:  # a singular or complex motion
-        return Check(name, True, f"not simulated: the integration failed ({exc})")
+        return Check.not_run(name, f"not simulated: the integration failed ({exc})")
     length = LENGTH_UNITS.get(system, "m")
     unit = length if motion.unit == "m" else motion.unit
     how = (
@@ -86,7 +86,7 @@ def simulate_leg(
         else:
             passed, detail = _reaches(motion, run, q_end, leg, values, length)
     except NotSimulable as exc:
-        return Check(name, True, f"not simulated: {exc}")
+        return Check.not_run(name, f"not simulated: {exc}")
     return Check(name, bool(passed), how + detail)
 
 

@@ -54,7 +54,7 @@ def simulation_checks(
                 continue
             label = f"stage {record.stage.number}"
             if record.scene is None:
-                notes.append(Check(f"simulation: {label}", True, "not simulated: " + _why(event)))
+                notes.append(Check.not_run(f"simulation: {label}", "not simulated: " + _why(event)))
                 continue
             end = formulation.states[record.stage.number]
             legs.append(
@@ -70,7 +70,7 @@ def simulation_checks(
     elif len(scene.travels) == 1:
         (travel,) = scene.travels.values()
         if travel.kind == "for":
-            notes.append(Check("simulation", True, "not simulated: " + _why(travel)))
+            notes.append(Check.not_run("simulation", "not simulated: " + _why(travel)))
         else:
             turn = formulation.turns.get(travel.body)
             legs.append(Leg("", scene, travel, formulation.speeds, formulation.spins, turn))
@@ -78,7 +78,7 @@ def simulation_checks(
     if symbolic:  # nothing to integrate: said once per travel, without building anything
         why = f"not simulated: symbolic givens ({', '.join(symbolic)}) have no values"
         return tuple(notes) + tuple(
-            Check(f"simulation: {leg.label}" if leg.label else "simulation", True, why)
+            Check.not_run(f"simulation: {leg.label}" if leg.label else "simulation", why)
             for leg in legs
         )
     return tuple(notes) + tuple(_checked(leg, symbols, substitution, system) for leg in legs)
@@ -107,7 +107,7 @@ def _checked(
         answers = (leg.turn, leg.speeds[leg.travel.body])
         return circle_check(name, leg.scene, leg.travel, answers, symbols, values)
     if leg.travel.kind not in SIMULATED_KINDS:
-        return Check(name, True, f"not simulated: a travel '{leg.travel.kind}' is not simulated")
+        return Check.not_run(name, f"not simulated: a travel '{leg.travel.kind}' is not simulated")
     from dynsolve.simulate.crosscheck import simulate_leg
 
     return simulate_leg(leg, symbols, values, system)

@@ -20,7 +20,7 @@ from __future__ import annotations
 import difflib
 import functools
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from importlib import resources
@@ -89,8 +89,9 @@ _FIELDS = {
     "vary": "vary",
     "grading": "grading",
 }
-SYSTEMS = {"si": "SI", "fps": "FPS"}
-SYSTEM_ALIASES = {"us": "FPS", "uscs": "FPS", "imperial": "FPS", "metric": "SI", "english": "FPS"}
+# US customary, as textbooks name it, is FPS (ft, lb, s)
+SYSTEMS = {"si": "SI", "fps": "FPS", "us": "FPS", "uscs": "FPS", "us customary": "FPS"}
+SYSTEM_ALIASES = {"imperial": "FPS", "metric": "SI", "english": "FPS"}
 FUNCTIONS = {
     "sin": 1,
     "cos": 1,
@@ -261,7 +262,7 @@ def parse_spec(text: str, file: str = "<spec>") -> Spec:
                 break
     if errors:
         raise with_others(errors)
-    return _finish(parts, file)
+    return _finish(parts, file, seen)
 
 
 def _split_comment(raw: str) -> tuple[str, str]:
@@ -333,8 +334,8 @@ def _header(
 
 
 def _system(word: str, file: str, line: int, column: int) -> str:
-    if word.lower() in SYSTEMS:
-        return SYSTEMS[word.lower()]
+    if " ".join(word.lower().split()) in SYSTEMS:
+        return SYSTEMS[" ".join(word.lower().split())]
     alias = SYSTEM_ALIASES.get(word.lower())
     hint = f"write 'units: {alias}'" if alias else "use 'SI' or 'FPS' (US customary)"
     raise SpecError(f"unknown unit system '{word}'", Position(file, line, column), hint)
@@ -1363,7 +1364,25 @@ def _literal_value(expr: Expr) -> Fraction | None:
     return None
 
 
-def _finish(parts: _Sections, file: str) -> Spec:
+def _finish(parts: _Sections, file: str, lines: Mapping[str, int]) -> Spec:
+    """The sections frozen into a Spec; ``lines`` are their headers' lines. Sections no
+    front end reads together are an error, never one of them silently ignored; so is a
+    section header with nothing under it."""
+    for key, line in lines.items():
+        if key in _FIELDS and key != "find" and not getattr(parts, _FIELDS[key]):
+            raise SpecError(
+                f"section '{key}:' is empty",
+                Position(file, line, 1),
+                hint=f"indent the lines of '{key}:' under it, or remove the header",
+            )
+    if parts.scene and parts.kinematics:
+        raise SpecError(
+            f"a scene: section cannot yet be combined with a kinematics: section "
+            f"(line {lines['kinematics']}): one of them would be ignored",
+            Position(file, lines["scene"], 1),
+            hint="solve the particle's motion law (kinematics:) and the scene in two specs, "
+            "or write the motion in the scene with travel lines",
+        )
     if parts.defines and parts.scene is None and parts.kinematics is None:
         raise SpecError(
             "'define:' lists quantities of a scene or a motion; this spec has no 'scene:' "
