@@ -15,11 +15,12 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import PurePath
 
 from latex2mathml.converter import convert
 
-from dynsolve.format import lines_phrase, pretty_unit
+from dynsolve.format import and_list, lines_phrase, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.latex import caption_pieces, free_body_picture, kinetic_math, safe_math
@@ -120,6 +121,7 @@ def html_article(solution: Solution, layout: Layout = "full") -> ET.Element:
     """The derivation as an ``<article class="dynsolve">`` element."""
     plan = sheet_plan(layout)
     key = solution.key if "key" in plan else ()
+    tags = _Tags.of(solution, layout)
     parts: dict[str, Callable[[], list[ET.Element]]] = {
         "title": lambda: _title(solution),
         "handout_title": lambda: _title(solution, handout=True),
@@ -130,13 +132,13 @@ def html_article(solution: Solution, layout: Layout = "full") -> ET.Element:
         "givens": lambda: _givens(solution.givens, solution.system),
         "free_body": lambda: _figures(solution),
         "assumptions": lambda: _assumptions(solution.assumptions),
-        "trials": lambda: [e for t in solution.trials for e in _trial(t, layout)],
+        "trials": lambda: [e for t in solution.trials for e in _trial(t, tags)],
         "equations": lambda: [
-            *_equations(solution.equations, layout),
-            *_second_moments(solution.second_moments, layout),
+            *_equations(solution.equations, tags),
+            *_second_moments(solution.second_moments, tags),
         ],
         "energy": lambda: _energy(solution.energy),
-        "steps": lambda: _solution(solution.steps),
+        "steps": lambda: _solution(solution.steps, tags),
         "answers": lambda: [
             *_answers(solution.answers, key),
             *(_el("p", None, _el("em", None, "Remark: "), *_remark(r)) for r in solution.remarks),
@@ -217,9 +219,21 @@ def _math_or_empty(fragment: str) -> list[Item]:
     return [math(fragment)] if fragment.strip() else []
 
 
+_NAME = re.compile(r"(?<![\w./])([A-Za-zα-ωΑ-Ω][A-Za-z0-9α-ω]*(?:_[A-Za-z0-9α-ω]+)+)(?![\w/])")
+
+
 def _caption(text: str) -> list[Item]:
-    """A caption or note: its symbols as MathML, the words as text."""
-    return [math(piece) if is_math else piece for is_math, piece in caption_pieces(text)]
+    """A caption or note: its symbols as MathML (``ΣF_x``, and every name with a subscript,
+    ``a_Gx_block``, as the equations write it), the words as text."""
+    out: list[Item] = []
+    for is_math, piece in caption_pieces(text):
+        if is_math:
+            out.append(math(piece))
+            continue
+        for k, part in enumerate(_NAME.split(piece)):
+            if part:
+                out.append(math(latex_name(part)) if k % 2 else part)
+    return out
 
 
 def _mark(passed: bool) -> ET.Element:
@@ -362,6 +376,48 @@ def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
 # ---- assumptions, equations, energy
 
 
+@dataclass(frozen=True)
+class _Tags:
+    """How equations are tagged: by their spec line on the full sheet; numbered (1), (2), …
+    in the order shown on the handout, which has no spec to point at."""
+
+    numbers: dict[int, int] | None  # spec line -> number; None: tag by line
+
+    @classmethod
+    def of(cls, solution: Solution, layout: Layout) -> _Tags:
+        if layout != "handout":
+            return cls(None)
+        rows = [row for t in solution.trials for row in (*t.equations, *t.second_moments)]
+        numbers: dict[int, int] = {}
+        for row in (*rows, *solution.equations, *solution.second_moments):
+            numbers.setdefault(row.line, len(numbers) + 1)
+        return cls(numbers)
+
+    def tag(self, line: int) -> str:
+        """``(line 3)``, or ``(2)`` on the handout.
+
+        >>> _Tags(None).tag(3), _Tags({3: 2}).tag(3)
+        ('(line 3)', '(2)')
+        """
+        return f"(line {line})" if self.numbers is None else f"({self.numbers.get(line, '?')})"
+
+    def phrase(self, lines: Sequence[int]) -> str:
+        """How a step names its equations: ``Equations (lines 3–5) give``, or on the
+        handout ``Equations (1), (2) and (4) give``.
+
+        >>> _Tags({3: 1, 5: 2, 9: 4}).phrase([9, 3, 5])
+        'Equations (1), (2) and (4) give'
+        """
+        if self.numbers is None:
+            return lines_phrase(lines)
+        shown = sorted({self.numbers[n] for n in lines if n in self.numbers})
+        if not shown:
+            return "The solver gives"
+        if len(shown) == 1:
+            return f"Equation ({shown[0]}) gives"
+        return f"Equations {and_list([f'({n})' for n in shown])} give"
+
+
 def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
     if not assumptions:
         return []
@@ -377,28 +433,28 @@ def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
     return [_el("h2", None, "Assumptions"), _el("ul", {"class": "marked"}, *items)]
 
 
-def _equations(rows: Sequence[EquationRow], layout: Layout, level: str = "h2") -> list[ET.Element]:
+def _equations(rows: Sequence[EquationRow], tags: _Tags, level: str = "h2") -> list[ET.Element]:
     out = [_el(level, None, "Equations")]
     if not rows:
         return [*out, _el("p", None, "No equations.")]
-    return out + [_equation(e, layout) for e in rows]
+    return out + [_equation(e, tags) for e in rows]
 
 
 def _second_moments(
-    rows: Sequence[EquationRow], layout: Layout, level: str = "h2"
+    rows: Sequence[EquationRow], tags: _Tags, level: str = "h2"
 ) -> list[ET.Element]:
     if not rows:
         return []
     title = _el(level, None, "A second moment point (a check, not used to solve)")
-    return [title, *(_equation(e, layout) for e in rows)]
+    return [title, *(_equation(e, tags) for e in rows)]
 
 
 _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 
 
-def _equation(row: EquationRow, layout: Layout) -> ET.Element:
-    """The principle, the unit check on the right, then the equation displayed (with its
-    spec line, except on the handout)."""
+def _equation(row: EquationRow, tags: _Tags) -> ET.Element:
+    """The principle, the unit check on the right, then the equation displayed with its
+    tag."""
     note = _caption(row.note)
     if row.constraint:
         note = ["Constraint", *([": ", *note] if note else [])]
@@ -409,9 +465,8 @@ def _equation(row: EquationRow, layout: Layout) -> ET.Element:
         units.append(_mark(True))
     else:
         units = [_el("strong", None, "dimensions differ "), *units, _mark(False)]
-    display: list[Item] = [math(row.latex or "?", display=True)]
-    if layout != "handout":
-        display.append(_el("span", {"class": "tag"}, f"(line {row.line})"))
+    tag = _el("span", {"class": "tag"}, tags.tag(row.line))
+    display: list[Item] = [math(row.latex or "?", display=True), tag]
     return _el(
         "div",
         {"class": "equation"},
@@ -437,26 +492,26 @@ def _energy(terms: Sequence[EnergyTerm]) -> list[ET.Element]:
 # ---- solve, trials
 
 
-def _trial(trial: Trial, layout: Layout) -> list[ET.Element]:
+def _trial(trial: Trial, tags: _Tags) -> list[ET.Element]:
     """A case assumed first: its equations and solve, then the check that rejected it."""
     return [
         _el("h2", None, f"Trial: {trial.assumption} (assumed, then checked)"),
-        *_equations(trial.equations, layout, "h3"),
-        *_solution(trial.steps, "h3"),
-        *_second_moments(trial.second_moments, layout, "h3"),
-        _el("p", None, _el("strong", None, "Check: "), _mark(False), " ", trial.verdict),
+        *_equations(trial.equations, tags, "h3"),
+        *_solution(trial.steps, tags, "h3"),
+        *_second_moments(trial.second_moments, tags, "h3"),
+        _el("p", None, _el("strong", None, "Check: "), _mark(False), " ", *_caption(trial.verdict)),
         *(_el("p", None, _el("em", None, "Remark: "), r) for r in trial.remarks),
     ]
 
 
-def _solution(steps: Sequence[Step], level: str = "h2") -> list[ET.Element]:
+def _solution(steps: Sequence[Step], tags: _Tags, level: str = "h2") -> list[ET.Element]:
     out = [_el(level, None, "Solution")]
     if not steps:
         return [*out, _el("p", None, "No solve steps.")]
-    return out + [e for s in steps for e in _step(s)]
+    return out + [e for s in steps for e in _step(s, tags)]
 
 
-def _step(step: Step) -> list[ET.Element]:
+def _step(step: Step, tags: _Tags) -> list[ET.Element]:
     if step.heading:
         lead: list[Item] = _caption(step.heading)
     else:
@@ -464,14 +519,14 @@ def _step(step: Step) -> list[ET.Element]:
         for k, name in enumerate(step.unknowns):
             joint = "" if k == 0 else " and " if k == len(step.unknowns) - 1 else ", "
             names += [joint, _name(name)] if joint else [_name(name)]
-        lead = [f"{lines_phrase(step.lines)} ", *names]
+        lead = [f"{tags.phrase(step.lines)} ", *names]
     out = [_el("p", None, _el("strong", None, f"Step {step.index}. "), *lead, f" ({step.method}):")]
     out += [_result(r) for r in step.results]
     if step.discarded:
-        items = [_el("li", None, pretty_unit(d)) for d in step.discarded]
+        items = [_el("li", None, *_caption(pretty_unit(d))) for d in step.discarded]
         out += [_el("p", None, "Discarded roots:"), _el("ul", None, *items)]
     if step.note.strip():
-        out.append(_el("p", {"class": "note"}, _el("em", None, step.note)))
+        out.append(_el("p", {"class": "note"}, _el("em", None, *_caption(step.note))))
     return out
 
 
@@ -545,7 +600,7 @@ def _checks(checks: Sequence[Check]) -> list[ET.Element]:
         verdict = _el("strong", None, f"{failed} of {len(checks)} checks failed.")
     items = []
     for c in checks:
-        detail = [f": {pretty_unit(c.detail)}"] if c.detail.strip() else []
+        detail = [": ", *_caption(pretty_unit(c.detail))] if c.detail.strip() else []
         status = "" if c.passed else " (failed)"
         items.append(_el("li", None, _mark(c.passed), " ", _el("strong", None, c.name),
                          status, *detail))  # fmt: skip
