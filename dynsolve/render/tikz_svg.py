@@ -29,7 +29,6 @@ from dataclasses import dataclass, field
 Point = tuple[float, float]
 PT_MM = 25.4 / 72.27  # one TeX point in millimetres
 FONT_MM = 3.6  # the labels' size (TeX's 10 pt)
-CHAR_EM = 0.55  # a label character's width, in em, for placing it
 SEP_MM = 0.3333 * FONT_MM  # TikZ's default inner sep
 PX_PER_MM = 4.2  # the figure on screen: a little larger than print
 WIDTHS = {
@@ -90,6 +89,8 @@ class _Label:
     anchor: float | None
     shift: float = SEP_MM
     fill: str | None = None
+    colour: str = "#000"  # a node on a path takes the path's colour, as in TikZ
+    corner: bool = False  # the anchor is a corner of the box (north east, …)
 
 
 @dataclass
@@ -233,13 +234,17 @@ def _label(text: str, at: Point, options: list[str], normal: Point | None) -> _L
         key, _, value = option.partition("=")
         if key == "anchor":
             label.anchor = float(ANCHORS[value]) if value in ANCHORS else float(value)
+            label.corner = " " in value
         elif key == "inner sep":
             label.shift = float(value.removesuffix("pt")) * PT_MM
         elif key == "fill":
             label.fill = COLOURS.get(value, "#fff")
+        elif option in COLOURS:
+            label.colour = COLOURS[option]
     for option in places:
         key, _, value = option.partition("=")
         label.anchor = ANCHORS[PLACES[key]]
+        label.corner = " " in PLACES[key]
         if value:
             label.shift += float(value.removesuffix("mm"))
     if "auto" in options and normal is not None:
@@ -327,14 +332,16 @@ def _path_command(command: str, drawing: _Drawing, ident: str) -> None:
             closed.append(False)
             last = ("arc", (centre, radius, start, end))
         elif match["node"]:
-            i = _path_node(command, i, last, drawing)
+            i = _path_node(command, i, last, drawing, style.colour)
     for points, shut in zip(subpaths, closed, strict=True):
         if len(points) > 1:
             drawing.shapes += _polyline(points, shut, style, ident)
             drawing.cover(*points)
 
 
-def _path_node(command: str, i: int, last: tuple[str, tuple], drawing: _Drawing) -> int:
+def _path_node(
+    command: str, i: int, last: tuple[str, tuple], drawing: _Drawing, colour: str
+) -> int:
     """A ``node[...] {TEXT}`` on a path: at the end of the piece it follows, or at ``pos``,
     ``midway`` or ``at start``."""
     options: list[str] = []
@@ -367,7 +374,9 @@ def _path_node(command: str, i: int, last: tuple[str, tuple], drawing: _Drawing)
         at = _polar(centre, radius, start + pos * (end - start))
     else:
         at = data[0]
-    drawing.labels.append(_label(text, at, options, normal))
+    label = _label(text, at, options, normal)
+    label.colour = colour if label.colour == "#000" else label.colour
+    drawing.labels.append(label)
     return i
 
 
@@ -502,21 +511,24 @@ def _svg(drawing: _Drawing, ident: str) -> ET.Element:
     texts = []
     for label in drawing.labels:
         runs = label_runs(label.text)
-        width = max(1.0, sum(len(t) * (0.7 if k != "" else 1.0) for t, k, _ in runs))
-        w, h = width * CHAR_EM * FONT_MM, FONT_MM * 1.15
+        w, h = max(FONT_MM / 2, _width(runs)), FONT_MM * 1.15
         cx, cy = label.at
         if label.anchor is not None:
             angle = math.radians(label.anchor)
             c, s = math.cos(angle), math.sin(angle)
-            reach = min(w / 2 / abs(c) if abs(c) > 1e-9 else math.inf,
-                        h / 2 / abs(s) if abs(s) > 1e-9 else math.inf)  # fmt: skip
-            cx -= (reach + label.shift) * c
-            cy -= (reach + label.shift) * s
+            if label.corner:  # north east, …: the box's corner at the point
+                cx -= math.copysign(w / 2 + label.shift, c)
+                cy -= math.copysign(h / 2 + label.shift, s)
+            else:  # the box's border point in that direction at the point
+                reach = min(w / 2 / abs(c) if abs(c) > 1e-9 else math.inf,
+                            h / 2 / abs(s) if abs(s) > 1e-9 else math.inf)  # fmt: skip
+                cx -= (reach + label.shift) * c
+                cy -= (reach + label.shift) * s
         drawing.cover((cx - w / 2, cy - h / 2), (cx + w / 2, cy + h / 2))
         if label.fill:
             box = {"x": _n(cx - w / 2), "y": _n(-cy - h / 2), "width": _n(w), "height": _n(h)}
             texts.append(ET.Element("rect", {**box, "fill": label.fill}))
-        texts.append(_text(runs, (cx, cy)))
+        texts.append(_text(runs, (cx, cy), label.colour))
     x0, y0, x1, y1 = drawing.box if math.isfinite(drawing.box[0]) else [0.0, 0.0, 1.0, 1.0]
     margin = 1.5
     view = (x0 - margin, -y1 - margin, x1 - x0 + 2 * margin, y1 - y0 + 2 * margin)
@@ -540,6 +552,17 @@ def _svg(drawing: _Drawing, ident: str) -> ET.Element:
     return svg
 
 
+def _width(runs: list[tuple[str, str, bool]]) -> float:
+    """About how wide a label's runs are set (mm): capitals wider than small letters, a
+    subscript or superscript at 70 %."""
+    em = 0.0
+    for chunk, level, _italic in runs:
+        size = 0.7 if level else 1.0
+        for char in chunk:
+            em += size * (0.72 if char.isupper() else 0.25 if char.isspace() else 0.5)
+    return em * FONT_MM
+
+
 def _hatch(ident: str) -> ET.Element:
     """The ``north east lines`` pattern, as a hatched support or ground."""
     defs = ET.Element("defs")
@@ -554,22 +577,25 @@ def _hatch(ident: str) -> ET.Element:
     return defs
 
 
-def _text(runs: list[tuple[str, str, bool]], at: Point) -> ET.Element:
-    """A label's runs as ``<text>``, centred on ``at``: subscripts and superscripts as
-    smaller ``tspan``\\ s shifted down or up (and back), italic where it is mathematics."""
+def _text(runs: list[tuple[str, str, bool]], at: Point, colour: str = "#000") -> ET.Element:
+    """A label's runs as ``<text>`` in ``colour``, centred on ``at``: subscripts and
+    superscripts as smaller ``tspan``\\ s shifted down or up (and back), italic where it is
+    mathematics."""
     text = ET.Element(
         "text",
         {"x": _n(at[0]), "y": _n(-at[1] + 0.35 * FONT_MM), "text-anchor": "middle",
          "font-family": "'Latin Modern Roman','Computer Modern',Cambria,'Times New Roman',serif"},
     )  # fmt: skip
+    if colour != "#000":
+        text.set("fill", colour)
     level = ""
     for chunk, kind, italic in runs:
         span = ET.SubElement(text, "tspan")
         span.text = chunk
         shift = {("", "sub"): 0.3, ("", "sup"): -0.4, ("sub", ""): -0.3, ("sup", ""): 0.4,
                  ("sub", "sup"): -0.7, ("sup", "sub"): 0.7}.get((level, kind), 0.0)  # fmt: skip
-        if shift:
-            span.set("dy", f"{_n(shift)}em" if kind == "" else f"{_n(shift / 0.7)}em")
+        if shift:  # in user units (mm): an em would be the smaller span's own
+            span.set("dy", _n(shift * FONT_MM))
         if kind:
             span.set("font-size", "70%")
         if italic:
