@@ -238,3 +238,15 @@ def test_jupyter_shows_the_same_page() -> None:
     shown = dynsolve.solve(DRUM)._repr_html_()
     assert shown.startswith("<style>") and '<article class="dynsolve">' in shown
     assert shown.count("<svg") == DRUM_FIGURES and "<math" in shown and "<html" not in shown
+
+
+def test_a_greek_letter_spelt_out_in_a_note_is_the_letter() -> None:
+    # regression: "mu_s" in an assumption's detail was set as m·u_s (LaTeX and HTML alike)
+    from dynsolve.render.latex import caption_latex
+    from dynsolve.results import Assumption
+
+    assert caption_latex("(no mu_s: static)") == "(no $\\mu_{s}$: static)"
+    solution = Solution("c.dyn", "Crate", "", "SI", "scene", (), (), (), (), (), (), "solved",
+                        assumptions=(Assumption("sliding", True, "no mu_s: static"),))  # fmt: skip
+    page = render_html(solution)
+    assert "<msub><mi>μ</mi><mrow><mi>s</mi></mrow></msub>" in page and "<mi>u</mi>" not in page

@@ -193,9 +193,34 @@ def math(latex: str, display: bool = False) -> ET.Element:
     return element
 
 
+_FUNCTIONS = frozenset(
+    [
+        "sin",
+        "cos",
+        "tan",
+        "cot",
+        "sec",
+        "csc",
+        "asin",
+        "acos",
+        "atan",
+        "arcsin",
+        "arccos",
+        "arctan",
+        "sinh",
+        "cosh",
+        "tanh",
+        "exp",
+        "log",
+        "ln",
+    ]
+)
+
+
 def _tighten(element: ET.Element) -> None:
     """Operator spacing as in print: no space around the ``/`` of a unit (m/s²), none
-    after a sign that starts a row or follows ``=`` (``= −11.3``)."""
+    after a sign that starts a row or follows ``=`` (``= −11.3``), brackets around a
+    single line not stretched (``cos(θ)``), a thin space before a function's name."""
     for row in element.iter():
         before = None
         for child in row:
@@ -209,6 +234,15 @@ def _tighten(element: ET.Element) -> None:
                 child.set("lspace", "0")
                 child.set("rspace", "0")
             before = child
+        for k, child in reversed(list(enumerate(row))):
+            if k and child.tag == "mi" and child.text in _FUNCTIONS and row[k - 1].tag != "mo":
+                row.insert(k, ET.Element("mspace", {"width": "0.167em"}))  # L cos θ, as TeX
+        fences = [c for c in row if c.tag == "mo" and c.get("fence") == "true"]
+        if fences and not any(e.tag in ("mfrac", "msqrt", "mroot") for e in row.iter()):
+            for fence in fences:  # around one line: the font's own brackets, no gaps
+                fence.set("stretchy", "false")
+                fence.set("lspace", "0")
+                fence.set("rspace", "0")
 
 
 def _name(name: str) -> ET.Element:

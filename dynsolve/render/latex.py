@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import PurePath
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
-from dynsolve.names import latex_name
+from dynsolve.names import GREEK, latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.fbd_tikz import free_body_tikz
 from dynsolve.results import (
@@ -498,6 +498,8 @@ def caption_pieces(text: str) -> list[tuple[bool, str]]:
 
     >>> caption_pieces("ΣF_x = m")
     [(True, '\\\\Sigma F_{x}'), (False, ' = m')]
+    >>> caption_pieces("no mu_s")  # a Greek letter spelt out
+    [(False, 'no '), (True, '\\\\mu_{s}')]
     """
     out: list[tuple[bool, str]] = []
     last = 0
@@ -508,7 +510,8 @@ def caption_pieces(text: str) -> list[tuple[bool, str]]:
             math = f"({safe_math(base).strip()}_{{{inner}}})_{{{outer}}}"
         else:
             sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match.group(4)]
-            base = safe_math(match.group(5)).strip()
+            word = match.group(5)  # a Greek letter spelt out (mu_s) is the letter
+            base = latex_name(word) if word in GREEK else safe_math(word).strip()
             math = f"{sigma}{base}_{{{match.group(6)}}}{_POWERS[match.group(7)]}"
         out.append((True, math))
         last = match.end()
