@@ -250,3 +250,14 @@ def test_a_greek_letter_spelt_out_in_a_note_is_the_letter() -> None:
                         assumptions=(Assumption("sliding", True, "no mu_s: static"),))  # fmt: skip
     page = render_html(solution)
     assert "<msub><mi>μ</mi><mrow><mi>s</mi></mrow></msub>" in page and "<mi>u</mi>" not in page
+
+
+def test_a_scene_with_nothing_to_draw_has_no_empty_figure() -> None:
+    # the ellipse's track is given by its equation: the sheet's scene picture is empty
+    from dynsolve.results import SceneSketch
+
+    empty = SceneSketch((), (), (), (), (), (), (), (), (), False)
+    solution = Solution("e.dyn", "Track", "", "SI", "scene", (), (), (), (), (), (), "solved",
+                        sketch=empty)  # fmt: skip
+    page = render_html(solution)
+    assert "The scene" not in page and "<svg" not in page

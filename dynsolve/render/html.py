@@ -339,12 +339,10 @@ def _figures(solution: Solution) -> list[ET.Element]:
     if solution.sketch is not None:
         from dynsolve.render.scene_figure import scene_picture
 
-        out.append(_el("h2", None, "The scene"))
-        out.append(
-            _el(
-                "figure", {"class": "scene"}, *svg_pictures(scene_picture(solution.sketch), "scene")
-            )
-        )
+        pictures = [p for p in svg_pictures(scene_picture(solution.sketch), "scene") if len(p)]
+        if pictures:  # a scene with nothing to draw (a path given by its equation) has none
+            out.append(_el("h2", None, "The scene"))
+            out.append(_el("figure", {"class": "scene"}, *pictures))
     if solution.free_body:
         out.append(_el("h2", None, "Free-body diagrams"))
         out += [_free_body(b, solution.system, k) for k, b in enumerate(solution.free_body)]
