@@ -78,6 +78,9 @@ def test_the_drum_page_has_each_figure_as_svg_and_each_equation_as_mathml(drum_p
     blocks = re.findall(r'<math display="block">', drum_page)
     assert len(blocks) >= DRUM_EQUATIONS + 3  # each equation, then α, a and T solved
     assert "mfrac" in page.tags and "msub" in page.tags
+    labels = [value for name, value in page.attrs if name == "aria-label"]
+    assert labels == ["The scene", "Free-body diagram of drum", "Kinetic diagram of drum",
+                      "Free-body diagram of block", "Kinetic diagram of block"]  # fmt: skip
     # the textbook's answers (Hibbeler 17.11: T = 106 N, α = 11.3 rad/s², a = 4.52 m/s²)
     answers = drum_page.split(">Answers<", 1)[1]
     for number in ("106", "11.3", "4.52"):

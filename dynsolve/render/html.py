@@ -339,7 +339,8 @@ def _figures(solution: Solution) -> list[ET.Element]:
     if solution.sketch is not None:
         from dynsolve.render.scene_figure import scene_picture
 
-        pictures = [p for p in svg_pictures(scene_picture(solution.sketch), "scene") if len(p)]
+        pictures = _labelled(svg_pictures(scene_picture(solution.sketch), "scene"), "The scene")
+        pictures = [p for p in pictures if len(p)]
         if pictures:  # a scene with nothing to draw (a path given by its equation) has none
             out.append(_el("h2", None, "The scene"))
             out.append(_el("figure", {"class": "scene"}, *pictures))
@@ -350,15 +351,27 @@ def _figures(solution: Solution) -> list[ET.Element]:
         from dynsolve.render.linkage_figure import linkage_picture
 
         out.append(_el("h2", None, "The linkage at the instant"))
-        pictures = svg_pictures(linkage_picture(solution.linkage), "linkage")
+        pictures = _labelled(svg_pictures(linkage_picture(solution.linkage), "linkage"), "Linkage")
         out.append(_el("figure", {"class": "linkage"}, *pictures))
     return out
+
+
+def _labelled(pictures: list[ET.Element], *names: str) -> list[ET.Element]:
+    """Each picture named for a screen reader (``aria-label``), in order."""
+    for picture, name in zip(pictures, names, strict=False):
+        picture.set("aria-label", name)
+    return pictures
 
 
 def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
     """One body: its free-body diagram = its kinetic diagram, then the facts."""
     shape = f" ({body.shape})" if body.shape.strip() else ""
-    pictures = svg_pictures(free_body_picture(body, system), f"body{index}")
+    name = body.body or "?"
+    pictures = _labelled(
+        svg_pictures(free_body_picture(body, system), f"body{index}"),
+        f"Free-body diagram of {name}",
+        f"Kinetic diagram of {name}",
+    )
     drawn: list[Item] = [pictures[0]]
     for picture in pictures[1:]:
         drawn += [_el("span", {"class": "equals"}, "="), picture]
