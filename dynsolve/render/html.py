@@ -78,7 +78,8 @@ STYLE = """
 .dynsolve .fail { color: #c00; font-weight: bold; }
 .dynsolve .warning { border-left: 4px solid #c60; padding-left: 0.6em; }
 @media print { .dynsolve { font-size: 11pt; max-width: none; }
-  .dynsolve .equation, .dynsolve figure, .dynsolve section.body { break-inside: avoid; } }
+  .dynsolve .equation, .dynsolve figure, .dynsolve section.body { break-inside: avoid; }
+  .dynsolve h1, .dynsolve h2, .dynsolve h3 { break-after: avoid; } }
 """
 
 
