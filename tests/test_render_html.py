@@ -152,6 +152,7 @@ def test_every_figure_of_the_sheet_is_on_the_page(name: str) -> None:
     solution = solve_file(ROOT / "problems" / "seed" / f"{name}.dyn", SolveOptions())
     page = render_html(solution)
     assert page.count("<svg") == render_latex(solution).count("\\begin{tikzpicture}") > 0
+    assert "not drawn" not in page
 
 
 # ---- the SVG back end of the figures
@@ -264,3 +265,32 @@ def test_a_scene_with_nothing_to_draw_has_no_empty_figure() -> None:
                         sketch=empty)  # fmt: skip
     page = render_html(solution)
     assert "The scene" not in page and "<svg" not in page
+
+
+def test_the_svg_back_end_reads_the_tikz_it_may_be_given() -> None:
+    (svg,) = svg_pictures(
+        "\\begin{tikzpicture}\n"
+        "\\filldraw[fill=gray!30,densely dashed] (0,0) rectangle (4,2);\n"
+        "\\draw[<-,blue!70] (0,0) -- (5,0);\n"
+        "\\draw[-{Stealth[length=2mm]}] (0,0) -- (0,5);\n"
+        "\\coordinate (A) at (1,1);\n"
+        "\\end{tikzpicture}"
+    )
+    rect, back, head, up, tip = list(svg)[:5]
+    assert rect.get("fill") == "#808080" and rect.get("stroke") == "#000"
+    assert rect.get("stroke-dasharray")
+    assert back.get("stroke") == head.get("fill") == "#0044cc"
+    assert head.get("points", "").startswith("0,0 ")  # <-: the head at the start
+    assert up.get("d") == "M0,0 L0,-5" and tip.get("points", "").startswith("0,-5 ")
+
+
+def test_a_figure_the_svg_back_end_cannot_draw_is_said_so(monkeypatch: pytest.MonkeyPatch) -> None:
+    from dynsolve.render import html
+
+    monkeypatch.setattr(
+        html,
+        "free_body_picture",
+        lambda body, system: "\\begin{tikzpicture}\n\\shade (0,0);\n\\end{tikzpicture}",
+    )
+    page = render_html(solve_file(DRUM, SolveOptions()))
+    assert "Free-body diagram of drum: not drawn (TikZ command not drawn as SVG" in page

@@ -340,7 +340,7 @@ def _figures(solution: Solution) -> list[ET.Element]:
     if solution.sketch is not None:
         from dynsolve.render.scene_figure import scene_picture
 
-        pictures = _labelled(svg_pictures(scene_picture(solution.sketch), "scene"), "The scene")
+        pictures = _drawn(scene_picture(solution.sketch), "scene", "The scene")
         pictures = [p for p in pictures if len(p)]
         if pictures:  # a scene with nothing to draw (a path given by its equation) has none
             out.append(_el("h2", None, "The scene"))
@@ -352,13 +352,18 @@ def _figures(solution: Solution) -> list[ET.Element]:
         from dynsolve.render.linkage_figure import linkage_picture
 
         out.append(_el("h2", None, "The linkage at the instant"))
-        pictures = _labelled(svg_pictures(linkage_picture(solution.linkage), "linkage"), "Linkage")
+        pictures = _drawn(linkage_picture(solution.linkage), "linkage", "Linkage")
         out.append(_el("figure", {"class": "linkage"}, *pictures))
     return out
 
 
-def _labelled(pictures: list[ET.Element], *names: str) -> list[ET.Element]:
-    """Each picture named for a screen reader (``aria-label``), in order."""
+def _drawn(tikz: str, ident: str, *names: str) -> list[ET.Element]:
+    """The TikZ pictures as SVG, each named for a screen reader (``aria-label``) in order;
+    a picture the SVG back end cannot draw is said so on the page, in its place."""
+    try:
+        pictures = svg_pictures(tikz, ident)
+    except ValueError as error:
+        return [_el("p", {"class": "fail"}, f"{names[0]}: not drawn ({error}).")]
     for picture, name in zip(pictures, names, strict=False):
         picture.set("aria-label", name)
     return pictures
@@ -368,8 +373,9 @@ def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
     """One body: its free-body diagram = its kinetic diagram, then the facts."""
     shape = f" ({body.shape})" if body.shape.strip() else ""
     name = body.body or "?"
-    pictures = _labelled(
-        svg_pictures(free_body_picture(body, system), f"body{index}"),
+    pictures = _drawn(
+        free_body_picture(body, system),
+        f"body{index}",
         f"Free-body diagram of {name}",
         f"Kinetic diagram of {name}",
     )

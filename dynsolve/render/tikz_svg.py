@@ -71,13 +71,14 @@ class _Style:
 
     width: float = 0.4 * PT_MM
     colour: str = "#000"
-    dashed: bool = False
+    dashed: str = ""  # the SVG dash pattern, "" for a solid line
     fill: str | None = None
     hatch: bool = False
-    arrows: str = ""  # "->", "<->" or ""
+    arrows: str = ""  # "->", "<-", "<->" or ""
     rounded: float = 0.0
     rotate: tuple[float, Point] | None = None
     zigzag: float = 0.0  # the zigzag's amplitude (mm), 0 for a straight line
+    stroke: bool = True  # \draw and \filldraw stroke; \fill and \path do not
 
 
 @dataclass
@@ -151,48 +152,64 @@ def _options(text: str) -> list[str]:
     return [o for o in out if o]
 
 
+# options that change nothing an SVG reader needs (fonts, spacing, the picture's frame)
+COSMETIC = frozenset({
+    "line cap", "line join", "decorate", "x", "y", "baseline", "font", "align", "text width",
+    "outer sep", "minimum size", "minimum width", "minimum height", "opacity", "draw opacity",
+    "fill opacity", "shorten >", "shorten <", "transform shape", "every node/.style",
+})  # fmt: skip
+DASHES = {
+    "dashed": "1.2 0.8", "densely dashed": "1.2 0.5", "loosely dashed": "1.2 1.6",
+    "dotted": "0.2 0.6", "densely dotted": "0.2 0.35", "loosely dotted": "0.2 1.2",
+}  # fmt: skip
+
+
 def _style(options: list[str], filled: bool) -> _Style:
     style = _Style(fill="#000" if filled else None)
     expanded = [o for option in options for o in STYLES.get(option, [option])]
     for option in expanded:
-        key, _, value = option.partition("=")
+        key, _, value = (part.strip() for part in option.partition("="))
         if option in WIDTHS:
             style.width = WIDTHS[option] * PT_MM
-        elif option in ("->", "<->"):
-            style.arrows = option
-        elif option == "dashed":
-            style.dashed = True
-        elif option in COLOURS:
-            style.colour = COLOURS[option]
+        elif _ARROWS.fullmatch(option):
+            start, end = option.split("-", 1)
+            style.arrows = {(True, True): "<->", (False, True): "->", (True, False): "<-"}.get(
+                (bool(start), bool(end)), ""
+            )
+        elif option in DASHES:
+            style.dashed = DASHES[option]
+        elif _colour(option) is not None:
+            style.colour = _colour(option) or style.colour
         elif key == "fill":
-            style.fill = COLOURS.get(value, "#fff")
+            style.fill = _colour(value) or "#fff"
         elif key == "pattern":
             style.hatch, style.fill = True, None
         elif key == "line width":
             style.width = float(value.removesuffix("pt")) * PT_MM
         elif key == "rounded corners":
-            style.rounded = float(value.removesuffix("mm"))
+            style.rounded = float(value.removesuffix("mm") or 1.0)
         elif key == "rotate around":
             angle, _, centre = value.strip("{}").partition(":")
             style.rotate = (float(angle), _pair(centre))
         elif key == "decoration":
             amplitude = re.search(r"amplitude=([\d.]+)mm", value)
             style.zigzag = float(amplitude[1]) if amplitude else 1.0
-        elif (
-            key in ("line cap", "line join", "decorate", "decorate=true")
-            or option
-            in (
-                "decorate",
-                "x=1mm",
-                "y=1mm",
-            )
-            or key.startswith(">")
-            or key == "baseline"
-        ):
+        elif key in COSMETIC or key.startswith(">") or option.startswith(">"):
             continue
         else:
             raise ValueError(f"TikZ option not drawn as SVG: {option}")
     return style
+
+
+# an arrow tip option: ->, <->, <-, -{Stealth[...]}, {Stealth}-{Stealth}, -latex, -stealth
+_ARROWS = re.compile(r"(<|\{[^{}]*\}|latex|stealth)?-(>|\{[^{}]*\}|latex|stealth)?")
+
+
+def _colour(option: str) -> str | None:
+    """``red``, ``blue!70`` or ``gray!50!black`` as an SVG colour (the first named
+    colour), or None when ``option`` names none."""
+    name = option.split("!", 1)[0].strip()
+    return COLOURS.get(name) if name else None
 
 
 def _pair(text: str) -> Point:
@@ -208,8 +225,10 @@ def _picture(body: str, ident: str) -> ET.Element:
     for command in _commands(body):
         if command.startswith("\\node"):
             _node_command(command, drawing)
-        elif command.startswith(("\\draw", "\\fill")):
+        elif command.startswith(("\\draw", "\\fill", "\\filldraw", "\\path")):
             _path_command(command, drawing, ident)
+        elif command.startswith("\\coordinate"):
+            continue  # a named point: the commands that use it give their own coordinates
         else:
             raise ValueError(f"TikZ command not drawn as SVG: {command[:60]}")
     return _svg(drawing, ident)
@@ -239,8 +258,8 @@ def _label(text: str, at: Point, options: list[str], normal: Point | None) -> _L
             label.shift = float(value.removesuffix("pt")) * PT_MM
         elif key == "fill":
             label.fill = COLOURS.get(value, "#fff")
-        elif option in COLOURS:
-            label.colour = COLOURS[option]
+        elif _colour(option) is not None:
+            label.colour = _colour(option) or label.colour
     for option in places:
         key, _, value = option.partition("=")
         label.anchor = ANCHORS[PLACES[key]]
@@ -264,13 +283,15 @@ _TOKEN = re.compile(
 
 def _path_command(command: str, drawing: _Drawing, ident: str) -> None:
     r"""``\draw[OPTIONS] PATH`` or ``\fill[OPTIONS] PATH``: each piece of the path drawn."""
-    filled = command.startswith("\\fill")
-    i = len("\\fill" if filled else "\\draw")
+    verb = re.match(r"\\(filldraw|fill|draw|path)", command)
+    assert verb is not None
+    i = verb.end()
     options: list[str] = []
     if command[i : i + 1] == "[":
         inside, i = _group(command, i, "[", "]")
         options = _options(inside)
-    style = _style(options, filled)
+    style = _style(options, verb[1].startswith("fill"))
+    style.stroke = verb[1] in ("draw", "filldraw")
     subpaths: list[list[Point]] = []  # polylines (and closed polygons)
     closed: list[bool] = []
     current: Point | None = None
@@ -401,15 +422,13 @@ def _paint(element: ET.Element, style: _Style, ident: str, filled: bool = True) 
     if style.hatch:
         fill = f"url(#{ident}-hatch)"
     element.set("fill", fill or "none")
-    if style.fill is not None and not style.hatch and style.fill == "#000" and not style.arrows:
-        element.set("stroke", "none")  # \fill: no outline
-    else:
+    if style.stroke:
         element.set("stroke", style.colour)
         element.set("stroke-width", _n(style.width) if style.width >= 0.01 else "0.01")
-    if style.hatch:
+    else:  # \fill: no outline
         element.set("stroke", "none")
     if style.dashed:
-        element.set("stroke-dasharray", "1.2 0.8")
+        element.set("stroke-dasharray", style.dashed)
     if style.rotate is not None:
         angle, centre = style.rotate
         element.set("transform", f"rotate({_n(-angle)},{_xy(centre)})")
@@ -461,12 +480,12 @@ def _polyline(points: list[Point], shut: bool, style: _Style, ident: str) -> lis
         points = _zigzag(points[0], points[-1], style.zigzag)
     d = "M" + " L".join(_xy(p) for p in points) + (" Z" if shut else "")
     out = [_paint(ET.Element("path", {"d": d}), style, ident, filled=shut)]
-    if style.arrows and len(points) > 1:
+    if style.arrows.endswith(">") and len(points) > 1:
         (x1, y1), (x2, y2) = points[-2], points[-1]
         out.append(_head((x2, y2), (x2 - x1, y2 - y1), style))
-        if style.arrows == "<->":
-            (x1, y1), (x2, y2) = points[1], points[0]
-            out.append(_head((x2, y2), (x2 - x1, y2 - y1), style))
+    if style.arrows.startswith("<") and len(points) > 1:
+        (x1, y1), (x2, y2) = points[1], points[0]
+        out.append(_head((x2, y2), (x2 - x1, y2 - y1), style))
     return out
 
 
@@ -493,12 +512,15 @@ def _arc(centre: Point, radius: float, start: float, end: float, style: _Style) 
     path = ET.Element("path", {"d": d, "fill": "none", "stroke": style.colour})
     path.set("stroke-width", _n(style.width))
     if style.dashed:
-        path.set("stroke-dasharray", "1.2 0.8")
+        path.set("stroke-dasharray", style.dashed)
     out = [path]
-    if style.arrows:
+    sense = 1.0 if end > start else -1.0
+    if style.arrows.endswith(">"):
         angle = math.radians(end)
-        sense = 1.0 if end > start else -1.0
         out.append(_head(b, (-sense * math.sin(angle), sense * math.cos(angle)), style))
+    if style.arrows.startswith("<"):
+        angle = math.radians(start)
+        out.append(_head(a, (sense * math.sin(angle), -sense * math.cos(angle)), style))
     return out
 
 
