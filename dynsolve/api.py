@@ -72,11 +72,12 @@ class Result:
 
     def render(
         self,
-        format: Literal["text", "json", "markdown", "latex"] = "text",
+        format: Literal["text", "json", "markdown", "latex", "html"] = "text",
         layout: Literal["full", "handout", "key"] = "full",
     ) -> str:
-        """The derivation as plain text, JSON, Markdown or a LaTeX document (``layout``:
-        the full sheet, the ``handout`` or the ``key``, for Markdown and LaTeX)."""
+        """The derivation as plain text, JSON, Markdown, a LaTeX document or an HTML page
+        (``layout``: the full sheet, the ``handout`` or the ``key``, for Markdown, LaTeX and
+        HTML)."""
         from dynsolve.render import renderer
 
         return renderer(format, layout)(self.solution)
@@ -85,14 +86,9 @@ class Result:
         return self.render("markdown")
 
     def _repr_html_(self) -> str:
-        from rich.console import Console
+        from dynsolve.render.html import html_fragment
 
-        from dynsolve.render.terminal import solution_renderable
-
-        console = Console(record=True, width=100, file=open(os.devnull, "w"))  # noqa: SIM115
-        with console.file:
-            console.print(solution_renderable(self.solution))
-        return console.export_html(inline_styles=True, code_format="<pre>{code}</pre>")
+        return html_fragment(self.solution)
 
     def _repr_latex_(self) -> str:
         from dynsolve.render.latex import answers_math

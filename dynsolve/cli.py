@@ -43,6 +43,7 @@ class OutputFormat(enum.StrEnum):
     markdown = "markdown"
     latex = "latex"
     pdf = "pdf"
+    html = "html"
 
 
 SUFFIX_FORMATS = {
@@ -51,6 +52,8 @@ SUFFIX_FORMATS = {
     ".markdown": OutputFormat.markdown,
     ".tex": OutputFormat.latex,
     ".pdf": OutputFormat.pdf,
+    ".html": OutputFormat.html,
+    ".htm": OutputFormat.html,
 }
 
 
@@ -177,7 +180,7 @@ def solve(
             "--format",
             "-f",
             help="Output format [default: text, or from the -o file's suffix: "
-            ".json, .md, .tex, .pdf (compiled with pdflatex)].",
+            ".json, .md, .tex, .pdf (compiled with pdflatex), .html (one self-contained page)].",
             show_default=False,
         ),
     ] = None,
@@ -199,14 +202,16 @@ def solve(
         typer.Option(
             "--handout",
             metavar="",
-            help="LaTeX/Markdown/PDF: the sheet a teacher hands out (no answer key, checks "
+            help="LaTeX/Markdown/PDF/HTML: the sheet a teacher hands out (no answer key, checks "
             "or file name).",
         ),
     ] = False,
     key: Annotated[
         bool,
         typer.Option(
-            "--key", help="LaTeX/Markdown/PDF: only the answers, the key and checks.", metavar=""
+            "--key",
+            help="LaTeX/Markdown/PDF/HTML: only the answers, the key and checks.",
+            metavar="",
         ),
     ] = False,
     time_budget: TimeBudget = DEFAULT_SECONDS,

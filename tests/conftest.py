@@ -33,6 +33,18 @@ def pdflatex() -> str:
     pytest.skip(f"{missing} is not installed")
 
 
+@pytest.fixture
+def chromium() -> str:
+    """Debian's headless Chromium (the ``chromium`` package); skipped when missing, unless CI
+    is set (CI installs it)."""
+    path = shutil.which("chromium")
+    if path:
+        return path
+    if os.environ.get("CI"):
+        pytest.fail("chromium missing although CI is set: install Debian's chromium package")
+    pytest.skip("chromium is not installed")
+
+
 # No per-example deadline: CI machines are shared and slower than a laptop; the
 # examples are bounded by their strategies instead.
 settings.register_profile("dynsolve", deadline=None)

@@ -1,4 +1,4 @@
-"""Renderers: turn a :class:`~dynsolve.results.Solution` into text, JSON, Markdown or LaTeX.
+"""Renderers: turn a :class:`~dynsolve.results.Solution` into text, JSON, Markdown, LaTeX or HTML.
 
 They never compute and never print; the CLI chooses one and writes its output.
 """
@@ -11,12 +11,12 @@ from typing import Literal
 
 from dynsolve.results import Solution
 
-Format = Literal["text", "json", "markdown", "latex"]
+Format = Literal["text", "json", "markdown", "latex", "html"]
 Layout = Literal["full", "handout", "key"]
 
 
 def sheet_plan(layout: Layout) -> tuple[str, ...]:
-    """The sections of a LaTeX or Markdown document, in order, for ``layout``.
+    """The sections of a LaTeX, Markdown or HTML document, in order, for ``layout``.
 
     >>> sheet_plan("key")
     ('title', 'answers', 'key', 'checks')
@@ -35,7 +35,7 @@ def sheet_plan(layout: Layout) -> tuple[str, ...]:
 
 def renderer(fmt: Format, layout: Layout = "full") -> Callable[[Solution], str]:
     """The function rendering ``fmt`` as a string (``text`` renders without colour);
-    ``layout`` (``full``, ``handout``, ``key``) shapes the LaTeX and Markdown documents.
+    ``layout`` (``full``, ``handout``, ``key``) shapes the LaTeX, Markdown and HTML documents.
 
     >>> renderer("json").__name__
     'render_json'
@@ -52,6 +52,10 @@ def renderer(fmt: Format, layout: Layout = "full") -> Callable[[Solution], str]:
         from dynsolve.render.latex import render_latex
 
         return functools.partial(render_latex, layout=layout)
+    if fmt == "html":
+        from dynsolve.render.html import render_html
+
+        return functools.partial(render_html, layout=layout)
     from dynsolve.render.terminal import render_text
 
     return render_text

@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import PurePath
 
 from dynsolve.format import and_list, lines_phrase, pretty_unit
-from dynsolve.names import latex_name
+from dynsolve.names import GREEK, latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.fbd_tikz import free_body_tikz
 from dynsolve.results import (
@@ -491,20 +491,36 @@ def caption_latex(text: str) -> str:
     >>> caption_latex("ΣM_O = I_O α, I_O = I_G + m r_G²")
     '$\\\\Sigma M_{O}$ = $I_{O}$ $\\\\alpha$, $I_{O}$ = $I_{G}$ + m $r_{G}^{2}$'
     """
-    out, last = [], 0
+    return "".join(
+        f"${piece}$" if math else escape_latex(piece) for math, piece in caption_pieces(text)
+    )
+
+
+def caption_pieces(text: str) -> list[tuple[bool, str]]:
+    """A caption cut into (is it mathematics, piece): its symbols as LaTeX math, the words
+    around them as they are (plain text, unescaped), for the LaTeX and HTML renderers.
+
+    >>> caption_pieces("ΣF_x = m")
+    [(True, '\\\\Sigma F_{x}'), (False, ' = m')]
+    >>> caption_pieces("no mu_s")  # a Greek letter spelt out
+    [(False, 'no '), (True, '\\\\mu_{s}')]
+    """
+    out: list[tuple[bool, str]] = []
+    last = 0
     for match in _SUBSCRIPTED.finditer(text):
-        out.append(escape_latex(text[last : match.start()]))
+        out.append((False, text[last : match.start()]))
         if match.group(1):
             base, inner, outer = match.group(1), match.group(2), match.group(3)
             math = f"({safe_math(base).strip()}_{{{inner}}})_{{{outer}}}"
         else:
             sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match.group(4)]
-            base = safe_math(match.group(5)).strip()
+            word = match.group(5)  # a Greek letter spelt out (mu_s) is the letter
+            base = latex_name(word) if word in GREEK else safe_math(word).strip()
             math = f"{sigma}{base}_{{{match.group(6)}}}{_POWERS[match.group(7)]}"
-        out.append(f"${math}$")
+        out.append((True, math))
         last = match.end()
-    out.append(escape_latex(text[last:]))
-    return "".join(out)
+    out.append((False, text[last:]))
+    return [piece for piece in out if piece[1]]
 
 
 def _equation(row: EquationRow) -> str:
@@ -792,11 +808,17 @@ def _free_body(body: FreeBody, system: str = "SI") -> str:
         r"\par\noindent\begin{minipage}{\linewidth}",
         f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
-        free_body_tikz(body, _force_label, _kinetic_term, lambda d: _length(d, system)),
+        free_body_picture(body, system),
         r"\end{center}",
         " \\\\\n".join(facts),
         r"\end{minipage}\par\medskip",
     ])  # fmt: skip
+
+
+def free_body_picture(body: FreeBody, system: str = "SI") -> str:
+    """The body's free-body diagram (and kinetic diagram) as TikZ, its labels typeset as
+    on the sheet: force names as math, dimensions in the sheet's units."""
+    return free_body_tikz(body, _force_label, _kinetic_term, lambda d: _length(d, system))
 
 
 def _kinetic_term(term: str) -> str:
@@ -806,9 +828,19 @@ def _kinetic_term(term: str) -> str:
     >>> print(_kinetic_term("m (a_G)_x"), _kinetic_term("m ω² r_G"))
     $m \\, (a_{G})_{x}$ $m \\, \\omega^{2} \\, r_{G}$
     """
-    words = term.split()
+    math = kinetic_math(term)
+    return escape_latex(term) if math is None else f"${math}$"
+
+
+def kinetic_math(term: str) -> str | None:
+    """A kinetic-diagram term (``m (a_G)_x``, ``I_G α``) as LaTeX math, or None when a word
+    of it is not a name, a component of one, or Greek (with a power).
+
+    >>> kinetic_math("I_G α"), kinetic_math("2 m")
+    ('I_{G} \\\\, \\\\alpha', None)
+    """
     parts = []
-    for word in words:
+    for word in term.split():
         component = _COMPONENT.fullmatch(word)
         if _IDENTIFIER.fullmatch(word):
             parts.append(latex_name(word))
@@ -818,8 +850,8 @@ def _kinetic_term(term: str) -> str:
             power = "^{2}" if word.endswith("²") else ""
             parts.append(safe_math(word.rstrip("²")).strip() + power)
         else:
-            return escape_latex(term)
-    return "$" + r" \, ".join(parts) + "$" if parts else escape_latex(term)
+            return None
+    return r" \, ".join(parts) if parts else None
 
 
 def _greek(word: str) -> bool:
