@@ -484,7 +484,7 @@ def solve_problem(
         status=outcome.status,
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
-        remarks=_remarks(problem, outcome, options)
+        remarks=_remarks(problem, outcome, options, answers)
         + _limit_remarks(problem, outcome, options, view),
     )
 
@@ -493,9 +493,13 @@ MASS = Dim(0, 1, 0)
 
 
 def _remarks(
-    problem: SolvableProblem, outcome: Outcome, options: SolveOptions
+    problem: SolvableProblem,
+    outcome: Outcome,
+    options: SolveOptions,
+    rows: tuple[AnswerRow, ...],
 ) -> tuple[Remark, ...]:
-    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve."""
+    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve,
+    each confirmed by solving again with the mass changed (:func:`_confirmed`)."""
     from dynsolve.remarks import cancelled_masses
 
     if options.mode != "exact" or outcome.status != "solved":
@@ -522,9 +526,83 @@ def _remarks(
         elif target.expr is not None:
             answers[target.name] = target.expr
     givens = {g.symbol for g in problem.givens if g.given is not None} - set(masses)
-    return cancelled_masses(
-        answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns)
+    uses = _uses(problem.system, outcome)
+    uses.update({s: frozenset((sympy.Integer(0) + f).free_symbols) for s, f in derived.items()})
+    remarks = cancelled_masses(
+        answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns), uses
     )
+    return _confirmed(problem.spec, remarks, rows) if remarks else ()
+
+
+def _uses(system: EquationSystem, outcome: Outcome) -> dict[sympy.Symbol, frozenset[sympy.Symbol]]:
+    """Each solved unknown: the symbols of the equations of the block it was solved in."""
+    uses: dict[sympy.Symbol, frozenset[sympy.Symbol]] = {}
+    for block in outcome.blocks:
+        held = frozenset().union(
+            *(
+                system.equations[i].lhs.free_symbols | system.equations[i].rhs.free_symbols
+                for i in block.equations
+            )
+        )
+        uses.update(dict.fromkeys(block.unknowns, held))
+    return uses
+
+
+MASS_FACTORS = (0.5, 2.0)  # a cancelled mass is confirmed by re-solves at these multiples
+
+
+def _confirmed(
+    spec: Spec, remarks: tuple[Remark, ...], rows: tuple[AnswerRow, ...]
+) -> tuple[Remark, ...]:
+    """The remarks the problem solved again bears out: each answer keeps its value (to 1e-6)
+    with each remarked mass halved and doubled in turn. A formula read under an assumption
+    (no slip, a cord taut) holds only while it does: a crate pushed too weakly to slide
+    feels F = P whatever its mass, until a lighter one slides, and then F = μk m g. A
+    symbolic problem has no numbers to solve again with: its formula in letters is the
+    proof, and no assumption of it was decided."""
+    if any(g.quantity is None for g in spec.givens):
+        return remarks
+    values = {row.name: row.value for row in rows}
+    again: dict[tuple[str, float], dict[str, float | None] | None] = {}
+    kept: dict[tuple[str, ...], list[str]] = {}  # the masses confirmed: the answers
+    for remark in remarks:
+        for answer in remark.answers:
+            masses = []
+            for mass in remark.masses:
+                for factor in MASS_FACTORS:
+                    if (mass, factor) not in again:
+                        again[(mass, factor)] = _answers_with(spec, mass, factor)
+                if all(_same(values.get(answer), again[(mass, f)], answer) for f in MASS_FACTORS):
+                    masses.append(mass)
+            if masses:
+                kept.setdefault(tuple(masses), []).append(answer)
+    return tuple(Remark(tuple(answers), masses) for masses, answers in kept.items())
+
+
+def _same(value: float | None, again: dict[str, float | None] | None, answer: str) -> bool:
+    """True when a re-solve gave ``answer`` the value ``value`` (relative 1e-6)."""
+    other = again.get(answer) if again is not None else None
+    if value is None or other is None:
+        return False
+    return math.isclose(value, other, rel_tol=1e-6, abs_tol=1e-12)
+
+
+def _answers_with(spec: Spec, given: str, factor: float) -> dict[str, float | None] | None:
+    """The answers' values (display units) of the problem solved again in numeric mode
+    with ``given`` multiplied by ``factor``, or None where it cannot be solved."""
+    from dynsolve.grade.substitute import with_variant
+
+    quantity = next(g.quantity for g in spec.givens if g.name == given)
+    assert quantity is not None
+    unit = quantity.unit.text if quantity.unit is not None else ""
+    try:
+        changed = f"{float(quantity.text) * factor!r} {unit}".strip()
+        solution = solve_spec(with_variant(spec, {given: changed}, "remark"), SolveOptions("numeric"))
+    except (DynsolveError, ValueError, OverflowError):
+        return None
+    if solution.status != "solved":
+        return None
+    return {row.name: row.value for row in solution.answers}
 
 
 def _derived_formulas(outcome: Outcome) -> dict[sympy.Symbol, sympy.Expr]:
@@ -545,14 +623,15 @@ def _limit_remarks(
     again with that given at 0 (numeric mode): a limit outside the formula's own case (a
     cord that no longer goes slack when the bob starts at rest) fails there and is not
     remarked."""
-    from dynsolve.remarks import limit_cases
+    from dynsolve.remarks import limit_cases, starting_speeds
 
     if options.mode != "exact" or outcome.status != "solved":
         return ()
     formulas = _derived_formulas(outcome)
     formulas.update({g.symbol: g.formula for g in problem.givens if g.formula is not None})
+    starts = starting_speeds(problem.spec)
     givens = {
-        g.symbol: (g.name, _limit_case(g))
+        g.symbol: (g.name, _limit_case(g, starts))
         for g in problem.givens
         if g.formula is None and (g.given is not None or g.name == "g")
     }
@@ -615,12 +694,12 @@ def _at_zero(spec: Spec, given: str) -> Solution | None:
     return solution
 
 
-def _limit_case(given: GivenInfo) -> str:
-    """The limit case a given's going to 0 stands for: a speed, "nearly from rest"; a
-    friction coefficient, "nearly smooth"; else ""."""
+def _limit_case(given: GivenInfo, starts: frozenset[str]) -> str:
+    """The limit case a given's going to 0 stands for: a starting speed (one of
+    ``starts``), "nearly from rest"; a friction coefficient, "nearly smooth"; else ""."""
     if given.value is None or not given.value.is_nonzero:
         return ""
-    if given.dim == Dim.of("velocity"):
+    if given.dim == Dim.of("velocity") and given.name in starts:
         return "nearly from rest"
     if given.dim == Dim() and given.name.split("_")[0] in ("mu", "μ"):
         return "nearly smooth"
