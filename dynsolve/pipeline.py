@@ -596,8 +596,8 @@ def _answers_with(spec: Spec, given: str, factor: float) -> dict[str, float | No
     assert quantity is not None
     unit = quantity.unit.text if quantity.unit is not None else ""
     try:
-        changed = f"{float(quantity.text) * factor!r} {unit}".strip()
-        solution = solve_spec(with_variant(spec, {given: changed}, "remark"), SolveOptions("numeric"))
+        changed = with_variant(spec, {given: f"{float(quantity.text) * factor!r} {unit}"}, "mass")
+        solution = solve_spec(changed, SolveOptions("numeric"))
     except (DynsolveError, ValueError, OverflowError):
         return None
     if solution.status != "solved":

@@ -73,9 +73,7 @@ def cancelled_masses(
             continue
         entered = derivation_symbols(expr, uses) if uses is not None else set(masses)
         gone = tuple(
-            label
-            for symbol, label in masses.items()
-            if symbol not in letters and symbol in entered
+            label for symbol, label in masses.items() if symbol not in letters and symbol in entered
         )
         if gone:
             cancelled.setdefault(gone, []).append(name)
