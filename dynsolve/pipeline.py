@@ -47,6 +47,7 @@ from dynsolve.results import (
     Step,
     Trial,
 )
+from dynsolve.shown import formula_latex, formula_text, presentable
 from dynsolve.solver import solve_system
 from dynsolve.solver.outcome import Outcome
 from dynsolve.solver.roots import truth
@@ -938,9 +939,9 @@ class _View:
         printed = self._prints.get(key)
         if printed is None:
             if kind == "text":
-                printed = sympy.sstr(expr.xreplace(self.pretty_symbols)).replace("**", "^")
+                printed = formula_text(expr, self.pretty_symbols)
             else:
-                printed = sympy.latex(expr, symbol_names=self.latex_symbols)
+                printed = formula_latex(expr, self.latex_symbols)
             self._prints[key] = printed
         return printed
 
@@ -1049,6 +1050,7 @@ class _View:
             )
             if show_formula and formula is not None:
                 formula = combined_roots(formula, self.solved)
+                formula = self.signed(formula)
             numbers = self.substituted(formula) if show_formula and formula else None
             results.append(
                 Formula(
@@ -1094,9 +1096,25 @@ class _View:
         self._substituted[formula] = written
         return written
 
+    def signed(
+        self, formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> sympy.Expr:
+        """``formula`` with each |x| written x or −x where the numbers (``values``, else the
+        solved ones) tell x's sign: no reader needs |cos 40°|, nor Abs(-44.58). Tidying a
+        resolved form can make a new |x| (√(1 − sin²θ)³ = cos²θ |cos θ|): resolved again."""
+        for _ in range(3):
+            if not formula.has(sympy.Abs):
+                break
+            formula = abs_resolved(formula, self.solved if values is None else values)
+        return formula
+
     def _hand_calculation(
         self, formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]
     ) -> tuple[str, str] | None:
+        tidy = presentable(self.signed(formula, values))
+        if tidy is None:
+            return None  # a form with no tidy text: its numbers are not shown either
+        formula = tidy  # |−44.58| written 44.58: the sign of each |x| is known from its numbers
         numbers: dict[sympy.Symbol, float] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
@@ -1117,10 +1135,9 @@ class _View:
                 degrees = _plain(math.degrees(number), wrap=False)
                 names[angles[symbol]] = f"{degrees}°"
                 latex_names[angles[symbol]] = f"{degrees}^\\circ"
-        text = sympy.sstr(shown).replace("**", "^")
-        latex = sympy.latex(  # numbers side by side need their dot: (-6.372) \cdot 10
-            shown, symbol_names=latex_names, mul_symbol="dot"
-        )
+        text = formula_text(shown)
+        # numbers side by side need their dot: (-6.372) \cdot 10
+        latex = formula_latex(shown, latex_names, mul_symbol="dot")
         for placeholder in sorted(names, key=lambda s: -len(s.name)):
             text = text.replace(placeholder.name, names[placeholder])
         return text, latex
@@ -1245,6 +1262,8 @@ class _View:
             return None
         if formula is not None and tidying_lightly():  # numeric mode built it untidied
             formula = tidy(formula, light=False)
+        if formula is not None:
+            formula = self.signed(formula)
         if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
             return None
         value = self.computed(target.name)

@@ -50,6 +50,7 @@ from dynsolve.principles.rectilinear import (
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import EquationRow, Formula, Step
 from dynsolve.sections import combine_sections
+from dynsolve.shown import formula_latex, formula_text
 from dynsolve.spec.ast import EquationStmt, FindItem, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
@@ -527,15 +528,15 @@ def _event_target(item: FindItem, context: _Context) -> Target:
 
     def shown(expr: sympy.Expr) -> str:
         number = real_value(expr, context.values)
-        return f"{number:.6g}" if number is not None else sympy.sstr(expr).replace("**", "^")
+        return f"{number:.6g}" if number is not None else formula_text(expr)
 
     discarded = tuple(f"t = {shown(t)}: {why}" for t, why in event.discarded)
     results = ()
     if event.time is not None and function not in ("t_at",):
-        results += (Formula("t", sympy.sstr(event.time), sympy.latex(event.time),
+        results += (Formula("t", formula_text(event.time), formula_latex(event.time),
                             shown(event.time), shown(event.time)),)  # fmt: skip
-    text = sympy.sstr(event.expr).replace("**", "^")
-    latex = sympy.latex(event.expr)
+    text = formula_text(event.expr)
+    latex = formula_latex(event.expr)
     if context.numbers_first and not event.expr.free_symbols:
         text = latex = ""  # the number itself: "t_a = 1", not "t_a = 1 = 1"
     results += (Formula(item.name, text, latex, shown(event.expr), shown(event.expr)),)
@@ -784,8 +785,8 @@ def _after_a_stop(
         f"so {function}({at}) is the stop's (v(t) holds only until then)"
     )
     number = real_value(value, values)
-    shown = f"{number:.6g}" if number is not None else sympy.sstr(value)
-    result = Formula(f"{function}({at})", sympy.sstr(value), sympy.latex(value), shown, shown)
+    shown = f"{number:.6g}" if number is not None else formula_text(value)
+    result = Formula(f"{function}({at})", formula_text(value), formula_latex(value), shown, shown)
     steps.append(Step(0, (), (f"{function}({at})",), "stop", (result,), (), how))
     return value
 
@@ -883,15 +884,15 @@ def _steps(
     steps = []
     for index, (name, how) in enumerate(motion.steps, start=1):
         formula = motion.formulas[name]
-        text = sympy.sstr(formula.xreplace(pretty_names)).replace("**", "^")
-        latex = sympy.latex(formula, symbol_names=latex_names)
+        text = formula_text(formula, pretty_names)
+        latex = formula_latex(formula, latex_names)
         with_numbers = formula.xreplace(dict(values))
         if numbers_first and with_numbers == formula:  # the numbers are in already
             result = Formula(name, "", "", text, latex)
         else:
             rounded = sympy.N(with_numbers, 4)
-            shown = sympy.sstr(rounded).replace("**", "^")
-            result = Formula(name, text, latex, shown, sympy.latex(rounded))
+            shown = formula_text(rounded)
+            result = Formula(name, text, latex, shown, formula_latex(rounded))
         steps.append(
             Step(index, (), (name,), "integration" if "∫" in how else "algebra", (result,), (), how)
         )
