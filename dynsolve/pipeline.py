@@ -485,7 +485,7 @@ def solve_problem(
         status=outcome.status,
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
-        remarks=_remarks(problem, outcome, options, answers)
+        remarks=_remarks(problem, outcome, options, answers, bool(assumptions))
         + _limit_remarks(problem, outcome, options, view),
     )
 
@@ -498,9 +498,12 @@ def _remarks(
     outcome: Outcome,
     options: SolveOptions,
     rows: tuple[AnswerRow, ...],
+    assumed: bool = False,
 ) -> tuple[Remark, ...]:
-    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve,
-    each confirmed by solving again with the mass changed (:func:`_confirmed`)."""
+    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve:
+    a formula in the givens without the mass is its proof, unless the solve ``assumed`` a
+    case (no slip, a cord taut, no tipping) that the mass may decide: then each remark is
+    confirmed by solving again with the mass changed (:func:`_confirmed`)."""
     from dynsolve.remarks import cancelled_masses
 
     if options.mode != "exact" or outcome.status != "solved":
@@ -532,7 +535,7 @@ def _remarks(
     remarks = cancelled_masses(
         answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns), uses
     )
-    return _confirmed(problem.spec, remarks, rows) if remarks else ()
+    return _confirmed(problem.spec, remarks, rows) if remarks and assumed else remarks
 
 
 def _uses(system: EquationSystem, outcome: Outcome) -> dict[sympy.Symbol, frozenset[sympy.Symbol]]:
@@ -1052,6 +1055,10 @@ class _View:
                 formula = combined_roots(formula, self.solved)
                 formula = self.signed(formula)
             numbers = self.substituted(formula) if show_formula and formula else None
+            if numbers:
+                value_text, value_latex = self.after_numbers(
+                    symbol.name, block.values[symbol], value_text, value_latex
+                )
             results.append(
                 Formula(
                     name=symbol.name,
@@ -1271,6 +1278,10 @@ class _View:
             return None
         value_text, value_latex, _ = self.shown(target.name, value)  # signed, as its formula
         numbers = self.substituted(formula)
+        if numbers:
+            value_text, value_latex = self.after_numbers(
+                target.name, value, value_text, value_latex
+            )
         return Formula(
             name=target.name,
             formula=self.text(formula),
@@ -1431,6 +1442,26 @@ class _View:
             )
         )
         return tuple(rows)
+
+    def after_numbers(self, name: str, expr: sympy.Expr, text: str, latex: str) -> tuple[str, str]:
+        """A hand calculation's value as its numbers give it, in the system's base units,
+        then as shown (``text``, ``latex``) where the answer is asked in another unit:
+        √(4.762² + 7.937²) = 9.26 m/s = 33.3 km/h, not "= 33.3 km/h" straight from numbers
+        in m/s; 10.47·12²/2 + 31.42·12 = 1131 rad = 180 rev."""
+        unit = self.unit_of(name)
+        value = self.number(expr)
+        if not unit or value is None or not math.isfinite(value):
+            return text, latex
+        dim = self.dims.get(name, Dim())
+        base = "rad" if dim.dimensionless else natural_unit(dim, self.system, name)
+        try:
+            same = math.isclose(convert(1.0, unit, self.system), convert(1.0, base, self.system))
+        except (DynsolveError, ValueError):
+            return text, latex
+        if same:
+            return text, latex
+        before, before_latex = self.quantity(value, base)
+        return f"{before} = {text}", f"{before_latex} = {latex}"
 
     def quantity(self, value: float, unit: str) -> tuple[str, str]:
         """(text, latex) of a value in base units shown in ``unit``."""

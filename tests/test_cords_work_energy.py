@@ -210,7 +210,7 @@ find: v = speed(two), v_1 = speed(one)
     solution = solve_file(write(tmp_path, text))
     assert by_name(solution, "v").value == pytest.approx(math.sqrt(20), rel=1e-9)
     assert by_name(solution, "v_1").value == pytest.approx(math.sqrt(20), rel=1e-9)
-    assert assumption(solution, "cord T taut").detail == "T = 20 ≥ 0"
+    assert assumption(solution, "cord T taut").detail == "T = 20 N ≥ 0"
     assert next(c for c in solution.checks if c.name == "simulation").passed
     assert solution.passed
 
