@@ -1057,7 +1057,7 @@ class _View:
             numbers = self.substituted(formula) if show_formula and formula else None
             if numbers:
                 value_text, value_latex = self.after_numbers(
-                    symbol.name, block.values[symbol], value_text, value_latex
+                    symbol.name, block.values[symbol], value_text, value_latex, formula
                 )
             results.append(
                 Formula(
@@ -1280,7 +1280,7 @@ class _View:
         numbers = self.substituted(formula)
         if numbers:
             value_text, value_latex = self.after_numbers(
-                target.name, value, value_text, value_latex
+                target.name, value, value_text, value_latex, formula
             )
         return Formula(
             name=target.name,
@@ -1443,14 +1443,19 @@ class _View:
         )
         return tuple(rows)
 
-    def after_numbers(self, name: str, expr: sympy.Expr, text: str, latex: str) -> tuple[str, str]:
+    def after_numbers(
+        self, name: str, expr: sympy.Expr, text: str, latex: str, formula: sympy.Expr
+    ) -> tuple[str, str]:
         """A hand calculation's value as its numbers give it, in the system's base units,
         then as shown (``text``, ``latex``) where the answer is asked in another unit:
         √(4.762² + 7.937²) = 9.26 m/s = 33.3 km/h, not "= 33.3 km/h" straight from numbers
-        in m/s; 10.47·12²/2 + 31.42·12 = 1131 rad = 180 rev."""
+        in m/s; 10.47·12²/2 + 31.42·12 = 1131 rad = 180 rev. An inverse trigonometric
+        ``formula`` gives an angle in any unit: asin(0.77) = 50.3°, as textbooks write it."""
         unit = self.unit_of(name)
         value = self.number(expr)
         if not unit or value is None or not math.isfinite(value):
+            return text, latex
+        if isinstance(formula, (sympy.asin, sympy.acos, sympy.atan, sympy.atan2)):
             return text, latex
         dim = self.dims.get(name, Dim())
         base = "rad" if dim.dimensionless else natural_unit(dim, self.system, name)
