@@ -26,6 +26,7 @@ from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
+from dynsolve.shown import formula_text
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
 from dynsolve.units import Dim, natural_unit, with_unit
@@ -1273,14 +1274,14 @@ def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:
     mover = scene.movers[name]
 
     def points(extreme: object) -> str:
-        shown = [f"({sympy.sstr(x)}, {sympy.sstr(y)})" for x, y in extreme.points]  # type: ignore[attr-defined]
+        shown = [f"({formula_text(x)}, {formula_text(y)})" for x, y in extreme.points]  # type: ignore[attr-defined]
         return ", ".join(shown) or "everywhere"
 
     return (
         f"{name} along {mover.path.name}",
         "constant speed: a_t = 0, so |a| = a_n = v²κ; the extremes of the curvature κ "
-        f"along the path: largest a = {sympy.sstr(extremes.maximum.a)} at "
-        f"{points(extremes.maximum)}, smallest a = {sympy.sstr(extremes.minimum.a)} at "
+        f"along the path: largest a = {formula_text(extremes.maximum.a)} at "
+        f"{points(extremes.maximum)}, smallest a = {formula_text(extremes.minimum.a)} at "
         f"{points(extremes.minimum)}",
     )
 
