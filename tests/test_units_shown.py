@@ -106,3 +106,12 @@ def test_a_slip_check_states_its_relative_acceleration_with_its_unit():
     assert details["slip at G"].endswith("(relative acceleration 78.04 m/s²)")
     assert details["no slip at G"].startswith("|F| = 160 N > μk N = 3.924 N")
     assert details["contact at G kept"] == "N_G = 19.62 N ≥ 0"
+
+
+def test_a_kinematics_event_states_its_value_with_its_unit():
+    # a = −k v^(1/3): t = 3 (v_0^(2/3) − v_1^(2/3))/(2k) = 3 (4.641589 − 2.924018)/1 = 5.15271 s
+    spec = "given:\n  k = 0.5 m^(2/3)*s^(-5/3)\n  v_0 = 10 m/s\n  v_1 = 5 m/s\n"
+    spec += "kinematics:\n  a = -k*v^(1/3)\nfind: t_2 = t_at(v, v_1) [min]\n"
+    solution = solve_text(spec, "event.dyn")
+    assert _row(solution, "t_2").value == "5.15271 s"  # the numbers' unit; answers: min
+    assert solution.answers[0].shown == "0.0859 min"  # 5.15271/60

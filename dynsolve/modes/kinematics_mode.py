@@ -34,6 +34,7 @@ import sympy
 from dynsolve.dimensions import DimensionReport, check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
+from dynsolve.format import pretty_unit
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.oneline_events import EVENTS, QUANTITIES, find_event
 from dynsolve.names import latex_name, pretty
@@ -526,18 +527,22 @@ def _event_target(item: FindItem, context: _Context) -> Target:
     _check_unit(item, dim, spec)
     unit = item.unit.text if item.unit is not None else natural_unit(dim, spec.system)
 
-    def shown(expr: sympy.Expr) -> str:
+    def shown(expr: sympy.Expr, of: Dim = dim) -> str:
+        """A value in the system's base units (those of the motion's numbers), with its unit."""
         number = real_value(expr, context.values)
-        return f"{number:.6g}" if number is not None else formula_text(expr)
+        if number is None:
+            return formula_text(expr)
+        return f"{number:.6g} {pretty_unit(natural_unit(of, spec.system))}".rstrip()
 
-    discarded = tuple(f"t = {shown(t)}: {why}" for t, why in event.discarded)
+    time = _DIMS["t"]
+    discarded = tuple(f"t = {shown(t, time)}: {why}" for t, why in event.discarded)
     results = ()
     if event.time is not None and function not in ("t_at",):
         results += (Formula("t", formula_text(event.time), formula_latex(event.time),
-                            shown(event.time), shown(event.time)),)  # fmt: skip
+                            shown(event.time, time), shown(event.time, time)),)  # fmt: skip
     text = formula_text(event.expr)
     latex = formula_latex(event.expr)
-    if context.numbers_first and not event.expr.free_symbols:
+    if (context.numbers_first or event.expr.is_Float) and not event.expr.free_symbols:
         text = latex = ""  # the number itself: "t_a = 1", not "t_a = 1 = 1"
     results += (Formula(item.name, text, latex, shown(event.expr), shown(event.expr)),)
     method = "root choice" if function in ("t_at", "x_at") else "extreme"
