@@ -232,6 +232,23 @@ def with_unit(value: float, kind: str, system: System) -> str:
     return f"{value:.4g} {pretty_unit(unit)}"
 
 
+@dataclass(frozen=True)
+class Measured:
+    """A number that formats with its unit, for a template written with a format spec.
+
+    >>> "{value:.4g} > 0".format(value=Measured(19.7712, "N"))
+    '19.77 N > 0'
+    """
+
+    value: float
+    unit: str
+
+    def __format__(self, spec: str) -> str:
+        from dynsolve.format import pretty_unit
+
+        return f"{format(self.value, spec)} {pretty_unit(self.unit)}".rstrip()
+
+
 def base_unit(dim: Dim, system: System) -> str:
     """The coherent base-unit expression of ``dim`` in ``system`` (what the solver uses).
 

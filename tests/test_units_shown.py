@@ -115,3 +115,13 @@ def test_a_kinematics_event_states_its_value_with_its_unit():
     solution = solve_text(spec, "event.dyn")
     assert _row(solution, "t_2").value == "5.15271 s"  # the numbers' unit; answers: min
     assert solution.answers[0].shown == "0.0859 min"  # 5.15271/60
+
+
+def test_a_stage_chain_states_energies_and_closing_speeds_with_their_units():
+    # pile_driver: the ram falls h = 1.5 m: T1 + ΣU = m_r g h = 800 · 9.81 · 1.5 = 11772 J;
+    # it strikes the pile at √(2 g h) = 5.425 m/s; T4 = 0 where the pile stops
+    solution = solve_file(PROBLEMS / "stages" / "pile_driver.dyn")
+    details = {a.name: a.detail for a in solution.assumptions}
+    assert details["reaches state 2"] == "T1 + ΣU = 1.177e+04 J ≥ 0"
+    assert details["approach in stage 2"] == "before the impact (v_A − v_B)·n = 5.425 m/s > 0"
+    assert details["at rest in state 4"] == "T4 = T3 + ΣU = 0 J"

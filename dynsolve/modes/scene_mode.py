@@ -1344,7 +1344,7 @@ def assess(
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions, chain_slips
 
-        chained = chain_assumptions(scene, formulation, substitution) + cords
+        chained = chain_assumptions(scene, formulation, substitution, system) + cords
         slips |= chain_slips(formulation, substitution)
         if not formulation.kinematics:
             return chained, slips
@@ -1796,7 +1796,7 @@ def _between_states(
     if problem.scene.cords and len(problem.scene.travels) == 1:
         from dynsolve.principles.constant_motion import taut_details
 
-        found = taut_details(problem.scene, problem.symbols, substitution)
+        found = taut_details(problem.scene, problem.symbols, substitution, problem.spec.system)
         checks += [Assumption(*taut) for taut in found]
     if any(t.stops for t in problem.scene.travels.values()):
         return tuple(checks)
