@@ -230,7 +230,8 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         trial,
         assumptions,
         free_bodies(problem, outcome.values),
-        cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
+        cross_checks(problem, outcome.values)
+        + (_simulation_checks(problem, outcome.values) if options.simulate else ()),
     )
     shown = tuple(
         replace(
@@ -573,10 +574,12 @@ def _confirmed(
         for answer in remark.answers:
             masses = []
             for mass in remark.masses:
-                for factor in MASS_FACTORS:
+                for factor in MASS_FACTORS:  # the next factor only while the answer holds
                     if (mass, factor) not in again:
                         again[(mass, factor)] = _answers_with(spec, mass, factor)
-                if all(_same(values.get(answer), again[(mass, f)], answer) for f in MASS_FACTORS):
+                    if not _same(values.get(answer), again[(mass, factor)], answer):
+                        break
+                else:
                     masses.append(mass)
             if masses:
                 kept.setdefault(tuple(masses), []).append(answer)
@@ -601,7 +604,7 @@ def _answers_with(spec: Spec, given: str, factor: float) -> dict[str, float | No
     unit = quantity.unit.text if quantity.unit is not None else ""
     try:
         changed = with_variant(spec, {given: f"{float(quantity.text) * factor!r} {unit}"}, "mass")
-        solution = solve_spec(changed, SolveOptions("numeric"))
+        solution = solve_spec(changed, SolveOptions("numeric", show_formulas=False, simulate=False))
     except (DynsolveError, ValueError, OverflowError):
         return None
     if solution.status != "solved":

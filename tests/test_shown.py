@@ -87,7 +87,7 @@ def test_a_drag_laws_time_shows_no_imaginary_unit_in_any_format():
     assert not [r for s in steps for r in s["results"] if FORBIDDEN.search(r["value"])]
 
 
-@pytest.mark.parametrize("mode", ["exact", "auto"])
+@pytest.mark.parametrize("mode", ["exact", "numeric", "auto"])
 def test_a_time_whose_formula_holds_an_imaginary_unit_is_shown_in_numbers(mode):
     # a = −k v^(1/3): v^(2/3) = v_0^(2/3) − (2k/3) t, so v reaches v_1 at
     # t = 3 (v_0^(2/3) − v_1^(2/3))/(2k) = 3 (4.64159 − 2.92402)/1 = 5.1527 s; sympy's root
