@@ -57,24 +57,6 @@ _UNSHOWABLE = (
 _NOT_FINITE = (sympy.nan, sympy.zoo, sympy.oo, -sympy.oo)
 
 
-def internals(expr: sympy.Basic) -> tuple[str, ...]:
-    """The names of sympy internals ``expr`` holds, sorted (empty for a tidy form).
-
-    >>> internals(sympy.exp_polar(sympy.I * sympy.pi) * sympy.Symbol("t") + sympy.I)
-    ('I', 'exp_polar')
-    """
-    found = {type(f).__name__ for f in expr.atoms(sympy.Function, sympy.Integral, sympy.Subs)}
-    names = {
-        name
-        for name in found
-        if name in {f.__name__ for f in (*_BOOKKEEPING, *_UNSHOWABLE)} or name == "Piecewise"
-    }
-    names |= {"Abs"} if any(a.args[0].is_number for a in expr.atoms(sympy.Abs)) else set()
-    names |= {"I"} if expr.has(sympy.I) else set()
-    names |= {str(n) for n in _NOT_FINITE if expr.has(n)}
-    return tuple(sorted(names))
-
-
 def presentable(expr: sympy.Expr, real: bool = True) -> sympy.Expr | None:
     """``expr`` fit to be shown: sympy's bookkeeping replaced by its tidy equivalent, or
     None where there is none. ``real``: the quantity is real (every quantity dynsolve
@@ -106,18 +88,30 @@ def presentable(expr: sympy.Expr, real: bool = True) -> sympy.Expr | None:
 def _real_part(expr: sympy.Expr) -> sympy.Expr | None:
     """A real quantity's formula freed of the imaginary constants its logarithms of
     negative numbers left (log(−c) = log c + iπ): those terms dropped and each log u
-    written log|u|; None where an imaginary unit sits anywhere else."""
-    kept = [
-        term
-        for term in sympy.Add.make_args(expr)
-        if not (term.is_number and sympy.re(term).is_zero and term.has(sympy.I))
-    ]
-    if len(kept) == len(sympy.Add.make_args(expr)) or not expr.has(sympy.log):
+    written log|u|; None where an imaginary unit sits anywhere else. A constant inside a
+    product, c (log d + iπ), is reached by distributing the products.
+
+    >>> v = sympy.Symbol("v")
+    >>> _real_part(2 * (sympy.log(3) + sympy.I * sympy.pi) - 2 * sympy.log(v - 3))
+    -2*log(Abs(v - 3)) + 2*log(3)
+    """
+    if not expr.has(sympy.log):
         return None
-    real = sympy.Add(*kept).replace(
-        sympy.log, lambda u: sympy.log(u) if u.is_positive else sympy.log(sympy.Abs(u))
-    )
-    return None if real.has(sympy.I) else real
+    for form in (expr, sympy.expand_mul(expr)):
+        terms = sympy.Add.make_args(form)
+        kept = [
+            term
+            for term in terms
+            if not (term.is_number and sympy.re(term).is_zero and term.has(sympy.I))
+        ]
+        if len(kept) == len(terms):
+            continue
+        real = sympy.Add(*kept).replace(
+            sympy.log, lambda u: sympy.log(u) if u.is_positive else sympy.log(sympy.Abs(u))
+        )
+        if not real.has(sympy.I):
+            return real
+    return None
 
 
 class _TextPrinter(StrPrinter):
