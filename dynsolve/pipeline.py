@@ -48,6 +48,7 @@ from dynsolve.results import (
     Step,
     Trial,
 )
+from dynsolve.shown import formula_latex, formula_text, presentable
 from dynsolve.solver import solve_system
 from dynsolve.solver.outcome import Outcome
 from dynsolve.solver.roots import truth
@@ -232,7 +233,8 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         trial,
         assumptions,
         free_bodies(problem, outcome.values),
-        cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
+        cross_checks(problem, outcome.values)
+        + (_simulation_checks(problem, outcome.values) if options.simulate else ()),
     )
     shown = tuple(
         replace(
@@ -488,7 +490,7 @@ def solve_problem(
         status=outcome.status,
         messages=outcome.messages,
         warnings=tuple(f"{name}: {detail}" for name, detail in suspicious_notes(problem.spec)),
-        remarks=_remarks(problem, outcome, options)
+        remarks=_remarks(problem, outcome, options, answers, bool(assumptions))
         + _limit_remarks(problem, outcome, options, view),
     )
 
@@ -526,9 +528,16 @@ def _valueless(
 
 
 def _remarks(
-    problem: SolvableProblem, outcome: Outcome, options: SolveOptions
+    problem: SolvableProblem,
+    outcome: Outcome,
+    options: SolveOptions,
+    rows: tuple[AnswerRow, ...],
+    assumed: bool = False,
 ) -> tuple[Remark, ...]:
-    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve."""
+    """Remarks on the answers (a mass that cancels), from the formulas of an exact solve:
+    a formula in the givens without the mass is its proof, unless the solve ``assumed`` a
+    case (no slip, a cord taut, no tipping) that the mass may decide: then each remark is
+    confirmed by solving again with the mass changed (:func:`_confirmed`)."""
     from dynsolve.remarks import cancelled_masses
 
     if options.mode != "exact" or outcome.status != "solved":
@@ -555,9 +564,85 @@ def _remarks(
         elif target.expr is not None:
             answers[target.name] = target.expr
     givens = {g.symbol for g in problem.givens if g.given is not None} - set(masses)
-    return cancelled_masses(
-        answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns)
+    uses = _uses(problem.system, outcome)
+    uses.update({s: frozenset((sympy.Integer(0) + f).free_symbols) for s, f in derived.items()})
+    remarks = cancelled_masses(
+        answers, {**formulas, **derived}, masses, givens, frozenset(problem.system.unknowns), uses
     )
+    return _confirmed(problem.spec, remarks, rows) if remarks and assumed else remarks
+
+
+def _uses(system: EquationSystem, outcome: Outcome) -> dict[sympy.Symbol, frozenset[sympy.Symbol]]:
+    """Each solved unknown: the symbols of the equations of the block it was solved in."""
+    uses: dict[sympy.Symbol, frozenset[sympy.Symbol]] = {}
+    for block in outcome.blocks:
+        held = frozenset().union(
+            *(
+                system.equations[i].lhs.free_symbols | system.equations[i].rhs.free_symbols
+                for i in block.equations
+            )
+        )
+        uses.update(dict.fromkeys(block.unknowns, held))
+    return uses
+
+
+MASS_FACTORS = (0.5, 2.0)  # a cancelled mass is confirmed by re-solves at these multiples
+
+
+def _confirmed(
+    spec: Spec, remarks: tuple[Remark, ...], rows: tuple[AnswerRow, ...]
+) -> tuple[Remark, ...]:
+    """The remarks the problem solved again bears out: each answer keeps its value (to 1e-6)
+    with each remarked mass halved and doubled in turn. A formula read under an assumption
+    (no slip, a cord taut) holds only while it does: a crate pushed too weakly to slide
+    feels F = P whatever its mass, until a lighter one slides, and then F = μk m g. A
+    symbolic problem has no numbers to solve again with: its formula in letters is the
+    proof, and no assumption of it was decided."""
+    if any(g.quantity is None for g in spec.givens):
+        return remarks
+    values = {row.name: row.value for row in rows}
+    again: dict[tuple[str, float], dict[str, float | None] | None] = {}
+    kept: dict[tuple[str, ...], list[str]] = {}  # the masses confirmed: the answers
+    for remark in remarks:
+        for answer in remark.answers:
+            masses = []
+            for mass in remark.masses:
+                for factor in MASS_FACTORS:  # the next factor only while the answer holds
+                    if (mass, factor) not in again:
+                        again[(mass, factor)] = _answers_with(spec, mass, factor)
+                    if not _same(values.get(answer), again[(mass, factor)], answer):
+                        break
+                else:
+                    masses.append(mass)
+            if masses:
+                kept.setdefault(tuple(masses), []).append(answer)
+    return tuple(Remark(tuple(answers), masses) for masses, answers in kept.items())
+
+
+def _same(value: float | None, again: dict[str, float | None] | None, answer: str) -> bool:
+    """True when a re-solve gave ``answer`` the value ``value`` (relative 1e-6)."""
+    other = again.get(answer) if again is not None else None
+    if value is None or other is None:
+        return False
+    return math.isclose(value, other, rel_tol=1e-6, abs_tol=1e-12)
+
+
+def _answers_with(spec: Spec, given: str, factor: float) -> dict[str, float | None] | None:
+    """The answers' values (display units) of the problem solved again in numeric mode
+    with ``given`` multiplied by ``factor``, or None where it cannot be solved."""
+    from dynsolve.grade.substitute import with_variant
+
+    quantity = next(g.quantity for g in spec.givens if g.name == given)
+    assert quantity is not None
+    unit = quantity.unit.text if quantity.unit is not None else ""
+    try:
+        changed = with_variant(spec, {given: f"{float(quantity.text) * factor!r} {unit}"}, "mass")
+        solution = solve_spec(changed, SolveOptions("numeric", show_formulas=False, simulate=False))
+    except (DynsolveError, ValueError, OverflowError):
+        return None
+    if solution.status != "solved":
+        return None
+    return {row.name: row.value for row in solution.answers}
 
 
 def _derived_formulas(outcome: Outcome) -> dict[sympy.Symbol, sympy.Expr]:
@@ -578,14 +663,15 @@ def _limit_remarks(
     again with that given at 0 (numeric mode): a limit outside the formula's own case (a
     cord that no longer goes slack when the bob starts at rest) fails there and is not
     remarked."""
-    from dynsolve.remarks import limit_cases
+    from dynsolve.remarks import limit_cases, starting_speeds
 
     if options.mode != "exact" or outcome.status != "solved":
         return ()
     formulas = _derived_formulas(outcome)
     formulas.update({g.symbol: g.formula for g in problem.givens if g.formula is not None})
+    starts = starting_speeds(problem.spec)
     givens = {
-        g.symbol: (g.name, _limit_case(g))
+        g.symbol: (g.name, _limit_case(g, starts))
         for g in problem.givens
         if g.formula is None and (g.given is not None or g.name == "g")
     }
@@ -648,12 +734,12 @@ def _at_zero(spec: Spec, given: str) -> Solution | None:
     return solution
 
 
-def _limit_case(given: GivenInfo) -> str:
-    """The limit case a given's going to 0 stands for: a speed, "nearly from rest"; a
-    friction coefficient, "nearly smooth"; else ""."""
+def _limit_case(given: GivenInfo, starts: frozenset[str]) -> str:
+    """The limit case a given's going to 0 stands for: a starting speed (one of
+    ``starts``), "nearly from rest"; a friction coefficient, "nearly smooth"; else ""."""
     if given.value is None or not given.value.is_nonzero:
         return ""
-    if given.dim == Dim.of("velocity"):
+    if given.dim == Dim.of("velocity") and given.name in starts:
         return "nearly from rest"
     if given.dim == Dim() and given.name.split("_")[0] in ("mu", "μ"):
         return "nearly smooth"
@@ -908,9 +994,9 @@ class _View:
         printed = self._prints.get(key)
         if printed is None:
             if kind == "text":
-                printed = sympy.sstr(expr.xreplace(self.pretty_symbols)).replace("**", "^")
+                printed = formula_text(expr, self.pretty_symbols)
             else:
-                printed = sympy.latex(expr, symbol_names=self.latex_symbols)
+                printed = formula_latex(expr, self.latex_symbols)
             self._prints[key] = printed
         return printed
 
@@ -1019,7 +1105,12 @@ class _View:
             )
             if show_formula and formula is not None:
                 formula = combined_roots(formula, self.solved)
+                formula = self.signed(formula)
             numbers = self.substituted(formula) if show_formula and formula else None
+            if numbers:
+                value_text, value_latex = self.after_numbers(
+                    symbol.name, block.values[symbol], value_text, value_latex, formula
+                )
             results.append(
                 Formula(
                     name=symbol.name,
@@ -1064,9 +1155,25 @@ class _View:
         self._substituted[formula] = written
         return written
 
+    def signed(
+        self, formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> sympy.Expr:
+        """``formula`` with each |x| written x or −x where the numbers (``values``, else the
+        solved ones) tell x's sign: no reader needs |cos 40°|, nor Abs(-44.58). Tidying a
+        resolved form can make a new |x| (√(1 − sin²θ)³ = cos²θ |cos θ|): resolved again."""
+        for _ in range(3):
+            if not formula.has(sympy.Abs):
+                break
+            formula = abs_resolved(formula, self.solved if values is None else values)
+        return formula
+
     def _hand_calculation(
         self, formula: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]
     ) -> tuple[str, str] | None:
+        tidy = presentable(self.signed(formula, values))
+        if tidy is None:
+            return None  # a form with no tidy text: its numbers are not shown either
+        formula = tidy  # |−44.58| written 44.58: the sign of each |x| is known from its numbers
         numbers: dict[sympy.Symbol, float] = {}
         for symbol in formula.free_symbols:
             number = real_value(values[symbol]) if symbol in values else None
@@ -1087,10 +1194,9 @@ class _View:
                 degrees = _plain(math.degrees(number), wrap=False)
                 names[angles[symbol]] = f"{degrees}°"
                 latex_names[angles[symbol]] = f"{degrees}^\\circ"
-        text = sympy.sstr(shown).replace("**", "^")
-        latex = sympy.latex(  # numbers side by side need their dot: (-6.372) \cdot 10
-            shown, symbol_names=latex_names, mul_symbol="dot"
-        )
+        text = formula_text(shown)
+        # numbers side by side need their dot: (-6.372) \cdot 10
+        latex = formula_latex(shown, latex_names, mul_symbol="dot")
         for placeholder in sorted(names, key=lambda s: -len(s.name)):
             text = text.replace(placeholder.name, names[placeholder])
         return text, latex
@@ -1246,6 +1352,8 @@ class _View:
             return None
         if formula is not None and tidying_lightly():  # numeric mode built it untidied
             formula = tidy(formula, light=False)
+        if formula is not None:
+            formula = self.signed(formula)
         if formula is None or formula.is_Number or (-formula).is_Symbol or formula.is_Symbol:
             return None
         value = self.computed(target.name)
@@ -1253,6 +1361,10 @@ class _View:
             return None
         value_text, value_latex, _ = self.shown(target.name, value)  # signed, as its formula
         numbers = self.substituted(formula)
+        if numbers:
+            value_text, value_latex = self.after_numbers(
+                target.name, value, value_text, value_latex, formula
+            )
         return Formula(
             name=target.name,
             formula=self.text(formula),
@@ -1413,6 +1525,31 @@ class _View:
             )
         )
         return tuple(rows)
+
+    def after_numbers(
+        self, name: str, expr: sympy.Expr, text: str, latex: str, formula: sympy.Expr
+    ) -> tuple[str, str]:
+        """A hand calculation's value as its numbers give it, in the system's base units,
+        then as shown (``text``, ``latex``) where the answer is asked in another unit:
+        √(4.762² + 7.937²) = 9.26 m/s = 33.3 km/h, not "= 33.3 km/h" straight from numbers
+        in m/s; 10.47·12²/2 + 31.42·12 = 1131 rad = 180 rev. An inverse trigonometric
+        ``formula`` gives an angle in any unit: asin(0.77) = 50.3°, as textbooks write it."""
+        unit = self.unit_of(name)
+        value = self.number(expr)
+        if not unit or value is None or not math.isfinite(value):
+            return text, latex
+        if isinstance(formula, (sympy.asin, sympy.acos, sympy.atan, sympy.atan2)):
+            return text, latex
+        dim = self.dims.get(name, Dim())
+        base = "rad" if dim.dimensionless else natural_unit(dim, self.system, name)
+        try:
+            same = math.isclose(convert(1.0, unit, self.system), convert(1.0, base, self.system))
+        except (DynsolveError, ValueError):
+            return text, latex
+        if same:
+            return text, latex
+        before, before_latex = self.quantity(value, base)
+        return f"{before} = {text}", f"{before_latex} = {latex}"
 
     def quantity(self, value: float, unit: str) -> tuple[str, str]:
         """(text, latex) of a value in base units shown in ``unit``."""

@@ -2,15 +2,22 @@
 
 The textbook remarks when a mass drops out ("the speed does not depend on the bob's
 mass"). An answer's formula is followed back through the solve's blocks (and the derived
-quantities such as I_G = m k_G²) to the givens; a mass that the equations use but the
-formula does not contain has cancelled. Only formulas the solve derived symbolically are
-read: a block solved in floating point has lost its letters, and a letter missing there
-says nothing.
+quantities such as I_G = m k_G²) to the givens; a mass that the equations of its
+derivation use but the formula does not contain has cancelled. A mass no equation of the
+answer's derivation holds (another body's, one of a later stage) never entered it: it did
+not cancel, and is not remarked. Only formulas the solve derived symbolically are read: a
+block solved in floating point has lost its letters, and a letter missing there says
+nothing. (The caller confirms each remark by solving again with the mass changed: a
+formula read under an assumption, no slip, holds only while the assumption does.)
 
 >>> m, g, h, v = sympy.symbols("m g h v", positive=True)
->>> cancelled_masses({"v_2": v}, {v: sympy.sqrt(2 * g * h)}, {m: "m"}, {g, h})
+>>> uses = {v: frozenset({m, g, h})}  # v's equation: m g h = m v²/2
+>>> cancelled_masses({"v_2": v}, {v: sympy.sqrt(2 * g * h)}, {m: "m"}, {g, h}, uses=uses)
 (Remark(answers=('v_2',), masses=('m',)),)
->>> cancelled_masses({"N": v}, {v: m * g}, {m: "m"}, {g, h})
+>>> cancelled_masses({"N": v}, {v: m * g}, {m: "m"}, {g, h}, uses=uses)
+()
+>>> cancelled_masses({"v_2": v}, {v: sympy.sqrt(2 * g * h)}, {m: "m"}, {g, h},
+...                  uses={v: frozenset({g, h})})  # m never entered v's equations
 ()
 
 The textbook also remarks a limit case where it frees the answer from the other givens
@@ -33,6 +40,8 @@ from dataclasses import dataclass
 import sympy
 
 from dynsolve.results import Remark
+from dynsolve.spec.ast import Name, Num, Spec
+from dynsolve.spec.parser import iter_names
 
 LARGEST = 4000  # operations: a formula larger than this is not followed back
 
@@ -43,26 +52,54 @@ def cancelled_masses(
     masses: Mapping[sympy.Symbol, str],
     givens: set[sympy.Symbol],
     unknowns: frozenset[sympy.Symbol] = frozenset(),
+    uses: Mapping[sympy.Symbol, frozenset[sympy.Symbol]] | None = None,
 ) -> tuple[Remark, ...]:
     """For each answer (a name and its expression in the unknowns), the masses it does
     not depend on once ``formulas`` (each unknown, or derived quantity, in the givens and
-    earlier unknowns) are put in. ``masses`` are the mass givens the equations use (their
-    symbols and names), ``givens`` the other givens; an answer left with no given at all
-    (a number), or still holding an ``unknowns`` symbol (one solved in floats, without a
-    formula), gets no remark."""
+    earlier unknowns) are put in, among those its derivation used. ``masses`` are the mass
+    givens the equations use (their symbols and names), ``givens`` the other givens;
+    ``uses`` maps each unknown (or derived quantity) to the symbols the equations (or the
+    formula) it comes from hold (None: every mass counts as used). An answer left with no
+    given at all (a number), or still holding an ``unknowns`` symbol (one solved in
+    floats, without a formula), gets no remark."""
     cancelled: dict[tuple[str, ...], list[str]] = {}  # the masses gone: the answers
     for name, expr in answers.items():
-        found = _in_givens(sympy.Integer(0) + expr, formulas)
+        expr = sympy.Integer(0) + expr
+        found = _in_givens(expr, formulas)
         if found is None:
             continue
         letters = found.free_symbols
         if letters & unknowns or not letters & (givens | set(masses)):
             continue
-        gone = tuple(label for symbol, label in masses.items() if symbol not in letters)
+        entered = derivation_symbols(expr, uses) if uses is not None else set(masses)
+        gone = tuple(
+            label for symbol, label in masses.items() if symbol not in letters and symbol in entered
+        )
         if gone:
             cancelled.setdefault(gone, []).append(name)
     remarks = [Remark(tuple(names), gone) for gone, names in cancelled.items()]
     return tuple(remarks)
+
+
+def derivation_symbols(
+    expr: sympy.Expr, uses: Mapping[sympy.Symbol, frozenset[sympy.Symbol]]
+) -> set[sympy.Symbol]:
+    """Every symbol ``expr``'s derivation holds: its own, and, for each unknown (or derived
+    quantity) among them, those of the equations it was solved from (``uses``), and so on.
+
+    >>> a, b, m, F = sympy.symbols("a b m F")
+    >>> sorted(derivation_symbols(2 * a, {a: frozenset({F, m, a}), m: frozenset()}), key=str)
+    [F, a, m]
+    """
+    seen: set[sympy.Symbol] = set()
+    todo = list(expr.free_symbols)
+    while todo:
+        symbol = todo.pop()
+        if symbol in seen:
+            continue
+        seen.add(symbol)
+        todo.extend(uses.get(symbol, ()))
+    return seen
 
 
 def _in_givens(expr: sympy.Expr, formulas: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr | None:
@@ -113,6 +150,43 @@ def limit_cases(
                 whatever = tuple(sorted(givens[s][0] for s in gone))
                 cases.append(LimitCase(name, given, case, limit, whatever))
     return tuple(cases)
+
+
+START_SPEEDS = ("v_0", "v_x0", "v_y0")  # the start of a kinematics motion
+
+
+def starting_speeds(spec: Spec) -> frozenset[str]:
+    """The givens that are a starting speed, which at 0 means "from rest": a scene's body
+    given a ``velocity`` and no spin (a disk given v_1 and ω_1 is not at rest when v_1 is
+    0), or a kinematics motion's ``v_0`` (``v_x0``, ``v_y0``, and the givens they are
+    written with). Equations give no such meaning: a speed there (a rebound's, a final
+    one) is no start, and gets no "from rest" remark.
+
+    >>> from dynsolve.spec.parser import parse_spec
+    >>> sorted(starting_speeds(parse_spec(
+    ...     "given:\\n  v_1 = 2 m/s\\n  w = 3 rad/s\\n  v_r = 1 m/s\\n  m = 1 kg\\n"
+    ...     "scene:\\n  body a: particle, mass m\\n  velocity a: v_1, right\\n"
+    ...     "  body b: particle, mass m\\n  velocity b: v_r, right\\n  omega b: w ccw\\n"
+    ...     "find: x = speed(a)\\n", "s.dyn")))
+    ['v_1']
+    """
+    spinning = {
+        s.body
+        for s in spec.scene
+        if s.kind == "omega" and not (isinstance(s.value, Num) and s.value.value == 0)
+    }
+    starts = {
+        name.text
+        for s in spec.scene
+        if s.kind == "velocity" and s.value is not None and s.body not in spinning
+        for name in iter_names(s.value)
+    }
+    if spec.kinematics:
+        starts.update(START_SPEEDS)
+        for statement in spec.kinematics:
+            if isinstance(statement.lhs, Name) and statement.lhs.text in START_SPEEDS:
+                starts.update(n.text for n in iter_names(statement.rhs))
+    return frozenset(starts)
 
 
 def _at_zero(formula: sympy.Expr, symbol: sympy.Symbol) -> sympy.Expr | None:

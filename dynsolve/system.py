@@ -63,6 +63,7 @@ class SolveOptions:
     mode: SolveMode = "exact"
     time_budget: float = 5.0
     show_formulas: bool = True
+    simulate: bool = True  # False: no simulation cross-check (a re-solve read for its answers)
 
 
 @dataclass(frozen=True)

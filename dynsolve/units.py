@@ -216,6 +216,39 @@ def natural_unit(dim: Dim, system: System, name: str = "") -> str:
     return "*".join(parts)
 
 
+def with_unit(value: float, kind: str, system: System) -> str:
+    """``value`` (in the system's base units) to 4 significant figures with its unit, as
+    a check or an assumption states it; ``kind`` names its dimension (force, velocity,
+    acceleration, energy, length: :data:`NAMED_DIMENSIONS`).
+
+    >>> with_unit(19.7712, "force", "SI"), with_unit(20.0, "velocity", "FPS")
+    ('19.77 N', '20 ft/s')
+    >>> with_unit(-3.5, "energy", "FPS"), with_unit(2.0, "acceleration", "SI")
+    ('-3.5 ft·lb', '2 m/s²')
+    """
+    from dynsolve.format import pretty_unit
+
+    unit = natural_unit(Dim.of(kind), system, "T" if kind in ("energy", "work") else "")
+    return f"{value:.4g} {pretty_unit(unit)}"
+
+
+@dataclass(frozen=True)
+class Measured:
+    """A number that formats with its unit, for a template written with a format spec.
+
+    >>> "{value:.4g} > 0".format(value=Measured(19.7712, "N"))
+    '19.77 N > 0'
+    """
+
+    value: float
+    unit: str
+
+    def __format__(self, spec: str) -> str:
+        from dynsolve.format import pretty_unit
+
+        return f"{format(self.value, spec)} {pretty_unit(self.unit)}".rstrip()
+
+
 def base_unit(dim: Dim, system: System) -> str:
     """The coherent base-unit expression of ``dim`` in ``system`` (what the solver uses).
 

@@ -78,7 +78,7 @@ def test_the_drum_is_checked_by_its_constant_acceleration_and_its_tension(tmp_pa
     a = 20 * G * 0.16 / 6.95
     assert second.detail.startswith("ΣF = m a_G") and f"{math.sqrt(2 * a * 2):.7g}" in second.detail
     taut = assumption(solution, "cord T taut between the states")
-    assert taut.holds and f"T = {20 * (G - a):.4g} ≥ 0" in taut.detail
+    assert taut.holds and f"T = {20 * (G - a):.4g} N ≥ 0" in taut.detail
     assert "constant" in taut.detail
 
 
@@ -92,7 +92,7 @@ def test_a_couple_that_unwinds_the_drum_faster_than_the_block_falls_slackens_the
     solution = solve_file(write(tmp_path, text))
     taut = assumption(solution, "cord T taut between the states")
     T = 20 * (G - 0.4 * (2000 + 20 * G * 0.4) / 6.95)
-    assert not taut.holds and f"T = {T:.4g} < 0" in taut.detail
+    assert not taut.holds and f"T = {T:.4g} N < 0" in taut.detail
     assert not solution.passed
 
 
@@ -132,7 +132,7 @@ find: v = speed(block), w_1 = omega2(one), w_2 = omega2(two)
     assert by_name(solution, "w_1").direction == by_name(solution, "w_2").direction == "cw"
     # T_2 = I_2 α_2/r_2 with α_2 = a/r_2, a = v²/(2h): 0.04 (v²/2)/0.01 = 4·v²/2
     taut = assumption(solution, "cord T_2 taut between the states")
-    assert taut.holds and f"T_2 = {0.04 * (v**2 / 2) / 0.01:.4g} ≥ 0" in taut.detail
+    assert taut.holds and f"T_2 = {0.04 * (v**2 / 2) / 0.01:.4g} N ≥ 0" in taut.detail
     assert solution.passed
 
 
@@ -210,7 +210,7 @@ find: v = speed(two), v_1 = speed(one)
     solution = solve_file(write(tmp_path, text))
     assert by_name(solution, "v").value == pytest.approx(math.sqrt(20), rel=1e-9)
     assert by_name(solution, "v_1").value == pytest.approx(math.sqrt(20), rel=1e-9)
-    assert assumption(solution, "cord T taut").detail == "T = 20 ≥ 0"
+    assert assumption(solution, "cord T taut").detail == "T = 20 N ≥ 0"
     assert next(c for c in solution.checks if c.name == "simulation").passed
     assert solution.passed
 
@@ -328,7 +328,7 @@ find: v = speed(B), v_G = speed(wheel)
     assert by_name(solution, "v").value == pytest.approx(math.sqrt(7.5), rel=1e-9)
     assert by_name(solution, "v_G").value == pytest.approx(math.sqrt(7.5) / 2, rel=1e-9)
     taut = assumption(solution, "cord T taut between the states")
-    assert taut.holds and taut.detail.startswith("T = 11.25 ≥ 0")
+    assert taut.holds and taut.detail.startswith("T = 11.25 N ≥ 0")
     assert solution.passed
 
 
@@ -352,7 +352,7 @@ def test_a_spring_on_the_hanging_block_along_or_across_its_cord(tmp_path, E, swi
     # the spring's force changes: T sampled along the way; at state 2 (x = h = 2 m, spring
     # force k h = 100 N up) a = (m_b g − k h)/(m_b + I_O/r²) = 96.2/43.4375 = 2.214676 m/s²,
     # T = (I_O/r²) a = 23.4375 × 2.214676 = 51.907 N ≥ 0
-    assert taut.holds and "T = 51.91 at state 2" in taut.detail
+    assert taut.holds and "T = 51.91 N at state 2" in taut.detail
     assert "8 of 8 states sampled along the travel" in taut.detail
 
 
@@ -393,8 +393,8 @@ def test_a_spring_below_the_block_slackens_the_cord_on_the_way_and_fails(tmp_pat
     T_1, T_2 = 10 * 5 * G / 15, 10 * (5 * G - 500 * 0.15) / 15
     assert (round(T_1, 1), round(T_2, 1)) == (32.7, -17.3)
     assert not taut.holds
-    assert f"T = {T_1:.4g} ≥ 0 at state 1" in taut.detail
-    assert f"T = {T_2:.4g} at state 2" in taut.detail
+    assert f"T = {T_1:.4g} N ≥ 0 at state 1" in taut.detail
+    assert f"T = {T_2:.4g} N at state 2" in taut.detail
     assert f"goes slack at a travel of {5 * G / 500:.4g} of the 0.15" in taut.detail
     assert not solution.passed
 
@@ -484,7 +484,7 @@ def test_a_spring_on_the_drums_rim_is_carried_round_when_the_tension_is_sampled(
     assert (round(ell, 6), round(T_2, 2)) == (0.723768, 35.12)
     solution = solve_file(write(tmp_path, text))
     taut = assumption(solution, "cord T taut between the states")
-    assert taut.holds and f"T = {T_2:.4g} at state 2" in taut.detail
+    assert taut.holds and f"T = {T_2:.4g} N at state 2" in taut.detail
     # ½ (m_b + I_O/r²) v² = m_b g h − V_S(h)
     v = math.sqrt((5 * G * h - k * (ell - L_0) ** 2 / 2) / 7.5)
     assert by_name(solution, "v").value == pytest.approx(v, rel=1e-9)

@@ -722,9 +722,11 @@ def printed_values(data: dict, trial: bool = False) -> list[tuple[str, float, st
         found += [(t["name"], t["value"]) for t in data["energy"]]
     out = []
     for name, shown in found:
-        match = _NUMBER.match(shown.strip())
-        if match:
-            out.append((name, float(match.group(1)), match.group(2).strip()))
+        # a hand calculation's value in its numbers' base unit, then as asked: 12740 N = 12.7 kN
+        for part in shown.split(" = "):
+            match = _NUMBER.match(part.strip())
+            if match:
+                out.append((name, float(match.group(1)), match.group(2).strip()))
     return out
 
 

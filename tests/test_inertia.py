@@ -141,8 +141,8 @@ def test_hibbeler_17_3_plate_with_a_hole():
 
     lines = body.derivation(pin, "kg·m²")
     assert lines == [
-        "disk: I = 15.71*0.25**2/2 + 15.71*0.25**2 = 1.473 kg·m²",
-        "hole: I = -(3.927*0.125**2/2 + 3.927*0.25**2) = -0.2761 kg·m²",
+        "disk: I = 15.71*0.25^2/2 + 15.71*0.25^2 = 1.473 kg·m²",
+        "hole: I = -(3.927*0.125^2/2 + 3.927*0.25^2) = -0.2761 kg·m²",
     ]
     text = body.text(pin, "kg·m²", label="I_O")
     assert "disk" in text and "hole" in text

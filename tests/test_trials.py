@@ -35,7 +35,7 @@ def test_the_trial_keeps_its_values_and_check(pole) -> None:
     assert values["alpha"] == "-0.667 rad/s²"
     assert values["a_Gx"] == "1.00 m/s²"
     assert values["F_A"] == "-300 N"
-    assert "300 > μs N = 294.3" in trial.verdict
+    assert "300 N > μs N = 294.3 N" in trial.verdict
     assert len(trial.equations) == 5  # ΣF_x, ΣF_y, ΣM_A, contact kept, no slip
 
 

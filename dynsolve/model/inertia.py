@@ -31,6 +31,7 @@ from fractions import Fraction
 import sympy
 
 from dynsolve.numbers import tidy
+from dynsolve.shown import formula_text
 from dynsolve.units import Dim
 
 Number = sympy.Expr | int | Fraction | float
@@ -444,7 +445,7 @@ class Term:
     >>> term.inertia, term.transfer, term.total
     (2, 4, 6)
     >>> term.text(unit="kg·m²")
-    'disk: I = 4*1**2/2 + 4*1**2 = 6 kg·m²'
+    'disk: I = 4*1^2/2 + 4*1^2 = 6 kg·m²'
     """
 
     name: str
@@ -493,18 +494,18 @@ class Term:
 
     def text(self, unit: str = "", digits: int = 4) -> str:
         """The textbook line, ``name: I = I_G + m d² = value unit`` (a hole's negated),
-        via sympy ``sstr``; zero terms are left out.
+        as :func:`~dynsolve.shown.formula_text` writes them; zero terms are left out.
 
         >>> body = composite([Part("h", "particle", 1, position=(3, 4), hole=True),
         ...                   Part("b", "particle", 5)])
         >>> body.terms((0, 0))[0].text()
-        'h: I = -(1*5**2) = -25'
+        'h: I = -(1*5^2) = -25'
         """
         pieces = []
         if self.inertia != 0:
-            pieces.append(sympy.sstr(self.inertia_shown(digits)))
+            pieces.append(formula_text(self.inertia_shown(digits)))
         if self.transfer != 0:
-            pieces.append(sympy.sstr(self.transfer_shown(digits)))
+            pieces.append(formula_text(self.transfer_shown(digits)))
         body = " + ".join(pieces) or "0"
         if self.sign < 0 and pieces:
             body = f"-({body})"
@@ -569,7 +570,7 @@ class Composite:
         """The textbook lines, one per part, for I about ``point`` (default G).
 
         >>> composite([Part("a", "ring", 2, (1,), (1, 0))]).derivation((0, 0), "kg·m²")
-        ['a: I = 2*1**2 + 2*1**2 = 4 kg·m²']
+        ['a: I = 2*1^2 + 2*1^2 = 4 kg·m²']
         """
         return [term.text(unit, digits) for term in self.terms(point)]
 
@@ -586,8 +587,8 @@ class Composite:
         >>> body = composite([Part("a", "particle", 1, position=(1, 0)),
         ...                   Part("b", "particle", 1, position=(-1, 0))])
         >>> print(body.text())
-        a: I = 1*1**2 = 1
-        b: I = 1*1**2 = 1
+        a: I = 1*1^2 = 1
+        b: I = 1*1^2 = 1
         I_G = 1 + 1 = 2
         """
         terms = self.terms(point)
@@ -681,4 +682,4 @@ def _unevaluated(value: sympy.Expr, digits: int) -> sympy.Expr:
 
 
 def _number_text(value: sympy.Expr, digits: int) -> str:
-    return sympy.sstr(_shown_number(value, digits))
+    return formula_text(_shown_number(value, digits))

@@ -34,6 +34,7 @@ import sympy
 from dynsolve.dimensions import DimensionReport, check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
+from dynsolve.format import pretty_unit
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.oneline_events import EVENTS, QUANTITIES, find_event
 from dynsolve.names import latex_name, pretty
@@ -50,6 +51,7 @@ from dynsolve.principles.rectilinear import (
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import EquationRow, Formula, Step
 from dynsolve.sections import combine_sections
+from dynsolve.shown import formula_latex, formula_text
 from dynsolve.spec.ast import EquationStmt, FindItem, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
@@ -573,18 +575,22 @@ def _event_target(item: FindItem, context: _Context) -> Target:
     _check_unit(item, dim, spec)
     unit = item.unit.text if item.unit is not None else natural_unit(dim, spec.system)
 
-    def shown(expr: sympy.Expr) -> str:
+    def shown(expr: sympy.Expr, of: Dim = dim) -> str:
+        """A value in the system's base units (those of the motion's numbers), with its unit."""
         number = real_value(expr, context.values)
-        return f"{number:.6g}" if number is not None else sympy.sstr(expr).replace("**", "^")
+        if number is None:
+            return formula_text(expr)
+        return f"{number:.6g} {pretty_unit(natural_unit(of, spec.system))}".rstrip()
 
-    discarded = tuple(f"t = {shown(t)}: {why}" for t, why in event.discarded)
+    time = _DIMS["t"]
+    discarded = tuple(f"t = {shown(t, time)}: {why}" for t, why in event.discarded)
     results = ()
     if event.time is not None and function not in ("t_at",):
-        results += (Formula("t", sympy.sstr(event.time), sympy.latex(event.time),
-                            shown(event.time), shown(event.time)),)  # fmt: skip
-    text = sympy.sstr(event.expr).replace("**", "^")
-    latex = sympy.latex(event.expr)
-    if context.numbers_first and not event.expr.free_symbols:
+        results += (Formula("t", formula_text(event.time), formula_latex(event.time),
+                            shown(event.time, time), shown(event.time, time)),)  # fmt: skip
+    text = formula_text(event.expr)
+    latex = formula_latex(event.expr)
+    if (context.numbers_first or event.expr.is_Float) and not event.expr.free_symbols:
         text = latex = ""  # the number itself: "t_a = 1", not "t_a = 1 = 1"
     results += (Formula(item.name, text, latex, shown(event.expr), shown(event.expr)),)
     method = "root choice" if function in ("t_at", "x_at") else "extreme"
@@ -832,8 +838,8 @@ def _after_a_stop(
         f"so {function}({at}) is the stop's (v(t) holds only until then)"
     )
     number = real_value(value, values)
-    shown = f"{number:.6g}" if number is not None else sympy.sstr(value)
-    result = Formula(f"{function}({at})", sympy.sstr(value), sympy.latex(value), shown, shown)
+    shown = f"{number:.6g}" if number is not None else formula_text(value)
+    result = Formula(f"{function}({at})", formula_text(value), formula_latex(value), shown, shown)
     steps.append(Step(0, (), (f"{function}({at})",), "stop", (result,), (), how))
     return value
 
@@ -931,15 +937,15 @@ def _steps(
     steps = []
     for index, (name, how) in enumerate(motion.steps, start=1):
         formula = motion.formulas[name]
-        text = sympy.sstr(formula.xreplace(pretty_names)).replace("**", "^")
-        latex = sympy.latex(formula, symbol_names=latex_names)
+        text = formula_text(formula, pretty_names)
+        latex = formula_latex(formula, latex_names)
         with_numbers = formula.xreplace(dict(values))
         if numbers_first and with_numbers == formula:  # the numbers are in already
             result = Formula(name, "", "", text, latex)
         else:
             rounded = sympy.N(with_numbers, 4)
-            shown = sympy.sstr(rounded).replace("**", "^")
-            result = Formula(name, text, latex, shown, sympy.latex(rounded))
+            shown = formula_text(rounded)
+            result = Formula(name, text, latex, shown, formula_latex(rounded))
         steps.append(
             Step(index, (), (name,), "integration" if "∫" in how else "algebra", (result,), (), how)
         )

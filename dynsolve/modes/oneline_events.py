@@ -36,6 +36,7 @@ from dynsolve.principles.rectilinear import (
     crossing_times,
     extreme_time,
 )
+from dynsolve.shown import formula_text
 
 EVENTS = ("t_at", "x_at", "max", "min", "distance")
 QUANTITIES = ("x", "v", "a")
@@ -146,13 +147,13 @@ def _time_at(
     if law is not None:
         try:
             found = _crossings(law, level, t0, values, n)
-        except ValueError as error:
+        except ValueError:
             numeric = _scan_roots(law - level, t0, n, values)
             if numeric is None:
                 raise
             time, horizon = numeric
-            rule = (
-                f"sympy could not solve {quantity}(t) = value ({error}); the {_ordinal(n)} sign "
+            rule = (  # sympy's own message, its equation in Python's **, is not the reader's
+                f"sympy could not solve {quantity}(t) = value; the {_ordinal(n)} sign "
                 f"change of {quantity}(t) − value after t₀, found by scanning t₀ … t₀ + "
                 f"{horizon:g} s and bisection, is taken (later roots not sought)"
             )
@@ -543,7 +544,7 @@ def _distance(start: sympy.Expr, end: sympy.Expr, motion: Motion, values: Values
 def _number(expr: sympy.Expr, values: Values) -> str:
     """A time as a number when the givens have values, else as a formula."""
     number = real_value(expr, values)
-    return f"{number:.6g}" if number is not None else sympy.sstr(expr).replace("**", "^")
+    return f"{number:.6g}" if number is not None else formula_text(expr)
 
 
 def _check_quadrature(

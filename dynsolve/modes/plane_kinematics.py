@@ -58,6 +58,7 @@ from dynsolve.principles.rectilinear import (
 )
 from dynsolve.quantities import convert, resolve_unit
 from dynsolve.results import Formula, Step
+from dynsolve.shown import formula_latex, formula_text
 from dynsolve.spec.ast import EquationStmt, FindItem, Name, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
@@ -591,7 +592,7 @@ class _Builder:
         number = None if with_numbers.free_symbols else real_value(with_numbers)
         if number is None:
             rounded = sympy.N(with_numbers, 4)
-            return sympy.sstr(rounded).replace("**", "^"), sympy.latex(rounded)
+            return formula_text(rounded), formula_latex(rounded)
         unit = natural_unit(dim, self.spec.system)
         value = convert(number, unit, self.spec.system)
         latex = latex_number(value) + (f"\\,{latex_unit(unit)}" if unit else "")
@@ -604,8 +605,8 @@ class _Builder:
         pretty_names = {s: sympy.Symbol(pretty(n)) for n, s in self.symbols.items()}
         latex_names = {s: latex_name(n) for n, s in self.symbols.items()}
         shown = expr.free_symbols != set()
-        text = sympy.sstr(expr.xreplace(pretty_names)).replace("**", "^") if shown else ""
-        latex = sympy.latex(expr, symbol_names=latex_names) if shown else ""
+        text = formula_text(expr, pretty_names) if shown else ""
+        latex = formula_latex(expr, latex_names) if shown else ""
         return Formula(name, text, latex, *self._shown(expr, dim))
 
     def _step(self, index: int, d: Derivation, lines: tuple[int, ...]) -> Step:

@@ -26,9 +26,10 @@ from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
+from dynsolve.shown import formula_text
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
-from dynsolve.units import Dim, natural_unit
+from dynsolve.units import Dim, natural_unit, with_unit
 
 IMPENDING = 1e-9  # |F| within this fraction of μs N counts as impending slip, not slip
 
@@ -1342,14 +1343,14 @@ def _path_note(scene: Scene, name: str, extremes: object) -> tuple[str, str]:
     mover = scene.movers[name]
 
     def points(extreme: object) -> str:
-        shown = [f"({sympy.sstr(x)}, {sympy.sstr(y)})" for x, y in extreme.points]  # type: ignore[attr-defined]
+        shown = [f"({formula_text(x)}, {formula_text(y)})" for x, y in extreme.points]  # type: ignore[attr-defined]
         return ", ".join(shown) or "everywhere"
 
     return (
         f"{name} along {mover.path.name}",
         "constant speed: a_t = 0, so |a| = a_n = v²κ; the extremes of the curvature κ "
-        f"along the path: largest a = {sympy.sstr(extremes.maximum.a)} at "
-        f"{points(extremes.maximum)}, smallest a = {sympy.sstr(extremes.minimum.a)} at "
+        f"along the path: largest a = {formula_text(extremes.maximum.a)} at "
+        f"{points(extremes.maximum)}, smallest a = {formula_text(extremes.minimum.a)} at "
         f"{points(extremes.minimum)}",
     )
 
@@ -1460,12 +1461,13 @@ def _assess(
     checks: list[Assumption] = []
     slips: dict[str, int] = {}
     scene, formulation = problem.scene, problem.formulation
-    cords, switched = _cord_checks(formulation, substitution)
+    system = problem.spec.system
+    cords, switched = _cord_checks(formulation, substitution, system)
     slips |= switched
     if formulation.stages:
         from dynsolve.principles.stage_chain import chain_assumptions, chain_slips
 
-        chained = chain_assumptions(scene, formulation, substitution) + cords
+        chained = chain_assumptions(scene, formulation, substitution, system) + cords
         slips |= chain_slips(formulation, substitution)
         if not formulation.kinematics:
             return chained, slips
@@ -1487,7 +1489,7 @@ def _assess(
             continue
         N = real_value(formulation.reactions[f"N_{support.name}"][0], substitution)
         if N is not None and support.two_sided and not _is_zero_expr(support.normal_acceleration):
-            checks += _path_side(scene, support, N, substitution)
+            checks += _path_side(scene, support, N, substitution, system)
         if N is None and not support.two_sided:
             checks.append(Assumption.undecided(f"contact at {support.name} kept", UNDECIDED))
         if N is not None and not support.two_sided:
@@ -1495,7 +1497,7 @@ def _assess(
                 Assumption(
                     f"contact at {support.name} kept",
                     N >= 0,
-                    f"N_{support.name} = {N:.4g} {'≥' if N >= 0 else '<'} 0"
+                    f"N_{support.name} = {with_unit(N, 'force', system)} {'≥' if N >= 0 else '<'} 0"
                     + ("" if N >= 0 else f": the body leaves the surface; {RELEASED}"),
                 )
             )
@@ -1518,14 +1520,16 @@ def _assess(
                 Assumption(
                     f"sliding at {support.name}",
                     known,
-                    f"its contact point moves at {slip:.4g} m/s along the surface at the "
+                    f"its contact point moves at {with_unit(slip, 'velocity', system)} along "
+                    "the surface at the "
                     "instant (the velocities given): kinetic friction μk N opposes it"
                     if known
                     else "the speed of its contact point along the surface is undefined",
                 )
             )
         elif friction_name in formulation.reactions and N is not None:
-            check = _no_slip(support, formulation.reactions[friction_name][0], N, substitution)
+            friction = formulation.reactions[friction_name][0]
+            check = _no_slip(support, friction, N, substitution, system)
             if check is not None:
                 assumption, sense = check
                 checks.append(assumption)
@@ -1555,7 +1559,7 @@ def _assess(
                 Assumption(
                     f"cord {cord.name} taut",
                     T >= 0,
-                    f"{cord.name} = {T:.4g} {'≥' if T >= 0 else '<'} 0"
+                    f"{cord.name} = {with_unit(T, 'force', system)} {'≥' if T >= 0 else '<'} 0"
                     + ("" if T >= 0 else f": the cord goes slack; {RELEASED}"),
                 )
             )
@@ -1575,6 +1579,7 @@ def _released_checks(
     its point leave the surface (a_P·n ≥ 0, from rest at the instant)."""
     from dynsolve.model.scene import Cord, Support
 
+    system = problem.spec.system
     checks = []
     for name, element in problem.released_elements.items():
         if isinstance(element, Cord):
@@ -1589,8 +1594,9 @@ def _released_checks(
             holds = closing is None or closing >= -SENSE_TOLERANCE * max(1.0, abs(closing))
             detail = (
                 f"{name} = 0; without it, its ends do not draw apart (relative "
-                f"acceleration along it {0.0 if closing is None else closing:.4g} toward the "
-                "anchor)"
+                "acceleration along it "
+                f"{with_unit(0.0 if closing is None else closing, 'acceleration', system)} "
+                "toward the anchor)"
             )
             if not holds:
                 detail = f"{name} = 0, but without it the motion would stretch it: neither holds"
@@ -1603,7 +1609,7 @@ def _released_checks(
             holds = away is None or away >= -SENSE_TOLERANCE * max(1.0, abs(away))
             detail = (
                 f"N_{name} = 0; without the contact its point accelerates away from the "
-                f"surface at {0.0 if away is None else away:.4g}"
+                f"surface at {with_unit(0.0 if away is None else away, 'acceleration', system)}"
             )
             if not holds:
                 detail = f"N_{name} = 0, but without it the body would move into the surface"
@@ -1622,7 +1628,7 @@ def _accel(problem: SceneProblem, body: str, point: Vec) -> Vec:
 
 
 def _cord_checks(
-    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr], system: str
 ) -> tuple[tuple[Assumption, ...], dict[str, int]]:
     """Each elastic cord's state assumed at the end of a travel, against the answer: a cord
     assumed taut must be stretched there (s₂ > 0), one assumed slack must not be. Returns
@@ -1647,7 +1653,9 @@ def _cord_checks(
         holds = acting if taut else not acting
         what = "elastic cord" if cord.sign > 0 else "spring"
         on, off = cord.words
-        detail = f"stretch at state {k} s = {s:.4g}" + (" > 0" if s > 0 else " ≤ 0")
+        detail = f"stretch at state {k} s = {with_unit(s, 'length', system)}" + (
+            " > 0" if s > 0 else " ≤ 0"
+        )
         if not holds:
             detail += f": it is {off if taut else on} there; re-solved so"
             switched[f"taut:{name}"] = -1 if taut else 1
@@ -1715,6 +1723,7 @@ def _no_slip(
     friction: sympy.Expr,
     N: float,
     substitution: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> tuple[Assumption, int] | None:
     """|F| ≤ μs N at a contact assumed not to slip, and the sense (±1 along the tangent)
     of kinetic friction to re-solve with when it fails (0: no re-solve). Without μs, μk N
@@ -1730,15 +1739,19 @@ def _no_slip(
         return None
     limit = mu_value * N
     holds = abs(F) <= limit * (1 + IMPENDING)
+
+    def force(value: float) -> str:
+        return with_unit(value, "force", system)
+
     name = f"no slip at {support.name}"
     if support.mu_s is None:
-        detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μk N = {limit:.4g}"
+        detail = f"|F| = {force(abs(F))} {'≤' if holds else '>'} μk N = {force(limit)}"
         if holds:
             return Assumption(name, True, detail + " ≤ μs N (μs ≥ μk)"), 0
         detail += " (no mu_s given: taken equal to μk); re-solved with F = μk N opposing the slip"
         return Assumption(name, False, detail), 1 if F > 0 else -1
     impending = holds and abs(abs(F) - limit) <= IMPENDING * max(limit, 1e-300)
-    detail = f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {limit:.4g}"
+    detail = f"|F| = {force(abs(F))} {'≤' if holds else '>'} μs N = {force(limit)}"
     if impending:
         detail += " (impending slip: still no slip)"
     sense = 0
@@ -1883,9 +1896,10 @@ def _slip_sense(
     if slip is None:
         return Assumption(name, True, "no-slip failed; F = μk N opposing the slip")
     holds = -sense * slip >= -SENSE_TOLERANCE
+    kind = "velocity" if slip is v else "acceleration"
     detail = (
         f"no-slip failed; F = μk N opposing the slip, and the contact point slips against it "
-        f"(relative {'velocity' if slip is v else 'acceleration'} {abs(slip):.4g})"
+        f"(relative {kind} {with_unit(abs(slip), kind, problem.spec.system)})"
     )
     if not holds:
         detail = (
@@ -1901,6 +1915,10 @@ def _between_states(
     """What work–energy between two states assumes: the scene gets there, moving toward it,
     and its rolling contacts do not slip on the way."""
     checks: list[Assumption] = []
+
+    def energy_text(value: float) -> str:
+        return with_unit(value, "energy", problem.spec.system)
+
     for pivot in problem.scene.pivots:
         checks.append(
             Assumption(
@@ -1922,7 +1940,7 @@ def _between_states(
         tolerance = 1e-9 * max(scale, 1e-300)
         if any(t.stops for t in problem.scene.travels.values()):
             at_rest = abs(energy) <= tolerance
-            detail = f"T2 = T1 + ΣU = {0.0 if at_rest else energy:.4g}"
+            detail = f"T2 = T1 + ΣU = {energy_text(0.0 if at_rest else energy)}"
             if not at_rest:
                 detail += (
                     ": it still moves at state 2" if energy > 0 else ": it stops before state 2"
@@ -1934,7 +1952,7 @@ def _between_states(
             Assumption(
                 "reaches state 2",
                 reaches,
-                f"T1 + ΣU = {abs(energy) if reaches and energy <= 0 else energy:.4g} "
+                f"T1 + ΣU = {energy_text(abs(energy) if reaches and energy <= 0 else energy)} "
                 + ("≥ 0" if reaches else "< 0: it stops before state 2"),
             )
         )
@@ -1950,7 +1968,7 @@ def _between_states(
     if problem.scene.cords and len(problem.scene.travels) == 1:
         from dynsolve.principles.constant_motion import taut_details
 
-        found = taut_details(problem.scene, problem.symbols, substitution)
+        found = taut_details(problem.scene, problem.symbols, substitution, problem.spec.system)
         checks += [
             Assumption(name, holds, detail)
             if holds is not None
@@ -1990,11 +2008,16 @@ def _tipping(
         )
     lo, hi = min(low, high), max(low, high)
     holds = lo <= x <= hi
-    detail = f"N_{support.name} acts at x = {x:.4g} from G's line, within [{lo:.4g}, {hi:.4g}]"
+
+    metres = with_unit(1.0, "length", problem.spec.system).split(" ", 1)[1]  # m, or ft
+    detail = (
+        f"N_{support.name} acts at x = {x:.4g} {metres} from G's line, within "
+        f"[{lo:.4g}, {hi:.4g}] {metres}"
+    )
     if not holds:
         detail = (
-            f"N_{support.name} would act at x = {x:.4g}, outside the base "
-            f"[{lo:.4g}, {hi:.4g}]: the body tips"
+            f"N_{support.name} would act at x = {x:.4g} {metres}, outside the base "
+            f"[{lo:.4g}, {hi:.4g}] {metres}: the body tips"
         )
     return Assumption(f"no tipping on base {support.name}", holds, detail)
 
@@ -2167,7 +2190,11 @@ def direction_of(kind: str, value: float, axis: tuple[float, float] | None = Non
 
 
 def _path_side(
-    scene: Scene, support: Support, N: float, values: Mapping[sympy.Symbol, sympy.Expr]
+    scene: Scene,
+    support: Support,
+    N: float,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> tuple[Assumption, ...]:
     """Which way a curved path pushes its particle: a path takes either sign (a bead on a
     wire, a car in a track), but a road under the particle only pushes it up. Said in words
@@ -2184,7 +2211,8 @@ def _path_side(
         Assumption(
             f"path {support.name} holds {support.body} down",
             True,
-            f"N_{support.name} = {N:.4g} N pulls {support.body} down toward the path: a wire, a "
+            f"N_{support.name} = {with_unit(N, 'force', system)} pulls {support.body} down "
+            "toward the path: a wire, a "
             "track, a tube or the inside of a loop can; a road or surface under it cannot — on "
             "one, it leaves the path (too fast for the curvature) and these answers do not hold",
         ),

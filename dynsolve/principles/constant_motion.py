@@ -33,6 +33,7 @@ import sympy
 from dynsolve.model.scene import Scene
 from dynsolve.model.states import Placement, cord_ends, is_wound, placements_of
 from dynsolve.numbers import real_value, tidy
+from dynsolve.units import with_unit
 
 HOW = (
     "ΣF = m a_G, ΣM = I α at state 1: every acceleration is constant (constant loads, "
@@ -200,6 +201,7 @@ def taut_details(
     scene: Scene,
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> list[tuple[str, bool | None, str]]:
     """``(name, holds, detail)`` for each cord assumed taut between the states (``holds``
     None where it could not be checked: no tension at state 1 to check it with): its tension
@@ -229,7 +231,8 @@ def taut_details(
             found.append((name, None, detail))
             continue
         holds = T >= 0
-        detail = f"{cord.name} = {T:.4g} {'≥' if holds else '<'} 0 at state 1 (Newton–Euler)"
+        tension = with_unit(T, "force", system)
+        detail = f"{cord.name} = {tension} {'≥' if holds else '<'} 0 at state 1 (Newton–Euler)"
         assert motion is not None
         if not holds:
             detail += ": the cord goes slack, and the scene does not move as one"
@@ -237,7 +240,7 @@ def taut_details(
             detail += "; the accelerations are constant, so it stays so to state 2"
         else:
             holds, detail = _along(
-                scene, symbols, values, cord.name, (along, slipping), detail, motion.steady
+                scene, symbols, values, cord.name, (along, slipping), detail, motion.steady, system
             )
         found.append((name, holds, detail))
     return found
@@ -251,6 +254,7 @@ def _along(
     sampled_along: tuple[list[tuple[float, dict[str, float]]], Mapping[str, int]],
     detail: str,
     steady: str,
+    system: str,
 ) -> tuple[bool, str]:
     """Whether the cord ``name`` stays taut at the sampled states (``sampled_along``: the
     tensions there, and the contacts sliding), and the detail saying where it was checked
@@ -263,7 +267,7 @@ def _along(
         return True, detail + f"; checked there only ({steady})"
     end = next((T for f, T in sampled if f == 1.0), None)
     if end is not None:
-        detail += f", {name} = {end:.4g} at state 2"
+        detail += f", {name} = {with_unit(end, 'force', system)} at state 2"
     low = min(T for _, T in sampled)
     if low >= 0:
         return True, detail + (

@@ -45,7 +45,7 @@ from dynsolve.numbers import float_functions, real_value, tidy, tidying_lightly
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
 from dynsolve.results import Assumption
 from dynsolve.system import Constraint, Equation
-from dynsolve.units import Dim
+from dynsolve.units import Dim, Measured, natural_unit, with_unit
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 
@@ -1053,22 +1053,31 @@ def _plus(a: Vec, b: Vec) -> Vec:
 
 
 def chain_assumptions(
-    scene: Scene, formulation: Formulation, values: Mapping[sympy.Symbol, sympy.Expr]
+    scene: Scene,
+    formulation: Formulation,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> tuple[Assumption, ...]:
     """What following the stages assumes, checked against the solution: each travel gets
-    to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated."""
+    to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated;
+    every value with its unit in ``system``."""
     checks: list[Assumption] = []
+    force_unit = natural_unit(Dim.of("force"), system)
+
+    def speed(value: float) -> str:
+        return with_unit(value, "velocity", system)
+
     for what, force, detail in formulation.events:  # one-sided forces at asked instants
         value = real_value(force, values)
         if value is not None:
-            text = detail.format(value=value)
+            text = detail.format(value=Measured(value, force_unit))
             if value <= 0:
                 text = text.replace(" > 0", " ≤ 0") + ": the assumption fails there"
             checks.append(Assumption(what, value > 0, text))
     for record in formulation.stages:
         event, k = record.stage.event, record.stage.number
         if isinstance(event, Travel) and event.kind == "for":
-            checks += _interval_checks(record, values)
+            checks += _interval_checks(record, values, system)
             continue
         if isinstance(event, Travel) and event.kind == "until":
             checks += _event_checks(record, values, "")
@@ -1082,9 +1091,9 @@ def chain_assumptions(
                         f"approach in stage {k}",
                         closing > 0,
                         (
-                            f"before the impact |v·n| = {closing:.4g} (the ground)"
+                            f"before the impact |v·n| = {speed(closing)} (the ground)"
                             if ground
-                            else f"before the impact (v_A − v_B)·n = {closing:.4g}"
+                            else f"before the impact (v_A − v_B)·n = {speed(closing)}"
                         )
                         + (
                             " > 0"
@@ -1155,17 +1164,19 @@ def chain_assumptions(
             tolerance = 1e-9 * max(scale, 1e-300)
             if record.stops:
                 at_rest = abs(energy) <= tolerance
-                detail = f"T{k + 1} = T{k} + ΣU = {0.0 if at_rest else energy:.4g}"
+                shown = with_unit(0.0 if at_rest else energy, "energy", system)
+                detail = f"T{k + 1} = T{k} + ΣU = {shown}"
                 if not at_rest:
                     detail += ": it still moves there" if energy > 0 else ": it stops before"
                 checks.append(Assumption(f"at rest in state {k + 1}", at_rest, detail))
                 continue
             reaches = energy >= -tolerance
+            shown = with_unit(max(energy, 0.0) if reaches else energy, "energy", system)
             checks.append(
                 Assumption(
                     f"reaches state {k + 1}",
                     reaches,
-                    f"T{k} + ΣU = {max(energy, 0.0) if reaches else energy:.4g} "
+                    f"T{k} + ΣU = {shown} "
                     + ("≥ 0" if reaches else f"< 0: it stops before state {k + 1}"),
                 )
             )
@@ -1173,7 +1184,7 @@ def chain_assumptions(
 
 
 def _interval_checks(
-    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr]
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr], system: str
 ) -> list[Assumption]:
     """What an interval in a chain assumed: each contact pushes (average N ≥ 0), each
     sliding contact slides through the whole interval in the sense its friction opposes,
@@ -1187,7 +1198,8 @@ def _interval_checks(
                 Assumption(
                     f"contact in stage {k}",
                     N >= 0,
-                    f"average {name} = {N:.4g} N" + (" ≥ 0" if N >= 0 else " < 0: it would pull"),
+                    f"average {name} = {with_unit(N, 'force', system)}"
+                    + (" ≥ 0" if N >= 0 else " < 0: it would pull"),
                 )
             )
     for slide in record.slides:

@@ -51,6 +51,7 @@ from dynsolve.rigid3d.composition import (
 )
 from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D
+from dynsolve.shown import formula_text
 from dynsolve.spec.ast import Spec
 from dynsolve.trig import tidied
 from dynsolve.units import Dim, natural_unit
@@ -243,11 +244,11 @@ def _alpha_form(parts: Sequence[tuple[str, str]], axes: Sequence[str]) -> str:
 
 
 def _text(expr: sympy.Expr) -> str:
-    return sympy.sstr(tidy(sympy.Integer(0) + expr))
+    return formula_text(tidy(sympy.Integer(0) + expr))
 
 
 def _direction(u: Vec3) -> str:
-    return "(" + ", ".join(sympy.sstr(tidy(c)) for c in u) + ")"
+    return "(" + ", ".join(formula_text(tidy(c)) for c in u) + ")"
 
 
 def _vector(
@@ -264,6 +265,6 @@ def _vector(
     except TypeError:
         if not formulas:
             return "(in letters)"
-        return "(" + ", ".join(sympy.sstr(tidied(c)) for c in vector) + ")"
+        return "(" + ", ".join(formula_text(tidied(c)) for c in vector) + ")"
     shown = [format_quantity(convert(n, unit, system), unit).rsplit(" ", 1)[0] for n in numbers]
     return f"({', '.join(shown)}) {unit}"

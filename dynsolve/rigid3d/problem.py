@@ -56,6 +56,7 @@ from dynsolve.rigid3d.inertia import Vec3, cross
 from dynsolve.rigid3d.model import Scene3D, close_name, read_scene3d
 from dynsolve.rigid3d.onset import Onset, build_onset, onset_check
 from dynsolve.rigid3d.steady import steady_angles, steady_equations
+from dynsolve.shown import formula_text
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import Equation, EquationSystem
 from dynsolve.trig import tidied
@@ -412,7 +413,7 @@ def _inertia_note(
 ) -> tuple[str, str]:
     """I_G in scene axes from the body's principal moments, as the derivation's step."""
     body = scene.body
-    moments = ", ".join(sympy.sstr(tidy(m)) for m in body.principal)
+    moments = ", ".join(formula_text(tidy(m)) for m in body.principal)
     rows = []
     for i in range(3):
         entries = []
@@ -421,7 +422,7 @@ def _inertia_note(
             entries.append(
                 f"{float(sympy.N(value)):.4g}"
                 if not value.free_symbols
-                else sympy.sstr(body.I_G[i, j])
+                else formula_text(body.I_G[i, j])
             )
         rows.append("[" + ", ".join(entries) + "]")
     unit = natural_unit(Dim(2, 1, 0), spec.system)
@@ -431,7 +432,7 @@ def _inertia_note(
             f"I_G = R diag(I_x, I_y, I_z) Rᵀ in scene axes = [{', '.join(rows)}] {unit}"
         )
     else:
-        products = ", ".join(sympy.sstr(tidy(p)) for p in body.products)
+        products = ", ".join(formula_text(tidy(p)) for p in body.products)
         detail = (
             f"{body.shape}: (I_x, I_y, I_z) = ({moments}) and products "
             f"(I_xy, I_yz, I_zx) = ({products}) about G in body axes; "
