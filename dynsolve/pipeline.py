@@ -231,6 +231,9 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         free_bodies(problem, outcome.values),
         cross_checks(problem, outcome.values) + _simulation_checks(problem, outcome.values),
     )
+    unchecked = _unchecked_starts(problem, outcome.values)
+    if unchecked:
+        solution = replace(solution, warnings=solution.warnings + unchecked)
     shown = tuple(
         replace(
             _trial(*each, outcome, options),
@@ -409,6 +412,19 @@ def _undefined_equations(system: EquationSystem) -> tuple[Check, ...]:
         )
         for e in system.equations
         if any(e.lhs.has(u) or e.rhs.has(u) for u in undefined)
+    )
+
+
+def _unchecked_starts(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[str, ...]:
+    """Stages that start from rest on a contact with no mu_s: that static friction cannot
+    hold the body is assumed, NOT checked (a warning, never a pass)."""
+    from dynsolve.principles.stage_chain import from_rest
+
+    substitution = {**problem.system.knowns, **values}
+    return tuple(
+        w for record in problem.formulation.stages for w in from_rest(record, substitution)[1]
     )
 
 
