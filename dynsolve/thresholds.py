@@ -5,7 +5,9 @@ on base C reaches an edge of the base (the body is about to tip); ``slips(C, P)`
 size at which the friction at contact C reaches μs N (about to slip); ``slack(T, P)``
 the size at which cord T's tension falls to zero; ``lifts(A, P)`` the size at which the
 normal force at contact A falls to zero (about to lift off). The scene is solved with P
-left as a letter, and the condition solved for P: the smallest positive root.
+left as a letter, and the condition solved for P: the smallest positive root, then the
+regime re-checked at that root (a body that slides before it could tip is followed
+sliding to the load that tips it; one that tips before it slips has no slip load).
 
 >>> THRESHOLDS
 ('tips', 'slips', 'slack', 'lifts')
@@ -111,6 +113,16 @@ def threshold(problem: Any, target: sympy.Expr, options: Any) -> Threshold:
     return Threshold(root, f"{what} = 0 solved for {load}", limit.root_line(force, solved, root))
 
 
+def base_edges(scene: Any, support: Any) -> tuple[sympy.Expr, sympy.Expr]:
+    """The edges of a base from its body's G line, along the base: where x_C may lie."""
+    assert support.end is not None
+    body = scene.bodies[support.body]
+    along = support.tangent
+    foot = dot((body.G[0] - support.point[0], body.G[1] - support.point[1]), along)
+    length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), along)
+    return -foot, length - foot
+
+
 class _Limit:
     """One threshold's solves: the scene with the load left a letter, in each regime."""
 
@@ -192,15 +204,9 @@ class _Limit:
         return Threshold(None, checks=(("refused", False, reason),))
 
     def edges(self) -> list[sympy.Expr]:
-        """x_C at either edge of the base, as conditions: x_C + foot, x_C − (length − foot)."""
-        support = self.support
-        assert support.end is not None
-        body = self.problem.scene.bodies[support.body]
-        along = support.tangent
-        foot = dot((body.G[0] - support.point[0], body.G[1] - support.point[1]), along)
-        length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), along)
+        """x_C at either edge of the base, as conditions (zero there)."""
         x = sympy.Symbol(f"x_{self.element}", real=True)
-        return [x + foot, x - (length - foot)]
+        return [x - edge for edge in base_edges(self.problem.scene, self.support)]
 
     def sliding(self) -> bool:
         """Whether the scene as written has the contact sliding (stated, or found so)."""
@@ -346,10 +352,7 @@ class _Limit:
         size = real_value(root, {})
         checks = []
         for base, x in zip(bases, xs, strict=True):
-            edges = [
-                self.at(e, {}, root)
-                for e in _Limit(self.problem, base.name, self.load, self.options).edge_places()
-            ]
+            edges = [self.at(e, {}, root) for e in base_edges(self.problem.scene, base)]
             place = self.at(x, solved, root)
             if place is None or None in edges:
                 return self.refused(f"tipping on base {base.name} at the slip load not evaluated")
@@ -369,8 +372,3 @@ class _Limit:
             ((f"F_{C}", tidy(F.xreplace(solved)), FORCE), *self.root_line(condition, solved, root)),
             tuple(checks),
         )
-
-    def edge_places(self) -> list[sympy.Expr]:
-        """The edges of this base from G's line (x_C there)."""
-        x = sympy.Symbol(f"x_{self.element}", real=True)
-        return [sympy.solve(e, x)[0] for e in self.edges()]
