@@ -209,23 +209,34 @@ class _Limit:
         return [x - edge for edge in base_edges(self.problem.scene, self.support)]
 
     def sliding(self) -> bool:
-        """Whether the scene as written has the contact sliding (stated, or found so)."""
+        """Whether the scene as written states the contact sliding (``slides right``)."""
         state = self.problem.slipping.get(self.element)
-        return bool(state) or (state is None and self.support.friction_sense is not None)
+        return state is None and self.support.friction_sense is not None
 
-    def slid(self, sense: int) -> Any:
-        """The scene with the contact sliding, kinetic friction along ``sense``."""
+    def at_rest(self) -> Any:
+        """The scene with the contact not slipping: as solved, or, where the given load
+        made it slip (a re-solve), formulated again without that slide (the threshold
+        may lie below the given load)."""
+        if not self.problem.slipping.get(self.element):
+            return self.problem.formulation
+        slipping = {k: v for k, v in self.problem.slipping.items() if k != self.element}
+        return self.slid(None, slipping)
+
+    def slid(self, sense: int | None, slipping: Mapping[str, int] | None = None) -> Any:
+        """The scene with the contact sliding, kinetic friction along ``sense`` (None:
+        the contacts sliding as ``slipping`` says)."""
         from dynsolve.principles.newton_euler import formulate
 
         symbols = {g.name: g.symbol for g in self.problem.givens}
-        slipping = {**self.problem.slipping, self.element: sense}
+        if slipping is None:
+            slipping = {**self.problem.slipping, self.element: sense}
         return formulate(self.problem.scene, symbols, slipping)
 
     def tips(self) -> Threshold:
         """tips(C, P): N at an edge of the base, in the regime the body is in at that load."""
         C, P = self.element, self.load
         x = sympy.Symbol(f"x_{C}", real=True)
-        formulation = self.problem.formulation
+        formulation = self.problem.formulation if self.sliding() else self.at_rest()
         friction = formulation.reactions.get(f"F_{C}")
         if self.sliding() or friction is None:
             solved = self.solve(formulation, [x])
@@ -334,7 +345,7 @@ class _Limit:
     def slips(self) -> Threshold:
         """slips(C, P): |F| = μs N, with every base of the body checked at that load."""
         C, P = self.element, self.load
-        formulation = self.problem.formulation
+        formulation = self.at_rest()
         F, N = formulation.reactions[f"F_{C}"][0], formulation.reactions[f"N_{C}"][0]
         mu_s = self.support.mu_s
         assert mu_s is not None

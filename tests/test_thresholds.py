@@ -227,3 +227,16 @@ def test_slips_checks_tipping_at_the_slip_load(mode):
     assert answers(solution)["P_s"].value == pytest.approx(392.4, rel=1e-6)
     check = next(c for c in solution.checks if "no tipping on base C at the slip load" in c.name)
     assert check.passed
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_a_given_push_that_slides_the_crate_does_not_set_the_regime_of_its_threshold(mode):
+    # μs = 0.3, P = 500 N > μs m g = 470.9 N: the scene as given slides, but the tipping
+    # load lies below: at rest (F = P, x N = P d) it tips at (b/2) m g/d = 418.56 N,
+    # where it does not slip (418.56 < 470.9); and it has no slip load (tips first)
+    text = fridge(0.3, "P_tip = tips(C, P) [N], P_s = slips(C, P) [N]").replace(
+        "P = 250 N", "P = 500 N"
+    )
+    found = answers(solve_text(text, "f.dyn", SolveOptions(mode=mode)))
+    assert found["P_tip"].value == pytest.approx(0.4 * 1569.6 / 1.5, rel=1e-6)
+    assert found["P_s"].value is None
