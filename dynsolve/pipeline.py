@@ -236,6 +236,9 @@ def solve_scene(spec: Spec, options: SolveOptions) -> Solution:
         cross_checks(problem, outcome.values)
         + (_simulation_checks(problem, outcome.values) if options.simulate else ()),
     )
+    unchecked = _unchecked_starts(problem, outcome.values)
+    if unchecked:
+        solution = replace(solution, warnings=solution.warnings + unchecked)
     shown = tuple(
         replace(
             _trial(*each, outcome, options),
@@ -417,6 +420,19 @@ def _undefined_equations(system: EquationSystem) -> tuple[Check, ...]:
     )
 
 
+def _unchecked_starts(
+    problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[str, ...]:
+    """Stages that start from rest on a contact with no mu_s: that static friction cannot
+    hold the body is assumed, NOT checked (a warning, never a pass)."""
+    from dynsolve.principles.stage_chain import from_rest
+
+    substitution = {**problem.system.knowns, **values}
+    return tuple(
+        w for record in problem.formulation.stages for w in from_rest(record, substitution)[1]
+    )
+
+
 def _assessed(
     assess: Callable[..., Any], problem: SceneProblem, values: Mapping[sympy.Symbol, sympy.Expr]
 ) -> Any:
@@ -465,6 +481,7 @@ def solve_problem(
         + notes
         + second_methods
         + _assumption_checks(assumptions)
+        + tuple(view.limit_checks)
         + tuple(
             Check(f"answer {k.name}", k.passed, f"expected {k.expected}; {k.detail}") for k in key
         )
@@ -557,8 +574,8 @@ def _remarks(
         return ()
     answers = {}
     for target in problem.targets:
-        if target.trial or target.is_given:
-            continue
+        if target.trial or target.is_given or target.kind in ("steepest", "threshold"):
+            continue  # a limit's expr names its contact, not its formula: never "cancels"
         if target.vector is not None:
             answers[target.name] = target.vector[0] ** 2 + target.vector[1] ** 2
         elif target.expr is not None:
@@ -785,8 +802,22 @@ def _with_definitions(steps: tuple[Step, ...], view: _View) -> tuple[Step, ...]:
             method = "table + parallel axis"
         elif target.kind == "steepest":
             results = view.steepest_formulas(target) if not target.trial else ()
-            note = "at the steepest slope friction reaches its limit: |F| = μs N"
-            heading, method = f"{pretty(target.name)}, the steepest slope without slip", "limit"
+            contact = target.expr.name if target.expr is not None else ""
+            if view.happens.get(contact) == "tips":
+                note = (
+                    f"at the steepest slope N_{contact} reaches the edge of the base: it tips "
+                    "(before friction reaches μs N)"
+                )
+                heading = f"{pretty(target.name)}, the steepest slope: beyond it the body tips"
+            else:
+                note = "at the steepest slope friction reaches its limit: |F| = μs N"
+                heading = f"{pretty(target.name)}, the steepest slope: beyond it the body slips"
+            method = "limit"
+        elif target.kind == "threshold":
+            results = view.threshold_formulas(target)
+            found = view.found.get(target.name)
+            note = found.note if found is not None else ""
+            heading, method = f"{pretty(target.name)}, the threshold", "limit"
         else:
             result = view.definition(target)
             results = (*view.stated(target), result) if result is not None else ()
@@ -917,6 +948,9 @@ class _View:
         self.trial = trial
         self.options = options
         self.thresholds: dict[str, sympy.Expr | None] = {}  # steepest(C), computed once
+        self.happens: dict[str, str] = {}  # steepest(C): "slips" or "tips" beyond it
+        self.found: dict[str, Any] = {}  # each threshold's regime, derivation and checks
+        self.limit_checks: list[Check] = []  # the checks at each threshold's own value
         self.limits: dict[str, object] = {}  # steepest(C)'s F(φ), N(φ): value and derivation
         self.system = problem.spec.system
         self.knowns = problem.system.knowns
@@ -1218,15 +1252,10 @@ class _View:
         """A scene target's value: signed along its axis, or a vector's magnitude."""
         if target.kind == "steepest":
             assert target.expr is not None
-            return self.steepest_value(target.expr.name)
+            return self.steepest_value(target.expr.name, pretty(target.name))
         if target.kind == "threshold":
-            from dynsolve.thresholds import threshold
-
             assert target.expr is not None
-            key = sympy.srepr(target.expr)
-            if key not in self.thresholds:
-                self.thresholds[key] = threshold(self.problem, target.expr, self.options)
-            return self.thresholds[key]
+            return self.threshold_value(target.expr, target.name)
         values = {**self.knowns, **(self.trial if target.trial else self.outcome.values)}
         if target.expr is not None and target.expr.atoms(AppliedUndef):  # a define: P/slips(G, P)
             expr = self.with_thresholds(target.expr)
@@ -1247,25 +1276,60 @@ class _View:
             return None
         return value
 
-    def steepest_value(self, contact: str) -> sympy.Expr | None:
-        """steepest(C): the steepest slope the contact C holds on, computed once."""
-        from dynsolve.modes.scene_mode import steepest
+    def steepest_value(self, contact: str, label: str = "") -> sympy.Expr | None:
+        """steepest(C): the steepest slope the contact C holds on (the smaller of the slip
+        and tip angles), computed once, with its checks at that slope (``label``: the
+        find's name in them)."""
+        from dynsolve.modes.scene_mode import steepest, steepest_checks
 
         if contact not in self.thresholds:
-            self.thresholds[contact] = steepest(
+            label = label or f"steepest({contact})"
+            limit = self.steepest_limit(contact)
+            found = steepest(
                 self.problem,  # type: ignore[arg-type]
                 contact,
                 self.outcome.values,
                 self.options,
-                self.steepest_limit(contact),  # type: ignore[arg-type]
+                limit,  # type: ignore[arg-type]
             )
+            self.thresholds[contact], self.happens[contact] = found.angle, found.happens
+            if limit is not None:
+                self.limit_checks += steepest_checks(
+                    label,
+                    contact,
+                    limit,
+                    found,
+                    self.knowns,  # type: ignore[arg-type]
+                )
+            elif found.angle is not None:
+                self.limit_checks.append(
+                    Check.not_run(
+                        f"{label}: at the slope found",
+                        "friction and tipping at the slope were not evaluated",
+                    )
+                )
         return self.thresholds[contact]
+
+    def threshold_value(self, call: sympy.Expr, name: str) -> sympy.Expr | None:
+        """``tips(C, P)``/``slips(G, P)``: the load's size, computed once, re-checked for
+        its regime (the checks named after the find ``name``); None where refused."""
+        from dynsolve.thresholds import threshold
+
+        key = sympy.srepr(call)
+        if key not in self.thresholds:
+            found = threshold(self.problem, call, self.options)
+            self.thresholds[key], self.found[name] = found.value, found
+            self.limit_checks += [
+                Check(f"{pretty(name)}: {check}", passed, detail)
+                for check, passed, detail in found.checks
+            ]
+        return self.thresholds[key]
 
     def with_thresholds(self, expr: sympy.Expr) -> sympy.Expr | None:
         """``expr`` with each threshold it calls (``slips(G, P)``, ``steepest(C)`` in a
         define line) put in as its value; None where one has no value (no size of the load
         reaches it)."""
-        from dynsolve.thresholds import THRESHOLDS, threshold
+        from dynsolve.thresholds import THRESHOLDS
 
         found: dict[sympy.Expr, sympy.Expr] = {}
         for call in expr.atoms(AppliedUndef):
@@ -1273,10 +1337,7 @@ class _View:
             if name == "steepest":
                 value = self.steepest_value(call.args[0].name)
             elif name in THRESHOLDS:
-                key = sympy.srepr(call)
-                if key not in self.thresholds:
-                    self.thresholds[key] = threshold(self.problem, call, self.options)
-                value = self.thresholds[key]
+                value = self.threshold_value(call, str(call))
             else:
                 continue
             if value is None:
@@ -1404,16 +1465,22 @@ class _View:
             self.outcome.values,
             self.options,
             self.steepest_limit(contact),  # type: ignore[arg-type]
+            self.happens.get(contact, "slips"),
         )
         if found is None or angle is None or self.number(angle) is None:
             return ()
         F, N, tangent, phi = found
+        tips = self.happens.get(contact) == "tips"
         beta = sympy.Symbol(pretty(target.name))  # the angle's own name in the formulas
         at = {beta: angle}
         names = {**self.latex_symbols, beta: latex_name(target.name)}
         force_unit = natural_unit(Dim(1, 1, -2), self.system)
+        first = (f"x_{contact}", F, natural_unit(Dim(1, 0, 0), self.system))
         rows = []
-        for name, expr in ((f"F_{contact}", F), (f"N_{contact}", N)):
+        for name, expr, unit in (
+            first if tips else (f"F_{contact}", F, force_unit),
+            (f"N_{contact}", N, force_unit),
+        ):
             shown = expr.xreplace({phi: beta})
             number = self.number(shown.xreplace({**self.knowns, **at}))
             numbers = self.substituted(shown, at)
@@ -1424,7 +1491,7 @@ class _View:
                     name,
                     self.text(shown),
                     sympy.latex(shown, symbol_names=names),
-                    *self.quantity(number, force_unit),
+                    *self.quantity(number, unit),
                     numbers[0] if numbers else "",
                     numbers[1] if numbers else "",
                 )
@@ -1445,6 +1512,32 @@ class _View:
         )
         return tuple(rows)
 
+    def threshold_formulas(self, target: Target) -> tuple[Formula, ...]:
+        """How a threshold was solved: the condition's quantity as a formula in the load
+        (x_C(P) reaching the edge, F_C(P) reaching μs N), then the load's root."""
+        found = self.found.get(target.name)
+        if found is None or found.value is None:
+            return ()
+        rows = []
+        load = target.expr.args[1] if target.expr is not None else None
+        at = {load: found.value} if load is not None else {}
+        for name, expr, dim in found.lines:  # no name: the load's root, the answer
+            number = self.number(expr.xreplace({**self.knowns, **at}))
+            if number is None:
+                continue
+            numbers = self.substituted(expr, at if name else None)
+            rows.append(
+                Formula(
+                    name or target.name,
+                    self.text(expr),
+                    self.latex(expr),
+                    *self.quantity(number, natural_unit(dim or target.dim, self.system)),
+                    numbers[0] if numbers else "",
+                    numbers[1] if numbers else "",
+                )
+            )
+        return tuple(rows)
+
     def stated(self, target: Target) -> tuple[Formula, ...]:
         """The quantities an answer's derivation states before it (the curvature κ_max
         before a_max = v² κ_max): formula, numbers and value."""
@@ -1459,7 +1552,7 @@ class _View:
                     name,
                     self.text(expr),
                     self.latex(expr),
-                    *self.quantity(number, natural_unit(dim, self.system)),
+                    *self.quantity(number, natural_unit(dim or target.dim, self.system)),
                     numbers[0] if numbers else "",
                     numbers[1] if numbers else "",
                 )

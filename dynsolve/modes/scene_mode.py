@@ -1167,15 +1167,36 @@ def _average_force(
     return "vector", Dim.of("force"), (contact[0], contact[1]), note
 
 
-SteepestLimit = tuple[sympy.Expr, sympy.Expr, int, sympy.Expr, sympy.Symbol]
+@dataclass(frozen=True)
+class SteepestLimit:
+    """steepest(C)'s scene with gravity tilted by φ, solved in the givens' symbols: the
+    friction F(φ) and normal force N(φ) at the contact, friction's sense and μs, and on
+    a base the resultant normal force's place x(φ) and the base's edges from G's line."""
+
+    F: sympy.Expr
+    N: sympy.Expr
+    sense: int
+    mu_s: sympy.Expr
+    phi: sympy.Symbol
+    x: sympy.Expr | None = None
+    edges: tuple[sympy.Expr, sympy.Expr] | None = None
+
+
+@dataclass(frozen=True)
+class Steepest:
+    """The steepest slope at a contact and what happens just beyond it: 'slips' (|F|
+    reaches μs N first) or 'tips' (N reaches an edge of the base first)."""
+
+    angle: sympy.Expr | None
+    happens: str = "slips"
 
 
 def steepest_limit(
     problem: SceneProblem, contact: str, values: Mapping[sympy.Symbol, sympy.Expr], options: object
 ) -> SteepestLimit | None:
-    """F(φ) and N(φ) at ``contact`` in the givens' symbols with gravity tilted by φ,
-    friction's sense and μs (:func:`steepest` and :func:`steepest_lines` share it: the
-    slope's value is its numbers put in, its derivation its letters)."""
+    """F(φ), N(φ) (and x(φ) on a base) at ``contact`` in the givens' symbols with gravity
+    tilted by φ (:func:`steepest` and :func:`steepest_lines` share it: the slope's value is
+    its numbers put in, its derivation its letters)."""
     return _steepest_limit(problem, contact, values, options, {})
 
 
@@ -1185,19 +1206,74 @@ def steepest(
     values: Mapping[sympy.Symbol, sympy.Expr],
     options: object,
     found: SteepestLimit | None = None,
-) -> sympy.Expr | None:
+) -> Steepest:
     """The steepest slope at ``contact`` (angle of its surface to the horizontal) on which
-    it does not slip: the scene re-solved with gravity tilted by an unknown angle φ and
-    friction at its limit, |F| = μs N, in the sense it has in the solution ``values``
-    (from ``found``, :func:`steepest_limit`, when given; else solved with the numbers in).
-    """
+    the body stays: the scene re-solved with gravity tilted by an unknown angle φ, and the
+    smaller of the angle where |F| = μs N (friction in the sense it has in ``values``) and,
+    on a base, the angle where N reaches an edge of the base (it tips first)."""
     knowns = problem.system.knowns
     found = found or _steepest_limit(problem, contact, values, options, knowns)
     if found is None:
-        return None
-    F, N, sense, mu_s, phi = found
-    condition = tidy((F - sense * mu_s * N).xreplace(knowns))
-    return _angle_root(condition, phi)
+        return Steepest(None)
+    condition = tidy((found.F - found.sense * found.mu_s * found.N).xreplace(knowns))
+    best = Steepest(_angle_root(condition, found.phi), "slips")
+    for edge in _tip_conditions(found):
+        root = _angle_root(tidy(edge.xreplace(knowns)), found.phi)
+        value = real_value(root, {}) if root is not None else None
+        least = real_value(best.angle, {}) if best.angle is not None else None
+        if value is not None and (least is None or value < least - 1e-12):
+            best = Steepest(root, "tips")
+    return best
+
+
+def _tip_conditions(found: SteepestLimit) -> tuple[sympy.Expr, ...]:
+    """x(φ) at either edge of the base, each written as a balance free of fractions."""
+    if found.x is None or found.edges is None:
+        return ()
+    return tuple(sympy.numer(sympy.together(sympy.expand(found.x - edge))) for edge in found.edges)
+
+
+def steepest_checks(
+    name: str, contact: str, found: SteepestLimit, at: Steepest, knowns: Mapping
+) -> tuple[Check, ...]:
+    """The friction and (on a base) the tipping condition evaluated AT the steepest slope
+    found, not on the scene as written: |F| ≤ μs N and N within the base."""
+    if at.angle is None:
+        return ()
+    values = {**knowns, found.phi: at.angle}
+    F, N = real_value(found.F, values), real_value(found.N, values)
+    mu = real_value(found.mu_s, values)
+    degrees = real_value(at.angle * 180 / sympy.pi, {})
+    where = f"at {name} = {degrees:.4g}°" if degrees is not None else f"at {name}"
+    checks = []
+    if F is not None and N is not None and mu is not None:
+        holds = abs(F) <= mu * N * (1 + IMPENDING)
+        limit = at.happens == "slips"
+        checks.append(
+            Check(
+                f"no slip at {contact} {where}",
+                holds,
+                f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {mu * N:.4g}"
+                + (": the limit, it is about to slip" if limit else ""),
+            )
+        )
+    if found.x is not None and found.edges is not None:
+        x = real_value(found.x, values)
+        ends = [real_value(e, values) for e in found.edges]
+        if x is not None and None not in ends:
+            lo, hi = min(ends), max(ends)  # type: ignore[type-var]
+            tol = 1e-9 * max(abs(lo), abs(hi), 1e-300)
+            holds = lo - tol <= x <= hi + tol
+            checks.append(
+                Check(
+                    f"no tipping on base {contact} {where}",
+                    holds,
+                    f"N_{contact} acts at x = {x:.4g} from G's line, "
+                    + (f"within [{lo:.4g}, {hi:.4g}]" if holds else f"outside [{lo:.4g}, {hi:.4g}]")
+                    + (": at the edge, it is about to tip" if at.happens == "tips" else ""),
+                )
+            )
+    return tuple(checks)
 
 
 def steepest_lines(
@@ -1206,19 +1282,38 @@ def steepest_lines(
     values: Mapping[sympy.Symbol, sympy.Expr],
     options: object,
     found: SteepestLimit | None = None,
+    happens: str = "slips",
 ) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Symbol] | None:
     """The steepest slope's derivation in the givens' symbols: the friction F(φ) and the
-    normal force N(φ) the body needs on a slope φ, and tan φ where |F| = μs N (the seed's
-    tan β = μs(1 + m R²/I)); None where |F| = μs N is not a sin/cos balance."""
+    normal force N(φ) the body needs on a slope φ (where it slips first), or N's place
+    x(φ) and N(φ) (where it tips first), and tan φ where |F| = μs N (the seed's
+    tan β = μs(1 + m R²/I)) or x(φ) reaches the edge (tan β = b/h); None where the
+    condition is not a sin/cos balance."""
     found = found or steepest_limit(problem, contact, values, options)
     if found is None:
         return None
-    F, N, sense, mu_s, phi = found
-    condition = sympy.expand(F - sense * mu_s * N)
+    phi = found.phi
+    if happens == "tips":
+        if found.x is None:
+            return None
+        for condition in _tip_conditions(found):
+            tangent = _tangent(sympy.expand(condition), phi)
+            value = real_value(tangent, problem.system.knowns) if tangent is not None else None
+            if tangent is not None and value is not None and value > 0:
+                return tidy(found.x), tidy(found.N), tangent, phi
+        return None
+    tangent = _tangent(sympy.expand(found.F - found.sense * found.mu_s * found.N), phi)
+    if tangent is None:
+        return None
+    return tidy(found.F), tidy(found.N), tangent, phi
+
+
+def _tangent(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:
+    """tan φ from a sin φ + b cos φ = 0, or None where ``condition`` is not of that form."""
     a, b = condition.coeff(sympy.sin(phi)), condition.coeff(sympy.cos(phi))
     if sympy.expand(condition - a * sympy.sin(phi) - b * sympy.cos(phi)) != 0 or a == 0:
         return None
-    return tidy(F), tidy(N), tidy(sympy.factor(-b / a)), phi
+    return tidy(sympy.factor(-b / a))
 
 
 def _steepest_limit(
@@ -1228,8 +1323,8 @@ def _steepest_limit(
     options: object,
     knowns: Mapping[sympy.Symbol, sympy.Expr],
 ) -> SteepestLimit | None:
-    """F and N at ``contact`` with gravity tilted by φ, solved with ``knowns`` put in;
-    friction's sense and μs: |F| = μs N at the steepest slope."""
+    """F and N (and x on a base) at ``contact`` with gravity tilted by φ, solved with
+    ``knowns`` put in; friction's sense and μs: |F| = μs N at the steepest slope."""
     from dynsolve.solver import solve_system
 
     scene, formulation = problem.scene, problem.formulation
@@ -1253,13 +1348,28 @@ def _steepest_limit(
     # friction keeps its sense; on level ground it opposes the slide the tilt starts
     sense = (1 if friction > 0 else -1) if friction != 0 else s
     F, N = limit.reactions[f"F_{contact}"][0], limit.reactions[f"N_{contact}"][0]
+    x_symbol = sympy.Symbol(f"x_{contact}", real=True)
+    on_base = support.kind == "base" and support.end is not None
+    x = limit.reactions.get(f"x_{contact}", (x_symbol,))[0] if on_base else None
+    wanted = (F, N) if x is None else (F, N, x)
+    wanted = tuple(w for w in wanted if w in limit.unknowns) or (F, N)
     # solve the (linear) scene with φ as a parameter, then |F| = μs N for φ alone
-    system = EquationSystem(limit.equations, tuple(limit.unknowns), knowns, wanted=(F, N))
+    system = EquationSystem(limit.equations, tuple(limit.unknowns), knowns, wanted=wanted)
     quiet = replace(options, show_formulas=False)  # type: ignore[type-var]
     solved = solve_system(system, quiet).values
     if F not in solved or N not in solved:
         return None
-    return solved[F], solved[N], sense, support.mu_s, phi
+    edges = None
+    if x is not None and x in solved:
+        body = scene.bodies[support.body]
+        foot = dot((body.G[0] - support.point[0], body.G[1] - support.point[1]), t)
+        assert support.end is not None
+        length = dot((support.end[0] - support.point[0], support.end[1] - support.point[1]), t)
+        edges = (-foot, length - foot)
+    return SteepestLimit(
+        solved[F], solved[N], sense, support.mu_s, phi,
+        solved.get(x) if x is not None else None, edges,
+    )  # fmt: skip
 
 
 def _angle_root(condition: sympy.Expr, phi: sympy.Symbol) -> sympy.Expr | None:

@@ -42,7 +42,13 @@ from dynsolve.model.scene import (
 )
 from dynsolve.model.stages import Slide, Stage, StageRecord, State, stages_of
 from dynsolve.numbers import float_functions, real_value, tidy, tidying_lightly
-from dynsolve.principles.newton_euler import Formulation, bare_formulation, cross, dot
+from dynsolve.principles.newton_euler import (
+    Formulation,
+    bare_formulation,
+    cross,
+    dot,
+    formulate,
+)
 from dynsolve.results import Assumption
 from dynsolve.system import Constraint, Equation
 from dynsolve.units import Dim, Measured, natural_unit, with_unit
@@ -1143,6 +1149,7 @@ def chain_assumptions(
                         "between the states is not computed",
                     )
                 )
+        checks += from_rest(record, values)[0]
         along = real_value(record.start_along, values) if record.start_along is not None else None
         if along is not None and along != 0:
             checks.append(
@@ -1181,6 +1188,81 @@ def chain_assumptions(
                 )
             )
     return tuple(checks)
+
+
+def from_rest(
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr]
+) -> tuple[tuple[Assumption, ...], tuple[str, ...]]:
+    """A travel that starts from rest on a rough contact: static friction must not be able
+    to hold the body there (|F needed| ≤ μs N: it stays, the travel fails). Without μs,
+    μk N ≤ μs N still decides where it holds the body; elsewhere that it slides is an
+    assumption NOT checked, returned as a warning (second item), never a pass."""
+    event, k = record.stage.event, record.stage.number
+    scene = record.scene
+    if not isinstance(event, Travel) or event.kind in ("for", "until") or scene is None:
+        return (), ()
+    if not all(real_value(c, values) == 0 for v in scene.velocities.values() for c in v):
+        return (), ()
+    if not all(real_value(w, values) in (0, None) for w in scene.omegas.values()):
+        return (), ()
+    rough = [
+        s
+        for s in scene.supports
+        if s.kind in ("contact", "base") and not s.smooth and s.body in record.bodies
+    ]
+    rough = [s for s in rough if s.mu_s is not None or s.mu_k is not None]
+    if not rough:
+        return (), ()
+    symbols = {s.name: s for s in values if isinstance(s, sympy.Symbol)}
+    still = formulate(replace(scene, travels={}, velocities={}, omegas={}), symbols)
+    residuals = [(e.lhs - e.rhs).xreplace(values) for e in still.equations]
+    try:
+        solved = sympy.solve(residuals, list(still.unknowns), dict=True)
+    except (NotImplementedError, ValueError):
+        solved = []
+    if len(solved) != 1:
+        return (), ()
+    checks: list[Assumption] = []
+    warnings: list[str] = []
+    name = f"slides from rest in stage {k}"
+    for support in rough:
+        C = support.name
+        if f"F_{C}" not in still.reactions or f"N_{C}" not in still.reactions:
+            continue
+        F = real_value(still.reactions[f"F_{C}"][0].xreplace(solved[0]), values)
+        N = real_value(still.reactions[f"N_{C}"][0].xreplace(solved[0]), values)
+        mu = support.mu_s if support.mu_s is not None else support.mu_k
+        mu_value = real_value(mu, values) if mu is not None else None
+        if F is None or N is None or mu_value is None or N <= 0:
+            continue
+        limit = mu_value * N
+        held = abs(F) <= limit * (1 + 1e-9)
+        start = f"at state {k} {event.body} is at rest on {C}: to hold it there static friction "
+        if held:
+            bound = "μs N" if support.mu_s is not None else "μk N ≤ μs N"
+            checks.append(
+                Assumption(
+                    name,
+                    False,
+                    start + f"needs |F| = {abs(F):.4g} ≤ {bound} = {limit:.4g}: static friction "
+                    f"holds it, it stays at state {k} and does not travel",
+                )
+            )
+        elif support.mu_s is not None:
+            checks.append(
+                Assumption(
+                    name,
+                    True,
+                    start + f"would need |F| = {abs(F):.4g} > μs N = {limit:.4g}: it cannot, "
+                    "the body slides",
+                )
+            )
+        else:
+            warnings.append(
+                f"stage {k}: {start}would need |F| = {abs(F):.4g} > μk N = {limit:.4g}; with no "
+                f"mu_s given, that static friction cannot hold it (that it slides) is NOT checked"
+            )
+    return tuple(checks), tuple(warnings)
 
 
 def _interval_checks(
