@@ -59,6 +59,7 @@ figures, earns the ``partial`` credit (0 unless set). A bare ``0`` is zero in an
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Sequence
@@ -173,6 +174,7 @@ def judge(
     return _compare(cell, key, rule)
 
 
+@functools.lru_cache(maxsize=1024)
 def agreeing_words(direction: str) -> tuple[str, ...]:
     """The direction words that agree with a key's stated ``direction``: the word itself
     along one axis, the vertical and the horizontal word for an angle, none for "".
@@ -288,7 +290,8 @@ def _reversed(cell: Cell, key: Key) -> str:
     if cell.direction:
         said = f"'{cell.direction}' is the other way"
     elif cell.signed:
-        said = f"'{cell.number}' is the other way: ccw, up, right are positive"
+        written = cell.number if cell.number.startswith("-") else f"+{cell.number}"
+        said = f"'{written}' is the other way: ccw, up, right are positive"
     else:
         said = "a bare number is positive here: ccw, up, right are positive"
     give = " or ".join(words)
