@@ -107,6 +107,14 @@ def test_a_sign_on_an_up_left_key_is_ambiguous() -> None:
     for text in ("-77 N", "+77 N"):
         result = judge(text, key, Rule())
         assert result.verdict == "unreadable" and "cannot say which way" in result.detail
+    assert judge("77 N", key, Rule(signed=True)).verdict == "correct"  # no sign to give it
+
+
+def test_a_bare_number_under_signed_is_positive_on_a_down_left_key() -> None:
+    key = Key("F", 19.26, Dim.of("force"), "N", direction=DOWN_LEFT)  # 4.330 lb = 19.26 N
+    assert judge("19.26 N", key, Rule(signed=True)).verdict == "sign"
+    assert judge("-19.26 N", key, Rule(signed=True)).verdict == "correct"
+    assert judge("19.26 N", key, Rule()).verdict == "correct"
 
 
 def test_straight_line_sign_feedback_names_the_expected_words(tmp_path: Path) -> None:

@@ -16,8 +16,9 @@ A key stated as an angle (``30.0° below the horizontal, to the left``) points a
 axes: its vertical word and its horizontal word (``down``, ``left``) both agree with it,
 the opposite words (``up``, ``right``) are reversed; the value compared is the magnitude.
 A sign agrees when the key's two words share it by the convention (down-left is negative,
-up-right positive); for a key pointing up-left or down-right a sign cannot say which way,
-and is ``unreadable`` (a bare number is its magnitude, even under ``signed``).
+up-right positive; a bare number under ``signed`` is positive); for a key pointing up-left
+or down-right a sign cannot say which way, and is ``unreadable`` (a bare number is its
+magnitude there, even under ``signed``).
 
 The comparison is one of:
 
@@ -205,10 +206,12 @@ def _judge_oblique(cell: Cell, key: Key, rule: Rule) -> PartResult:
         if matches(size, key, rule, cell):
             return PartResult("sign", rule.partial, detail, cell.value)
         return PartResult("wrong", 0.0, f"off by {_off(size, key)}", cell.value)
+    negative = [w in NEGATIVE for w in words]
     if cell.direction:
         agrees = cell.direction in words
+    elif rule.signed and not cell.signed and negative[0] == negative[1]:
+        agrees = not negative[0]  # a bare number taken as positive: up and right
     elif cell.signed:
-        negative = [w in NEGATIVE for w in words]
         if negative[0] != negative[1]:
             return PartResult(
                 "unreadable",
