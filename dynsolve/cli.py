@@ -179,7 +179,7 @@ def solve(
         typer.Option(
             "--format",
             "-f",
-            help="Output format [default: text, or from the -o file's suffix: "
+            help="Output format \\[default: text, or from the -o file's suffix: "
             ".json, .md, .tex, .pdf (compiled with pdflatex), .html (one self-contained page)].",
             show_default=False,
         ),
@@ -447,7 +447,7 @@ def grade(
     """Grade a class's answers to PROBLEM: scores, verdicts and feedback per student.
 
     Each cell is a number with a unit ('11.3 rad/s^2', '4.52 m/s^2 down', '23.8 lb') or a
-    bare number in the column header's unit ('alpha [rad/s^2]'). Rules come from the
+    bare number in the column header's unit ('alpha \\[rad/s^2]'). Rules come from the
     spec's grading: section and these options (docs/grading.md). Prints the class
     summary; exit code 0 when every student was graded, 1 when some could not be (no
     variant, no key), 2 on bad input, 130 when interrupted (rerun with --resume).

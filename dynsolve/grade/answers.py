@@ -257,7 +257,9 @@ def _header(
                 ignored.append(header[index].strip())
         warnings.append(
             f"{name}: columns matched to the finds in their order: {', '.join(pairs)}; "
-            "check that the quiz asks them in this order"
+            "check that the quiz asks them in this order; bare numbers in them have no "
+            "unit: to give them one, head every answer column by its find and unit "
+            f"('{finds[0]} [unit]', ...)"
         )
     else:
         ignored += [header[i].strip() for i in numbered.values()]

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from dynsolve.errors import DynsolveError
 from dynsolve.grade.forms import normalise
 from dynsolve.quantities import resolve_unit
+from dynsolve.spec.ast import UnitExpr
 from dynsolve.spec.parser import parse_answer_cell, parse_unit
 from dynsolve.units import Dim, UnitInfo
 
@@ -60,7 +61,7 @@ def read_cell(text: str, header_unit: str = "", decimal_comma: bool = False) -> 
     >>> read_cell("11.3").unit is None
     True
     """
-    text = text.strip()
+    text = original = text.strip()
     if len(text) > MAX_CELL:
         raise CellError(f"the answer is longer than {MAX_CELL} characters")
     try:
@@ -68,7 +69,8 @@ def read_cell(text: str, header_unit: str = "", decimal_comma: bool = False) -> 
     except ValueError as error:
         raise CellError(str(error)) from None
     text = written.text
-    number, unit_text, direction = _parsed(text)
+    number, unit, direction = _parsed(text)
+    unit_text = _unit_text(unit, original) if unit is not None else ""
     if direction and (number.startswith("-") or written.plus):
         raise CellError(f"'{text}' has both a sign and a direction word: give one")
     if unit_text:
@@ -85,8 +87,8 @@ def read_cell(text: str, header_unit: str = "", decimal_comma: bool = False) -> 
     return Cell(value, info.dim, number, shown, info.factor, direction, signed)
 
 
-def _parsed(text: str) -> tuple[str, str, str]:
-    """Number text, unit text and direction word, through the answers grammar."""
+def _parsed(text: str) -> tuple[str, UnitExpr | None, str]:
+    """Number text, unit and direction word, through the answers grammar."""
     try:
         answer = parse_answer_cell(text)
     except DynsolveError as error:
@@ -95,8 +97,28 @@ def _parsed(text: str) -> tuple[str, str, str]:
         raise CellError(f"'{text}' has a tolerance: give one value")
     assert answer.quantity is not None
     quantity = answer.quantity
-    unit = quantity.unit.text if quantity.unit else ""
-    return quantity.text, unit, answer.direction or ""
+    return quantity.text, quantity.unit, answer.direction or ""
+
+
+def _unit_text(unit: UnitExpr, written: str) -> str:
+    """The unit's text, once every name in it is known and none is raised to the power 0
+    (``g0`` reads as g^0 = 1: taken silently, the number would be in the header's unit).
+
+    >>> read_cell("0.827 g0", "ft/s^2")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dynsolve.grade.cells.CellError: '0.827 g0': g to the power 0 is no unit at all (a 0 after ...
+    """
+    for factor in unit.factors:
+        _unit(factor.name)  # an unknown name is unreadable whatever its power
+        if factor.exponent == 0:
+            gravity = " (standard gravity is g_0)" if factor.name == "g" else ""
+            glued = "" if "^" in written else " (a 0 after a unit reads as ^0)"
+            raise CellError(
+                f"'{written}': {factor.name} to the power 0 is no unit at all{glued}: "
+                f"write the unit without the 0{gravity}"
+            )
+    return unit.text
 
 
 _DIMS: dict[Dim, Dim] = {}

@@ -14,6 +14,10 @@ Written(text='4.52 m·s^-2 down', plus=False)
 Traceback (most recent call last):
 ...
 ValueError: '1,060' could be 1060 or 1.060 (a thousands separator or a ...): write 1060 or 1.060
+>>> normalise("5.08 +- 0.01 m/s^2").text
+Traceback (most recent call last):
+...
+ValueError: '5.08 +- 0.01 m/s^2' has a tolerance: give one value
 """
 
 from __future__ import annotations
@@ -68,6 +72,7 @@ _CHARACTERS = str.maketrans(
 _NUMBER = re.compile(r"^([-+]?)\s*(\d[\d,.]*|[.,]\d+)(?:\s*[eE]\s*([-+]?\d+))?")
 _TIMES_TEN = re.compile(r"^\s*[x*·]\s*10\s*\^\s*\(?\s*([-+]?\d+)\s*\)?")
 _GLUED_POWER = re.compile(r"(?<![A-Za-z0-9_^.])([A-Za-z]+)(\d+)(?![\d.])")
+_TOLERANCE = re.compile(r"±|\+\s*/?\s*-")  # 4.52 ± 0.01, 4.52 +- 0.01, 4.52 +/- 0.01
 _JUXTAPOSED = re.compile(r"(?<=[A-Za-z0-9)])\s+(?=[A-Za-z(])")
 
 
@@ -87,6 +92,8 @@ def normalise(text: str, decimal_comma: bool = False) -> Written:
     text = text.translate(_CHARACTERS).strip()
     text = _SUPER.sub(lambda m: "^" + "".join(_SUPERSCRIPTS[c] for c in m[0]), text)
     text = text.replace("°", " deg ").strip()
+    if _TOLERANCE.search(text, 1):
+        raise ValueError(f"'{text}' has a tolerance: give one value")
     if text.endswith(".") and len(text) > 1:
         text = text[:-1].rstrip()
     direction = ""

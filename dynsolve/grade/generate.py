@@ -118,8 +118,8 @@ def make_variants(
     rows: list[VariantRow] = []
     for done, student in enumerate(roster, start=1):
         cells = accepted.get(student) or _checked_draw(spec, plan, seed, student, base, options)
-        if units in ("si", "both"):
-            rows.append(VariantRow(student, "SI", cells))
+        if units in ("si", "both"):  # as drawn: in the spec's own system
+            rows.append(VariantRow(student, "US" if spec.system == "FPS" else "SI", cells))
         if units in ("us", "both"):
             twin = us_twin(spec, cells)
             reason = _why_not(spec, twin, f"{student}{TWIN_SUFFIX}", base, options)

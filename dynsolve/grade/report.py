@@ -29,12 +29,13 @@ TOP_MISTAKES = 3
 
 def results_csv(results: Sequence[StudentResult]) -> str:
     """One row per student: id, score, (with variants) their givens, then per part their
-    answer, the expected value and its unit, verdict, credit, feedback."""
+    answer, the expected value, its unit and direction, verdict, credit, feedback."""
     parts = parts_of(results)
     givens = any(r.givens for r in results)
     header = ["student", "score", *(["givens"] if givens else [])]
     for part in parts:
         header += [f"{part} answer", f"{part} expected", f"{part} expected unit"]
+        header.append(f"{part} expected direction")
         header += [f"{part} verdict", f"{part} credit", f"{part} feedback"]
     rows: list[list[str]] = [header]
     for result in results:
@@ -45,7 +46,8 @@ def results_csv(results: Sequence[StudentResult]) -> str:
             cell = result.parts[part]
             expected = cell.get("expected")
             row += [cell["answer"], "" if expected is None else f"{expected:.6g}"]
-            row += [cell.get("expected_unit", ""), cell["verdict"], f"{cell['credit']:g}"]
+            row += [cell.get("expected_unit", ""), cell.get("expected_direction", "")]
+            row += [cell["verdict"], f"{cell['credit']:g}"]
             row.append(cell["feedback"])
         rows.append(row)
     return csv_text(rows)

@@ -76,6 +76,7 @@ def grade_row(
             "answer": text.strip(),
             "expected": float(f"{key.value / key.factor:.12g}"),  # no conversion noise
             "expected_unit": key.unit,
+            "expected_direction": key.direction,  # cw, down, "30.0° below the horizontal, …"
             "verdict": result.verdict,
             "credit": result.credit,
             "feedback": feedback,
@@ -164,6 +165,7 @@ def not_graded(
             "answer": (cells or {}).get(name, "").strip(),
             "expected": None,
             "expected_unit": "",
+            "expected_direction": "",
             "verdict": verdict,
             "credit": 0.0,
             "feedback": why,

@@ -12,6 +12,14 @@ positive). How a cell's sign is read:
   instead (a course that wants signs), as it always is for a signed scalar (work);
 - an explicit sign (``-4.52``, ``+4.52``) is taken as written.
 
+A key stated as an angle (``30.0° below the horizontal, to the left``) points along two
+axes: its vertical word and its horizontal word (``down``, ``left``) both agree with it,
+the opposite words (``up``, ``right``) are reversed; the value compared is the magnitude.
+A sign agrees when the key's two words share it by the convention (down-left is negative,
+up-right positive; a bare number under ``signed`` is positive); for a key pointing up-left
+or down-right a sign cannot say which way, and is ``unreadable`` (a bare number is its
+magnitude there, even under ``signed``).
+
 The comparison is one of:
 
 - tolerance (default): ``|s - k| <= max(atol, rtol |k|)``, rtol 1 % unless set;
@@ -40,16 +48,27 @@ figures, earns the ``partial`` credit (0 unless set). A bare ``0`` is zero in an
 'sign'
 >>> judge("4.5 m/s^2 down", key, Rule(sigfig=3)).verdict
 'sigfig'
+>>> judge("4.52 m/s^2 up", key, Rule()).detail
+"right magnitude, wrong direction: a is down ('up' is the other way; give down)"
+>>> down_left = "30.0° below the horizontal, to the left"
+>>> slope = Key("F", 19.3, Dim.of("force"), "N", direction=down_left)
+>>> [judge(f"19.3 N {w}", slope, Rule()).verdict for w in ("left", "down", "right", "up")]
+['correct', 'correct', 'sign', 'sign']
+>>> judge("-19.3 N", slope, Rule()).verdict, judge("+19.3 N", slope, Rule()).verdict
+('correct', 'sign')
 """
 
 from __future__ import annotations
 
+import functools
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from dynsolve.grade.cells import (
+    NEGATIVE,
     Cell,
     CellError,
     decimal_digits,
@@ -67,6 +86,8 @@ SIGFIG_SLACK = 0.51  # units of the last figure: PrairieLearn's allowance for ro
 NO_ANSWER = ("-", "\u2013", "\u2014")  # Moodle's mark for a question not answered
 AXES = {"cw": "rotation", "ccw": "rotation", "up": "vertical", "down": "vertical"}
 AXES |= {"left": "horizontal", "right": "horizontal"}
+OPPOSITE = {"cw": "ccw", "ccw": "cw", "up": "down", "down": "up", "left": "right", "right": "left"}
+_OBLIQUE = re.compile(r"° (above|below) the horizontal, to the (left|right)$")
 PAIRS = {"rotation": "cw or ccw", "vertical": "up or down", "horizontal": "left or right"}
 ANGULAR_UNITS = ("rad", "deg", "rev", "rpm")
 LINEAR = frozenset(
@@ -128,7 +149,10 @@ def judge(
         cell = replace(cell, dim=key.dim, unit="")
     if cell.unit is None and not key.dim.dimensionless:
         return PartResult(
-            "unreadable", 0.0, f"no unit: write it ({key.unit}) or put it in the column header"
+            "unreadable",
+            0.0,
+            f"no unit: write it ({key.unit}), or head the column '{key.name} [{key.unit}]' "
+            "so that its bare numbers are in that unit",
         )
     if cell.dim is not key.dim and cell.dim != key.dim:
         return PartResult(
@@ -140,6 +164,8 @@ def judge(
         )
     if not cell.signed and not rule.signed and key.value < 0 and directed(key):
         cell = replace(cell, value=-cell.value)  # a bare magnitude: the key's sense
+    if len(agreeing_words(key.direction)) == 2:
+        return _judge_oblique(cell, key, rule)
     misdirected = _axis_problem(cell, key)
     if misdirected:
         size = math.copysign(cell.value, key.value)
@@ -147,6 +173,59 @@ def judge(
             return PartResult("sign", rule.partial, misdirected, cell.value)
         return PartResult("wrong", 0.0, f"off by {_off(size, key)}", cell.value)
     return _compare(cell, key, rule)
+
+
+@functools.lru_cache(maxsize=1024)
+def agreeing_words(direction: str) -> tuple[str, ...]:
+    """The direction words that agree with a key's stated ``direction``: the word itself
+    along one axis, the vertical and the horizontal word for an angle, none for "".
+
+    >>> agreeing_words("cw"), agreeing_words("31.0° below the horizontal, to the left")
+    (('cw',), ('down', 'left'))
+    >>> agreeing_words("53.1° above the horizontal, to the right"), agreeing_words("")
+    (('up', 'right'), ())
+    """
+    if direction in AXES:
+        return (direction,)
+    found = _OBLIQUE.search(direction)
+    if found is None:
+        return ()
+    return ("up" if found[1] == "above" else "down", found[2])
+
+
+def _judge_oblique(cell: Cell, key: Key, rule: Rule) -> PartResult:
+    """Judge a cell against a key stated as an angle (``key.value`` is its magnitude):
+    a word agrees when it is one of the key's two words, a sign when both words carry it."""
+    words = agreeing_words(key.direction)
+    size = abs(cell.value)
+    if cell.direction and AXES[cell.direction] == "rotation":
+        detail = (
+            f"'{cell.direction}' is a sense of rotation; {key.name} is {key.direction} "
+            f"(give {' or '.join(words)})"
+        )
+        if matches(size, key, rule, cell):
+            return PartResult("sign", rule.partial, detail, cell.value)
+        return PartResult("wrong", 0.0, f"off by {_off(size, key)}", cell.value)
+    negative = [w in NEGATIVE for w in words]
+    if cell.direction:
+        agrees = cell.direction in words
+    elif rule.signed and not cell.signed and negative[0] == negative[1]:
+        agrees = not negative[0]  # a bare number taken as positive: up and right
+    elif cell.signed:
+        if negative[0] != negative[1]:
+            return PartResult(
+                "unreadable",
+                0.0,
+                f"a sign cannot say which way {key.name} points: it is {key.direction} "
+                f"({words[0]} is {'negative' if negative[0] else 'positive'}, {words[1]} "
+                f"{'negative' if negative[1] else 'positive'} by the convention); give the "
+                f"magnitude, or the magnitude and {words[0]} or {words[1]}",
+                cell.value,
+            )
+        agrees = (cell.value < 0) == negative[0]
+    else:
+        agrees = True  # a bare number: the magnitude
+    return _compare(replace(cell, value=size if agrees else -size), key, rule)
 
 
 def directed(key: Key) -> bool:
@@ -200,15 +279,26 @@ def _compare(cell: Cell, key: Key, rule: Rule) -> PartResult:
     elif matches(cell.value, key, rule, cell):
         return PartResult("correct", 1.0, "", cell.value)
     if key.value and matches(-cell.value, key, rule, cell):
-        return PartResult(
-            "sign",
-            rule.partial,
-            "right magnitude, wrong sign or direction (ccw, up, right are positive)",
-            cell.value,
-        )
+        return PartResult("sign", rule.partial, _reversed(cell, key), cell.value)
     off = f"off by {_off(cell.value, key)}"
     rounded = _rounded(cell, key, rule)
     return PartResult("wrong", 0.0, f"{rounded} ({off})" if rounded else off, cell.value)
+
+
+def _reversed(cell: Cell, key: Key) -> str:
+    """The feedback for a right magnitude pointing the other way: the words that agree."""
+    words = agreeing_words(key.direction)
+    if not words:
+        return "right magnitude, wrong sign or direction (ccw, up, right are positive)"
+    if cell.direction:
+        said = f"'{cell.direction}' is the other way"
+    elif cell.signed:
+        written = cell.number if cell.number.startswith("-") else f"+{cell.number}"
+        said = f"'{written}' is the other way: ccw, up, right are positive"
+    else:
+        said = "a bare number is positive here: ccw, up, right are positive"
+    give = " or ".join(words)
+    return f"right magnitude, wrong direction: {key.name} is {key.direction} ({said}; give {give})"
 
 
 def _rounded(cell: Cell, key: Key, rule: Rule) -> str:

@@ -2,8 +2,9 @@
 
 Format: a header ``student,units,NAME,...`` then one row per student; a cell holds a
 given's value with its unit as a spec would write it (``45 kg``); an empty cell keeps the
-spec's value. ``units`` is ``SI`` for a student's variant as drawn, ``US`` for its US
-customary twin, whose id is the student's id followed by ``@US``.
+spec's value. ``units`` is the system a row's values are in: ``SI``, or ``US`` (US
+customary: a variant drawn from an FPS spec, or a twin, whose id is the student's id
+followed by ``@US``).
 
 >>> import pathlib, tempfile
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "v.csv"

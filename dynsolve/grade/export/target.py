@@ -1,8 +1,9 @@
 """Where an export is written: never over a non-empty file or folder without ``force``,
-never outside the path given, every file written atomically.
+never outside the path given, every file written atomically. A folder is created with
+its missing parents.
 
 >>> import pathlib, tempfile
->>> folder = pathlib.Path(tempfile.mkdtemp()) / "q"
+>>> folder = pathlib.Path(tempfile.mkdtemp()) / "questions" / "q"
 >>> write_folder(folder, {"info.json": "{}", "clientFilesQuestion/a.txt": "a"}, force=False)
 >>> sorted(p.name for p in folder.rglob("*"))
 ['a.txt', 'clientFilesQuestion', 'info.json']
@@ -54,9 +55,12 @@ def check_folder(folder: Path, force: bool) -> None:
             f"refusing to write into {folder}: it is not empty",
             hint="choose a new folder, or pass --force to replace the files dynsolve writes",
         )
-    if not folder.parent.is_dir():
+    ancestor = folder.parent  # missing parents are created (pl/questions/x in a new course)
+    while not ancestor.exists() and ancestor != ancestor.parent:
+        ancestor = ancestor.parent
+    if not ancestor.is_dir():
         raise ExportError(
-            f"cannot create {folder}: folder {folder.parent} does not exist", hint="create it first"
+            f"cannot create {folder}: {ancestor} is a file, not a folder", hint="give a folder"
         )
 
 
@@ -66,7 +70,13 @@ def write_folder(folder: Path, files: Mapping[str, str | bytes], force: bool) ->
     A name that is absolute or climbs out (``..``), or whose target resolves outside the
     folder (a symbolic link already there), is refused before anything is written."""
     check_folder(folder, force)
-    folder.mkdir(exist_ok=True)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        reason = error.strerror or str(error)
+        raise ExportError(
+            f"cannot create {folder}: {reason}", hint="give a writable folder"
+        ) from None
     root = Path(os.path.realpath(folder))
     targets = []
     for name, content in files.items():
