@@ -8,7 +8,8 @@ Hand derivations (each also in the bundled file's comments):
 - rod pinned at its end: I_O = m L²/3, ΣM_O = −m g (L/2) θ → ω_n = √(3 g/(2 L));
 - disk with a spring at its rim: −k r² θ = (m r²/2) θ'' → ω_n = √(2 k/m);
 - block on a spring on a smooth incline: ω_n = √(k/m) whatever the angle;
-- drum and block with a spring: ω_n² = k r²/(m_d k_O² + m_b r²) = 72/1.7.
+- drum and block with a spring: ω_n² = k r²/(m_d k_O² + m_b r²) = 72/1.7;
+- torsion pendulum (`torsion spring`, M = −k_t θ): ω_n = √(2 k_t/(m r²)).
 """
 
 from __future__ import annotations
@@ -39,6 +40,8 @@ HAND = {  # file: (find name, value) from the derivations above
     "block_spring_incline.dyn": ("tau", 2 * math.pi / math.sqrt(200 / 2)),
     "drum_block_spring.dyn": ("w", math.sqrt(800 * 0.3**2 / (20 * 0.25**2 + 5 * 0.3**2))),
     "pendulum_fps.dyn": ("tau", 2 * math.pi / math.sqrt(32.2 / 3)),
+    # torsion pendulum: −k_t θ = (m r²/2) θ'' → ω_n = √(2 k_t/(m r²))
+    "torsion_pendulum_disk.dyn": ("w", math.sqrt(2 * 0.4 / (5 * 0.15**2))),
 }
 
 PENDULUM = """problem: pendulum
@@ -161,3 +164,26 @@ def test_si_and_fps_give_the_same_period():
     si = si.replace("g = 32.2 ft/s^2", "g = 9.81456 m/s^2")
     fps = solve_file(BUNDLED / "pendulum_fps.dyn").answers[1].value
     assert solve_text(si, "si.dyn").answers[1].value == pytest.approx(fps, rel=1e-12)
+
+
+TORSION = (BUNDLED / "torsion_pendulum_disk.dyn").read_text()
+
+
+def test_a_torsion_spring_between_states_is_refused_not_left_out(tmp_path):
+    # work and energy would need ½ k_t θ²: refused until it is written, never ignored
+    text = TORSION.replace("find: w = omega_n(disk), tau = period(disk)", "find: w = omega2(disk)")
+    text = text.replace(
+        "  torsion spring wire: disk, k k_t\n",
+        "  torsion spring wire: disk, k k_t\n  travel disk: turns pi/2 ccw\n",
+    )
+    text = text.split("answers:")[0]
+    output = _refused(tmp_path, text)
+    assert "not yet between states" in output
+
+
+def test_a_torsion_spring_on_a_particle_is_refused(tmp_path):
+    text = TORSION.replace(
+        "body disk: mass m, disk r, at (0, 0)", "body disk: particle, mass m, at (0, 0)"
+    )
+    output = _refused(tmp_path, text)
+    assert "is a particle" in output

@@ -407,8 +407,8 @@ def _spring_ends(
 def _generalized_force(
     scene: Scene, placements: Mapping[str, Placement], symbols: Mapping[str, sympy.Expr]
 ) -> sympy.Expr:
-    """Q(q) = Σ F·dr_P/dq + Σ M dθ/dq of the weights, springs and loads (for one pinned
-    body, ΣM about the pin; for a particle on a line, ΣF along it)."""
+    """Q(q) = Σ F·dr_P/dq + Σ M dθ/dq of the weights, springs, torsion springs and loads
+    (for one pinned body, ΣM about the pin; for a particle on a line, ΣF along it)."""
     total, g = sympy.Integer(0), symbols["g"]
     for name, placement in placements.items():
         model: Body = scene.bodies[name]
@@ -423,6 +423,10 @@ def _generalized_force(
         pull = k * (length - free) / length  # on end a, toward b, per unit of d
         rate = [sympy.diff(a[i] - b[i], Q) for i in range(2)]
         total += pull * (d[0] * rate[0] + d[1] * rate[1])
+    for torsion in scene.torsions:  # M = −k Δθ
+        placement = placements.get(torsion.body)
+        if placement is not None:
+            total -= torsion.k * placement.turn * sympy.diff(placement.turn, Q)
     for load in scene.loads:
         placement = placements.get(load.body)
         if placement is None:
@@ -439,7 +443,7 @@ def _generalized_force(
 def _potential(
     scene: Scene, placements: Mapping[str, Placement], symbols: Mapping[str, sympy.Expr]
 ) -> sympy.Expr:
-    """V(q) of the weights, springs and loads, V = 0 as drawn."""
+    """V(q) of the weights, springs, torsion springs and loads, V = 0 as drawn."""
     total, g = sympy.Integer(0), symbols["g"]
     for name, placement in placements.items():
         if scene.gravity is not None:
@@ -449,6 +453,10 @@ def _potential(
     for k, free, a, b in _spring_ends(scene, placements):
         length = sympy.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2)
         total += k * (length - free) ** 2 / 2 - (k * (length - free) ** 2 / 2).subs(Q, 0)
+    for torsion in scene.torsions:
+        placement = placements.get(torsion.body)
+        if placement is not None:
+            total += torsion.k * placement.turn**2 / 2
     for load in scene.loads:
         placement = placements.get(load.body)
         if placement is None:
