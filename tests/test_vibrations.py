@@ -42,6 +42,8 @@ HAND = {  # file: (find name, value) from the derivations above
     "pendulum_fps.dyn": ("tau", 2 * math.pi / math.sqrt(32.2 / 3)),
     # torsion pendulum: −k_t θ = (m r²/2) θ'' → ω_n = √(2 k_t/(m r²))
     "torsion_pendulum_disk.dyn": ("w", math.sqrt(2 * 0.4 / (5 * 0.15**2))),
+    # rolling disk, spring at G: −k x r = (3 m r²/2)(x''/r) → ω_n = √(2 k/(3 m))
+    "disk_rolls_spring.dyn": ("w", math.sqrt(2 * 900 / (3 * 6))),
 }
 
 PENDULUM = """problem: pendulum
@@ -187,3 +189,11 @@ def test_a_torsion_spring_on_a_particle_is_refused(tmp_path):
     )
     output = _refused(tmp_path, text)
     assert "is a particle" in output
+
+
+def test_a_block_on_a_rough_surface_is_refused_not_given_a_free_period(tmp_path):
+    # kinetic friction damps the motion (Coulomb damping): not the free vibration
+    text = (BUNDLED / "block_spring_incline.dyn").read_text()
+    text = text.replace("contact block at G: smooth,", "contact block at G: mu_k 0.2,")
+    output = _refused(tmp_path, text)
+    assert "rough" in output and "damp" in output

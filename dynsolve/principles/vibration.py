@@ -200,6 +200,13 @@ def _vibration(
                 f"the spring {spring.name} is wound or one-sided: its vibration is not "
                 "written here (use a plain spring)"
             )
+    for support in scene.supports:
+        rough = support.mu_k is not None or support.mu_s is not None or support.slides
+        if support.kind in ("contact", "base") and rough:
+            raise ValueError(
+                f"the contact {support.name} is rough: its friction would damp the motion "
+                "(Coulomb damping is not written here; make it smooth for the free vibration)"
+            )
     placements, coordinate, name, unit, principle = _coordinate(scene, body, values)
     direction = None
     if coordinate.endswith("springs' line"):
@@ -328,16 +335,23 @@ def _coordinate(
             )
         except ValueError:
             continue
-        if pinned and len(placements) == 1 and not model.particle:
+        links = [link for link in scene.links if link.name == turner]
+        rolling = [s for s in scene.supports if s.kind == "rolls" and s.body == turner]
+        if pinned and len(placements) == 1 and turner == body and not model.particle:
             principle = f"ΣM_{pinned[0].name} = I_{pinned[0].name} α"
-        elif len(placements) == 1:
-            link = next(link for link in scene.links if link.name == turner)
-            centre = scene.point_names.get(link.other_point, "the link's fixed end")
+        elif rolling and len(placements) == 1:
+            contact = rolling[0].name
+            principle = f"ΣM_{contact} = I_{contact} α about the contact point (rolling, no slip)"
+        elif links and len(placements) == 1:
+            centre = scene.point_names.get(links[0].other_point, "the link's fixed end")
             principle = (
                 f"ΣM_{centre} = I_{centre} α, I_{centre} = m ℓ² (the link's pull has no moment)"
             )
         else:
-            principle = "Newton–Euler for each body, the cord and pin forces eliminated"
+            principle = (
+                "Newton–Euler for each body, the forces of pins, cords and rolling contacts "
+                "eliminated (they do no work)"
+            )
         return placements, words, "θ", "rad", principle
     guides = [s for s in scene.supports if s.body == body and s.kind == "contact"]
     alone = len(scene.bodies) == 1
