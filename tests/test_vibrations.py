@@ -197,3 +197,14 @@ def test_a_block_on_a_rough_surface_is_refused_not_given_a_free_period(tmp_path)
     text = text.replace("contact block at G: smooth,", "contact block at G: mu_k 0.2,")
     output = _refused(tmp_path, text)
     assert "rough" in output and "damp" in output
+
+
+def test_letters_only_give_the_formula_and_say_the_simulation_did_not_run():
+    # τ = 2π √(2 L/(3 g)) for the rod pinned at its end, m cancelling
+    text = PENDULUM.replace("Y", "-L/2").replace("m = 2 kg", "m: mass")
+    text = text.replace("L = 1.5 m", "L: length").replace("g = 9.81 m/s^2", "g: acceleration")
+    solution = solve_text(text, "letters.dyn")
+    (energy,) = [c for c in solution.checks if c.name.startswith("second method: energy")]
+    assert energy.passed and "3*g/(2*L)" in energy.detail
+    assert "simulation did not run" in energy.detail
+    assert not [c for c in solution.checks if c.name == "simulation: period"]  # no false ✓

@@ -552,10 +552,20 @@ def vibration_checks(
     """The energy method, and the period of the integrated motion (``motion``: the
     scene's :class:`~dynsolve.simulate.equations.OneDof`, or None with ``why_not``)."""
     omega = real_value(vibration.omega_n, values)
-    if omega is None:
-        return (Check("second method: energy (T + V = const)", False, "no numbers: not run"),)
-    checks = []
     curvature = sympy.diff(vibration.potential, Q, 2).subs(Q, 0)
+    if omega is None:  # letters only: the two ω_n² compared as formulas; nothing to integrate
+        gap = sympy.simplify(curvature / vibration.inertia - vibration.omega_n**2)
+        return (
+            Check(
+                "second method: energy (T + V = const)",
+                gap == 0,
+                f"T = ½ M {vibration.name}'², d(T + V)/dt = 0 → ω_n² = V''/M = "
+                f"{sympy.sstr(tidy(curvature / vibration.inertia))} "
+                f"({'the same formula' if gap == 0 else 'a different formula'}); the "
+                "simulation did not run: the givens have no values",
+            ),
+        )
+    checks = []
     energy = real_value(curvature / vibration.inertia, values)
     if energy is None or energy <= 0:
         checks.append(
