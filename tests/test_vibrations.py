@@ -208,3 +208,11 @@ def test_letters_only_give_the_formula_and_say_the_simulation_did_not_run():
     assert energy.passed and "3*g/(2*L)" in energy.detail
     assert "simulation did not run" in energy.detail
     assert not [c for c in solution.checks if c.name == "simulation: period"]  # no false ✓
+
+
+def test_the_solve_order_states_i_o_and_the_stiffness_before_omega_n():
+    # rod pinned at its end: I_O = m L²/3 = 0.81 kg·m², k_eq = m g L/2 = 13.2 N·m
+    result = CliRunner().invoke(app, ["solve", str(BUNDLED / "rod_pinned_end.dyn")])
+    assert result.exit_code == 0, result.output
+    assert "I_O = L^2*m/3" in result.output and "0.810 kg·m²" in result.output
+    assert "k_eq = L*g*m/2" in result.output and "13.2 N·m" in result.output

@@ -77,9 +77,17 @@ def vibration_target(
     """The find ``omega_n``, ``f_n`` or ``period`` of ``body``'s vibration, with the rows
     its derivation states first (ω_n before τ and f_n); ValueError (the reason) if none."""
     vibration = vibration_of(scene, body, scene.values, symbols)
+    turning = vibration.unit == "rad"
+    inertia = "I_" + vibration.principle[3:].split(" ")[0] if turning else "m_eq"
+    if not vibration.principle.startswith("ΣM_") or not inertia.isidentifier():
+        inertia = "I_eq" if turning else "m_eq"
+    before = (  # the textbook's I_O θ'' + k_θ θ = 0: its two coefficients, then ω_n
+        (inertia, vibration.inertia, Dim(2, 1, 0) if turning else Dim(0, 1, 0)),
+        ("k_eq", vibration.stiffness, Dim(2, 1, -2) if turning else Dim(0, 1, -2)),
+    )
     if function == "omega_n":
-        return vibration.omega_n, ()
-    before = (("omega_n", vibration.omega_n, Dim(0, 0, -1)),)
+        return vibration.omega_n, before
+    before += (("omega_n", vibration.omega_n, Dim(0, 0, -1)),)
     if function == "f_n":
         return vibration.frequency, before
     return vibration.period, before
