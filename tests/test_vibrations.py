@@ -216,3 +216,26 @@ def test_the_solve_order_states_i_o_and_the_stiffness_before_omega_n():
     assert result.exit_code == 0, result.output
     assert "I_O = L^2*m/3" in result.output and "0.810 kg·m²" in result.output
     assert "k_eq = L*g*m/2" in result.output and "13.2 N·m" in result.output
+
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [  # τ = 2π √(L/g) → L = g τ²/(4π²); τ = 2π √(m/k) → k = 4π² m/τ²
+        ("pendulum_length_from_period.dyn", G * 3**2 / (4 * math.pi**2)),
+        ("spring_stiffness_from_period.dyn", 4 * math.pi**2 * 4 / 0.5**2),
+    ],
+)
+def test_a_length_or_a_stiffness_for_a_given_period(name, expected):
+    solution = solve_file(BUNDLED / name)
+    (answer,) = solution.answers
+    assert answer.value == pytest.approx(expected, rel=1e-12)
+    (back,) = [c for c in solution.checks if c.name.startswith("period back")]
+    assert back.passed
+
+
+def test_for_period_of_a_given_the_period_does_not_hold_is_refused(tmp_path):
+    text = (BUNDLED / "pendulum_length_from_period.dyn").read_text().split("answers:")[0]
+    output = _refused(
+        tmp_path, text.replace("for_period(bob, L, tau_1)", "for_period(bob, m, tau_1)")
+    )
+    assert "does not depend on m" in output

@@ -297,7 +297,7 @@ _NOT_REACTIONS = frozenset(
     {"T", "V", "work", "energy_lost", "impulse", "F_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
     | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
-    | {"omega_n", "f_n", "period"}
+    | {"omega_n", "f_n", "period", "for_period"}
 )
 
 
@@ -867,7 +867,7 @@ def _quantity(
     if function == "power":
         return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
     if function in VIBRATION_FINDS:
-        return _vibration_target(function, args, scene, symbols, target, where)
+        return _vibration_target(function, args, scene, symbols, dims, target, where)
     if function == "F_avg":
         kind, dim, vector = _average_force(args, scene, formulation, symbols, dims, where)
         return target(kind, dim, vector=vector)
@@ -1055,17 +1055,23 @@ def _vibration_target(
     args: tuple[str, ...],
     scene: Scene,
     symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
     target: object,
     where: Position,
 ) -> Target:
-    """``period(B)``, ``omega_n(B)``, ``f_n(B)``: the small free vibration of the scene."""
+    """``period(B)``, ``omega_n(B)``, ``f_n(B)``: the small free vibration of the scene;
+    ``for_period(B, X, T)``: the given X at which the period is the given T."""
     body = _body((args or ("",))[0], scene, where)
     try:
-        expr, before = vibration_target(function, body, scene, symbols)
+        expr, before = vibration_target(function, body, scene, symbols, args[1:])
     except ValueError as exc:
         raise SpecError(
-            f"{function}({body}): {exc}", where, hint="see 'Vibrations' in docs/scene-mode.md"
+            f"{function}({', '.join(args)}): {exc}",
+            where,
+            hint="see 'Vibrations' in docs/scene-mode.md",
         ) from None
+    if function == "for_period":
+        return target("magnitude", dims[args[1]], expr, before=before)  # type: ignore[operator]
     dim = Dim(0, 0, 1 if function == "period" else -1)
     return target("magnitude", dim, expr, before=before)  # type: ignore[operator]
 

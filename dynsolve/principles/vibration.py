@@ -39,7 +39,7 @@ from dynsolve.results import Check
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
 
-VIBRATION_FINDS = frozenset({"omega_n", "f_n", "period"})
+VIBRATION_FINDS = frozenset({"omega_n", "f_n", "period", "for_period"})
 AGREEMENT = 1e-6  # relative: the energy method and the simulation against ω_n
 Q = sympy.Symbol("q")
 
@@ -72,11 +72,20 @@ class Vibration:
 
 
 def vibration_target(
-    function: str, body: str, scene: Scene, symbols: Mapping[str, sympy.Expr]
+    function: str,
+    body: str,
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    args: tuple[str, ...] = (),
 ) -> tuple[sympy.Expr, tuple[tuple[str, sympy.Expr, Dim], ...]]:
     """The find ``omega_n``, ``f_n`` or ``period`` of ``body``'s vibration, with the rows
-    its derivation states first (ω_n before τ and f_n); ValueError (the reason) if none."""
+    its derivation states first (ω_n before τ and f_n), or ``for_period`` (``args``: the
+    given X and the period T; X at which τ = T); ValueError (the reason) if none."""
     vibration = vibration_of(scene, body, scene.values, symbols)
+    if function == "for_period":
+        return _for_period(vibration, scene, symbols, args), (
+            ("tau", vibration.period, Dim(0, 0, 1)),
+        )
     turning = vibration.unit == "rad"
     inertia = "I_" + vibration.principle[3:].split(" ")[0] if turning else "m_eq"
     if not vibration.principle.startswith("ΣM_") or not inertia.isidentifier():
@@ -91,6 +100,30 @@ def vibration_target(
     if function == "f_n":
         return vibration.frequency, before
     return vibration.period, before
+
+
+def _for_period(
+    vibration: Vibration, scene: Scene, symbols: Mapping[str, sympy.Expr], args: tuple[str, ...]
+) -> sympy.Expr:
+    """The given X for which τ(X) equals the given T: the one positive root of τ(X) = T."""
+    if len(args) != 2 or not all(name in symbols for name in args):
+        raise ValueError(
+            "write for_period(B, X, T): X and T givens (a length or a stiffness, a period)"
+        )
+    unknown, period = symbols[args[0]], symbols[args[1]]
+    if unknown not in vibration.period.free_symbols:
+        raise ValueError(f"the period does not depend on {args[0]}")
+    others = {s: v for s, v in scene.values.items() if s != unknown}
+    roots = []
+    for root in sympy.solve(sympy.Eq(vibration.period, period), unknown):
+        value = real_value(root, others)
+        if value is None or value > 0:
+            roots.append(tidy(root))
+    if len(roots) != 1:
+        raise ValueError(
+            f"τ = {args[1]} gives {len(roots)} positive values of {args[0]}: none is chosen"
+        )
+    return roots[0]
 
 
 def vibration_notes(
@@ -143,7 +176,37 @@ def scene_vibration_checks(
     for body, vibration in _distinct(scene, bodies, symbols).items():
         motion, why_not = _motion(scene, body, vibration, symbols, values)
         checks += vibration_checks(vibration, values, motion, why_not)
+    for item in spec.finds:
+        if item.ref is not None and item.ref.function == "for_period":
+            checks.append(_period_back(item.ref.args, scene, symbols, values))
     return tuple(checks)
+
+
+def _period_back(
+    args: tuple[str, ...],
+    scene: Scene,
+    symbols: Mapping[str, sympy.Expr],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> Check:
+    """The period of the scene with X = for_period(B, X, T) put back: T again."""
+    body, name, period = args
+    name_check = f"period back: τ({name}) = {period}"
+    found, _ = vibration_target("for_period", body, scene, symbols, (name, period))
+    unknown = symbols[name]
+    vibration = vibration_of(scene, body, scene.values, symbols)
+    others = {s: v for s, v in values.items() if s != unknown}
+    size = real_value(found, others)
+    back = real_value(vibration.period.xreplace({unknown: found}), others)
+    wanted = real_value(symbols[period], values)
+    if size is None or back is None or wanted is None:
+        return Check(name_check, False, "not run: the givens have no values")
+    gap = abs(back - wanted) / wanted
+    return Check(
+        name_check,
+        gap <= AGREEMENT,
+        f"with {name} = {size:.7g} the period is {back:.7g} s ({period} = {wanted:.7g} s; "
+        f"relative difference {gap:.1e})",
+    )
 
 
 def _motion(
