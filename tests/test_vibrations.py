@@ -239,3 +239,9 @@ def test_for_period_of_a_given_the_period_does_not_hold_is_refused(tmp_path):
         tmp_path, text.replace("for_period(bob, L, tau_1)", "for_period(bob, m, tau_1)")
     )
     assert "does not depend on m" in output
+
+
+def test_for_period_needs_a_time_for_the_period(tmp_path):
+    text = (BUNDLED / "pendulum_length_from_period.dyn").read_text().split("answers:")[0]
+    output = _refused(tmp_path, text.replace("for_period(bob, L, tau_1)", "for_period(bob, L, m)"))
+    assert "m is not a time" in output

@@ -1062,6 +1062,12 @@ def _vibration_target(
     """``period(B)``, ``omega_n(B)``, ``f_n(B)``: the small free vibration of the scene;
     ``for_period(B, X, T)``: the given X at which the period is the given T."""
     body = _body((args or ("",))[0], scene, where)
+    if function == "for_period" and len(args) == 3 and dims.get(args[2]) != Dim(0, 0, 1):
+        raise SpecError(
+            f"for_period({', '.join(args)}): {args[2]} is not a time",
+            where,
+            hint="the third argument is the period wanted, a given in s",
+        )
     try:
         expr, before = vibration_target(function, body, scene, symbols, args[1:])
     except ValueError as exc:
