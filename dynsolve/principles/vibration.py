@@ -231,6 +231,8 @@ def _motion(
         return None, str(exc) or "the scene cannot be simulated"
 
 
+# one solve asks the same vibration for its target, its notes and its checks: kept per
+# scene object (the scene held too, so its id is not reused), a few at a time
 _CACHE: dict[tuple[int, str], tuple[Scene, Vibration]] = {}
 
 
