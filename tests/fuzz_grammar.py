@@ -38,6 +38,7 @@ SCENE_LINES = (
     "spring S: B at P to A, k k, unstretched 1 m",
     "spring S: B at P to A, k k, unstretched 1 m, compression only",
     "spring S: B at G to A, k k, unstretched 1 m, tension only",
+    "torsion spring W: B, k k",
     "link L: B at P to A",
     "force F on B at P: angle 30 deg",
     "couple M on B: ccw",

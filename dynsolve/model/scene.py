@@ -241,6 +241,18 @@ class CordState:
 
 
 @dataclass(frozen=True)
+class TorsionSpring:
+    """A torsion spring between a rigid body and the ground: M = −k Δθ, at its neutral
+    angle in the scene as drawn (no moment there)."""
+
+    name: str
+    body: str
+    k: sympy.Expr  # N·m per radian
+    line: int = 0
+    column: int = 0
+
+
+@dataclass(frozen=True)
 class Link:
     """A rigid massless link (a two-force member) from a point of ``body`` to a fixed point
     or another body's point; its force acts along it."""
@@ -372,6 +384,7 @@ class Scene:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
     events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
     paths: Mapping[str, Path] = field(default_factory=dict)  # fixed paths, by name
+    torsions: tuple[TorsionSpring, ...] = ()  # torsion springs to the ground
 
 
 class _Builder:
@@ -836,6 +849,7 @@ def _build_scene(
     velocities: dict[str, Vec] = {}
     motions: dict[str, str] = {}
     springs: list[Spring] = []
+    torsions: list[TorsionSpring] = []
     links: list[Link] = []
     impacts: list[Impact] = []
     travels: dict[str, Travel] = {}
@@ -882,6 +896,8 @@ def _build_scene(
                         compression_only=compression_only,
                     )
                 )
+        elif stmt.kind == "torsion":
+            torsions.append(_torsion(builder, stmt))
         elif stmt.kind in ("force", "couple"):
             loads.append(_load(builder, stmt, link_names))
         elif stmt.kind == "gravity":
@@ -962,7 +978,36 @@ def _build_scene(
         assumptions=tuple(assumptions),
         values=builder.given_values,
         events=tuple(events),
+        torsions=_torsions_at_rest(builder, torsions, events),
     )
+
+
+def _torsion(builder: _Builder, stmt: SceneStmt) -> TorsionSpring:
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    if body.particle:
+        raise SpecError(
+            f"a torsion spring turns a rigid body, and {body.name} is a particle",
+            builder.where(stmt.line, stmt.column),
+            hint="give the body a shape or an inertia (a torsion pendulum: 'disk R')",
+        )
+    k = builder.value(stmt.props[0].values[0], Dim(2, 1, -2), "a torsional stiffness (N·m/rad)")
+    return TorsionSpring(stmt.name, body.name, k, stmt.line, stmt.column)
+
+
+def _torsions_at_rest(
+    builder: _Builder, torsions: list[TorsionSpring], events: list[object]
+) -> tuple[TorsionSpring, ...]:
+    """The torsion springs; refused between states and across impacts, whose principles
+    do not take them yet (never left out silently)."""
+    if torsions and events:
+        raise SpecError(
+            "a torsion spring is taken at an instant and in vibrations, not yet between "
+            "states or across impacts",
+            builder.where(torsions[0].line, torsions[0].column),
+            hint="ask period(B), omega_n(B) or f_n(B) of the scene at rest, without travel "
+            "or impact lines",
+        )
+    return tuple(torsions)
 
 
 def _support(builder: _Builder, stmt: SceneStmt) -> Support:

@@ -24,6 +24,12 @@ from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_fin
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
+from dynsolve.principles.vibration import (
+    VIBRATION_FINDS,
+    scene_vibration_checks,
+    vibration_notes,
+    vibration_target,
+)
 from dynsolve.quantities import resolve_unit
 from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody, Step
 from dynsolve.shown import formula_text
@@ -191,6 +197,7 @@ def build_scene_problem(
         if item.ref is not None and item.ref.function == "I"
     )
     notes += _unused(spec)
+    notes += vibration_notes(spec, scene, symbols)
     notes += tuple(
         _path_note(scene, name, _path_extremes(scene, name, Position(spec.file, 1, 1)))
         for name in scene.movers
@@ -292,6 +299,7 @@ _NOT_REACTIONS = frozenset(
     {"T", "V", "work", "energy_lost", "impulse", "F_avg", "F_net_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
     | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
+    | {"omega_n", "f_n", "period", "for_period"}
 )
 
 
@@ -605,6 +613,7 @@ def cross_checks(
         tuple(checks)
         + _interval_checks(problem, substitution)
         + _moment_checks(problem, substitution)
+        + scene_vibration_checks(problem, substitution)
     )
 
 
@@ -833,6 +842,8 @@ def _target(
         unit = natural_unit(dim, spec.system, "E")  # an energy, not a moment
     if (target.kind == "steepest" or function == "angle") and item.unit is None:
         unit = "deg"
+    if function == "f_n" and item.unit is None:
+        unit = "Hz"
     return replace(target, unit=unit, dim=dim, trial=trial, requested=item.unit is not None)
 
 
@@ -892,6 +903,8 @@ def _quantity(
         )
     if function == "power":
         return target("signed", Dim(2, 1, -3), _power(args, scene, formulation, where))
+    if function in VIBRATION_FINDS:
+        return _vibration_target(function, args, scene, symbols, dims, target, where)
     if function in AVERAGE_FORCES:
         kind, dim, vector, note = _average_force(
             function, args, scene, formulation, symbols, dims, where
@@ -1074,6 +1087,38 @@ def _quantity(
         f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
     )
     raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def _vibration_target(
+    function: str,
+    args: tuple[str, ...],
+    scene: Scene,
+    symbols: Mapping[str, sympy.Symbol],
+    dims: Mapping[str, Dim],
+    target: object,
+    where: Position,
+) -> Target:
+    """``period(B)``, ``omega_n(B)``, ``f_n(B)``: the small free vibration of the scene;
+    ``for_period(B, X, T)``: the given X at which the period is the given T."""
+    body = _body((args or ("",))[0], scene, where)
+    if function == "for_period" and len(args) == 3 and dims.get(args[2]) != Dim(0, 0, 1):
+        raise SpecError(
+            f"for_period({', '.join(args)}): {args[2]} is not a time",
+            where,
+            hint="the third argument is the period wanted, a given in s",
+        )
+    try:
+        expr, before = vibration_target(function, body, scene, symbols, args[1:])
+    except ValueError as exc:
+        raise SpecError(
+            f"{function}({', '.join(args)}): {exc}",
+            where,
+            hint="see 'Vibrations' in docs/scene-mode.md",
+        ) from None
+    if function == "for_period":
+        return target("magnitude", dims[args[1]], expr, before=before)  # type: ignore[operator]
+    dim = Dim(0, 0, 1 if function == "period" else -1)
+    return target("magnitude", dim, expr, before=before)  # type: ignore[operator]
 
 
 def _power(

@@ -399,7 +399,8 @@ def _potential(
     link_turns: Mapping[str, sympy.Expr],
     symbols: Mapping[str, sympy.Expr],
 ) -> sympy.Expr:
-    """V(q) of the weights, springs, constant forces and couples (V = 0 in the scene)."""
+    """V(q) of the weights, springs, torsion springs, constant forces and couples (V = 0
+    in the scene)."""
     terms: list[sympy.Expr] = []
     if scene.gravity is not None:
         for name, placement in placements.items():
@@ -422,6 +423,10 @@ def _potential(
         b = b or spring.other_point
         d = (b[0] - a[0], b[1] - a[1])
         terms.append(spring.k * _acting(spring, root(_dot(d, d)) - spring.unstretched) ** 2 / 2)
+    for torsion in scene.torsions:  # ½ k Δθ², neutral as drawn
+        placement = placements.get(torsion.body)
+        if placement is not None:
+            terms.append(torsion.k * placement.turn**2 / 2)
     for load in scene.loads:
         if load.kind == "couple":
             turn = link_turns.get(load.body)

@@ -892,6 +892,16 @@ class _Builder(Transformer_NonRecursive):
             ),
         )
 
+    def torsion_stmt(self, c: list[Any]) -> SceneStmt:
+        name, body, stiffness = c
+        return self._stmt(
+            "torsion",
+            name,
+            name=str(name),
+            body=str(body),
+            props=(Prop("k", values=(stiffness,), line=self.line, column=self.offset + 1),),
+        )
+
     def link_stmt(self, c: list[Any]) -> SceneStmt:
         name, body, location, other, *rest = c
         return self._stmt(
