@@ -85,6 +85,8 @@ class StageRecord:
     stops: bool = False  # a travel that ends at rest
     start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
     approach: sympy.Expr | None = None  # an impact's (v_A − v_B)·n just before it
+    pin: str = ""  # a particle's impact on a body turning about this pin (H about it kept)
+    pinned: tuple[tuple[str, sympy.Expr], ...] = ()  # its checks: approach, separation, lost
     scene: Scene | None = None  # a travel's moving part, from its start state (simulation)
     slides: tuple[Slide, ...] = ()  # an interval's sliding contacts
     normals: tuple[tuple[str, sympy.Expr], ...] = ()  # an interval's average normal forces

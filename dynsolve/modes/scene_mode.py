@@ -21,6 +21,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
 from dynsolve.model.scene import Body, Load, Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
+from dynsolve.momentum_finds import MOMENTUM_FUNCTIONS, momentum_dimension, momentum_quantity
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
@@ -290,7 +291,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
 _NOT_REACTIONS = frozenset(
     {"T", "V", "work", "energy_lost", "impulse", "F_avg", "F_net_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
-    | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
+    | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts", "H", "p"}
 )
 
 
@@ -897,6 +898,9 @@ def _quantity(
         )
         return target(kind, dim, vector=vector, note=note)
 
+    if function in MOMENTUM_FUNCTIONS and args:
+        kind, dim, expr, vector, note = _momentum(function, args, scene, formulation, where)
+        return target(kind, dim, expr, vector=vector, note=note)
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
         kind, dim, expr, vector = stage_quantity(function, args, scene, formulation, where)
@@ -1073,6 +1077,28 @@ def _quantity(
         f"did you mean '{close[0]}'?" if close else f"the scene's unknowns are {', '.join(known)}"
     )
     raise SpecError(f"'{function}' is not a quantity of this scene", where, hint)
+
+
+def _momentum(
+    function: str, args: tuple[str, ...], scene: Scene, formulation: Formulation, where: Position
+) -> tuple[str, Dim, sympy.Expr | None, Vec | None, str]:
+    """H(B[, P][, k]) or p(B[, k]): kind, dimension, expression, vector and what it is."""
+    body = _body(args[0], scene, where)
+    rest = list(args[1:])
+    state = rest.pop() if rest and rest[-1].isdigit() else None
+    if len(rest) > (1 if function == "H" else 0):
+        raise SpecError(
+            f"{function} takes the body, "
+            + ("a point and " if function == "H" else "")
+            + "a state number at most",
+            where,
+            hint="H(B) about G, H(B, O) about O, H(B, O, 2) at state 2; p(B), p(B, 2)",
+        )
+    point = (rest[0], _point(rest[0], scene, body, where)) if rest else None
+    kind, expr, vector, note = momentum_quantity(
+        function, body, point, state, scene, formulation, where
+    )
+    return kind, momentum_dimension(function), expr, vector, note
 
 
 def _power(

@@ -170,9 +170,9 @@ def chain_formulation(
         unknowns=unknowns,
         after=_after(records, states),
         after_omega={
-            r.stage.event.body: states[r.stage.number].omegas[r.stage.event.body]
+            r.bodies[-1]: states[r.stage.number].omegas[r.bodies[-1]]
             for r in records
-            if isinstance(r.stage.event, Pivot)
+            if isinstance(r.stage.event, Pivot) or r.pin
         },
         speeds=_after_travels(
             records, states, lambda s, n: named.get((s.number, n)) or _speed(s, n)
@@ -237,6 +237,11 @@ class _Chain:
         self.reaction_names: set[str] = set()  # average reactions named by earlier intervals
         self.velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
         self.omegas = {n: sympy.Integer(0) + scene.omegas.get(n, 0) for n in scene.bodies}
+        for pin in scene.supports:  # a pinned body given its spin: G turns about the pin
+            if pin.kind == "pin" and pin.body not in scene.velocities:
+                G, w = scene.bodies[pin.body].G, self.omegas[pin.body]
+                r = (G[0] - pin.point[0], G[1] - pin.point[1])
+                self.velocities[pin.body] = (tidy(-w * r[1]), tidy(w * r[0]))
         self.unfollowed: set[str] = set()  # bodies whose geometry is no longer followed
         self.together: dict[str, frozenset[str]] = {n: frozenset((n,)) for n in scene.bodies}
         self.joined_notes: list[tuple[int, str]] = []
@@ -597,6 +602,8 @@ class _Chain:
     def impact(self, stage: Stage, impact: Impact) -> _Step:
         from dynsolve.principles.impact import impact_equations, velocity_after
 
+        if self.pin_of(impact.other) is not None or self.pin_of(impact.body) is not None:
+            return self.pinned(stage, impact)
         self.check_impulses(stage, impact)
         masses = {name: body.mass for name, body in self.scene.bodies.items()}
         equations, along = impact_equations(impact, masses, self.velocities)
@@ -617,6 +624,82 @@ class _Chain:
             {},
             StageRecord(stage, tuple(along), approach=self.approach(impact)),
             self.scene,
+        )
+
+    def pin_of(self, name: str) -> Support | None:
+        """The pin a rigid body turns about, if it is pinned."""
+        body = self.scene.bodies.get(name)
+        if body is None or body.particle:
+            return None
+        return next((s for s in self.scene.supports if s.body == name and s.kind == "pin"), None)
+
+    def pinned(self, stage: Stage, impact: Impact) -> _Step:
+        """A particle striking a body that turns about a pin: angular momentum of the two
+        about the pin conserved, with restitution along the line (embedded when e = 0)."""
+        from dynsolve.principles.angular_momentum import pinned_impact
+
+        scene = self.scene
+        if self.pin_of(impact.body) is not None:  # the pinned body strikes the particle
+            impact = replace(
+                impact,
+                body=impact.other,
+                other=impact.body,
+                line=(-impact.line[0], -impact.line[1]),
+            )
+        A, B = impact.body, impact.other
+        pin = self.pin_of(B)
+        if pin is None or A not in scene.bodies or not scene.bodies[A].particle:
+            raise StageError(
+                stage,
+                f"{stage.title}: an impact on a pinned body is supported with a particle "
+                "(placed where it strikes) on the other side",
+            )
+        moved = sorted({A, B} & self.unfollowed)
+        if moved:
+            raise StageError(
+                stage,
+                f"{stage.title}: where {' and '.join(moved)} is after an earlier stage is not "
+                "followed (only a particle's position is); describe the impact as a scene of "
+                "its own, from the motion just before it",
+            )
+        held = [s.name for s in scene.supports if s.body == A]
+        held += [k.name for k in scene.links if A in (k.body, k.other)]
+        held += [s.name for s in scene.supports if s.body == B and s is not pin]
+        held += [k.name for k in scene.links if B in (k.body, k.other)]
+        if held:
+            raise StageError(
+                stage,
+                f"{stage.title}: {', '.join(held)} would take part in the impulse; a particle "
+                "striking a pinned body is supported with the pin the only support",
+            )
+        r_G = (scene.bodies[B].G[0] - pin.point[0], scene.bodies[B].G[1] - pin.point[1])
+        w_1 = self.omegas[B]
+        v_B = self.velocities[B]
+        spun = (-w_1 * r_G[1], w_1 * r_G[0])
+        if tidy(v_B[0] - spun[0]) != 0 or tidy(v_B[1] - spun[1]) != 0:
+            raise StageError(
+                stage,
+                f"{stage.title}: {B} turns about the pin {pin.name}; give its motion before "
+                f"the impact as 'omega {B}: …' (its G then moves with ω k × r_G/{pin.name})",
+            )
+        found = pinned_impact(
+            impact, scene.bodies[A], scene.bodies[B], (pin.name, pin.point), self.velocities,
+            w_1, stage.number + 1, real_value(impact.e, self.values) == 0,
+        )  # fmt: skip
+        self.unfollowed |= {A, B}  # where they are afterwards is not followed
+        checks = (
+            ("approach", found.approach),
+            ("separation", found.separation),
+            ("lost", found.lost),
+            ("energy", found.energy),
+        )
+        return _Step(
+            found.equations,
+            found.unknowns,
+            found.velocities,
+            {B: found.omega},
+            StageRecord(stage, (A, B), pin=pin.name, pinned=checks),
+            scene,
         )
 
     def approach(self, impact: Impact) -> sympy.Expr:
@@ -1072,6 +1155,13 @@ def chain_assumptions(
             continue
         if isinstance(event, Travel) and event.kind == "until":
             checks += _event_checks(record, values, "")
+            continue
+        if isinstance(event, Impact) and record.pin:
+            from dynsolve.principles.angular_momentum import pinned_impact_checks
+
+            struck = (record.bodies[0], record.bodies[1])
+            embeds = real_value(event.e, values) == 0
+            checks += pinned_impact_checks(k, struck, embeds, record.pin, record.pinned, values)
             continue
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)
