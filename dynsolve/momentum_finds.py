@@ -20,6 +20,7 @@ from dynsolve.principles.angular_momentum import (
     LINEAR_MOMENTUM,
     angular_momentum,
     linear_momentum,
+    turning,
 )
 from dynsolve.principles.newton_euler import Formulation
 from dynsolve.units import Dim
@@ -49,6 +50,10 @@ def motion_at(
     v = scene.velocities.get(body, (sympy.Integer(0), sympy.Integer(0)))
     kinematics = formulation.kinematics.get(body)
     omega = kinematics.omega if kinematics is not None else scene.omegas.get(body, 0)
+    pin = kinematics.pin if kinematics is not None else None
+    if pin is not None and body not in scene.velocities:  # G turns about the pin
+        G = scene.bodies[body].G
+        v = turning(omega, (G[0] - pin.point[0], G[1] - pin.point[1]))
     return v, omega, "at the instant"
 
 
