@@ -30,9 +30,9 @@ MOMENTUM_FUNCTIONS = ("H", "p")
 
 def motion_at(
     body: str, state: str | None, scene: Scene, formulation: Formulation, where: Position
-) -> tuple[Vec, sympy.Expr, str]:
-    """B's v_G and ω at state ``state`` (its number), the last state of a chain of stages,
-    or the instant of a scene without stages; with the words for where that is."""
+) -> tuple[Vec, sympy.Expr, sympy.Expr, str]:
+    """B's v_G, ω and I_G at state ``state`` (its number), the last state of a chain of
+    stages, or the instant of a scene without stages; with the words for where that is."""
     states = formulation.states
     if state is not None:
         if not states or not state.isdigit() or not 1 <= int(state) <= len(states):
@@ -43,10 +43,12 @@ def motion_at(
                 if states
                 else "a scene without stages has one state: leave the number out",
             )
-        chosen = states[int(state) - 1]
-        return chosen.velocities[body], chosen.omegas.get(body, 0), f"at state {state}"
+        chosen, when = states[int(state) - 1], f"at state {state}"
+    elif states:
+        chosen, when = states[-1], "at the last state"
     if states:
-        return states[-1].velocities[body], states[-1].omegas.get(body, 0), "at the last state"
+        I_G = chosen.inertias.get(body, scene.bodies[body].I_G)  # after a change of inertia
+        return chosen.velocities[body], chosen.omegas.get(body, 0), I_G, when
     v = scene.velocities.get(body, (sympy.Integer(0), sympy.Integer(0)))
     kinematics = formulation.kinematics.get(body)
     omega = kinematics.omega if kinematics is not None else scene.omegas.get(body, 0)
@@ -54,7 +56,7 @@ def motion_at(
     if pin is not None and body not in scene.velocities:  # G turns about the pin
         G = scene.bodies[body].G
         v = turning(omega, (G[0] - pin.point[0], G[1] - pin.point[1]))
-    return v, omega, "at the instant"
+    return v, omega, scene.bodies[body].I_G, "at the instant"
 
 
 def momentum_quantity(
@@ -69,11 +71,11 @@ def momentum_quantity(
     """``H`` (about ``point``, or G when None) or ``p`` of ``body``: (kind, expression,
     vector, what it is in words)."""
     model = scene.bodies[body]
-    v, omega, when = motion_at(body, state, scene, formulation, where)
+    v, omega, I_G, when = motion_at(body, state, scene, formulation, where)
     if function == "p":
         return "vector", None, linear_momentum(model.mass, v), f"p = m v_G of {body} {when}"
     name, P = point if point is not None else ("G", model.G)
-    H = angular_momentum(model.mass, model.I_G, v, sympy.Integer(0) + omega, model.G, P)
+    H = angular_momentum(model.mass, I_G, v, sympy.Integer(0) + omega, model.G, P)
     how = "I_G ω" if point is None else f"I_G ω + r_G/{name} × m v_G"
     if model.particle:
         how = f"r_G/{name} × m v" if point is not None else "0 (a particle)"

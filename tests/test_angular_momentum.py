@@ -231,3 +231,133 @@ def test_the_embedded_bullet_meets_the_formula_and_never_creates_energy(
     assert got["w"]["value"] == pytest.approx(omega, rel=1e-9)
     assert got["dE"]["value"] == pytest.approx(0.5 * m * v**2 - 0.5 * inertia * omega**2, rel=1e-9)
     assert got["dE"]["value"] >= 0 and not math.isnan(got["dE"]["value"])
+
+
+CLUTCH = """\
+problem: Two rotors locked by a clutch
+units: SI
+given:
+  m_A = {m_A}
+  k_A = 0.3 m
+  m_B = {m_B}
+  k_B = 0.2 m
+  w_A = {w_A}
+  w_B = {w_B}
+scene:
+  point O: (0, 0)
+  body A: mass m_A, gyration k_A, at (0, 0)
+  body B: mass m_B, gyration k_B, at (0, 0)
+  pin A at O
+  pin B at O
+  omega A: w_A ccw
+  omega B: w_B cw
+  clutch A with B
+find: w = omega_after(A), w_2 = omega_after(B), dE = energy_lost
+"""
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_a_clutch_gives_both_rotors_one_speed_and_loses_energy(tmp_path: Path, mode: str):
+    # I_A = 20·0.09 = 1.8, I_B = 10·0.04 = 0.4: ω = (180 − 16)/2.2 = 74.545 ccw (both);
+    # ΔE = 9320 − 1.1 ω² = 3207.27 J
+    text = CLUTCH.format(m_A="20 kg", m_B="10 kg", w_A="100 rad/s", w_B="40 rad/s")
+    report = solved(write(tmp_path, text), mode)
+    got = answers(report)
+    assert got["w"]["value"] == pytest.approx(164 / 2.2, rel=1e-9)
+    assert got["w_2"]["value"] == pytest.approx(164 / 2.2, rel=1e-9)
+    assert got["w"]["direction"] == got["w_2"]["direction"] == "ccw"
+    assert got["dE"]["value"] == pytest.approx(9320 - 1.1 * (164 / 2.2) ** 2, rel=1e-9)
+    assert holds(report)["energy lost in stage 1"] is True
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ("  pin B at O\n", "  point Q: (k_A, 0)\n  pin B at Q\n", "pin both at the same point"),
+        ("  clutch A with B\n", "  couple M on B: ccw\n  clutch A with B\n", "M on B would"),
+        ("body B: mass m_B, gyration k_B,", "body B: particle, mass m_B,", "B is a particle"),
+    ],
+)
+def test_a_clutch_off_one_axis_or_under_a_load_is_refused(tmp_path: Path, old, new, message):
+    text = CLUTCH.format(m_A="20 kg", m_B="10 kg", w_A="100 rad/s", w_B="40 rad/s")
+    text = text.replace(old, new).replace("  w_B = 40 rad/s\n", "  w_B = 40 rad/s\n  M = 5 N*m\n")
+    if "particle" in new:
+        text = text.replace("  omega B: w_B cw\n", "")
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2
+    assert message in result.output
+
+
+SKATER = """\
+problem: Skater on a pivot
+units: SI
+given:
+  m = 60 kg
+  I_1 = 3.5 kg*m^2
+  I_2 = 1.2 kg*m^2
+  w_1 = 3 rad/s
+scene:
+  point O: (0, 0)
+  body skater: mass m, inertia I_1, at (0, 0)
+  pin skater at O
+  omega skater: w_1 ccw
+  gravity
+  change skater: inertia I_2
+find: w_2 = omega_after(skater), dE = energy_lost, T_2 = T(skater, 2), H_2 = H(skater, O, 2)
+"""
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_a_skater_pulling_in_the_arms_spins_faster_and_gains_energy(tmp_path: Path, mode: str):
+    # I₁ω₁ = I₂ω₂: ω₂ = 3.5·3/1.2 = 8.75 rad/s ccw; T₂ = ½·1.2·8.75² = 45.9375 J with the
+    # new inertia; T₁ − T₂ = 15.75 − 45.9375 = −30.1875 J; H₂ = 1.2·8.75 = 10.5 = I₁ω₁
+    report = solved(write(tmp_path, SKATER), mode)
+    got = answers(report)
+    assert got["w_2"]["value"] == pytest.approx(8.75, rel=1e-9)
+    assert got["w_2"]["direction"] == "ccw"
+    assert got["T_2"]["value"] == pytest.approx(45.9375, rel=1e-9)
+    assert got["dE"]["value"] == pytest.approx(-30.1875, rel=1e-9)
+    assert got["H_2"]["value"] == pytest.approx(10.5, rel=1e-9)
+    assert report["passed"]
+
+
+def test_a_pinned_body_changing_its_inertia_with_its_weight_off_the_pin_is_refused(
+    tmp_path: Path,
+):
+    # the pin 0.1 m above G: the weight's moment about it would change H_O over the change
+    text = SKATER.replace("  point O: (0, 0)\n", "  point O: (0, r)\n").replace(
+        "  w_1 = 3 rad/s\n", "  w_1 = 3 rad/s\n  r = 0.1 m\n"
+    )
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2
+    assert "moment about the pin" in result.output
+
+
+def test_a_particle_cannot_change_its_inertia(tmp_path: Path):
+    text = SKATER.replace("body skater: mass m, inertia I_1,", "body skater: particle, mass m,")
+    text = text.replace("  pin skater at O\n  omega skater: w_1 ccw\n", "")
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2
+    assert "skater is a particle" in result.output
+    assert "spec.dyn:12:10:" in result.output  # the change line, at its body
+
+
+@settings(max_examples=5, deadline=None)
+@given(
+    m_A=st.floats(1.0, 100.0),
+    m_B=st.floats(1.0, 100.0),
+    w_A=st.floats(1.0, 300.0),
+    w_B=st.floats(0.0, 300.0),
+)
+def test_the_clutch_meets_the_formula_and_never_creates_energy(
+    tmp_path_factory: pytest.TempPathFactory, m_A: float, m_B: float, w_A: float, w_B: float
+):
+    # I_A ω_A − I_B ω_B = (I_A + I_B) ω (B turns cw); ΔE = ½ I_A I_B (ω_A + ω_B)²/(I_A + I_B) ≥ 0
+    text = CLUTCH.format(m_A=f"{m_A} kg", m_B=f"{m_B} kg", w_A=f"{w_A} rad/s", w_B=f"{w_B} rad/s")
+    got = answers(solved(write(tmp_path_factory.mktemp("clutch"), text), "numeric"))
+    I_A, I_B = m_A * 0.09, m_B * 0.04
+    omega = (I_A * w_A - I_B * w_B) / (I_A + I_B)
+    signed = got["w"]["value"] * (1 if got["w"]["direction"] != "cw" else -1)
+    assert signed == pytest.approx(omega, rel=1e-9, abs=1e-9)
+    lost = 0.5 * I_A * I_B * (w_A + w_B) ** 2 / (I_A + I_B)
+    assert got["dE"]["value"] == pytest.approx(lost, rel=1e-9)

@@ -29,6 +29,7 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.physical import NOT_NEGATIVE, POSITIVE, check_sign, check_some_mass
 
 if TYPE_CHECKING:
@@ -370,7 +371,8 @@ class Scene:
     pivots: tuple[Pivot, ...] = ()  # eccentric impacts about a fixed point
     assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
-    events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
+    # travels, impacts, clutches and changes of inertia, as written
+    events: tuple[Travel | Impact | Pivot | Clutch | Reshape, ...] = ()
     paths: Mapping[str, Path] = field(default_factory=dict)  # fixed paths, by name
 
 
@@ -842,7 +844,7 @@ def _build_scene(
     link_names = {stmt.name for stmt in spec.scene if stmt.kind == "link"}
     paths: dict[str, Path] = {}
     pivots: list[Pivot] = []
-    events: list[Travel | Impact | Pivot] = []
+    events: list[Travel | Impact | Pivot | Clutch | Reshape] = []
     movers: dict[str, Mover] = {}
     assumptions: list[sympy.core.relational.Relational] = []
     for stmt in spec.scene:
@@ -915,6 +917,8 @@ def _build_scene(
                 )
             )
             events.append(impacts[-1])
+        elif stmt.kind in ("clutch", "change"):
+            events.append(momentum_event(builder, stmt))
         elif stmt.kind == "travel":
             travels[stmt.body] = _travel(builder, stmt, link_names)
             events.append(travels[stmt.body])
@@ -1383,3 +1387,32 @@ def _load(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Load:
     return Load(
         "force", stmt.name, body.name, point, name, direction, line=stmt.line, column=stmt.column
     )
+
+
+def momentum_event(builder: _Builder, stmt: SceneStmt) -> Clutch | Reshape:
+    """``clutch A with B`` or ``change B: gyration k`` / ``inertia I`` (a rigid body's)."""
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    if stmt.kind == "clutch":
+        other = builder.body(stmt.other, stmt.line, stmt.column)
+        for rotor in (body, other):
+            if rotor.particle:
+                raise SpecError(
+                    f"{rotor.name} is a particle: a clutch locks two rotors",
+                    builder.where(stmt.line, stmt.column),
+                    hint="give each rotor an inertia (a shape, gyration or inertia) and a pin",
+                )
+        return Clutch(stmt.body, stmt.other, stmt.line, stmt.column)
+    assert stmt.value is not None
+    if body.particle:
+        raise SpecError(
+            f"{body.name} is a particle: it has no inertia of its own to change",
+            builder.where(stmt.line, stmt.column),
+            hint="give it a shape, gyration or inertia in its body line",
+        )
+    if stmt.word == "gyration":
+        k = builder.value(stmt.value, Dim(1, 0, 0), "a radius of gyration", POSITIVE)
+        I_G = from_gyration(body.mass, k)
+    else:
+        I_G = builder.value(stmt.value, Dim(2, 1, 0), "a moment of inertia", POSITIVE)
+    how = f"{stmt.word} {expr_text(stmt.value, str)}"
+    return Reshape(stmt.body, I_G, how, stmt.line, stmt.column)

@@ -267,6 +267,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     """Whether the scene is followed through stages: several travel or impact lines, an
     impact with the ground, or a find that needs the states (T, work, …)."""
     from dynsolve.derived import called_functions
+    from dynsolve.model.momentum_events import Clutch, Reshape
     from dynsolve.model.scene import GROUND, Impact
     from dynsolve.stage_finds import STAGE_FUNCTIONS
 
@@ -278,7 +279,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
     stage_functions = {*STAGE_FUNCTIONS, "V", *AVERAGE_FORCES}
-    impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
+    impacts = any(isinstance(e, Impact | Clutch | Reshape) for e in events)  # checked too
     return (
         len(events) > 1
         or ground
@@ -478,7 +479,7 @@ def _from_rest(spec: Spec, body: str) -> bool:
     no impact before its travel."""
     scene = spec.scene or ()
     moving = any(s.kind in ("velocity", "omega") and s.body == body for s in scene)
-    return not moving and not any(s.kind in ("impact", "pivot") for s in scene)
+    return not moving and not any(s.kind in ("impact", "pivot", "clutch", "change") for s in scene)
 
 
 def _stopping_distances(spec: Spec) -> list[object]:

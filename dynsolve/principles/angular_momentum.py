@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.scene import Body, Impact, Vec
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import cross, dot
@@ -246,4 +247,145 @@ def pinned_impact_checks(
             + (f"; {A} embeds (e = 0)" if embeds else "; smooth contact"),
         )
     )
+    return result
+
+
+@dataclass(frozen=True)
+class Spin:
+    """One equation of angular momentum kept about an axis, and the motion after it."""
+
+    equation: Equation
+    omega: sympy.Symbol  # the common (or new) ω after, ccw positive
+    velocities: Mapping[str, Vec]  # v_G after
+    lost: sympy.Expr  # T₁ − T₂
+    energy: sympy.Expr  # T₁
+
+
+def clutch(
+    rotors: tuple[Body, Body],
+    pin: tuple[str, Vec],
+    omegas: tuple[sympy.Expr, sympy.Expr],
+    state: int,
+) -> Spin:
+    """Two rotors on one axis (the pin) locked by a clutch: no external moment about the
+    axis, so I_A ω_A1 + I_B ω_B1 = (I_A + I_B) ω₂, each I about the axis.
+
+    >>> from dynsolve.model.scene import Body
+    >>> z = sympy.Integer(0)
+    >>> A = Body("A", sympy.Integer(2), sympy.Integer(3), (0, 0), (0, 0), "", (), {}, False,
+    ...          "", 0, 0)
+    >>> B = Body("B", sympy.Integer(2), sympy.Integer(1), (0, 0), (0, 0), "", (), {}, False,
+    ...          "", 0, 0)
+    >>> found = clutch((A, B), ("O", (0, 0)), (sympy.Integer(10), z), 2)
+    >>> sympy.solve(found.equation.residual, found.omega), found.lost.subs(found.omega, 7.5)
+    ([15/2], 37.5000000000000)
+    """
+    name, at = pin
+    inertia = []
+    for body in rotors:
+        r = (body.G[0] - at[0], body.G[1] - at[1])
+        inertia.append(body.I_G + body.mass * dot(r, r))
+    A, B = (body.name for body in rotors)
+    omega = sympy.Symbol(f"omega_{state}_{A}", real=True)
+    before = inertia[0] * omegas[0] + inertia[1] * omegas[1]
+    equation = Equation(
+        before,
+        (inertia[0] + inertia[1]) * omega,
+        "momentum",
+        1,
+        f"angular momentum of {A} and {B} about the axis {name} kept as the clutch locks them "
+        f"(no external moment about it; the clutch's moments are internal): "
+        f"I_{A} ω_{A}1 + I_{B} ω_{B}1 = (I_{A} + I_{B}) ω₂",
+    )
+    T_1 = (inertia[0] * omegas[0] ** 2 + inertia[1] * omegas[1] ** 2) / 2
+    T_2 = (inertia[0] + inertia[1]) * omega**2 / 2
+    velocities = {
+        body.name: turning(omega, (body.G[0] - at[0], body.G[1] - at[1])) for body in rotors
+    }
+    return Spin(equation, omega, velocities, tidy(T_1 - T_2), tidy(T_1))
+
+
+def reshape(
+    body: Body,
+    I_2: sympy.Expr,
+    pin: tuple[str, Vec] | None,
+    v_G: Vec,
+    omega_1: sympy.Expr,
+    state: int,
+) -> Spin:
+    """A body that changes its moment of inertia about G from I₁ to I₂ by internal forces
+    (a diver tucking, a skater pulling in the arms): H about G (free: the weight acts
+    through G) or about its pin (the pin's force acts there) kept, I₁ ω₁ = I₂ ω₂; a free
+    body's v_G is kept (the change taken as short).
+
+    >>> from dynsolve.model.scene import Body
+    >>> diver = Body("diver", sympy.Integer(70), sympy.Integer(14), (0, 0), (0, 0), "", (),
+    ...              {}, False, "", 0, 0)
+    >>> found = reshape(diver, sympy.Integer(4), None, (0, 0), sympy.Integer(2), 2)
+    >>> sympy.solve(found.equation.residual, found.omega)
+    [7]
+    """
+    name, at = pin if pin is not None else ("G", body.G)
+    r = (body.G[0] - at[0], body.G[1] - at[1])
+    I_1 = body.I_G + body.mass * dot(r, r)
+    I_2 = I_2 + body.mass * dot(r, r)
+    omega = sympy.Symbol(f"omega_{state}_{body.name}", real=True)
+    about = f"its pin {name} (the pin's force acts there)" if pin else "G (the weight acts at G)"
+    equation = Equation(
+        I_1 * omega_1,
+        I_2 * omega,
+        "momentum",
+        1,
+        f"angular momentum of {body.name} about {about} kept while internal forces change "
+        f"its inertia: I_{name}1 ω₁ = I_{name}2 ω₂",
+    )
+    after = turning(omega, r) if pin is not None else v_G
+    T_1 = body.mass * dot(v_G, v_G) / 2 + body.I_G * omega_1**2 / 2
+    T_2 = body.mass * dot(after, after) / 2 + (I_2 - body.mass * dot(r, r)) * omega**2 / 2
+    return Spin(equation, omega, {body.name: after}, tidy(T_1 - T_2), tidy(T_1))
+
+
+def spin_checks(
+    k: int,
+    event: Clutch | Reshape,
+    checks: tuple[tuple[str, sympy.Expr], ...],
+    values: Mapping[sympy.Symbol, sympy.Expr],
+) -> list[Assumption]:
+    """A clutch loses energy (T₁ − T₂ ≥ 0, checked); a change of inertia's energy is the
+    internal forces' work (shown, not checked: a diver tucking gains energy); each stated."""
+    found = dict(checks)
+    lost = real_value(found["lost"], values)
+    energy = real_value(found["energy"], values)
+    result: list[Assumption] = []
+    if isinstance(event, Clutch):
+        if lost is not None:
+            scale = max(abs(energy or 0.0), 1e-300)
+            holds = lost >= -1e-9 * scale
+            shown = 0.0 if abs(lost) <= 1e-9 * scale else lost
+            result.append(
+                Assumption(
+                    f"energy lost in stage {k}",
+                    holds,
+                    f"T{k} − T{k + 1} = {shown:.4g}"
+                    + (" ≥ 0 (the clutch slips until they turn as one)" if holds else " < 0"),
+                )
+            )
+        result.append(
+            Assumption(
+                f"clutch in stage {k}",
+                True,
+                f"stated: {event.body} and {event.other} turn on one axis and no external "
+                "moment about it acts while the clutch engages (the bearings are smooth)",
+            )
+        )
+        return result
+    if lost is not None:
+        result.append(
+            Assumption(
+                f"change of inertia in stage {k}",
+                True,
+                f"stated: internal forces only; T{k + 1} − T{k} = {-lost:.4g} is their work "
+                f"(not checked: {event.body} may gain or lose energy)",
+            )
+        )
     return result

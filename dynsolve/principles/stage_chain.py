@@ -29,6 +29,7 @@ from dataclasses import dataclass, replace
 import sympy
 from sympy.core.assumptions import check_assumptions
 
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.scene import (
     Body,
     CordState,
@@ -142,7 +143,8 @@ def chain_formulation(
         chain.advance(step)
         if stage is not stages[-1]:  # what it finds is read by the stages after it only
             chain.presolve(step)
-        states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
+        inertias = {n: b.I_G for n, b in chain.scene.bodies.items()}
+        states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas), inertias))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         if stage.number + 1 in instants:
             first_stage = stage
@@ -173,6 +175,12 @@ def chain_formulation(
             r.bodies[-1]: states[r.stage.number].omegas[r.bodies[-1]]
             for r in records
             if isinstance(r.stage.event, Pivot) or r.pin
+        }
+        | {
+            name: states[r.stage.number].omegas[name]
+            for r in records
+            if isinstance(r.stage.event, Clutch | Reshape)
+            for name in r.bodies
         },
         speeds=_after_travels(
             records, states, lambda s, n: named.get((s.number, n)) or _speed(s, n)
@@ -252,6 +260,8 @@ class _Chain:
         event = stage.event
         if isinstance(event, Impact):
             return self.impact(stage, event)
+        if isinstance(event, Clutch | Reshape):
+            return self.spin(stage, event)
         followed = event.body in self.places and getattr(event, "kind", "") == "until"
         if event.body in self.unfollowed and not followed:  # a bob's place is followed
             raise StageError(
@@ -699,6 +709,80 @@ class _Chain:
             found.velocities,
             {B: found.omega},
             StageRecord(stage, (A, B), pin=pin.name, pinned=checks),
+            scene,
+        )
+
+    def spin(self, stage: Stage, event: Clutch | Reshape) -> _Step:
+        """A clutch locking two rotors on one axis, or a body changing its inertia: angular
+        momentum about the axis (the pin, or G of a free body) kept."""
+        from dynsolve.principles.angular_momentum import clutch, reshape
+
+        scene = self.scene
+        names = (event.body, event.other) if isinstance(event, Clutch) else (event.body,)
+        moved = sorted(set(names) & self.unfollowed)
+        if moved:
+            raise StageError(
+                stage,
+                f"{stage.title}: where {' and '.join(moved)} is after an earlier stage is not "
+                "followed; describe this part as a scene of its own",
+            )
+        for name in names:
+            held = [s.name for s in scene.supports if s.body == name and s.kind != "pin"]
+            held += [k.name for k in scene.links if name in (k.body, k.other)]
+            held += [c.name for c in scene.cords if name in (c.body, c.other)]
+            held += [s.name for s in scene.springs if name in (s.body, s.other)]
+            held += [load.name for load in scene.loads if load.body == name]
+            if held:
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {', '.join(held)} on {name} would change its angular "
+                    "momentum; this stage is supported with a pin the only support and no load",
+                )
+        pins = [self.pin_of(name) for name in names]
+        if isinstance(event, Clutch):
+            A, B = pins
+            if (
+                A is None
+                or B is None
+                or tidy(A.point[0] - B.point[0]) != 0
+                or (tidy(A.point[1] - B.point[1]) != 0)
+            ):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: a clutch locks two rotors on one axis: pin both at the "
+                    "same point ('pin A at O', 'pin B at O')",
+                )
+            bodies = (scene.bodies[event.body], scene.bodies[event.other])
+            w = (self.omegas[event.body], self.omegas[event.other])
+            found = clutch(bodies, (A.name, A.point), w, stage.number + 1)
+            omegas = dict.fromkeys(names, found.omega)
+        else:
+            (pin,) = pins
+            if pin is not None and scene.gravity is not None:
+                G = scene.bodies[event.body].G
+                if tidy(G[0] - pin.point[0]) != 0 or tidy(G[1] - pin.point[1]) != 0:
+                    raise StageError(
+                        stage,
+                        f"{stage.title}: the weight of {event.body} has a moment about the pin "
+                        f"{pin.name} while it changes its inertia",
+                    )
+            body = scene.bodies[event.body]
+            place = (pin.name, pin.point) if pin is not None else None
+            found = reshape(
+                body, event.I_G, place, self.velocities[event.body], self.omegas[event.body],
+                stage.number + 1,
+            )  # fmt: skip
+            omegas = {event.body: found.omega}
+            scene = replace(
+                scene, bodies={**scene.bodies, event.body: replace(body, I_G=event.I_G)}
+            )
+        checks = (("lost", found.lost), ("energy", found.energy))
+        return _Step(
+            (found.equation,),
+            {found.omega: Dim(0, 0, -1)},
+            found.velocities,
+            omegas,
+            StageRecord(stage, names, pinned=checks),
             scene,
         )
 
@@ -1155,6 +1239,11 @@ def chain_assumptions(
             continue
         if isinstance(event, Travel) and event.kind == "until":
             checks += _event_checks(record, values, "")
+            continue
+        if isinstance(event, Clutch | Reshape):
+            from dynsolve.principles.angular_momentum import spin_checks
+
+            checks += spin_checks(k, event, record.pinned, values)
             continue
         if isinstance(event, Impact) and record.pin:
             from dynsolve.principles.angular_momentum import pinned_impact_checks

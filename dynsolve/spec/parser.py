@@ -939,6 +939,18 @@ class _Builder(Transformer_NonRecursive):
             "impact", body, body=str(body), other=str(other), value=restitution, direction=line
         )
 
+    def clutch_stmt(self, c: list[Token]) -> SceneStmt:
+        body, other = c
+        return self._stmt("clutch", body, body=str(body), other=str(other))
+
+    def change_gyration_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value = c
+        return self._stmt("change", body, body=str(body), value=value, word="gyration")
+
+    def change_inertia_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value = c
+        return self._stmt("change", body, body=str(body), value=value, word="inertia")
+
     def path_stmt(self, c: list[Any]) -> SceneStmt:
         name, lhs, relation, rhs = c
         if str(relation) != "=":
