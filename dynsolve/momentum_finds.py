@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy
 
 from dynsolve.errors import Position, SpecError
-from dynsolve.model.scene import Scene, Vec
+from dynsolve.model.scene import Scene, Travel, Vec
 from dynsolve.principles.angular_momentum import (
     ANGULAR_MOMENTUM,
     LINEAR_MOMENTUM,
@@ -75,6 +75,16 @@ def momentum_quantity(
     if function == "p":
         return "vector", None, linear_momentum(model.mass, v), f"p = m v_G of {body} {when}"
     name, P = point if point is not None else ("G", model.G)
+    k = int(state) if state is not None else len(formulation.states)
+    if point is not None and any(
+        isinstance(r.stage.event, Travel) for r in formulation.stages[: max(k - 1, 0)]
+    ):
+        raise SpecError(
+            f"H({body}, {name}) at state {k} needs where {body} is there, which is not "
+            "followed after a travel",
+            where,
+            hint=f"ask H({body}) about its mass centre, or at a state before the travel",
+        )
     H = angular_momentum(model.mass, I_G, v, sympy.Integer(0) + omega, model.G, P)
     how = "I_G ω" if point is None else f"I_G ω + r_G/{name} × m v_G"
     if model.particle:

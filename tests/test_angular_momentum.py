@@ -347,10 +347,10 @@ def test_a_particle_cannot_change_its_inertia(tmp_path: Path):
     m_A=st.floats(1.0, 100.0),
     m_B=st.floats(1.0, 100.0),
     w_A=st.floats(1.0, 300.0),
-    w_B=st.floats(0.0, 300.0),
+    w_B=st.integers(0, 300),
 )
 def test_the_clutch_meets_the_formula_and_never_creates_energy(
-    tmp_path_factory: pytest.TempPathFactory, m_A: float, m_B: float, w_A: float, w_B: float
+    tmp_path_factory: pytest.TempPathFactory, m_A: float, m_B: float, w_A: float, w_B: int
 ):
     # I_A ω_A − I_B ω_B = (I_A + I_B) ω (B turns cw); ΔE = ½ I_A I_B (ω_A + ω_B)²/(I_A + I_B) ≥ 0
     text = CLUTCH.format(m_A=f"{m_A} kg", m_B=f"{m_B} kg", w_A=f"{w_A} rad/s", w_B=f"{w_B} rad/s")
@@ -361,3 +361,45 @@ def test_the_clutch_meets_the_formula_and_never_creates_energy(
     assert signed == pytest.approx(omega, rel=1e-9, abs=1e-9)
     lost = 0.5 * I_A * I_B * (w_A + w_B) ** 2 / (I_A + I_B)
     assert got["dE"]["value"] == pytest.approx(lost, rel=1e-9)
+
+
+def test_h_about_a_point_after_a_travel_is_refused_not_taken_from_the_old_place(tmp_path: Path):
+    # a ball dropped by h: its G at state 2 is h lower, which H(ball, O, 2) would need
+    text = """\
+problem: Dropped ball
+units: SI
+given:
+  m = 1 kg
+  h = 2 m
+scene:
+  point O: (h, 0)
+  body ball: particle, mass m, at (0, h)
+  gravity
+  travel ball: by h, down
+find: H = H(ball, O, 2)
+"""
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2
+    assert "not followed after a travel" in result.output
+
+
+def test_h_about_g_after_a_travel_is_the_spin_alone(tmp_path: Path):
+    # a particle has no H about its own G: 0 after its fall; H(ball, O, 1) = 0 (at rest)
+    text = """\
+problem: Dropped ball
+units: SI
+given:
+  m = 1 kg
+  h = 2 m
+scene:
+  point O: (h, 0)
+  body ball: particle, mass m, at (0, h)
+  gravity
+  travel ball: by h, down
+find: H_1 = H(ball, O, 1), p_2 = p(ball, 2)
+"""
+    got = answers(solved(write(tmp_path, text)))
+    assert got["H_1"]["value"] == pytest.approx(0, abs=1e-12)
+    # p₂ = m √(2 g h) = √(2·9.81·2) = 6.264184 kg·m/s down
+    assert got["p_2"]["value"] == pytest.approx(math.sqrt(2 * 9.81 * 2), rel=1e-9)
+    assert got["p_2"]["direction"] == "down"

@@ -278,6 +278,13 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
+    at_state |= any(  # H(B, P, k), p(B, k): a momentum at a numbered state
+        i.ref
+        and i.ref.function in MOMENTUM_FUNCTIONS
+        and len(i.ref.args) > 1
+        and str(i.ref.args[-1]).isdigit()
+        for i in spec.finds
+    )
     stage_functions = {*STAGE_FUNCTIONS, "V", *AVERAGE_FORCES}
     impacts = any(isinstance(e, Impact | Clutch | Reshape) for e in events)  # checked too
     return (

@@ -754,7 +754,8 @@ class _Chain:
                 )
             bodies = (scene.bodies[event.body], scene.bodies[event.other])
             w = (self.omegas[event.body], self.omegas[event.other])
-            found = clutch(bodies, (A.name, A.point), w, stage.number + 1)
+            axis = scene.point_names.get(A.point, A.name)  # O, not the pins' O_A and O_B
+            found = clutch(bodies, (axis, A.point), w, stage.number + 1)
             omegas = dict.fromkeys(names, found.omega)
         else:
             (pin,) = pins
