@@ -403,3 +403,21 @@ find: H_1 = H(ball, O, 1), p_2 = p(ball, 2)
     # p₂ = m √(2 g h) = √(2·9.81·2) = 6.264184 kg·m/s down
     assert got["p_2"]["value"] == pytest.approx(math.sqrt(2 * 9.81 * 2), rel=1e-9)
     assert got["p_2"]["direction"] == "down"
+
+
+def test_an_embedding_bullet_may_leave_the_line_out(tmp_path: Path):
+    # the same bullet into the disk rim as above, struck along its velocity: 10/1.2625 cw
+    text = DISK.format(m="50 g", v="400 m/s", M="10 kg", r="0.5 m", sense="right")
+    text = text.replace("e 0, line right", "e 0")
+    got = answers(solved(write(tmp_path, text)))
+    assert got["w"]["value"] == pytest.approx(10 / 1.2625, rel=1e-9)
+    assert got["w"]["direction"] == "cw"
+
+
+def test_a_rebound_without_its_line_is_refused_at_the_impact(tmp_path: Path):
+    # with e > 0 the line of impact is the contact's normal: it is not guessed
+    text = ROD.format(impact="impact ball with rod: e e")
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2
+    assert "needs its line of impact" in result.output
+    assert "spec.dyn:16:10:" in result.output

@@ -840,6 +840,7 @@ def _build_scene(
     springs: list[Spring] = []
     links: list[Link] = []
     impacts: list[Impact] = []
+    headings: dict[str, Vec] = {}  # each given velocity's direction
     travels: dict[str, Travel] = {}
     link_names = {stmt.name for stmt in spec.scene if stmt.kind == "link"}
     paths: dict[str, Path] = {}
@@ -897,7 +898,7 @@ def _build_scene(
             builder.body(stmt.body, stmt.line, stmt.column)
             if stmt.other != GROUND or GROUND in builder.bodies:
                 builder.body(stmt.other, stmt.line, stmt.column)
-            assert stmt.value is not None and stmt.direction is not None
+            assert stmt.value is not None
             e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
             numeric = real_value(e, builder.given_values)
             if numeric is not None and not 0 <= numeric <= 1:
@@ -911,7 +912,7 @@ def _build_scene(
                     stmt.body,
                     stmt.other,
                     e,
-                    builder.direction(stmt.direction),
+                    builder.direction(stmt.direction) if stmt.direction else _UNSET,
                     stmt.line,
                     stmt.column,
                 )
@@ -928,6 +929,7 @@ def _build_scene(
             speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
             direction = builder.direction(stmt.direction)
             velocities[stmt.body] = (speed * direction[0], speed * direction[1])
+            headings[stmt.body] = direction
         elif stmt.kind == "motion":
             builder.body(stmt.body, stmt.line, stmt.column)
             motions[stmt.body] = stmt.word
@@ -942,6 +944,11 @@ def _build_scene(
                 supports.append(_on_path(builder, movers[stmt.name]))
         elif stmt.kind == "assume":
             assumptions.append(_assumption(builder, stmt))
+    lines = {
+        id(i): embedded_line(builder, i, supports, headings) for i in impacts if i.line is _UNSET
+    }
+    impacts = [replace(i, line=lines[id(i)]) if id(i) in lines else i for i in impacts]
+    events = [replace(e, line=lines[id(e)]) if id(e) in lines else e for e in events]  # type: ignore[type-var]
     names = {v: k for k, v in builder.fixed.items()}
     for body in builder.bodies.values():
         names.update({v: k for k, v in body.points.items()})
@@ -1416,3 +1423,23 @@ def momentum_event(builder: _Builder, stmt: SceneStmt) -> Clutch | Reshape:
         I_G = builder.value(stmt.value, Dim(2, 1, 0), "a moment of inertia", POSITIVE)
     how = f"{stmt.word} {expr_text(stmt.value, str)}"
     return Reshape(stmt.body, I_G, how, stmt.line, stmt.column)
+
+
+_UNSET: Vec = (sympy.nan, sympy.nan)  # an impact written without its line, until resolved
+
+
+def embedded_line(
+    builder: _Builder, impact: Impact, supports: list[Support], headings: Mapping[str, Vec]
+) -> Vec:
+    """The line of an impact written without one: a particle given its velocity that
+    embeds (e 0) in a pinned body strikes along that velocity; anything else needs it."""
+    pinned = any(s.body == impact.other and s.kind == "pin" for s in supports)
+    plastic = real_value(impact.e, builder.given_values) == 0
+    if pinned and plastic and impact.body in headings:
+        return headings[impact.body]
+    raise SpecError(
+        "this impact needs its line of impact",
+        builder.where(impact.stmt_line, impact.column),
+        hint="add ', line DIR' (from the first body toward the second); it may be left out "
+        "only for a particle given its velocity that embeds (e 0) in a pinned body",
+    )

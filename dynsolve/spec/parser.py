@@ -934,9 +934,14 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
-        body, other, restitution, line = c
+        body, other, restitution, *line = c
         return self._stmt(
-            "impact", body, body=str(body), other=str(other), value=restitution, direction=line
+            "impact",
+            body,
+            body=str(body),
+            other=str(other),
+            value=restitution,
+            direction=line[0] if line else None,
         )
 
     def clutch_stmt(self, c: list[Token]) -> SceneStmt:
