@@ -215,8 +215,9 @@ def rebound_formulation(scene: Scene) -> Formulation:
     ]  # fmt: skip
     equations.append(
         Equation(
-            I_G * w1 + J * (r[0] * push[1] - r[1] * push[0]),
-            I_G * w2,
+            angular_momentum(m, I_G, v1, w1, body.G, body.G)
+            + J * (r[0] * push[1] - r[1] * push[0]),
+            angular_momentum(m, I_G, v2, w2, body.G, body.G),
             "eq. 3",
             3,
             f"angular impulse and momentum about G: I_G ω₁ + r_{point}/G × J n = I_G ω₂ ({name})",
