@@ -421,3 +421,15 @@ def test_a_rebound_without_its_line_is_refused_at_the_impact(tmp_path: Path):
     assert result.exit_code == 2
     assert "needs its line of impact" in result.output
     assert "spec.dyn:16:10:" in result.output
+
+
+def test_a_bullet_drawn_away_from_the_disk_fails_the_placement_check(tmp_path: Path):
+    # drawn 4 r to the left on its line: H before is the same, but m r_A² after would be
+    # 17 r² instead of r², a wrong answer; |r_A| = √17·0.5 = 2.06 m > the rim's 0.5 m
+    text = DISK.format(m="50 g", v="400 m/s", M="10 kg", r="0.5 m", sense="right")
+    text = text.replace("at (0, r)", "at (-4*r, r)")
+    result = run("solve", write(tmp_path, text), "-f", "json")
+    assert result.exit_code == 1
+    report = json.loads(result.stdout)
+    assert holds(report)["bullet on disk in stage 1"] is False
+    assert not report["passed"]

@@ -85,6 +85,7 @@ class PinnedImpact:
     separation: sympy.Expr  # (v_P2 − v_A2)·n after it: ≥ 0
     lost: sympy.Expr  # T₁ − T₂ of the two: ≥ 0
     energy: sympy.Expr  # T₁ of the two, the scale of ``lost``
+    reach: sympy.Expr | None  # how far the body reaches from the pin less |r_A/O|: ≥ 0
 
 
 def pinned_impact(
@@ -176,7 +177,24 @@ def pinned_impact(
         tidy(dot((v_P2[0] - v_A2[0], v_P2[1] - v_A2[1]), n)),
         tidy(T_1 - T_2),
         tidy(T_1),
+        reach(body, r_G, r_A),
     )
+
+
+def reach(body: Body, r_G: Vec, r_A: Vec) -> sympy.Expr | None:
+    """|r_G/O| + the body's half-size less |r_A/O|: ≥ 0 when the struck point A lies within
+    the body's reach from the pin (a rod's half-length, a round body's radius); None for a
+    body given only its inertia (no size to check against).
+
+    >>> rod = Body("rod", 1, 1, (0, -1), (0, -1), "rod", (sympy.Integer(2),), {}, False, "",
+    ...            0, 0)
+    >>> reach(rod, (0, -1), (0, -3))  # the tip is 2 from the pin; a point 3 away is not on it
+    -1
+    """
+    size = body.sizes[0] / 2 if body.shape == "rod" and body.sizes else body.radius
+    if size is None:
+        return None
+    return tidy(sympy.sqrt(dot(r_G, r_G)) + size - sympy.sqrt(dot(r_A, r_A)))
 
 
 def pinned_impact_checks(
@@ -236,6 +254,26 @@ def pinned_impact_checks(
                 holds,
                 f"T{k} − T{k + 1} = {0.0 if abs(lost) <= 1e-9 * scale else lost:.4g}"
                 + (" ≥ 0" if holds else " < 0: the impact would create energy"),
+            )
+        )
+    within = value("reach")
+    if "reach" in found and within is not None:
+        inside = within >= -1e-9 * max(abs(within), 1.0)
+        result.append(
+            Assumption(
+                f"{A} on {B} in stage {k}",
+                inside,
+                f"{A} strikes {B} where it is placed, within {B}'s reach from the pin {pin}: "
+                + ("|r_G| + half-size − |r_A| = " + f"{max(within, 0.0):.4g} ≥ 0" if inside else
+                   f"{-within:.4g} beyond it: place {A} where it strikes {B}"),
+            )
+        )  # fmt: skip
+    else:
+        result.append(
+            Assumption(
+                f"{A} on {B} in stage {k}",
+                True,
+                f"stated, not checked ({B} has no size): {A} is placed where it strikes {B}",
             )
         )
     result.append(

@@ -702,7 +702,7 @@ class _Chain:
             ("separation", found.separation),
             ("lost", found.lost),
             ("energy", found.energy),
-        )
+        ) + ((("reach", found.reach),) if found.reach is not None else ())
         return _Step(
             found.equations,
             found.unknowns,
