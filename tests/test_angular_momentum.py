@@ -433,3 +433,21 @@ def test_a_bullet_drawn_away_from_the_disk_fails_the_placement_check(tmp_path: P
     report = json.loads(result.stdout)
     assert holds(report)["bullet on disk in stage 1"] is False
     assert not report["passed"]
+
+
+def test_a_particle_carrying_another_into_a_pinned_body_is_refused(tmp_path: Path):
+    # after the bullet embeds in the block they move as one (masses added): the pinned impact
+    # would count the block alone, so it is refused with its line
+    text = ROD.format(impact="impact bullet with ball: e 0, line right")
+    text = text.replace(
+        "  body ball: particle, mass m, at (0, -L)\n",
+        "  body ball: particle, mass m, at (0, -L)\n  body bullet: particle, mass m, at (-L, -L)\n",
+    ).replace("velocity ball: v_0, right", "velocity bullet: v_0, right")
+    text = text.replace("find:", "  impact ball with rod: e 0, line right\nfind:")
+    text = text.replace(
+        "\nfind: w = omega_after(rod), v = v_after(ball), dE = energy_lost",
+        "\nfind: w = omega_after(rod)",
+    )
+    result = run("solve", write(tmp_path, text))
+    assert result.exit_code == 2, result.output
+    assert "moves with bullet since a plastic impact" in result.output

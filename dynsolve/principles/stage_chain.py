@@ -672,6 +672,13 @@ class _Chain:
                 "followed (only a particle's position is); describe the impact as a scene of "
                 "its own, from the motion just before it",
             )
+        riders = sorted(self.together[A] - {A})
+        if riders:
+            raise StageError(
+                stage,
+                f"{stage.title}: {A} moves with {', '.join(riders)} since a plastic impact; "
+                "describe the particle that strikes as one body",
+            )
         held = [s.name for s in scene.supports if s.body == A]
         held += [k.name for k in scene.links if A in (k.body, k.other)]
         held += [s.name for s in scene.supports if s.body == B and s is not pin]
