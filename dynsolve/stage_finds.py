@@ -27,6 +27,7 @@ from typing import Any
 import sympy
 
 from dynsolve.errors import Position, SpecError
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.scene import Impact, Pivot, Scene, Travel
 from dynsolve.model.stages import StageRecord, State
 from dynsolve.modes.scene_mode import _body
@@ -95,7 +96,8 @@ def kinetic_energy(scene: Scene, state: State, bodies: tuple[str, ...]) -> sympy
     for name in bodies:
         body = scene.bodies[name]
         v, w = state.velocities[name], state.omegas.get(name, 0)
-        total += body.mass * dot(v, v) / 2 + body.I_G * w**2 / 2
+        I_G = state.inertias.get(name, body.I_G)  # a change of inertia in a stage before
+        total += body.mass * dot(v, v) / 2 + I_G * w**2 / 2
     return tidy(total)
 
 
@@ -145,10 +147,10 @@ def _work(args: tuple[str, ...], scene: Scene, f: Formulation, where: Position) 
 
 
 def _impact_stage(args: tuple[str, ...], f: Formulation, where: Position) -> StageRecord:
-    impacts = [r for r in f.stages if isinstance(r.stage.event, Impact | Pivot)]
+    impacts = [r for r in f.stages if isinstance(r.stage.event, Impact | Pivot | Clutch | Reshape)]
     if args:
         record = _stage(args[-1], f, where)
-        if not isinstance(record.stage.event, Impact | Pivot):
+        if not isinstance(record.stage.event, Impact | Pivot | Clutch | Reshape):
             raise SpecError(
                 f"stage {args[-1]} is not an impact",
                 where,

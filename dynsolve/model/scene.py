@@ -29,6 +29,7 @@ from dynsolve.dimensions import check_dimensions, constant_value
 from dynsolve.errors import DimensionError, Position, SpecError
 from dynsolve.expressions import to_sympy
 from dynsolve.model.inertia import Part, composite, from_gyration, inertia_about_G, to_G
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.physical import NOT_NEGATIVE, POSITIVE, check_sign, check_some_mass
 
 if TYPE_CHECKING:
@@ -382,7 +383,8 @@ class Scene:
     pivots: tuple[Pivot, ...] = ()  # eccentric impacts about a fixed point
     assumptions: tuple[sympy.core.relational.Relational, ...] = ()  # e.g. a > b
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)  # given values
-    events: tuple[Travel | Impact | Pivot, ...] = ()  # travels and impacts, as written
+    # travels, impacts, clutches and changes of inertia, as written
+    events: tuple[Travel | Impact | Pivot | Clutch | Reshape, ...] = ()
     paths: Mapping[str, Path] = field(default_factory=dict)  # fixed paths, by name
     torsions: tuple[TorsionSpring, ...] = ()  # torsion springs to the ground
 
@@ -852,11 +854,12 @@ def _build_scene(
     torsions: list[TorsionSpring] = []
     links: list[Link] = []
     impacts: list[Impact] = []
+    headings: dict[str, Vec] = {}  # each given velocity's direction
     travels: dict[str, Travel] = {}
     link_names = {stmt.name for stmt in spec.scene if stmt.kind == "link"}
     paths: dict[str, Path] = {}
     pivots: list[Pivot] = []
-    events: list[Travel | Impact | Pivot] = []
+    events: list[Travel | Impact | Pivot | Clutch | Reshape] = []
     movers: dict[str, Mover] = {}
     assumptions: list[sympy.core.relational.Relational] = []
     for stmt in spec.scene:
@@ -911,7 +914,7 @@ def _build_scene(
             builder.body(stmt.body, stmt.line, stmt.column)
             if stmt.other != GROUND or GROUND in builder.bodies:
                 builder.body(stmt.other, stmt.line, stmt.column)
-            assert stmt.value is not None and stmt.direction is not None
+            assert stmt.value is not None
             e = builder.value(stmt.value, Dim(), "a coefficient of restitution")
             numeric = real_value(e, builder.given_values)
             if numeric is not None and not 0 <= numeric <= 1:
@@ -925,12 +928,14 @@ def _build_scene(
                     stmt.body,
                     stmt.other,
                     e,
-                    builder.direction(stmt.direction),
+                    builder.direction(stmt.direction) if stmt.direction else _UNSET,
                     stmt.line,
                     stmt.column,
                 )
             )
             events.append(impacts[-1])
+        elif stmt.kind in ("clutch", "change"):
+            events.append(momentum_event(builder, stmt))
         elif stmt.kind == "travel":
             travels[stmt.body] = _travel(builder, stmt, link_names)
             events.append(travels[stmt.body])
@@ -940,6 +945,7 @@ def _build_scene(
             speed = builder.value(stmt.value, Dim(1, 0, -1), "a speed")
             direction = builder.direction(stmt.direction)
             velocities[stmt.body] = (speed * direction[0], speed * direction[1])
+            headings[stmt.body] = direction
         elif stmt.kind == "motion":
             builder.body(stmt.body, stmt.line, stmt.column)
             motions[stmt.body] = stmt.word
@@ -954,6 +960,11 @@ def _build_scene(
                 supports.append(_on_path(builder, movers[stmt.name]))
         elif stmt.kind == "assume":
             assumptions.append(_assumption(builder, stmt))
+    lines = {
+        id(i): embedded_line(builder, i, supports, headings) for i in impacts if i.line is _UNSET
+    }
+    impacts = [replace(i, line=lines[id(i)]) if id(i) in lines else i for i in impacts]
+    events = [replace(e, line=lines[id(e)]) if id(e) in lines else e for e in events]  # type: ignore[type-var]
     names = {v: k for k, v in builder.fixed.items()}
     for body in builder.bodies.values():
         names.update({v: k for k, v in body.points.items()})
@@ -1427,4 +1438,53 @@ def _load(builder: _Builder, stmt: SceneStmt, links: set[str]) -> Load:
     direction = builder.direction(stmt.direction, point)
     return Load(
         "force", stmt.name, body.name, point, name, direction, line=stmt.line, column=stmt.column
+    )
+
+
+def momentum_event(builder: _Builder, stmt: SceneStmt) -> Clutch | Reshape:
+    """``clutch A with B`` or ``change B: gyration k`` / ``inertia I`` (a rigid body's)."""
+    body = builder.body(stmt.body, stmt.line, stmt.column)
+    if stmt.kind == "clutch":
+        other = builder.body(stmt.other, stmt.line, stmt.column)
+        for rotor in (body, other):
+            if rotor.particle:
+                raise SpecError(
+                    f"{rotor.name} is a particle: a clutch locks two rotors",
+                    builder.where(stmt.line, stmt.column),
+                    hint="give each rotor an inertia (a shape, gyration or inertia) and a pin",
+                )
+        return Clutch(stmt.body, stmt.other, stmt.line, stmt.column)
+    assert stmt.value is not None
+    if body.particle:
+        raise SpecError(
+            f"{body.name} is a particle: it has no inertia of its own to change",
+            builder.where(stmt.line, stmt.column),
+            hint="give it a shape, gyration or inertia in its body line",
+        )
+    if stmt.word == "gyration":
+        k = builder.value(stmt.value, Dim(1, 0, 0), "a radius of gyration", POSITIVE)
+        I_G = from_gyration(body.mass, k)
+    else:
+        I_G = builder.value(stmt.value, Dim(2, 1, 0), "a moment of inertia", POSITIVE)
+    how = f"{stmt.word} {expr_text(stmt.value, str)}"
+    return Reshape(stmt.body, I_G, how, stmt.line, stmt.column)
+
+
+_UNSET: Vec = (sympy.nan, sympy.nan)  # an impact written without its line, until resolved
+
+
+def embedded_line(
+    builder: _Builder, impact: Impact, supports: list[Support], headings: Mapping[str, Vec]
+) -> Vec:
+    """The line of an impact written without one: a particle given its velocity that
+    embeds (e 0) in a pinned body strikes along that velocity; anything else needs it."""
+    pinned = any(s.body == impact.other and s.kind == "pin" for s in supports)
+    plastic = real_value(impact.e, builder.given_values) == 0
+    if pinned and plastic and impact.body in headings:
+        return headings[impact.body]
+    raise SpecError(
+        "this impact needs its line of impact",
+        builder.where(impact.stmt_line, impact.column),
+        hint="add ', line DIR' (from the first body toward the second); it may be left out "
+        "only for a particle given its velocity that embeds (e 0) in a pinned body",
     )

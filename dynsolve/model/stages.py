@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.scene import Impact, Pivot, Scene, Travel, Vec
 
 
@@ -29,7 +30,7 @@ class Stage:
     """One event between two numbered states."""
 
     number: int  # stage k runs from state k to state k + 1
-    event: Travel | Impact | Pivot
+    event: Travel | Impact | Pivot | Clutch | Reshape
 
     @property
     def principle(self) -> str:
@@ -37,6 +38,8 @@ class Stage:
             return "impulse and momentum" if self.event.kind == "for" else "work and energy"
         if isinstance(self.event, Pivot):
             return "angular momentum about the struck point"
+        if isinstance(self.event, Clutch | Reshape):
+            return "angular momentum"
         return "impact"
 
     @property
@@ -46,6 +49,8 @@ class Stage:
             return f"{event.body} strikes {'the ' if event.other == 'ground' else ''}{event.other}"
         if isinstance(event, Pivot):
             return f"{event.body} strikes {event.name} and turns about it"
+        if isinstance(event, Clutch | Reshape):
+            return event.what
         how = {
             "to": "to its position",
             "turns": "turns",
@@ -72,6 +77,7 @@ class State:
     number: int
     velocities: Mapping[str, Vec]
     omegas: Mapping[str, sympy.Expr]
+    inertias: Mapping[str, sympy.Expr] = field(default_factory=dict)  # I_G changed by a stage
 
 
 @dataclass(frozen=True)
@@ -85,6 +91,8 @@ class StageRecord:
     stops: bool = False  # a travel that ends at rest
     start_along: sympy.Expr | None = None  # v_G·Δr at its start (a lone particle's travel)
     approach: sympy.Expr | None = None  # an impact's (v_A − v_B)·n just before it
+    pin: str = ""  # a particle's impact on a body turning about this pin (H about it kept)
+    pinned: tuple[tuple[str, sympy.Expr], ...] = ()  # its checks: approach, separation, lost
     scene: Scene | None = None  # a travel's moving part, from its start state (simulation)
     slides: tuple[Slide, ...] = ()  # an interval's sliding contacts
     normals: tuple[tuple[str, sympy.Expr], ...] = ()  # an interval's average normal forces
@@ -107,6 +115,6 @@ class Slide:
     guessed: bool = False  # the sense was not known before solving (assumed, then checked)
 
 
-def stages_of(events: tuple[Travel | Impact | Pivot, ...]) -> tuple[Stage, ...]:
+def stages_of(events: tuple[Travel | Impact | Pivot | Clutch | Reshape, ...]) -> tuple[Stage, ...]:
     """The events numbered as stages, in the order they were written."""
     return tuple(Stage(k, event) for k, event in enumerate(events, start=1))

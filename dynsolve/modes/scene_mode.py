@@ -21,6 +21,7 @@ from dynsolve.format import quantity as format_quantity
 from dynsolve.model.inertia import composite, parallel_axis
 from dynsolve.model.scene import Body, Load, Path, Scene, Support, Vec, build_scene
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
+from dynsolve.momentum_finds import MOMENTUM_FUNCTIONS, momentum_dimension, momentum_quantity
 from dynsolve.names import latex_name, pretty
 from dynsolve.numbers import light_tidying, real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, dot, formulate
@@ -274,6 +275,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     """Whether the scene is followed through stages: several travel or impact lines, an
     impact with the ground, or a find that needs the states (T, work, …)."""
     from dynsolve.derived import called_functions
+    from dynsolve.model.momentum_events import Clutch, Reshape
     from dynsolve.model.scene import GROUND, Impact
     from dynsolve.stage_finds import STAGE_FUNCTIONS
 
@@ -284,8 +286,15 @@ def _staged(scene: Scene, spec: Spec) -> bool:
     asked = {item.ref.function for item in spec.finds if item.ref is not None}
     asked |= called_functions(spec)
     at_state = any(i.ref and i.ref.function == "speed" and len(i.ref.args) == 2 for i in spec.finds)
+    at_state |= any(  # H(B, P, k), p(B, k): a momentum at a numbered state
+        i.ref
+        and i.ref.function in MOMENTUM_FUNCTIONS
+        and len(i.ref.args) > 1
+        and str(i.ref.args[-1]).isdigit()
+        for i in spec.finds
+    )
     stage_functions = {*STAGE_FUNCTIONS, "V", *AVERAGE_FORCES}
-    impacts = any(isinstance(e, Impact) for e in events)  # its approach is checked too
+    impacts = any(isinstance(e, Impact | Clutch | Reshape) for e in events)  # checked too
     return (
         len(events) > 1
         or ground
@@ -298,7 +307,7 @@ def _staged(scene: Scene, spec: Spec) -> bool:
 _NOT_REACTIONS = frozenset(
     {"T", "V", "work", "energy_lost", "impulse", "F_avg", "F_net_avg", "power", "speed", "omega2"}
     | {"v_after", "omega_after", "distance", "angle", "height", "m", "I", "alpha", "omega"}
-    | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts"}
+    | {"a_G", "a", "trial", "steepest", "tips", "slips", "slack", "lifts", "H", "p"}
     | {"omega_n", "f_n", "period", "for_period"}
 )
 
@@ -486,7 +495,7 @@ def _from_rest(spec: Spec, body: str) -> bool:
     no impact before its travel."""
     scene = spec.scene or ()
     moving = any(s.kind in ("velocity", "omega") and s.body == body for s in scene)
-    return not moving and not any(s.kind in ("impact", "pivot") for s in scene)
+    return not moving and not any(s.kind in ("impact", "pivot", "clutch", "change") for s in scene)
 
 
 def _stopping_distances(spec: Spec) -> list[object]:
@@ -911,6 +920,9 @@ def _quantity(
         )
         return target(kind, dim, vector=vector, note=note)
 
+    if function in MOMENTUM_FUNCTIONS and args:
+        kind, dim, expr, vector, note = _momentum(function, args, scene, formulation, where)
+        return target(kind, dim, expr, vector=vector, note=note)
     staged = function in STAGE_FUNCTIONS and (args or function == "energy_lost")
     if staged or (function == "speed" and len(args) == 2):  # T alone may be a tension
         kind, dim, expr, vector = stage_quantity(function, args, scene, formulation, where)
@@ -1119,6 +1131,28 @@ def _vibration_target(
         return target("magnitude", dims[args[1]], expr, before=before)  # type: ignore[operator]
     dim = Dim(0, 0, 1 if function == "period" else -1)
     return target("magnitude", dim, expr, before=before)  # type: ignore[operator]
+
+
+def _momentum(
+    function: str, args: tuple[str, ...], scene: Scene, formulation: Formulation, where: Position
+) -> tuple[str, Dim, sympy.Expr | None, Vec | None, str]:
+    """H(B[, P][, k]) or p(B[, k]): kind, dimension, expression, vector and what it is."""
+    body = _body(args[0], scene, where)
+    rest = list(args[1:])
+    state = rest.pop() if rest and rest[-1].isdigit() else None
+    if len(rest) > (1 if function == "H" else 0):
+        raise SpecError(
+            f"{function} takes the body, "
+            + ("a point and " if function == "H" else "")
+            + "a state number at most",
+            where,
+            hint="H(B) about G, H(B, O) about O, H(B, O, 2) at state 2; p(B), p(B, 2)",
+        )
+    point = (rest[0], _point(rest[0], scene, body, where)) if rest else None
+    kind, expr, vector, note = momentum_quantity(
+        function, body, point, state, scene, formulation, where
+    )
+    return kind, momentum_dimension(function), expr, vector, note
 
 
 def _power(

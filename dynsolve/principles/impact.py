@@ -26,6 +26,7 @@ import sympy
 
 from dynsolve.model.scene import Impact, Scene, Vec
 from dynsolve.numbers import tidy
+from dynsolve.principles.angular_momentum import angular_momentum
 from dynsolve.principles.newton_euler import Formulation, bare_formulation, dot
 from dynsolve.system import Equation
 from dynsolve.units import Dim
@@ -144,9 +145,8 @@ def pivot_formulation(
         body = scene.bodies[pivot.body]
         r = (body.G[0] - pivot.point[0], body.G[1] - pivot.point[1])
         v = scene.velocities.get(pivot.body, ZERO)
-        before = body.mass * (r[0] * v[1] - r[1] * v[0]) + body.I_G * scene.omegas.get(
-            pivot.body, 0
-        )
+        omega_0 = scene.omegas.get(pivot.body, sympy.Integer(0))
+        before = angular_momentum(body.mass, body.I_G, v, omega_0, body.G, pivot.point)
         I_P = body.I_G + body.mass * (r[0] ** 2 + r[1] ** 2)
         sense = sign_of(before, given_values or {})
         omega = sympy.Symbol(f"omega_1_{pivot.body}", positive=True)
@@ -215,8 +215,9 @@ def rebound_formulation(scene: Scene) -> Formulation:
     ]  # fmt: skip
     equations.append(
         Equation(
-            I_G * w1 + J * (r[0] * push[1] - r[1] * push[0]),
-            I_G * w2,
+            angular_momentum(m, I_G, v1, w1, body.G, body.G)
+            + J * (r[0] * push[1] - r[1] * push[0]),
+            angular_momentum(m, I_G, v2, w2, body.G, body.G),
             "eq. 3",
             3,
             f"angular impulse and momentum about G: I_G ω₁ + r_{point}/G × J n = I_G ω₂ ({name})",

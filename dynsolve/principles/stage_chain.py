@@ -29,6 +29,7 @@ from dataclasses import dataclass, replace
 import sympy
 from sympy.core.assumptions import check_assumptions
 
+from dynsolve.model.momentum_events import Clutch, Reshape
 from dynsolve.model.scene import (
     Body,
     CordState,
@@ -148,7 +149,8 @@ def chain_formulation(
         chain.advance(step)
         if stage is not stages[-1]:  # what it finds is read by the stages after it only
             chain.presolve(step)
-        states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas)))
+        inertias = {n: b.I_G for n, b in chain.scene.bodies.items()}
+        states.append(State(stage.number + 1, dict(chain.velocities), dict(chain.omegas), inertias))
         records.append(replace(step.record, equations=tuple(range(first, len(equations)))))
         if stage.number + 1 in instants:
             first_stage = stage
@@ -176,9 +178,15 @@ def chain_formulation(
         unknowns=unknowns,
         after=_after(records, states),
         after_omega={
-            r.stage.event.body: states[r.stage.number].omegas[r.stage.event.body]
+            r.bodies[-1]: states[r.stage.number].omegas[r.bodies[-1]]
             for r in records
-            if isinstance(r.stage.event, Pivot)
+            if isinstance(r.stage.event, Pivot) or r.pin
+        }
+        | {
+            name: states[r.stage.number].omegas[name]
+            for r in records
+            if isinstance(r.stage.event, Clutch | Reshape)
+            for name in r.bodies
         },
         speeds=_after_travels(
             records, states, lambda s, n: named.get((s.number, n)) or _speed(s, n)
@@ -243,6 +251,11 @@ class _Chain:
         self.reaction_names: set[str] = set()  # average reactions named by earlier intervals
         self.velocities = {name: scene.velocities.get(name, ZERO) for name in scene.bodies}
         self.omegas = {n: sympy.Integer(0) + scene.omegas.get(n, 0) for n in scene.bodies}
+        for pin in scene.supports:  # a pinned body given its spin: G turns about the pin
+            if pin.kind == "pin" and pin.body not in scene.velocities:
+                G, w = scene.bodies[pin.body].G, self.omegas[pin.body]
+                r = (G[0] - pin.point[0], G[1] - pin.point[1])
+                self.velocities[pin.body] = (tidy(-w * r[1]), tidy(w * r[0]))
         self.unfollowed: set[str] = set()  # bodies whose geometry is no longer followed
         self.together: dict[str, frozenset[str]] = {n: frozenset((n,)) for n in scene.bodies}
         self.joined_notes: list[tuple[int, str]] = []
@@ -253,6 +266,8 @@ class _Chain:
         event = stage.event
         if isinstance(event, Impact):
             return self.impact(stage, event)
+        if isinstance(event, Clutch | Reshape):
+            return self.spin(stage, event)
         followed = event.body in self.places and getattr(event, "kind", "") == "until"
         if event.body in self.unfollowed and not followed:  # a bob's place is followed
             raise StageError(
@@ -603,6 +618,8 @@ class _Chain:
     def impact(self, stage: Stage, impact: Impact) -> _Step:
         from dynsolve.principles.impact import impact_equations, velocity_after
 
+        if self.pin_of(impact.other) is not None or self.pin_of(impact.body) is not None:
+            return self.pinned(stage, impact)
         self.check_impulses(stage, impact)
         masses = {name: body.mass for name, body in self.scene.bodies.items()}
         equations, along = impact_equations(impact, masses, self.velocities)
@@ -623,6 +640,164 @@ class _Chain:
             {},
             StageRecord(stage, tuple(along), approach=self.approach(impact)),
             self.scene,
+        )
+
+    def pin_of(self, name: str) -> Support | None:
+        """The pin a rigid body turns about, if it is pinned."""
+        body = self.scene.bodies.get(name)
+        if body is None or body.particle:
+            return None
+        return next((s for s in self.scene.supports if s.body == name and s.kind == "pin"), None)
+
+    def pinned(self, stage: Stage, impact: Impact) -> _Step:
+        """A particle striking a body that turns about a pin: angular momentum of the two
+        about the pin conserved, with restitution along the line (embedded when e = 0)."""
+        from dynsolve.principles.angular_momentum import pinned_impact
+
+        scene = self.scene
+        if self.pin_of(impact.body) is not None:  # the pinned body strikes the particle
+            impact = replace(
+                impact,
+                body=impact.other,
+                other=impact.body,
+                line=(-impact.line[0], -impact.line[1]),
+            )
+        A, B = impact.body, impact.other
+        pin = self.pin_of(B)
+        if pin is None or A not in scene.bodies or not scene.bodies[A].particle:
+            raise StageError(
+                stage,
+                f"{stage.title}: an impact on a pinned body is supported with a particle "
+                "(placed where it strikes) on the other side",
+            )
+        moved = sorted({A, B} & self.unfollowed)
+        if moved:
+            raise StageError(
+                stage,
+                f"{stage.title}: where {' and '.join(moved)} is after an earlier stage is not "
+                "followed (only a particle's position is); describe the impact as a scene of "
+                "its own, from the motion just before it",
+            )
+        riders = sorted(self.together[A] - {A})
+        if riders:
+            raise StageError(
+                stage,
+                f"{stage.title}: {A} moves with {', '.join(riders)} since a plastic impact; "
+                "describe the particle that strikes as one body",
+            )
+        held = [s.name for s in scene.supports if s.body == A]
+        held += [k.name for k in scene.links if A in (k.body, k.other)]
+        held += [s.name for s in scene.supports if s.body == B and s is not pin]
+        held += [k.name for k in scene.links if B in (k.body, k.other)]
+        if held:
+            raise StageError(
+                stage,
+                f"{stage.title}: {', '.join(held)} would take part in the impulse; a particle "
+                "striking a pinned body is supported with the pin the only support",
+            )
+        r_G = (scene.bodies[B].G[0] - pin.point[0], scene.bodies[B].G[1] - pin.point[1])
+        w_1 = self.omegas[B]
+        v_B = self.velocities[B]
+        spun = (-w_1 * r_G[1], w_1 * r_G[0])
+        if tidy(v_B[0] - spun[0]) != 0 or tidy(v_B[1] - spun[1]) != 0:
+            raise StageError(
+                stage,
+                f"{stage.title}: {B} turns about the pin {pin.name}; give its motion before "
+                f"the impact as 'omega {B}: …' (its G then moves with ω k × r_G/{pin.name})",
+            )
+        found = pinned_impact(
+            impact, scene.bodies[A], scene.bodies[B], (pin.name, pin.point), self.velocities,
+            w_1, stage.number + 1, real_value(impact.e, self.values) == 0,
+        )  # fmt: skip
+        self.unfollowed |= {A, B}  # where they are afterwards is not followed
+        checks = (
+            ("approach", found.approach),
+            ("separation", found.separation),
+            ("lost", found.lost),
+            ("energy", found.energy),
+        ) + ((("reach", found.reach),) if found.reach is not None else ())
+        return _Step(
+            found.equations,
+            found.unknowns,
+            found.velocities,
+            {B: found.omega},
+            StageRecord(stage, (A, B), pin=pin.name, pinned=checks),
+            scene,
+        )
+
+    def spin(self, stage: Stage, event: Clutch | Reshape) -> _Step:
+        """A clutch locking two rotors on one axis, or a body changing its inertia: angular
+        momentum about the axis (the pin, or G of a free body) kept."""
+        from dynsolve.principles.angular_momentum import clutch, reshape
+
+        scene = self.scene
+        names = (event.body, event.other) if isinstance(event, Clutch) else (event.body,)
+        moved = sorted(set(names) & self.unfollowed)
+        if moved:
+            raise StageError(
+                stage,
+                f"{stage.title}: where {' and '.join(moved)} is after an earlier stage is not "
+                "followed; describe this part as a scene of its own",
+            )
+        for name in names:
+            held = [s.name for s in scene.supports if s.body == name and s.kind != "pin"]
+            held += [k.name for k in scene.links if name in (k.body, k.other)]
+            held += [c.name for c in scene.cords if name in (c.body, c.other)]
+            held += [s.name for s in scene.springs if name in (s.body, s.other)]
+            held += [load.name for load in scene.loads if load.body == name]
+            if held:
+                raise StageError(
+                    stage,
+                    f"{stage.title}: {', '.join(held)} on {name} would change its angular "
+                    "momentum; this stage is supported with a pin the only support and no load",
+                )
+        pins = [self.pin_of(name) for name in names]
+        if isinstance(event, Clutch):
+            A, B = pins
+            if (
+                A is None
+                or B is None
+                or tidy(A.point[0] - B.point[0]) != 0
+                or (tidy(A.point[1] - B.point[1]) != 0)
+            ):
+                raise StageError(
+                    stage,
+                    f"{stage.title}: a clutch locks two rotors on one axis: pin both at the "
+                    "same point ('pin A at O', 'pin B at O')",
+                )
+            bodies = (scene.bodies[event.body], scene.bodies[event.other])
+            w = (self.omegas[event.body], self.omegas[event.other])
+            axis = scene.point_names.get(A.point, A.name)  # O, not the pins' O_A and O_B
+            found = clutch(bodies, (axis, A.point), w, stage.number + 1)
+            omegas = dict.fromkeys(names, found.omega)
+        else:
+            (pin,) = pins
+            if pin is not None and scene.gravity is not None:
+                G = scene.bodies[event.body].G
+                if tidy(G[0] - pin.point[0]) != 0 or tidy(G[1] - pin.point[1]) != 0:
+                    raise StageError(
+                        stage,
+                        f"{stage.title}: the weight of {event.body} has a moment about the pin "
+                        f"{pin.name} while it changes its inertia",
+                    )
+            body = scene.bodies[event.body]
+            place = (pin.name, pin.point) if pin is not None else None
+            found = reshape(
+                body, event.I_G, place, self.velocities[event.body], self.omegas[event.body],
+                stage.number + 1,
+            )  # fmt: skip
+            omegas = {event.body: found.omega}
+            scene = replace(
+                scene, bodies={**scene.bodies, event.body: replace(body, I_G=event.I_G)}
+            )
+        checks = (("lost", found.lost), ("energy", found.energy))
+        return _Step(
+            (found.equation,),
+            {found.omega: Dim(0, 0, -1)},
+            found.velocities,
+            omegas,
+            StageRecord(stage, names, pinned=checks),
+            scene,
         )
 
     def approach(self, impact: Impact) -> sympy.Expr:
@@ -1087,6 +1262,18 @@ def chain_assumptions(
             continue
         if isinstance(event, Travel) and event.kind == "until":
             checks += _event_checks(record, values, "")
+            continue
+        if isinstance(event, Clutch | Reshape):
+            from dynsolve.principles.angular_momentum import spin_checks
+
+            checks += spin_checks(k, event, record.pinned, values)
+            continue
+        if isinstance(event, Impact) and record.pin:
+            from dynsolve.principles.angular_momentum import pinned_impact_checks
+
+            struck = (record.bodies[0], record.bodies[1])
+            embeds = real_value(event.e, values) == 0
+            checks += pinned_impact_checks(k, struck, embeds, record.pin, record.pinned, values)
             continue
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)

@@ -945,10 +945,27 @@ class _Builder(Transformer_NonRecursive):
         )
 
     def impact_stmt(self, c: list[Any]) -> SceneStmt:
-        body, other, restitution, line = c
+        body, other, restitution, *line = c
         return self._stmt(
-            "impact", body, body=str(body), other=str(other), value=restitution, direction=line
+            "impact",
+            body,
+            body=str(body),
+            other=str(other),
+            value=restitution,
+            direction=line[0] if line else None,
         )
+
+    def clutch_stmt(self, c: list[Token]) -> SceneStmt:
+        body, other = c
+        return self._stmt("clutch", body, body=str(body), other=str(other))
+
+    def change_gyration_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value = c
+        return self._stmt("change", body, body=str(body), value=value, word="gyration")
+
+    def change_inertia_stmt(self, c: list[Any]) -> SceneStmt:
+        body, value = c
+        return self._stmt("change", body, body=str(body), value=value, word="inertia")
 
     def path_stmt(self, c: list[Any]) -> SceneStmt:
         name, lhs, relation, rhs = c
