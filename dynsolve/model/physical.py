@@ -37,6 +37,7 @@ HINTS = {
     "μs": "a coefficient of friction is never negative (0 is a smooth, frictionless contact)",
     "μk": "a coefficient of friction is never negative (0 is a smooth, frictionless contact)",
     "a spring stiffness": "a spring's stiffness k is positive (k = F/δ)",
+    "a torsional stiffness": "a torsion spring's stiffness k is positive (k = M/Δθ, N·m/rad)",
     "gravity g": "g is positive (9.81 m/s², 32.2 ft/s²); 'gravity down' gives its direction; "
     "for a scene without weights, leave out the 'gravity' line",
     "a duration": "an interval's length is positive; its start and end are the two states",

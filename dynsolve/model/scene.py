@@ -1001,7 +1001,7 @@ def _torsion(builder: _Builder, stmt: SceneStmt) -> TorsionSpring:
             builder.where(stmt.line, stmt.column),
             hint="give the body a shape or an inertia (a torsion pendulum: 'disk R')",
         )
-    k = builder.value(stmt.props[0].values[0], Dim(2, 1, -2), "a torsional stiffness (N·m/rad)")
+    k = builder.value(stmt.props[0].values[0], Dim(2, 1, -2), "a torsional stiffness", POSITIVE)
     return TorsionSpring(stmt.name, body.name, k, stmt.line, stmt.column)
 
 
