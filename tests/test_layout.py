@@ -257,3 +257,16 @@ def test_the_private_allow_list_only_shrinks() -> None:
     _, _, private = _scan()
     fixed = sorted(PRIVATE_IMPORTS_ALLOWED - private)
     assert not fixed, f"these are no longer imported: delete them from the allow-list: {fixed}"
+
+
+def test_files_named_in_the_guides_exist() -> None:
+    # CONTRIBUTING.md and the architecture page name files by path (relative to the top
+    # folder or to dynsolve/); a renamed or moved module must not leave them pointing at nothing
+    named = re.compile(r"(?<![\w/.-])((?:[a-z0-9_-]+/)+[a-z0-9_-]+\.(?:py|md|lark|json))\b")
+    gone = sorted(
+        f"{guide.name}: {path}"
+        for guide in (ROOT / "CONTRIBUTING.md", ARCHITECTURE)
+        for path in set(named.findall(guide.read_text()))
+        if not (ROOT / path).exists() and not (PACKAGE / path).exists()
+    )
+    assert not gone, f"files named in the guides that do not exist: {gone}"
