@@ -270,3 +270,68 @@ def test_files_named_in_the_guides_exist() -> None:
         if not (ROOT / path).exists() and not (PACKAGE / path).exists()
     )
     assert not gone, f"files named in the guides that do not exist: {gone}"
+
+
+# Where Python code is generated and run, or text turned into sympy, as docs/architecture.md's
+# Safety section lists them: only ever on sympy objects dynsolve built, never on user text.
+# A new place must be reviewed and added to the Safety section, then here.
+CODE_FROM_SYMPY = {
+    "exec": {"simulate/compiled.py"},
+    "compile": {"simulate/compiled.py"},  # the builtin, not re.compile
+    "sympify": {"simulate/compiled.py"},
+    "lambdify": {
+        "grade/vectorized.py",
+        "linkage/position.py",
+        "modes/oneline_events.py",
+        "modes/scene_sketch.py",
+        "numbers.py",
+        "plots.py",
+        "principles/rectilinear.py",
+        "rigid3d/onset.py",
+        "simulate/chain.py",
+        "simulate/compiled.py",
+        "simulate/spin3d.py",
+        "solver/blocks.py",
+    },
+    "eval": set(),
+    "parse_expr": set(),
+}
+
+
+SYMPY_ENTRIES = ("sympify", "lambdify", "parse_expr")
+
+
+def _code_calls() -> dict[str, set[str]]:
+    """The modules calling each function of :data:`CODE_FROM_SYMPY`."""
+    found: dict[str, set[str]] = {name: set() for name in CODE_FROM_SYMPY}
+    for path in MODULES.values():
+        module = str(path.relative_to(PACKAGE))
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if not isinstance(node, ast.Call):
+                continue
+            func = node.func
+            if isinstance(func, ast.Name) and func.id in found:
+                found[func.id].add(module)  # exec(…), compile(…), a from-imported sympify(…)
+            elif isinstance(func, ast.Attribute) and func.attr in SYMPY_ENTRIES:
+                found[func.attr].add(module)  # sympy.lambdify(…), not re.compile(…)
+    return found
+
+
+def test_code_is_generated_only_where_the_safety_section_says() -> None:
+    found = _code_calls()
+    new = {name: sorted(found[name] - allowed) for name, allowed in CODE_FROM_SYMPY.items()}
+    new = {name: modules for name, modules in new.items() if modules}
+    assert not new, (
+        f"new calls that generate or evaluate code: {new}; they must only see sympy objects "
+        "dynsolve built (never user text): review, then list them in docs/architecture.md's "
+        "Safety section and in CODE_FROM_SYMPY"
+    )
+    gone = {name: sorted(allowed - found[name]) for name, allowed in CODE_FROM_SYMPY.items()}
+    assert not any(gone.values()), f"no longer called there: drop them from the list: {gone}"
+
+
+def test_the_safety_section_names_every_such_module() -> None:
+    safety = ARCHITECTURE.read_text().partition("## Safety")[2]
+    modules = set().union(*CODE_FROM_SYMPY.values())
+    missing = sorted(m for m in modules if f"`{m}`" not in safety)
+    assert not missing, f"docs/architecture.md's Safety section does not name: {missing}"
