@@ -197,7 +197,8 @@ def test_every_module_is_in_the_architecture_table() -> None:
         if str(path.relative_to(PACKAGE)) not in documented
     )
     rows = "\n".join(f"| `{m}` | {_first_line(PACKAGE / m) or '(no docstring)'} |" for m in missing)
-    assert not missing, f"add these rows to docs/architecture.md's module table:\n{rows}"
+    where = "docs/architecture.md (each in the table of the stage it serves)"
+    assert not missing, f"add these rows to {where}:\n{rows}"
 
 
 def test_every_module_in_the_table_exists() -> None:
