@@ -145,7 +145,7 @@ class ForceRow:
     """One force or couple on a free-body diagram."""
 
     name: str  # "T", "W_drum", "N_A", "M"
-    kind: str  # "weight", "reaction", "friction", "tension", "applied", "couple"
+    kind: str  # a ForceTerm kind (principles/newton_euler.py) or "couple"
     point: str  # where it acts: "G", "A", "(0.4, 0)"
     x: float  # the point relative to the body's mass centre, SI metres (for drawing)
     y: float

@@ -1,7 +1,7 @@
 """The equation system handed to the solver: equations, unknowns, known values, constraints.
 
-It is plain, immutable data built by a front end (equation mode today, scene mode
-later) and consumed by :func:`dynsolve.solver.solve_system`.
+It is plain, immutable data built by every front end (equations, kinematics, scene,
+linkage, 3D) and consumed by :func:`dynsolve.solver.solve_system`.
 
 >>> import sympy
 >>> T, m, g = sympy.symbols("T m g", positive=True)
@@ -51,7 +51,7 @@ SolveMode = Literal["exact", "numeric", "auto"]
 
 @dataclass(frozen=True)
 class SolveOptions:
-    """How to solve: the seam for a later exact-vs-numeric choice.
+    """How to solve: exactly, numerically, or ``auto`` (numerically, exact when needed).
 
     ``exact`` keeps rationals and radicals and only falls back to numbers when a
     nonlinear block exceeds ``time_budget`` seconds; ``numeric`` goes straight to

@@ -59,7 +59,6 @@ LINKAGE_ONLY = {  # scene lines of a linkage (dynsolve.linkage), as written
     "wheel": "rolls …: radius",
     "mesh": "mesh",
 }
-THREE_D_ONLY = {"rotates", "spins", "nutates", "bearing", "axis", "axes", "inertia3", "torque"}
 GROUND = "ground"  # `impact B with ground`: the fixed surface (unless a body is so named)
 
 

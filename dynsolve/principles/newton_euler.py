@@ -63,7 +63,8 @@ class ForceTerm:
     """A force on a body's free-body diagram: magnitude along a unit direction at a point."""
 
     name: str
-    kind: str  # "weight", "reaction", "friction", "tension", "applied"
+    # "weight", "applied", "tension", "spring", "link", "reaction", "traction", "friction"
+    kind: str
     body: str
     point: Vec
     point_name: str

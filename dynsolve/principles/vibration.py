@@ -218,7 +218,7 @@ def _motion(
 ) -> tuple[object | None, str]:
     """The scene's integrable equation of motion (:mod:`dynsolve.simulate`), or why not."""
     from dynsolve.simulate.equations import NotSimulable, numeric_scene, straight_line
-    from dynsolve.simulate.run import motion_of
+    from dynsolve.simulate.motion import motion_of
 
     numbers = {k: v for k, v in values.items() if real_value(v) is not None}
     try:

@@ -31,20 +31,18 @@ import numpy as np
 
 from dynsolve.budget import SIMULATING, step
 from dynsolve.errors import Position, SpecError
-from dynsolve.model.scene import Scene, Travel, build_scene
+from dynsolve.model.scene import Scene, build_scene
 from dynsolve.modes.equation_mode import givens_of
 from dynsolve.simulate.chain_run import ChainHistory
 from dynsolve.simulate.contact import Contact, on_circle
-from dynsolve.simulate.crosscheck import start_rate, travel_motion
+from dynsolve.simulate.crosscheck import start_rate
 from dynsolve.simulate.equations import (
     NotSimulable,
     OneDof,
-    Q,
-    mechanism,
     numeric_scene,
-    straight_line,
 )
 from dynsolve.simulate.integrator import TIGHT_ATOL, TIGHT_RTOL, Event, Run, integrate
+from dynsolve.simulate.motion import motion_of
 from dynsolve.spec.ast import Spec
 from dynsolve.units import Dim
 
@@ -274,47 +272,6 @@ def _numbers(values: dict) -> Callable[[object], float]:
         return float(found)
 
     return number
-
-
-def motion_of(scene: Scene, symbols: dict, values: dict) -> OneDof:
-    """The scene's equation of motion in its one coordinate (see the module's docstring)."""
-    travels = [t for t in scene.travels.values() if t.kind not in ("for", "until")]
-    scene = numeric_scene(scene, values)
-    if travels:
-        motion, _ = travel_motion(scene, travels[0], symbols, values, simplify=True)
-        return motion
-    reasons = []
-    names = [n for n, b in scene.bodies.items() if not b.particle]
-    names += [link.name for link in scene.links]
-    for name in names:
-        try:
-            turn = Travel(name, "turns", angle=Q)
-            return mechanism(scene, turn, symbols, values, f"turn of {name}", "rad", True)
-        except NotSimulable as exc:
-            reasons.append(str(exc))
-    particles = [n for n, b in scene.bodies.items() if b.particle]
-    if any(s.constant_speed for s in scene.supports):
-        raise NotSimulable(
-            "a particle driven along its path at constant speed (', constant') has no motion "
-            "to integrate: its speed is given"
-        )
-    for name in particles:
-        guides = [
-            s
-            for s in scene.supports
-            if s.body == name and s.kind == "contact" and (0 + s.normal_acceleration) == 0
-        ]  # a curved path is no straight surface
-        if len(particles) == 1 and len(guides) == 1:
-            what = f"distance of {name} along its surface at {guides[0].name}"
-            return straight_line(scene, name, guides[0].tangent, symbols, values, what)
-    on_path = on_circle(scene, symbols, values)
-    if on_path is not None:
-        return on_path[0]
-    why = f" ({reasons[0]})" if reasons else ""
-    raise NotSimulable(
-        "the scene has no one coordinate to simulate in" + why + ": simulate supports "
-        "one degree of freedom (a pinned or rolling body, a linkage, a guided particle)"
-    )
 
 
 def simulate_spec(

@@ -105,7 +105,6 @@ FUNCTIONS = {
     "log": 1,
     "abs": 1,
 }
-CONSTANTS = ("pi", "g")
 
 _EXPECTED_WORDS = {
     "NAME": "a name",
