@@ -1746,7 +1746,11 @@ class _View:
         if self.problem.dims.free:
             names = ", ".join(pretty(name) for name in self.problem.dims.free)
             detail += f"; the dimension of {names} is left open by the equations (not asked for)"
-        checks = [Check("dimensions", True, detail)]
+        checks = [
+            Check("dimensions", True, detail)
+            if n
+            else Check.not_run("dimensions", "no equation or constraint to check")
+        ]
         checks.append(self._structure_check())
         evaluated = [r for r in outcome.residuals if r.evaluated]
         if evaluated:

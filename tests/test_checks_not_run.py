@@ -154,3 +154,15 @@ def test_a_rejected_assumption_agrees_in_both_tables():
     (check,) = [c for c in solution.checks if c.name == "assumption: no slip at A rejected"]
     assert check.status == "passed"
     assert check.detail.startswith("the answers are for the re-solved case")
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_dimensions_with_nothing_to_check_is_not_run(mode: str) -> None:
+    """Newcomer round 8: momentum finds that need no equation showed "✓ dimensions …
+    homogeneous (0 checked)", a pass for a check that checked nothing."""
+    path = ROOT / "problems/angular_momentum/particle_momentum_about_point.dyn"
+    result = CliRunner().invoke(app, ["solve", str(path), "--format", "json", "--mode", mode])
+    assert result.exit_code == 0, result.output
+    checks = {c["name"]: c for c in json.loads(result.output)["checks"]}
+    assert checks["dimensions"]["status"] == "not_run"
+    assert checks["dimensions"]["passed"] is False

@@ -25,10 +25,9 @@ sqrt(k)/sqrt(m)
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-import numpy as np
 import sympy
 
 from dynsolve.model.scene import Body, Scene, Travel, Vec
@@ -199,7 +198,7 @@ def _period_back(
     back = real_value(vibration.period.xreplace({unknown: found}), others)
     wanted = real_value(symbols[period], values)
     if size is None or back is None or wanted is None:
-        return Check(name_check, False, "not run: the givens have no values")
+        return Check.not_run(name_check, "the givens have no values")
     gap = abs(back - wanted) / wanted
     return Check(
         name_check,
@@ -637,6 +636,7 @@ def vibration_checks(
                 f"({'the same formula' if gap == 0 else 'a different formula'}); the "
                 "simulation did not run: the givens have no values",
             ),
+            Check.not_run("simulation: period", "the givens have no values"),
         )
     checks = []
     energy = real_value(curvature / vibration.inertia, values)
@@ -663,17 +663,17 @@ def _simulated(motion: object | None, omega: float, why_not: str) -> Check:
     """The period measured from the motion integrated from a small displacement."""
     name = "simulation: period"
     if motion is None:
-        return Check(name, False, f"not run: {why_not}")
+        return Check.not_run(name, why_not)
     from scipy.integrate import solve_ivp
 
     accelerate = motion.accelerator()  # type: ignore[attr-defined]
     expected = 2 * math.pi / omega
     equilibrium = _equilibrium(accelerate)
     if equilibrium is None:
-        return Check(name, False, "not run: no equilibrium found near the scene as drawn")
+        return Check.not_run(name, "no equilibrium found near the scene as drawn")
     amplitude = 1e-4 * (1.0 if motion.unit == "rad" else max(abs(equilibrium), 1e-3))  # type: ignore[attr-defined]
 
-    def turning(_t: float, y: np.ndarray) -> float:
+    def turning(_t: float, y: Sequence[float]) -> float:
         return float(y[1])
 
     turning.direction = 1  # type: ignore[attr-defined]
