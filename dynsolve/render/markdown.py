@@ -63,9 +63,9 @@ def _escape_marker(match: re.Match[str]) -> str:
     return f"{match.group(1)}\\{match.group(2)}"
 
 
-def render_markdown(solution: Solution, layout: Layout = "full") -> str:
-    """The solution as a GitHub-flavoured Markdown document; ``layout`` as for LaTeX
-    (``full``, ``handout`` or ``key``).
+def render_markdown(solution: Solution, layout: Layout = "full", source: bool | None = None) -> str:
+    """The solution as a GitHub-flavoured Markdown document; ``layout`` and ``source`` as
+    for LaTeX (``full``, ``handout`` or ``key``; the spec's source line shown or not).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -88,11 +88,12 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
     >>> "- Kinetic diagram: $I_{G} \\\\, α$" in doc
     True
     """
-    plan = sheet_plan(layout)
+    plan = sheet_plan(layout, source)
     key = solution.key if "key" in plan else ()
+    cited = "source" in plan
     parts: dict[str, Callable[[], list[str]]] = {
-        "title": lambda: [_title(solution)],  # its warnings included
-        "handout_title": lambda: [_title(solution, handout=True)],
+        "title": lambda: [_title(solution, cited=cited)],  # its warnings included
+        "handout_title": lambda: [_title(solution, handout=True, cited=cited)],
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
         "free_body": lambda: _free_body_section(solution.free_body),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
@@ -154,10 +155,12 @@ def _status_mark(status: str) -> str:
 # ---- sections
 
 
-def _title(solution: Solution, handout: bool = False) -> str:
+def _title(solution: Solution, handout: bool = False, cited: bool = True) -> str:
+    """The title, the source line when ``cited``, and (not on the handout) the spec's file
+    name, status and solver messages."""
     title = solution.title.strip() or PurePath(solution.file).name or "Problem"
     lines = [f"# {escape_markdown(title)}", ""]
-    if solution.source.strip():
+    if cited and solution.source.strip():
         lines += [f"*{escape_markdown(solution.source)}*", ""]
     if handout:  # the handout names no file, status or solver remarks
         warnings = [f"- **Warning:** {escape_markdown(w)}" for w in solution.warnings]
