@@ -140,11 +140,13 @@ def html_article(
             e for t, ts in zip(solution.trials, tags.trials, strict=True) for e in _trial(t, ts)
         ],
         "equations": lambda: [
-            *_equations(solution.equations, tags.final),
+            *_equations(solution.equations, tags.final, title=_resolved("Equations", solution)),
             *_second_moments(solution.second_moments, tags.final),
         ],
         "energy": lambda: _energy(solution.energy),
-        "steps": lambda: _solution(solution.steps, tags.final),
+        "steps": lambda: _solution(
+            solution.steps, tags.final, title=_resolved("Solution", solution)
+        ),
         "answers": lambda: [
             *_answers(solution.answers, key),
             *(_el("p", None, _el("em", None, "Remark: "), *_remark(r)) for r in solution.remarks),
@@ -319,8 +321,8 @@ def _givens(givens: Sequence[GivenRow], system: str) -> list[ET.Element]:
     rows = [
         [
             _math_or_empty(g.latex_name),
-            [g.written] if g.symbolic else _math_or_empty(g.latex_value),
-            [g.base],
+            _caption(g.written) if g.symbolic else _math_or_empty(g.latex_value),
+            [pretty_unit(g.base)],
             _prose(g.description),
         ]
         for g in givens
@@ -433,9 +435,9 @@ def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
 
 
 def _equations(
-    rows: Sequence[EquationRow], tags: EquationTags, level: str = "h2"
+    rows: Sequence[EquationRow], tags: EquationTags, level: str = "h2", title: str = "Equations"
 ) -> list[ET.Element]:
-    out = [_el(level, None, "Equations")]
+    out = [_el(level, None, title)]
     if not rows:
         return [*out, _el("p", None, "No equations.")]
     return out + [_equation(e, tags) for e in rows]
@@ -466,7 +468,7 @@ def _equation(row: EquationRow, tags: EquationTags) -> ET.Element:
         units.append(_mark(True))
     else:
         units = [_el("strong", None, "dimensions differ "), *units, _mark(False)]
-    tag = _el("span", {"class": "tag"}, tags.tag(row.line))
+    tag = _el("span", {"class": "tag"}, tags.tag(row))
     display: list[Item] = [math(row.latex or "?", display=True), tag]
     return _el(
         "div",
@@ -482,7 +484,7 @@ def _energy(terms: Sequence[EnergyTerm]) -> list[ET.Element]:
         return []
     rows = [
         [[_name(t.name)], _math_or_empty(t.formula_latex), _math_or_empty(t.value_latex),
-         [t.meaning]]
+         _caption(t.meaning)]
         for t in terms
     ]  # fmt: skip
     title = _el("h2", None, "Work and energy: ", math(r"T_1 + \Sigma U_{1 \to 2} = T_2"),
@@ -501,12 +503,19 @@ def _trial(trial: Trial, tags: EquationTags) -> list[ET.Element]:
         *_solution(trial.steps, tags, "h3"),
         *_second_moments(trial.second_moments, tags, "h3"),
         _el("p", None, _el("strong", None, "Check: "), _mark(False), " ", *_caption(trial.verdict)),
-        *(_el("p", None, _el("em", None, "Remark: "), r) for r in trial.remarks),
+        *(_el("p", None, _el("em", None, "Remark: "), *_caption(r)) for r in trial.remarks),
     ]
 
 
-def _solution(steps: Sequence[Step], tags: EquationTags, level: str = "h2") -> list[ET.Element]:
-    out = [_el(level, None, "Solution")]
+def _resolved(title: str, solution: Solution) -> str:
+    """After a failed trial, the final solve's heading says it is the re-solve."""
+    return f"{title} (re-solved)" if solution.trials else title
+
+
+def _solution(
+    steps: Sequence[Step], tags: EquationTags, level: str = "h2", title: str = "Solution"
+) -> list[ET.Element]:
+    out = [_el(level, None, title)]
     if not steps:
         return [*out, _el("p", None, "No solve steps.")]
     return out + [e for s in steps for e in _step(s, tags)]
@@ -524,7 +533,7 @@ def _step(step: Step, tags: EquationTags) -> list[ET.Element]:
     out = [_el("p", None, _el("strong", None, f"Step {step.index}. "), *lead, f" ({step.method}):")]
     out += [_result(r) for r in step.results]
     if step.discarded:
-        items = [_el("li", None, *_caption(pretty_unit(d))) for d in step.discarded]
+        items = [_el("li", None, *_caption(pretty_unit(tags.untagged(d)))) for d in step.discarded]
         out += [_el("p", None, "Discarded roots:"), _el("ul", None, *items)]
     if step.note.strip():
         out.append(_el("p", {"class": "note"}, _el("em", None, *_caption(step.note))))

@@ -333,11 +333,11 @@ def render_latex(solution: Solution, layout: Layout = "full", source: bool | Non
             _trial_section(t, ts) for t, ts in zip(solution.trials, tags.trials, strict=True)
         ],
         "equations": lambda: [
-            _equations_section(solution.equations, tags.final),
+            _resolved(_equations_section(solution.equations, tags.final), solution),
             *_second_moments_section(solution.second_moments, tags.final),
         ],
         "energy": lambda: _energy_section(solution.energy),
-        "steps": lambda: [_solution_section(solution.steps, tags.final)],
+        "steps": lambda: [_resolved(_solution_section(solution.steps, tags.final), solution)],
         "answers": lambda: (
             [_answers_section(solution.answers, key)]
             + [f"\\textit{{Remark:}} {_remark(r)}\n" for r in solution.remarks]
@@ -350,6 +350,18 @@ def render_latex(solution: Solution, layout: Layout = "full", source: bool | Non
     drawn = pictures and "free_body" in plan
     preamble = PREAMBLE + ("\n" + DIAGRAM_PREAMBLE if drawn else "")
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
+
+
+def _resolved(section: str, solution: Solution) -> str:
+    """After a failed trial, the final solve's heading says it is the re-solve.
+
+    >>> _resolved("\\\\subsection*{Equations}", Solution("", "", "", "SI", "", (), (), (), (),
+    ...           (), (), "", trials=(Trial("no slip", (), (), "fails"),)))
+    '\\\\subsection*{Equations (re-solved)}'
+    """
+    if not solution.trials:
+        return section
+    return re.sub(r"^\\subsection\*\{(\w+)\}", r"\\subsection*{\1 (re-solved)}", section, count=1)
 
 
 def _math(fragment: str) -> str:
@@ -585,7 +597,7 @@ def _equation(row: EquationRow, tags: EquationTags = BY_LINE) -> str:
         head,
         r"\begin{equation*}",
         f"{_fitted(safe_math(row.latex).strip() or '?', EQUATION_WIDTH)} "
-        f"\\tag*{{{tags.tag(row.line)}}}",
+        f"\\tag*{{{tags.tag(row)}}}",
         r"\end{equation*}",
     ])  # fmt: skip
 
@@ -639,7 +651,7 @@ def _step(step: Step, tags: EquationTags = BY_LINE) -> str:
     if step.results:
         rows = " \\\\\n".join(_result(r) for r in step.results)
         lines += [r"\begin{align*}", rows, r"\end{align*}"]
-    lines += _discarded(step.discarded)
+    lines += _discarded([tags.untagged(d) for d in step.discarded])
     if step.note.strip():
         lines.append(f"\\textit{{{caption_latex(step.note)}}}")
     return "\n".join(lines)
@@ -857,14 +869,17 @@ def _free_body(body: FreeBody, system: str = "SI") -> str:
         facts.append("{\\small Unknown forces are dashed and red; known forces solid.}")
     if body.kinetic:
         facts.append("{\\small The kinetic diagram (blue, right of =) shows the senses assumed.}")
+    # the heading kept with its picture; the facts below may go on to the next page, so a
+    # body that does not fit whole leaves no half-empty page behind
     return "\n".join([
         r"\par\noindent\begin{minipage}{\linewidth}",
         f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
         free_body_picture(body, system),
         r"\end{center}",
+        r"\end{minipage}\par",
         " \\\\\n".join(facts),
-        r"\end{minipage}\par\medskip",
+        r"\par\medskip",
     ])  # fmt: skip
 
 
