@@ -592,7 +592,10 @@ def _equation(row: EquationRow, tags: EquationTags = BY_LINE) -> str:
     note = caption_latex(row.note)
     if row.constraint:
         note = "Constraint" + (f": {note}" if note else "")
-    head = f"\\noindent\\textit{{{note}}}\\hfill{{\\small {_dimension(row)}}}"
+    # the dimension flush right, on the caption's last line or (no room) the next: never
+    # touching the caption's words (the TeXbook's trick for a right-set tail)
+    right = r"\unskip\nobreak\hfil\penalty50\hskip1em\hbox{}\nobreak\hfill"
+    head = f"\\noindent\\textit{{{note}}}{right}{{\\small {_dimension(row)}}}"
     return "\n".join([
         head,
         r"\begin{equation*}",
