@@ -125,10 +125,13 @@ def test_the_source_line_that_gives_the_answer_away_is_left_out_unless_asked(tmp
     assert "cube tips over lip" in key  # whoever marks sees where it comes from
 
 
-def test_the_markdown_handout_leaves_out_the_source_too(solutions) -> None:
+def test_the_markdown_handout_leaves_out_the_source_and_line_numbers_too(solutions) -> None:
     solution = solutions["fa_hib_drum"]
     assert "Hibbeler" not in render_markdown(solution, "handout")
     assert "Hibbeler" in render_markdown(solution, "full")
+    handout = render_markdown(solutions["gpm_seed_pole_slip"], "handout")
+    assert "(line " not in handout and "(lines " not in handout and "| No. |" in handout
+    assert "Equations (3) and (5) give" in handout  # the trial's ΣM_A and no-slip relation
 
 
 # ---- every symbol typeset
