@@ -508,19 +508,23 @@ _POWERS = {"²": "^{2}", "³": "^{3}", "": ""}
 _BASES = {"Ḣ": r"\dot{H}"}  # a rate of change (Ḣ_G)
 _ASCII_POWER = re.compile(r"(?:\*\*|\^)(?:\{(-?\d+)\}|(-?\d+))")
 _TIMES_NUMBER = re.compile(r"(?<=\d)\*(?=[A-Za-zα-ωΑ-Ω(])")  # 2*s_G: 2s_G
+_MINUS = re.compile(r"(?:^|(?<=[\s(=]))-(?=[\dA-Za-zα-ω√(.])")  # -0.667, -L: a minus sign
 _TO_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
 def ascii_maths(text: str) -> str:
     """Plain-text mathematics as it is typeset: powers as superscripts, a product as a
-    centred dot (none after a number), ``sqrt(`` as ``√(``.
+    centred dot (none after a number), ``sqrt(`` as ``√(``, a hyphen before a number or
+    name as a minus sign.
 
     >>> ascii_maths("s_2 = 2*s_G, -L + sqrt(L**2 + s^2), 15 ft*lb")
-    's_2 = 2s_G, -L + √(L² + s²), 15 ft·lb'
+    's_2 = 2s_G, −L + √(L² + s²), 15 ft·lb'
+    >>> ascii_maths("no-slip: -0.667 rad/s (Example 17-94)")
+    'no-slip: −0.667 rad/s (Example 17-94)'
     """
     text = _ASCII_POWER.sub(lambda m: (m[1] or m[2]).translate(_TO_SUPERSCRIPT), text)
     text = _TIMES_NUMBER.sub("", text.replace("sqrt(", "√("))
-    return text.replace("*", "·")
+    return _MINUS.sub("−", text.replace("*", "·"))
 
 
 def caption_latex(text: str) -> str:
