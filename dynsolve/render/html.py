@@ -409,7 +409,7 @@ def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
     return _el(
         "section",
         {"class": "body"},
-        _el("h3", None, (body.body or "?") + shape),
+        _el("h3", None, *_caption(body.body or "?"), shape),
         _el("figure", {"class": "diagrams"}, *drawn),
         _el("p", {"class": "facts"}, *facts),
         *([_el("p", {"class": "note"}, " ".join(notes))] if notes else []),
@@ -428,7 +428,7 @@ def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
         detail = pretty_unit(a.detail)
         tail: list[Item] = [": ", *_caption(detail)] if detail.strip() else []
         items.append(
-            _el("li", None, _mark(a.holds), " ", _el("strong", None, a.name or "?"),
+            _el("li", None, _mark(a.holds), " ", _el("strong", None, *_caption(a.name or "?")),
                 f" ({status})", *tail)
         )  # fmt: skip
     return [_el("h2", None, "Assumptions"), _el("ul", {"class": "marked"}, *items)]
@@ -498,7 +498,7 @@ def _energy(terms: Sequence[EnergyTerm]) -> list[ET.Element]:
 def _trial(trial: Trial, tags: EquationTags) -> list[ET.Element]:
     """A case assumed first: its equations and solve, then the check that rejected it."""
     return [
-        _el("h2", None, f"Trial: {trial.assumption} (assumed, then checked)"),
+        _el("h2", None, "Trial: ", *_caption(trial.assumption), " (assumed, then checked)"),
         *_equations(trial.equations, tags, "h3"),
         *_solution(trial.steps, tags, "h3"),
         *_second_moments(trial.second_moments, tags, "h3"),

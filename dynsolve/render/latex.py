@@ -578,9 +578,7 @@ def caption_pieces(text: str) -> list[tuple[bool, str]]:
         else:
             sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match["op"]]
             word = match["base"]  # a Greek letter spelt out (mu_s) is the letter
-            base = _BASES.get(word) or (
-                latex_name(word) if word in GREEK else safe_math(word).strip()
-            )
+            base = _BASES.get(word) or (latex_name(word) if word in GREEK else _base_math(word))
             sub = match["sub"].replace("_", ",")
             math = f"{sigma}{base}_{{{sub}}}{_POWERS[match['power']]}"
         if out[-1] == (False, "") and len(out) > 1 and out[-2][0]:
@@ -590,6 +588,17 @@ def caption_pieces(text: str) -> list[tuple[bool, str]]:
         last = match.end()
     out.append((False, text[last:]))
     return [piece for piece in out if piece[1]]
+
+
+def _base_math(word: str) -> str:
+    """A subscripted name's base: a letter in italic, a word (``wheel`` of wheel_A) upright.
+
+    >>> _base_math("F"), _base_math("wheel"), _base_math("αH")
+    ('F', '\\\\mathrm{wheel}', '\\\\alpha H')
+    """
+    if len(word) > 1 and word.isascii() and word.isalpha():
+        return f"\\mathrm{{{word}}}"
+    return safe_math(word).strip()
 
 
 def _equation(row: EquationRow, tags: EquationTags = BY_LINE) -> str:
@@ -633,7 +642,7 @@ def _trial_section(trial: Trial, tags: EquationTags = BY_LINE) -> str:
     steps = _solution_section(trial.steps, tags).replace(
         "\\subsection*{Solution}", "\\subsubsection*{Solution}"
     )
-    title = f"\\subsection*{{Trial: {escape_latex(trial.assumption)} (assumed, then checked)}}"
+    title = f"\\subsection*{{Trial: {caption_latex(trial.assumption)} (assumed, then checked)}}"
     verdict = f"\\textbf{{Check:}} $\\times$ {caption_latex(trial.verdict)}"
     remarks = [f"\\textit{{Remark:}} {caption_latex(r)}" for r in trial.remarks]
     moments = [
@@ -880,7 +889,7 @@ def _free_body(body: FreeBody, system: str = "SI") -> str:
     # body that does not fit whole leaves no half-empty page behind
     return "\n".join([
         r"\par\noindent\begin{minipage}{\linewidth}",
-        f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
+        f"\\subsubsection*{{{caption_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
         free_body_picture(body, system),
         r"\end{center}",
@@ -956,4 +965,4 @@ def _assumption_text(assumption: Assumption) -> str:
     detail = pretty_unit(assumption.detail)
     detail = f": {caption_latex(detail)}" if detail.strip() else ""
     status = {PASSED: "holds", FAILED: "\\textbf{fails}", NOT_RUN: "not decided"}[assumption.status]
-    return f"\\textbf{{{escape_latex(assumption.name) or '?'}}} ({status}){detail}"
+    return f"\\textbf{{{caption_latex(assumption.name) or '?'}}} ({status}){detail}"
