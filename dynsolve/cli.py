@@ -84,6 +84,7 @@ class _Target:
     terminal: bool
     colours: str | None
     layout: str = "full"  # LaTeX and Markdown: full, handout or key
+    source: bool | None = None  # the spec's source line on the sheet (None: not on a handout)
     plot: str = ""  # the --plot file's suffix (.png, .svg, .pdf), "" for none
     figure: str = ""  # a LaTeX sheet's motion plot: the file name it includes, "" for none
 
@@ -214,6 +215,15 @@ def solve(
             metavar="",
         ),
     ] = False,
+    cite: Annotated[
+        bool,
+        typer.Option(
+            "--source",
+            metavar="",
+            help="With --handout: print the spec's source: line under the title (the full "
+            "sheet and the key always do; it may give the answer away).",
+        ),
+    ] = False,
     time_budget: TimeBudget = DEFAULT_SECONDS,
     memory_budget: MemoryBudget = DEFAULT_MEGABYTES,
     variant: Annotated[
@@ -267,7 +277,9 @@ def solve(
     rendered = "latex" if chosen == OutputFormat.pdf else chosen.value
     suffix = plot.suffix.lower() if plot is not None else ""
     figure = _sheet_figure(output, chosen, layout)
-    target = _Target(rendered, output is None, width, terminal, colours, layout, suffix, figure)
+    target = _Target(
+        rendered, output is None, width, terminal, colours, layout, cite or None, suffix, figure
+    )
     job = (source, mode.value, budget, target, cells)
     outcome = _in_worker(solve_and_render, job, budget)
     if isinstance(outcome, _Refused):
@@ -1305,7 +1317,7 @@ def _render(solution: Solution, target: _Target) -> str:
     from dynsolve.render import renderer
 
     if target.format != OutputFormat.text or not target.to_terminal:
-        return renderer(target.format, target.layout)(solution)  # type: ignore[arg-type]
+        return renderer(target.format, target.layout, target.source)(solution)  # type: ignore[arg-type]
     import io
 
     from dynsolve.render.terminal import solution_renderable

@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from latex_tools import compile_pdf
 
 from dynsolve.render import latex
-from dynsolve.render.latex import escape_latex, render_latex, safe_math
+from dynsolve.render.latex import caption_latex, render_latex, safe_math
 from dynsolve.render.markdown import render_markdown
 from dynsolve.render.terminal import render_text
 from dynsolve.results import (
@@ -240,7 +240,7 @@ def test_latex_assumptions() -> None:
     ) in tex
     assert "\\item[$\\checkmark$] \\textbf{no tipping} (holds): $x_{C}$ = 0.1 m" in tex
     assert (
-        "\\item[$\\times$] \\textbf{cord T taut} (\\textbf{fails}): T = -3.2 N \\textless{} 0"
+        "\\item[$\\times$] \\textbf{cord T taut} (\\textbf{fails}): T = $-$3.2 N \\textless{} 0"
         in tex
     )
 
@@ -566,7 +566,7 @@ def test_any_scene_gives_safe_ascii_latex(scene: tuple[list[FreeBody], list[Assu
     assert_safe_tex(scene_part(tex))
     drawn = pictures(tex)
     for body in free_body:
-        name = escape_latex(body.body) or "?"
+        name = caption_latex(body.body) or "?"  # theta_dot as $\theta_{dot}$
         assert name in tex
     pictures_drawn = len(re.findall(r"\\begin\{tikzpicture\}", tex))
     assert len(free_body) <= pictures_drawn <= 2 * len(free_body)  # and kinetic diagrams

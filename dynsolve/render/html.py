@@ -15,15 +15,15 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from pathlib import PurePath
 
 from latex2mathml.converter import convert
 
-from dynsolve.format import and_list, lines_phrase, pretty_unit
+from dynsolve.format import pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.latex import caption_pieces, free_body_picture, kinetic_math, safe_math
+from dynsolve.render.numbering import EquationTags, sheet_tags
 from dynsolve.render.tikz_svg import svg_pictures
 from dynsolve.results import (
     AnswerRow,
@@ -83,9 +83,9 @@ STYLE = """
 """
 
 
-def render_html(solution: Solution, layout: Layout = "full") -> str:
-    """The solution as one self-contained HTML page; ``layout`` as for LaTeX (``full``,
-    ``handout`` or ``key``).
+def render_html(solution: Solution, layout: Layout = "full", source: bool | None = None) -> str:
+    """The solution as one self-contained HTML page; ``layout`` and ``source`` as for LaTeX
+    (``full``, ``handout`` or ``key``; the spec's source line shown or not).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -104,7 +104,7 @@ def render_html(solution: Solution, layout: Layout = "full") -> str:
     page = ET.Element("html", {"lang": "en"})
     page.append(head)
     body = ET.SubElement(page, "body")
-    body.append(html_article(solution, layout))
+    body.append(html_article(solution, layout, source))
     return "<!DOCTYPE html>\n" + ET.tostring(page, encoding="unicode", method="html") + "\n"
 
 
@@ -118,14 +118,17 @@ def html_fragment(solution: Solution, layout: Layout = "full") -> str:
     )
 
 
-def html_article(solution: Solution, layout: Layout = "full") -> ET.Element:
+def html_article(
+    solution: Solution, layout: Layout = "full", source: bool | None = None
+) -> ET.Element:
     """The derivation as an ``<article class="dynsolve">`` element."""
-    plan = sheet_plan(layout)
+    plan = sheet_plan(layout, source)
+    cited = "source" in plan
     key = solution.key if "key" in plan else ()
-    tags = _Tags.of(solution, layout)
+    tags = sheet_tags(solution, numbered=layout == "handout")
     parts: dict[str, Callable[[], list[ET.Element]]] = {
-        "title": lambda: _title(solution),
-        "handout_title": lambda: _title(solution, handout=True),
+        "title": lambda: _title(solution, cited=cited),
+        "handout_title": lambda: _title(solution, handout=True, cited=cited),
         "warnings": lambda: [
             _el("p", {"class": "warning"}, _el("strong", None, "Warning: "), w)
             for w in solution.warnings
@@ -133,13 +136,17 @@ def html_article(solution: Solution, layout: Layout = "full") -> ET.Element:
         "givens": lambda: _givens(solution.givens, solution.system),
         "free_body": lambda: _figures(solution),
         "assumptions": lambda: _assumptions(solution.assumptions),
-        "trials": lambda: [e for t in solution.trials for e in _trial(t, tags)],
+        "trials": lambda: [
+            e for t, ts in zip(solution.trials, tags.trials, strict=True) for e in _trial(t, ts)
+        ],
         "equations": lambda: [
-            *_equations(solution.equations, tags),
-            *_second_moments(solution.second_moments, tags),
+            *_equations(solution.equations, tags.final, title=_resolved("Equations", solution)),
+            *_second_moments(solution.second_moments, tags.final),
         ],
         "energy": lambda: _energy(solution.energy),
-        "steps": lambda: _solution(solution.steps, tags),
+        "steps": lambda: _solution(
+            solution.steps, tags.final, title=_resolved("Solution", solution)
+        ),
         "answers": lambda: [
             *_answers(solution.answers, key),
             *(_el("p", None, _el("em", None, "Remark: "), *_remark(r)) for r in solution.remarks),
@@ -277,9 +284,11 @@ def _title_text(solution: Solution) -> str:
     return solution.title.strip() or PurePath(solution.file).name or "Problem"
 
 
-def _title(solution: Solution, handout: bool = False) -> list[ET.Element]:
+def _title(solution: Solution, handout: bool = False, cited: bool = True) -> list[ET.Element]:
+    """The title, the source line when ``cited``, and (not on the handout) the spec's file
+    name, status and solver messages."""
     out = [_el("h1", None, _title_text(solution))]
-    if solution.source.strip():
+    if cited and solution.source.strip():
         out.append(_el("p", {"class": "source"}, solution.source))
     if handout:  # the handout names no file, status or solver remarks
         return out
@@ -312,8 +321,8 @@ def _givens(givens: Sequence[GivenRow], system: str) -> list[ET.Element]:
     rows = [
         [
             _math_or_empty(g.latex_name),
-            [g.written] if g.symbolic else _math_or_empty(g.latex_value),
-            [g.base],
+            _caption(g.written) if g.symbolic else _math_or_empty(g.latex_value),
+            [pretty_unit(g.base)],
             _prose(g.description),
         ]
         for g in givens
@@ -400,7 +409,7 @@ def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
     return _el(
         "section",
         {"class": "body"},
-        _el("h3", None, (body.body or "?") + shape),
+        _el("h3", None, *_caption(body.body or "?"), shape),
         _el("figure", {"class": "diagrams"}, *drawn),
         _el("p", {"class": "facts"}, *facts),
         *([_el("p", {"class": "note"}, " ".join(notes))] if notes else []),
@@ -408,48 +417,6 @@ def _free_body(body: FreeBody, system: str, index: int) -> ET.Element:
 
 
 # ---- assumptions, equations, energy
-
-
-@dataclass(frozen=True)
-class _Tags:
-    """How equations are tagged: by their spec line on the full sheet; numbered (1), (2), …
-    in the order shown on the handout, which has no spec to point at."""
-
-    numbers: dict[int, int] | None  # spec line -> number; None: tag by line
-
-    @classmethod
-    def of(cls, solution: Solution, layout: Layout) -> _Tags:
-        if layout != "handout":
-            return cls(None)
-        rows = [row for t in solution.trials for row in (*t.equations, *t.second_moments)]
-        numbers: dict[int, int] = {}
-        for row in (*rows, *solution.equations, *solution.second_moments):
-            numbers.setdefault(row.line, len(numbers) + 1)
-        return cls(numbers)
-
-    def tag(self, line: int) -> str:
-        """``(line 3)``, or ``(2)`` on the handout.
-
-        >>> _Tags(None).tag(3), _Tags({3: 2}).tag(3)
-        ('(line 3)', '(2)')
-        """
-        return f"(line {line})" if self.numbers is None else f"({self.numbers.get(line, '?')})"
-
-    def phrase(self, lines: Sequence[int]) -> str:
-        """How a step names its equations: ``Equations (lines 3–5) give``, or on the
-        handout ``Equations (1), (2) and (4) give``.
-
-        >>> _Tags({3: 1, 5: 2, 9: 4}).phrase([9, 3, 5])
-        'Equations (1), (2) and (4) give'
-        """
-        if self.numbers is None:
-            return lines_phrase(lines)
-        shown = sorted({self.numbers[n] for n in lines if n in self.numbers})
-        if not shown:
-            return "The solver gives"
-        if len(shown) == 1:
-            return f"Equation ({shown[0]}) gives"
-        return f"Equations {and_list([f'({n})' for n in shown])} give"
 
 
 def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
@@ -461,21 +428,23 @@ def _assumptions(assumptions: Sequence[Assumption]) -> list[ET.Element]:
         detail = pretty_unit(a.detail)
         tail: list[Item] = [": ", *_caption(detail)] if detail.strip() else []
         items.append(
-            _el("li", None, _mark(a.holds), " ", _el("strong", None, a.name or "?"),
+            _el("li", None, _mark(a.holds), " ", _el("strong", None, *_caption(a.name or "?")),
                 f" ({status})", *tail)
         )  # fmt: skip
     return [_el("h2", None, "Assumptions"), _el("ul", {"class": "marked"}, *items)]
 
 
-def _equations(rows: Sequence[EquationRow], tags: _Tags, level: str = "h2") -> list[ET.Element]:
-    out = [_el(level, None, "Equations")]
+def _equations(
+    rows: Sequence[EquationRow], tags: EquationTags, level: str = "h2", title: str = "Equations"
+) -> list[ET.Element]:
+    out = [_el(level, None, title)]
     if not rows:
         return [*out, _el("p", None, "No equations.")]
     return out + [_equation(e, tags) for e in rows]
 
 
 def _second_moments(
-    rows: Sequence[EquationRow], tags: _Tags, level: str = "h2"
+    rows: Sequence[EquationRow], tags: EquationTags, level: str = "h2"
 ) -> list[ET.Element]:
     if not rows:
         return []
@@ -486,7 +455,7 @@ def _second_moments(
 _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 
 
-def _equation(row: EquationRow, tags: _Tags) -> ET.Element:
+def _equation(row: EquationRow, tags: EquationTags) -> ET.Element:
     """The principle, the unit check on the right, then the equation displayed with its
     tag."""
     note = _caption(row.note)
@@ -499,7 +468,7 @@ def _equation(row: EquationRow, tags: _Tags) -> ET.Element:
         units.append(_mark(True))
     else:
         units = [_el("strong", None, "dimensions differ "), *units, _mark(False)]
-    tag = _el("span", {"class": "tag"}, tags.tag(row.line))
+    tag = _el("span", {"class": "tag"}, tags.tag(row))
     display: list[Item] = [math(row.latex or "?", display=True), tag]
     return _el(
         "div",
@@ -515,7 +484,7 @@ def _energy(terms: Sequence[EnergyTerm]) -> list[ET.Element]:
         return []
     rows = [
         [[_name(t.name)], _math_or_empty(t.formula_latex), _math_or_empty(t.value_latex),
-         [t.meaning]]
+         _caption(t.meaning)]
         for t in terms
     ]  # fmt: skip
     title = _el("h2", None, "Work and energy: ", math(r"T_1 + \Sigma U_{1 \to 2} = T_2"),
@@ -526,26 +495,33 @@ def _energy(terms: Sequence[EnergyTerm]) -> list[ET.Element]:
 # ---- solve, trials
 
 
-def _trial(trial: Trial, tags: _Tags) -> list[ET.Element]:
+def _trial(trial: Trial, tags: EquationTags) -> list[ET.Element]:
     """A case assumed first: its equations and solve, then the check that rejected it."""
     return [
-        _el("h2", None, f"Trial: {trial.assumption} (assumed, then checked)"),
+        _el("h2", None, "Trial: ", *_caption(trial.assumption), " (assumed, then checked)"),
         *_equations(trial.equations, tags, "h3"),
         *_solution(trial.steps, tags, "h3"),
         *_second_moments(trial.second_moments, tags, "h3"),
         _el("p", None, _el("strong", None, "Check: "), _mark(False), " ", *_caption(trial.verdict)),
-        *(_el("p", None, _el("em", None, "Remark: "), r) for r in trial.remarks),
+        *(_el("p", None, _el("em", None, "Remark: "), *_caption(r)) for r in trial.remarks),
     ]
 
 
-def _solution(steps: Sequence[Step], tags: _Tags, level: str = "h2") -> list[ET.Element]:
-    out = [_el(level, None, "Solution")]
+def _resolved(title: str, solution: Solution) -> str:
+    """After a failed trial, the final solve's heading says it is the re-solve."""
+    return f"{title} (re-solved)" if solution.trials else title
+
+
+def _solution(
+    steps: Sequence[Step], tags: EquationTags, level: str = "h2", title: str = "Solution"
+) -> list[ET.Element]:
+    out = [_el(level, None, title)]
     if not steps:
         return [*out, _el("p", None, "No solve steps.")]
     return out + [e for s in steps for e in _step(s, tags)]
 
 
-def _step(step: Step, tags: _Tags) -> list[ET.Element]:
+def _step(step: Step, tags: EquationTags) -> list[ET.Element]:
     if step.heading:
         lead: list[Item] = _caption(step.heading)
     else:
@@ -557,7 +533,7 @@ def _step(step: Step, tags: _Tags) -> list[ET.Element]:
     out = [_el("p", None, _el("strong", None, f"Step {step.index}. "), *lead, f" ({step.method}):")]
     out += [_result(r) for r in step.results]
     if step.discarded:
-        items = [_el("li", None, *_caption(pretty_unit(d))) for d in step.discarded]
+        items = [_el("li", None, *_caption(pretty_unit(tags.untagged(d)))) for d in step.discarded]
         out += [_el("p", None, "Discarded roots:"), _el("ul", None, *items)]
     if step.note.strip():
         out.append(_el("p", {"class": "note"}, _el("em", None, *_caption(step.note))))

@@ -21,10 +21,11 @@ import unicodedata
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import PurePath
 
-from dynsolve.format import and_list, lines_phrase, pretty_unit
+from dynsolve.format import and_list, pretty_unit
 from dynsolve.names import GREEK, latex_name
 from dynsolve.render import Layout, sheet_plan
 from dynsolve.render.fbd_tikz import free_body_tikz
+from dynsolve.render.numbering import BY_LINE, EquationTags, sheet_tags
 from dynsolve.results import (
     FAILED,
     NOT_RUN,
@@ -279,12 +280,14 @@ def _concat(pieces: list[Piece]) -> str:
 # ---- document -------------------------------------------------------------------------
 
 
-def render_latex(solution: Solution, layout: Layout = "full") -> str:
+def render_latex(solution: Solution, layout: Layout = "full", source: bool | None = None) -> str:
     """The solution as a standalone LaTeX document (article class) for pdflatex.
 
     ``layout``: ``full`` (everything), ``handout`` (the derivation a teacher hands out: no
-    file name or status, no answer-key column, no checks) or ``key`` (the answers with the
-    key and the checks, for whoever marks).
+    file name or status, no answer-key column, no checks, its equations numbered (1), (2), …
+    rather than tagged by spec line) or ``key`` (the answers with the key and the checks, for
+    whoever marks). ``source`` shows the spec's ``source:`` line (None: all but the handout,
+    where it could give the answer away).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -309,11 +312,13 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
     >>> "\\\\item[$\\\\checkmark$] \\\\textbf{cord T taut} (holds)" in tex
     True
     """
-    plan = sheet_plan(layout)
+    plan = sheet_plan(layout, source)
     key = solution.key if "key" in plan else ()
+    cited = "source" in plan
+    tags = sheet_tags(solution, numbered=layout == "handout")
     parts: dict[str, Callable[[], list[str]]] = {
-        "title": lambda: [_title(solution)],
-        "handout_title": lambda: [_title(solution, handout=True)],
+        "title": lambda: [_title(solution, cited=cited)],
+        "handout_title": lambda: [_title(solution, handout=True, cited=cited)],
         "warnings": lambda: [
             f"\\textbf{{Warning:}} {escape_latex(w)}\n" for w in solution.warnings
         ],
@@ -324,13 +329,15 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
             + _linkage_section(solution)
         ),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
-        "trials": lambda: [_trial_section(t) for t in solution.trials],
+        "trials": lambda: [
+            _trial_section(t, ts) for t, ts in zip(solution.trials, tags.trials, strict=True)
+        ],
         "equations": lambda: [
-            _equations_section(solution.equations),
-            *_second_moments_section(solution.second_moments),
+            _resolved(_equations_section(solution.equations, tags.final), solution),
+            *_second_moments_section(solution.second_moments, tags.final),
         ],
         "energy": lambda: _energy_section(solution.energy),
-        "steps": lambda: [_solution_section(solution.steps)],
+        "steps": lambda: [_resolved(_solution_section(solution.steps, tags.final), solution)],
         "answers": lambda: (
             [_answers_section(solution.answers, key)]
             + [f"\\textit{{Remark:}} {_remark(r)}\n" for r in solution.remarks]
@@ -345,6 +352,18 @@ def render_latex(solution: Solution, layout: Layout = "full") -> str:
     return "\n\n".join([preamble, r"\begin{document}", *body, r"\end{document}"]) + "\n"
 
 
+def _resolved(section: str, solution: Solution) -> str:
+    """After a failed trial, the final solve's heading says it is the re-solve.
+
+    >>> _resolved("\\\\subsection*{Equations}", Solution("", "", "", "SI", "", (), (), (), (),
+    ...           (), (), "", trials=(Trial("no slip", (), (), "fails"),)))
+    '\\\\subsection*{Equations (re-solved)}'
+    """
+    if not solution.trials:
+        return section
+    return re.sub(r"^\\subsection\*\{(\w+)\}", r"\\subsection*{\1 (re-solved)}", section, count=1)
+
+
 def _math(fragment: str) -> str:
     """Inline math, or nothing for an empty fragment."""
     fragment = safe_math(fragment).strip()
@@ -355,11 +374,13 @@ def _name(name: str) -> str:
     return _math(latex_name(name))
 
 
-def _title(solution: Solution, handout: bool = False) -> str:
+def _title(solution: Solution, handout: bool = False, cited: bool = True) -> str:
+    """The title, the source line when ``cited``, and (not on the handout) the spec's file
+    name, status and solver messages."""
     title = escape_latex(solution.title.strip() or PurePath(solution.file).name or "Problem")
     lines = [f"\\section*{{{title}}}"]
-    if solution.source.strip():
-        lines.append(f"{{\\large\\itshape {escape_latex(solution.source)}\\par}}")
+    if cited and solution.source.strip():
+        lines.append(f"{{\\large\\itshape {caption_latex(solution.source)}\\par}}")
     if handout:  # the handout names no file, status or solver remarks
         return "\n".join(lines)
     lines.append(r"\smallskip")
@@ -430,11 +451,11 @@ def _prose(text: str) -> str:
 
 
 def _given_cells(given: GivenRow) -> list[str]:
-    value = escape_latex(given.written) if given.symbolic else _math(given.latex_value)
+    value = caption_latex(given.written) if given.symbolic else _math(given.latex_value)
     return [
         _math(given.latex_name),
         value,
-        escape_latex(given.base),
+        escape_latex(pretty_unit(given.base)),
         _prose(given.description),
     ]
 
@@ -451,7 +472,7 @@ def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
             _math(latex_name(t.name)),
             _math(t.formula_latex),
             _math(t.value_latex),
-            escape_latex(t.meaning),
+            caption_latex(t.meaning),
         ]
         for t in terms
     ]
@@ -461,25 +482,49 @@ def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
     ]
 
 
-def _equations_section(equations: Sequence[EquationRow]) -> str:
+def _equations_section(equations: Sequence[EquationRow], tags: EquationTags = BY_LINE) -> str:
     if not equations:
         return "\\subsection*{Equations}\nNo equations."
-    return "\n\n".join(["\\subsection*{Equations}", *(_equation(e) for e in equations)])
+    return "\n\n".join(["\\subsection*{Equations}", *(_equation(e, tags) for e in equations)])
 
 
-def _second_moments_section(rows: Sequence[EquationRow]) -> list[str]:
+def _second_moments_section(rows: Sequence[EquationRow], tags: EquationTags = BY_LINE) -> list[str]:
     """The other moment point's equation (a check, not used to solve); nothing without one."""
     if not rows:
         return []
     title = "\\subsection*{A second moment point (a check, not used to solve)}"
-    return ["\n\n".join([title, *(_equation(e) for e in rows)])]
+    return ["\n\n".join([title, *(_equation(e, tags) for e in rows)])]
 
 
 _SUBSCRIPTED = re.compile(
-    r"\(([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+)\)_([A-Za-z0-9]+)"  # (a_G)_x
-    r"|([ΣΔ]?)([A-Za-zα-ωΑ-Ω]+)_([A-Za-z0-9]+(?:/[A-Za-z0-9]+)?)([²³]?)"  # ΣF_x, r_G/A, r_G²
+    r"\((?P<pbase>[A-Za-zα-ωΑ-ΩḢ]+)_(?P<inner>[A-Za-z0-9]+)\)_(?P<outer>[A-Za-z0-9]+)"  # (a_G)_x
+    r"|(?P<op>[ΣΔ]?)(?P<base>[A-Za-zα-ωΑ-ΩḢ]+)"  # ΣF_x, r_G/A, r_G², v_2_disk, I_G,xx
+    r"_(?P<sub>[A-Za-z0-9]+(?:[/,_][A-Za-z0-9]+)*)(?P<power>[²³]?)"
+    r"|(?P<mu>μ)(?P<kind>[sk])(?![A-Za-z])"  # μs, μk: the coefficients of friction
+    r"|\)_(?P<closed>[A-Za-z0-9]+)"  # (Ḣ_G + ω × H_G)_y: a component of a sum
+    r"|(?P<dot>Ḣ)"  # Ḣ alone
 )
 _POWERS = {"²": "^{2}", "³": "^{3}", "": ""}
+_BASES = {"Ḣ": r"\dot{H}"}  # a rate of change (Ḣ_G)
+_ASCII_POWER = re.compile(r"(?:\*\*|\^)(?:\{(-?\d+)\}|(-?\d+))")
+_TIMES_NUMBER = re.compile(r"(?<=\d)\*(?=[A-Za-zα-ωΑ-Ω(])")  # 2*s_G: 2s_G
+_MINUS = re.compile(r"(?:^|(?<=[\s(=]))-(?=[\dA-Za-zα-ω√(.])")  # -0.667, -L: a minus sign
+_TO_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def ascii_maths(text: str) -> str:
+    """Plain-text mathematics as it is typeset: powers as superscripts, a product as a
+    centred dot (none after a number), ``sqrt(`` as ``√(``, a hyphen before a number or
+    name as a minus sign.
+
+    >>> ascii_maths("s_2 = 2*s_G, -L + sqrt(L**2 + s^2), 15 ft*lb")
+    's_2 = 2s_G, −L + √(L² + s²), 15 ft·lb'
+    >>> ascii_maths("no-slip: -0.667 rad/s (Example 17-94)")
+    'no-slip: −0.667 rad/s (Example 17-94)'
+    """
+    text = _ASCII_POWER.sub(lambda m: (m[1] or m[2]).translate(_TO_SUPERSCRIPT), text)
+    text = _TIMES_NUMBER.sub("", text.replace("sqrt(", "√("))
+    return _MINUS.sub("−", text.replace("*", "·"))
 
 
 def caption_latex(text: str) -> str:
@@ -490,49 +535,85 @@ def caption_latex(text: str) -> str:
     '$\\\\Sigma F_{x}$ = m $(a_{G})_{x}$ (drum)'
     >>> caption_latex("ΣM_O = I_O α, I_O = I_G + m r_G²")
     '$\\\\Sigma M_{O}$ = $I_{O}$ $\\\\alpha$, $I_{O}$ = $I_{G}$ + m $r_{G}^{2}$'
+    >>> caption_latex("αH_G")
+    '$\\\\alpha H_{G}$'
     """
-    return "".join(
+    joined = "".join(
         f"${piece}$" if math else escape_latex(piece) for math, piece in caption_pieces(text)
     )
+    return _TOUCHING.sub(" ", joined)  # "$\\alpha$$H_{G}$" would open display maths
+
+
+_TOUCHING = re.compile(r"(?<!\\)\$\$")
 
 
 def caption_pieces(text: str) -> list[tuple[bool, str]]:
     """A caption cut into (is it mathematics, piece): its symbols as LaTeX math, the words
-    around them as they are (plain text, unescaped), for the LaTeX and HTML renderers.
+    around them as they are (plain text, unescaped, its ASCII maths as :func:`ascii_maths`
+    writes it), for the LaTeX and HTML renderers.
 
     >>> caption_pieces("ΣF_x = m")
     [(True, '\\\\Sigma F_{x}'), (False, ' = m')]
     >>> caption_pieces("no mu_s")  # a Greek letter spelt out
     [(False, 'no '), (True, '\\\\mu_{s}')]
+    >>> caption_pieces("(Ḣ_G)_y = (Ḣ)_rel")
+    [(True, '(\\\\dot{H}_{G})_{y}'), (False, ' = ('), (True, '\\\\dot{H})_{rel}')]
+    >>> caption_pieces("v_2_disk > μs N")  # a name's every subscript; μs is μ_s
+    [(True, 'v_{2,disk}'), (False, ' > '), (True, '\\\\mu_{s}'), (False, ' N')]
     """
+    text = ascii_maths(text)
     out: list[tuple[bool, str]] = []
     last = 0
     for match in _SUBSCRIPTED.finditer(text):
         out.append((False, text[last : match.start()]))
-        if match.group(1):
-            base, inner, outer = match.group(1), match.group(2), match.group(3)
-            math = f"({safe_math(base).strip()}_{{{inner}}})_{{{outer}}}"
+        if match["pbase"]:
+            base = _BASES.get(match["pbase"]) or safe_math(match["pbase"]).strip()
+            math = f"({base}_{{{match['inner']}}})_{{{match['outer']}}}"
+        elif match["dot"]:
+            math = _BASES["Ḣ"]
+        elif match["closed"]:
+            math = f")_{{{match['closed']}}}"
+        elif match["mu"]:
+            math = f"\\mu_{{{match['kind']}}}"
         else:
-            sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match.group(4)]
-            word = match.group(5)  # a Greek letter spelt out (mu_s) is the letter
-            base = latex_name(word) if word in GREEK else safe_math(word).strip()
-            math = f"{sigma}{base}_{{{match.group(6)}}}{_POWERS[match.group(7)]}"
-        out.append((True, math))
+            sigma = {"Σ": "\\Sigma ", "Δ": "\\Delta ", "": ""}[match["op"]]
+            word = match["base"]  # a Greek letter spelt out (mu_s) is the letter
+            base = _BASES.get(word) or (latex_name(word) if word in GREEK else _base_math(word))
+            sub = match["sub"].replace("_", ",")
+            math = f"{sigma}{base}_{{{sub}}}{_POWERS[match['power']]}"
+        if out[-1] == (False, "") and len(out) > 1 and out[-2][0]:
+            out[-2:] = [(True, out[-2][1] + math)]  # one formula, not two touching
+        else:
+            out.append((True, math))
         last = match.end()
     out.append((False, text[last:]))
     return [piece for piece in out if piece[1]]
 
 
-def _equation(row: EquationRow) -> str:
+def _base_math(word: str) -> str:
+    """A subscripted name's base: a letter in italic, a word (``wheel`` of wheel_A) upright.
+
+    >>> _base_math("F"), _base_math("wheel"), _base_math("αH")
+    ('F', '\\\\mathrm{wheel}', '\\\\alpha H')
+    """
+    if len(word) > 1 and word.isascii() and word.isalpha():
+        return f"\\mathrm{{{word}}}"
+    return safe_math(word).strip()
+
+
+def _equation(row: EquationRow, tags: EquationTags = BY_LINE) -> str:
     note = caption_latex(row.note)
     if row.constraint:
         note = "Constraint" + (f": {note}" if note else "")
-    head = f"\\noindent\\textit{{{note}}}\\hfill{{\\small {_dimension(row)}}}"
+    # the dimension flush right, on the caption's last line or (no room) the next: never
+    # touching the caption's words (the TeXbook's trick for a right-set tail)
+    right = r"\unskip\nobreak\hfil\penalty50\hskip1em\hbox{}\nobreak\hfill"
+    head = f"\\noindent\\textit{{{note}}}{right}{{\\small {_dimension(row)}}}"
     return "\n".join([
         head,
         r"\begin{equation*}",
         f"{_fitted(safe_math(row.latex).strip() or '?', EQUATION_WIDTH)} "
-        f"\\tag*{{(line {row.line})}}",
+        f"\\tag*{{{tags.tag(row)}}}",
         r"\end{equation*}",
     ])  # fmt: skip
 
@@ -553,42 +634,42 @@ def _dimension(row: EquationRow) -> str:
 # ---- solution steps
 
 
-def _trial_section(trial: Trial) -> str:
+def _trial_section(trial: Trial, tags: EquationTags = BY_LINE) -> str:
     """A case assumed first: its equations and solve, then the check that rejected it."""
-    equations = _equations_section(trial.equations).replace(
+    equations = _equations_section(trial.equations, tags).replace(
         "\\subsection*{Equations}", "\\subsubsection*{Equations}"
     )
-    steps = _solution_section(trial.steps).replace(
+    steps = _solution_section(trial.steps, tags).replace(
         "\\subsection*{Solution}", "\\subsubsection*{Solution}"
     )
-    title = f"\\subsection*{{Trial: {escape_latex(trial.assumption)} (assumed, then checked)}}"
-    verdict = f"\\textbf{{Check:}} $\\times$ {escape_latex(trial.verdict)}"
-    remarks = [f"\\textit{{Remark:}} {escape_latex(r)}" for r in trial.remarks]
+    title = f"\\subsection*{{Trial: {caption_latex(trial.assumption)} (assumed, then checked)}}"
+    verdict = f"\\textbf{{Check:}} $\\times$ {caption_latex(trial.verdict)}"
+    remarks = [f"\\textit{{Remark:}} {caption_latex(r)}" for r in trial.remarks]
     moments = [
         m.replace("\\subsection*", "\\subsubsection*", 1)
-        for m in _second_moments_section(trial.second_moments)
+        for m in _second_moments_section(trial.second_moments, tags)
     ]
     return "\n\n".join([title, equations, steps, *moments, verdict, *remarks])
 
 
-def _solution_section(steps: Sequence[Step]) -> str:
+def _solution_section(steps: Sequence[Step], tags: EquationTags = BY_LINE) -> str:
     if not steps:
         return "\\subsection*{Solution}\nNo solve steps."
-    return "\n\n".join(["\\subsection*{Solution}", *(_step(s) for s in steps)])
+    return "\n\n".join(["\\subsection*{Solution}", *(_step(s, tags) for s in steps)])
 
 
-def _step(step: Step) -> str:
+def _step(step: Step, tags: EquationTags = BY_LINE) -> str:
     names = and_list([_name(n) for n in step.unknowns])
     lead = f"\\paragraph{{Step {step.index}.}} " + (
-        caption_latex(step.heading) if step.heading else f"{lines_phrase(step.lines, '--')} {names}"
+        caption_latex(step.heading) if step.heading else f"{tags.phrase(step.lines, '--')} {names}"
     )
     lines = [f"{lead} ({escape_latex(step.method)}):"]
     if step.results:
         rows = " \\\\\n".join(_result(r) for r in step.results)
         lines += [r"\begin{align*}", rows, r"\end{align*}"]
-    lines += _discarded(step.discarded)
+    lines += _discarded([tags.untagged(d) for d in step.discarded])
     if step.note.strip():
-        lines.append(f"\\textit{{{escape_latex(step.note)}}}")
+        lines.append(f"\\textit{{{caption_latex(step.note)}}}")
     return "\n".join(lines)
 
 
@@ -635,7 +716,7 @@ def _fitted(latex: str, width: str) -> str:
 def _discarded(discarded: Sequence[str]) -> list[str]:
     if not discarded:
         return []
-    items = [f"\\item {escape_latex(pretty_unit(d))}" for d in discarded]
+    items = [f"\\item {caption_latex(pretty_unit(d))}" for d in discarded]
     return ["Discarded roots:", r"\begin{itemize}", *items, r"\end{itemize}"]
 
 
@@ -804,14 +885,17 @@ def _free_body(body: FreeBody, system: str = "SI") -> str:
         facts.append("{\\small Unknown forces are dashed and red; known forces solid.}")
     if body.kinetic:
         facts.append("{\\small The kinetic diagram (blue, right of =) shows the senses assumed.}")
+    # the heading kept with its picture; the facts below may go on to the next page, so a
+    # body that does not fit whole leaves no half-empty page behind
     return "\n".join([
         r"\par\noindent\begin{minipage}{\linewidth}",
-        f"\\subsubsection*{{{escape_latex(body.body) or '?'}{shape}}}",
+        f"\\subsubsection*{{{caption_latex(body.body) or '?'}{shape}}}",
         r"\begin{center}",
         free_body_picture(body, system),
         r"\end{center}",
+        r"\end{minipage}\par",
         " \\\\\n".join(facts),
-        r"\end{minipage}\par\medskip",
+        r"\par\medskip",
     ])  # fmt: skip
 
 
@@ -881,4 +965,4 @@ def _assumption_text(assumption: Assumption) -> str:
     detail = pretty_unit(assumption.detail)
     detail = f": {caption_latex(detail)}" if detail.strip() else ""
     status = {PASSED: "holds", FAILED: "\\textbf{fails}", NOT_RUN: "not decided"}[assumption.status]
-    return f"\\textbf{{{escape_latex(assumption.name) or '?'}}} ({status}){detail}"
+    return f"\\textbf{{{caption_latex(assumption.name) or '?'}}} ({status}){detail}"

@@ -13,9 +13,10 @@ import re
 from collections.abc import Callable, Sequence
 from pathlib import PurePath
 
-from dynsolve.format import and_list, lines_phrase, pretty_unit
+from dynsolve.format import and_list, pretty_unit
 from dynsolve.names import latex_name
 from dynsolve.render import Layout, sheet_plan
+from dynsolve.render.numbering import BY_LINE, EquationTags, sheet_tags
 from dynsolve.results import (
     NOT_RUN,
     PASSED,
@@ -63,9 +64,9 @@ def _escape_marker(match: re.Match[str]) -> str:
     return f"{match.group(1)}\\{match.group(2)}"
 
 
-def render_markdown(solution: Solution, layout: Layout = "full") -> str:
-    """The solution as a GitHub-flavoured Markdown document; ``layout`` as for LaTeX
-    (``full``, ``handout`` or ``key``).
+def render_markdown(solution: Solution, layout: Layout = "full", source: bool | None = None) -> str:
+    """The solution as a GitHub-flavoured Markdown document; ``layout`` and ``source`` as
+    for LaTeX (``full``, ``handout`` or ``key``; the spec's source line shown or not).
 
     >>> from dynsolve.results import AnswerRow, Solution
     >>> answer = AnswerRow("T", 105.86, "N", "106 N", "14715/139", "106\\\\,\\\\mathrm{N}", "")
@@ -88,21 +89,25 @@ def render_markdown(solution: Solution, layout: Layout = "full") -> str:
     >>> "- Kinetic diagram: $I_{G} \\\\, α$" in doc
     True
     """
-    plan = sheet_plan(layout)
+    plan = sheet_plan(layout, source)
     key = solution.key if "key" in plan else ()
+    cited = "source" in plan
+    tags = sheet_tags(solution, numbered=layout == "handout")
     parts: dict[str, Callable[[], list[str]]] = {
-        "title": lambda: [_title(solution)],  # its warnings included
-        "handout_title": lambda: [_title(solution, handout=True)],
+        "title": lambda: [_title(solution, cited=cited)],  # its warnings included
+        "handout_title": lambda: [_title(solution, handout=True, cited=cited)],
         "givens": lambda: [_givens_section(solution.givens, solution.system)],
         "free_body": lambda: _free_body_section(solution.free_body),
         "assumptions": lambda: _assumptions_section(solution.assumptions),
-        "trials": lambda: [_trial_section(t) for t in solution.trials],
+        "trials": lambda: [
+            _trial_section(t, ts) for t, ts in zip(solution.trials, tags.trials, strict=True)
+        ],
         "equations": lambda: [
-            _equations_section(solution.equations),
-            *_second_moments_section(solution.second_moments),
+            _equations_section(solution.equations, tags.final),
+            *_second_moments_section(solution.second_moments, tags.final),
         ],
         "energy": lambda: _energy_section(solution.energy),
-        "steps": lambda: [_solution_section(solution.steps)],
+        "steps": lambda: [_solution_section(solution.steps, tags.final)],
         "answers": lambda: (
             [_answers_section(solution.answers, key)]
             + ["\n".join(f"- *Remark:* {escape_markdown(r.text)}" for r in solution.remarks)]
@@ -154,10 +159,12 @@ def _status_mark(status: str) -> str:
 # ---- sections
 
 
-def _title(solution: Solution, handout: bool = False) -> str:
+def _title(solution: Solution, handout: bool = False, cited: bool = True) -> str:
+    """The title, the source line when ``cited``, and (not on the handout) the spec's file
+    name, status and solver messages."""
     title = solution.title.strip() or PurePath(solution.file).name or "Problem"
     lines = [f"# {escape_markdown(title)}", ""]
-    if solution.source.strip():
+    if cited and solution.source.strip():
         lines += [f"*{escape_markdown(solution.source)}*", ""]
     if handout:  # the handout names no file, status or solver remarks
         warnings = [f"- **Warning:** {escape_markdown(w)}" for w in solution.warnings]
@@ -187,27 +194,28 @@ def _given_cells(given: GivenRow) -> list[str]:
     return [_cell_math(given.latex_name), value, base, escape_markdown(given.description)]
 
 
-def _equations_section(equations: Sequence[EquationRow]) -> str:
+def _equations_section(equations: Sequence[EquationRow], tags: EquationTags = BY_LINE) -> str:
     if not equations:
         return "## Equations\n\nNo equations."
-    rows = [_equation_cells(e) for e in equations]
-    header = ["Line", "Equation", "Principle", "Dimensions"]
+    rows = [_equation_cells(e, tags) for e in equations]
+    header = ["Line" if tags.numbers is None else "No.", "Equation", "Principle", "Dimensions"]
     return "## Equations\n\n" + _table(header, ["--:", ":--", ":--", ":--"], rows)
 
 
-def _second_moments_section(rows: Sequence[EquationRow]) -> list[str]:
+def _second_moments_section(rows: Sequence[EquationRow], tags: EquationTags = BY_LINE) -> list[str]:
     """The other moment point's equation (a check, not used to solve); nothing without one."""
     if not rows:
         return []
     title = "## A second moment point (a check, not used to solve)"
-    return [_equations_section(rows).replace("## Equations", title, 1)]
+    return [_equations_section(rows, tags).replace("## Equations", title, 1)]
 
 
-def _equation_cells(row: EquationRow) -> list[str]:
+def _equation_cells(row: EquationRow, tags: EquationTags = BY_LINE) -> list[str]:
     note = escape_markdown(row.note)
     if row.constraint:
         note = "constraint" + (f": {note}" if note else "")
-    return [str(row.line), _cell_math(row.latex) or "?", note, _dimension(row)]
+    number = str(row.line) if tags.numbers is None else tags.tag(row).strip("()")
+    return [number, _cell_math(row.latex) or "?", note, _dimension(row)]
 
 
 _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
@@ -216,19 +224,21 @@ _DIMENSION = re.compile(r"^(.*\S)\s+\[([^\[\]]*)\]$")
 def _dimension(row: EquationRow) -> str:
     """``force, N ✓`` from ``force [N]``, or a marked mismatch."""
     match = _DIMENSION.match(row.dimension.strip())
-    text = f"{match.group(1)}, {match.group(2)}" if match else row.dimension.strip()
+    text = f"{match.group(1)}, {pretty_unit(match.group(2))}" if match else row.dimension.strip()
     shown = escape_markdown(text)
     return f"{shown} ✓" if row.dimension_ok else f"**dimensions differ**: {shown} ✗"
 
 
-def _trial_section(trial: Trial) -> str:
+def _trial_section(trial: Trial, tags: EquationTags = BY_LINE) -> str:
     """A case assumed first: its equations and solve, then the check that rejected it."""
-    equations = _equations_section(trial.equations).replace("## Equations", "### Equations")
-    steps = _solution_section(trial.steps).replace("## Solution", "### Solution")
+    equations = _equations_section(trial.equations, tags).replace("## Equations", "### Equations")
+    steps = _solution_section(trial.steps, tags).replace("## Solution", "### Solution")
     verdict = f"**Check:** ✗ {escape_markdown(trial.verdict)}"
     remarks = [f"*Remark:* {escape_markdown(r)}" for r in trial.remarks]
     title = f"## Trial: {escape_markdown(trial.assumption)} (assumed, then checked)"
-    moments = [m.replace("## ", "### ", 1) for m in _second_moments_section(trial.second_moments)]
+    moments = [
+        m.replace("## ", "### ", 1) for m in _second_moments_section(trial.second_moments, tags)
+    ]
     return "\n\n".join([title, equations, steps, *moments, verdict, *remarks])
 
 
@@ -250,21 +260,23 @@ def _energy_section(terms: Sequence[EnergyTerm]) -> list[str]:
     return [f"{title}\n\n" + _table(header, [":--"] * 4, rows)]
 
 
-def _solution_section(steps: Sequence[Step]) -> str:
+def _solution_section(steps: Sequence[Step], tags: EquationTags = BY_LINE) -> str:
     if not steps:
         return "## Solution\n\nNo solve steps."
-    return "\n\n".join(["## Solution", *(_step(s) for s in steps)])
+    return "\n\n".join(["## Solution", *(_step(s, tags) for s in steps)])
 
 
-def _step(step: Step) -> str:
+def _step(step: Step, tags: EquationTags = BY_LINE) -> str:
     names = and_list([_name(n) for n in step.unknowns])
     lead = f"**Step {step.index}.** " + (
-        escape_markdown(step.heading) if step.heading else f"{lines_phrase(step.lines)} {names}"
+        escape_markdown(step.heading) if step.heading else f"{tags.phrase(step.lines)} {names}"
     )
     blocks = [f"{lead} ({escape_markdown(step.method)}):"]
     blocks += [_display(_result(r)) for r in step.results]
     if step.discarded:
-        items = "\n".join(f"- {escape_markdown(pretty_unit(d))}" for d in step.discarded)
+        items = "\n".join(
+            f"- {escape_markdown(pretty_unit(tags.untagged(d)))}" for d in step.discarded
+        )
         blocks.append(f"Discarded roots:\n\n{items}")
     if step.note.strip():
         blocks.append(f"*{escape_markdown(step.note)}*")
