@@ -116,3 +116,10 @@ def test_every_format_shows_the_integrated_value_with_its_unit() -> None:
 def test_a_3d_travel_from_rest_states_its_zero_energy_in_joules() -> None:
     # gear_rolling starts at rest: T1 = 0 J (SI)
     assert "at rest: T1 = 0 J" in _details("rigid3d/gear_rolling.dyn")
+
+
+def test_a_speed_found_a_second_way_states_both_values_in_metres_per_second() -> None:
+    # drum_block_cord_energy: U_W = 20 · 9.81 · 2 = 392.4 J = 21.71875 v² → v = 4.250569 m/s;
+    # Example 17.11's a = 4.517 m/s² gives v = √(2 a h) = 4.2506 m/s the second way
+    check = next(d for d in _details("scenes/drum_block_cord_energy.dyn") if "(work–energy: " in d)
+    assert ": 4.250569 m/s (work–energy: 4.250569 m/s; relative difference " in check

@@ -611,11 +611,14 @@ def cross_checks(
         if found is None:
             continue
         gap = abs(found - other) / max(abs(found), 1e-300)
+        dim = problem.formulation.unknowns.get(unknown, Dim())  # a speed or a rate of turn
         checks.append(
             Check(
                 f"second method: {what}",
                 gap <= SECOND_METHOD_AGREEMENT,
-                f"{how}: {other:.7g} (work–energy: {found:.7g}; relative difference {gap:.1e})",
+                f"{how}: {with_unit(other, dim, problem.spec.system, '.7g')} (work–energy: "
+                f"{with_unit(found, dim, problem.spec.system, '.7g')}; relative difference "
+                f"{gap:.1e})",
             )
         )
     return (
