@@ -429,7 +429,9 @@ def _unchecked_starts(
 
     substitution = {**problem.system.knowns, **values}
     return tuple(
-        w for record in problem.formulation.stages for w in from_rest(record, substitution)[1]
+        w
+        for record in problem.formulation.stages
+        for w in from_rest(record, substitution, problem.spec.system)[1]
     )
 
 
@@ -1300,6 +1302,7 @@ class _View:
                     limit,
                     found,
                     self.knowns,  # type: ignore[arg-type]
+                    self.problem.spec.system,
                 )
             elif found.angle is not None:
                 self.limit_checks.append(

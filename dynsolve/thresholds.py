@@ -24,7 +24,7 @@ import sympy
 from dynsolve.errors import Position, SpecError
 from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import dot
-from dynsolve.units import Dim
+from dynsolve.units import Dim, with_unit
 
 THRESHOLDS = ("tips", "slips", "slack", "lifts")
 
@@ -200,6 +200,15 @@ class _Limit:
                 return ((None, tidy(candidate), None),)
         return ((None, root, None),)
 
+    def shown(self, value: float, kind: str | Dim) -> str:
+        """A value in base units with its unit in the problem's system, as a check states it."""
+        return with_unit(value, kind, self.problem.spec.system)
+
+    def load_size(self, value: float) -> str:
+        """The load's size with its unit (its dimension as the spec's units gave it)."""
+        dim = self.problem.dims.dims.get(self.load.name)
+        return self.shown(value, dim) if dim is not None else f"{value:.4g}"
+
     def refused(self, reason: str) -> Threshold:
         return Threshold(None, checks=(("refused", False, reason),))
 
@@ -278,8 +287,10 @@ class _Limit:
             return self.refused(f"friction at {C} at the tipping load could not be evaluated")
         holds = abs(F_tip) <= mu * N_tip * (1 + 1e-9)
         bound = "μs N" if mu_s is not None else "μk N (≤ μs N)"
-        detail = f"at {P} = {size:.4g}: |F| = {abs(F_tip):.4g} " + (
-            f"≤ {bound} = {mu * N_tip:.4g}" if holds else f"> {bound} = {mu * N_tip:.4g}"
+        detail = f"at {P} = {self.load_size(size)}: |F| = {self.shown(abs(F_tip), 'force')} " + (
+            f"≤ {bound} = {self.shown(mu * N_tip, 'force')}"
+            if holds
+            else f"> {bound} = {self.shown(mu * N_tip, 'force')}"
         )
         if holds:
             return Threshold(
@@ -297,7 +308,7 @@ class _Limit:
         slip_size = real_value(slip[0], {}) if slip is not None else None
         if slip is None or slip_size is None:
             return self.refused(detail + ": it slides first, and its slip load was not found")
-        first = f"{detail}: it slides first, at {P} = {slip_size:.4g} (|F| = μs N)"
+        first = f"{detail}: it slides first, at {P} = {self.load_size(slip_size)} (|F| = μs N)"
         if mu_k is None:
             return self.refused(first + "; give mu_k to follow it sliding to the load that tips it")
         sense = 1 if (self.at(F, solved, slip[0]) or 0) > 0 else -1
@@ -336,8 +347,9 @@ class _Limit:
                 (
                     "sliding at the tipping load",
                     True,
-                    f"at {P} = {size:.4g} ≥ {slip_size:.4g}: sliding, a_G along the base = "
-                    f"{abs(along):.4g} against kinetic friction",
+                    f"at {P} = {self.load_size(size)} ≥ {self.load_size(slip_size)}: sliding, "
+                    f"a_G along the base = {self.shown(abs(along), 'acceleration')} against "
+                    "kinetic friction",
                 ),
             ),
         )
@@ -370,9 +382,10 @@ class _Limit:
             lo, hi = min(edges), max(edges)  # type: ignore[type-var]
             inside = lo - 1e-9 * (hi - lo) <= place <= hi + 1e-9 * (hi - lo)
             detail = (
-                f"at {P} = {size:.4g}: N_{base.name} acts at x = {place:.4g} from G's line, "
+                f"at {P} = {self.load_size(size)}: N_{base.name} acts at x = "
+                f"{self.shown(place, 'length')} from G's line, "
                 + ("within" if inside else "outside")
-                + f" [{lo:.4g}, {hi:.4g}]"
+                + f" [{lo:.4g}, {self.shown(hi, 'length')}]"
             )
             if not inside:
                 return self.refused(detail + ": it tips before it slips")

@@ -216,37 +216,46 @@ def natural_unit(dim: Dim, system: System, name: str = "") -> str:
     return "*".join(parts)
 
 
-def with_unit(value: float, kind: str, system: System) -> str:
-    """``value`` (in the system's base units) to 4 significant figures with its unit, as
-    a check or an assumption states it; ``kind`` names its dimension (force, velocity,
-    acceleration, energy, length: :data:`NAMED_DIMENSIONS`).
+def with_unit(value: float, kind: str | Dim, system: System, spec: str = ".4g") -> str:
+    """``value`` (in the system's base units) to 4 significant figures (or ``spec``) with
+    its unit, as a check or an assumption states it; ``kind`` names its dimension (force,
+    velocity, acceleration, energy, moment, length: :data:`NAMED_DIMENSIONS`) or is it.
 
     >>> with_unit(19.7712, "force", "SI"), with_unit(20.0, "velocity", "FPS")
     ('19.77 N', '20 ft/s')
     >>> with_unit(-3.5, "energy", "FPS"), with_unit(2.0, "acceleration", "SI")
     ('-3.5 ft·lb', '2 m/s²')
+    >>> with_unit(740.35372, "energy", "SI", ".7g"), with_unit(2.89, "moment", "FPS")
+    ('740.3537 J', '2.89 lb·ft')
     """
     from dynsolve.format import pretty_unit
 
-    unit = natural_unit(Dim.of(kind), system, "T" if kind in ("energy", "work") else "")
-    return f"{value:.4g} {pretty_unit(unit)}"
+    dim = kind if isinstance(kind, Dim) else Dim.of(kind)
+    unit = natural_unit(dim, system, "T" if kind in ("energy", "work") else "")
+    return f"{format(value, spec)} {pretty_unit(unit)}"
 
 
 @dataclass(frozen=True)
-class Measured:
-    """A number that formats with its unit, for a template written with a format spec.
+class InSystem:
+    """A number in a system's base units, for a template written before the system is
+    known: a format spec that names a kind after a space (``{value:.4g force}``) shows
+    the value with that kind's unit (:func:`with_unit`); a spec without one, the number
+    alone (the template writes its own unit, as ``Δt = {value:.4g} s``).
 
-    >>> "{value:.4g} > 0".format(value=Measured(19.7712, "N"))
-    '19.77 N > 0'
+    >>> "{value:.4g force} > 0".format(value=InSystem(19.7712, "FPS"))
+    '19.77 lb > 0'
+    >>> "Δt = {value:.3g} s".format(value=InSystem(0.1234, "SI"))
+    'Δt = 0.123 s'
     """
 
     value: float
-    unit: str
+    system: System
 
     def __format__(self, spec: str) -> str:
-        from dynsolve.format import pretty_unit
-
-        return f"{format(self.value, spec)} {pretty_unit(self.unit)}".rstrip()
+        number, _, kind = spec.partition(" ")
+        if not kind:
+            return format(self.value, number)
+        return with_unit(self.value, kind, self.system, number or ".4g")
 
 
 def base_unit(dim: Dim, system: System) -> str:

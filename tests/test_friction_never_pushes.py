@@ -98,7 +98,9 @@ def test_work_and_energy_refuses_a_weak_push_from_rest(mode: str) -> None:
 def test_kinetic_friction_doing_positive_work_fails_the_energy_check() -> None:
     # the backwards answer's own energy balance: T1 + U_P + U_F = 0 − 65.61 + 71.51 = 5.90 = T2
     # agrees, but U_F > 0 is friction pushing: the check fails and says so.
-    check = energy_check("", (0, {"P": -65.61, "F_G": 71.51}, 5.90), {}, 1e-2, kinetic={"F_G"})
+    check = energy_check(
+        "", (0, {"P": -65.61, "F_G": 71.51}, 5.90), {}, 1e-2, "SI", kinetic={"F_G"}
+    )
     assert check is not None and not check.passed
     assert "kinetic friction does positive work" in check.detail
 

@@ -45,8 +45,8 @@ def test_a_wrong_principle_answer_turns_the_check_red():
     right = (sympy.Float(math.acos(c)), sympy.Float(math.sqrt(-G * c)))
     wrong = (right[0] * 1.001, right[1])
     values = {g: sympy.Float(G)}
-    assert circle_check("simulation", scene, slack, right, {"g": g}, values).passed
-    assert not circle_check("simulation", scene, slack, wrong, {"g": g}, values).passed
+    assert circle_check("simulation", scene, slack, right, {"g": g}, values, "SI").passed
+    assert not circle_check("simulation", scene, slack, wrong, {"g": g}, values, "SI").passed
 
 
 def test_a_bob_that_swings_back_never_goes_slack_in_the_simulation():

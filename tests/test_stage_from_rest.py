@@ -56,7 +56,7 @@ def test_static_friction_that_holds_the_block_at_the_top_fails_the_travel_back(t
     result, text = run(spec(tmp_path, 0.7), mode)
     assert result.exit_code != 0
     assert "✗ slides from rest in stage 2" in text
-    assert "|F| = 9.81 ≤ μs N = 11.89" in text and "static friction holds it" in text
+    assert "|F| = 9.81 N ≤ μs N = 11.89 N" in text and "static friction holds it" in text
 
 
 @pytest.mark.parametrize("mode", MODES)

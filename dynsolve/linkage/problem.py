@@ -54,7 +54,7 @@ from dynsolve.quantities import convert
 from dynsolve.results import Check, EquationRow, LinkageFigure, Step
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
-from dynsolve.units import Dim, natural_unit
+from dynsolve.units import Dim, natural_unit, with_unit
 
 FUNCTIONS = (
     "force",
@@ -583,14 +583,17 @@ def _load_senses(
         else:
             stated, other = "as stated", "the other way"
         holds = number >= -1e-9 * max(1.0, abs(number))
-        detail = f"{load.name} = {number:.4g} ≥ 0: {stated}, as stated"
+        size = with_unit(
+            number, "moment" if load.kind == "couple" else "force", problem.spec.system
+        )
+        detail = f"{load.name} = {size} ≥ 0: {stated}, as stated"
         if not holds:
             detail = (
-                f"{load.name} = {number:.4g} against its stated sense ({stated}): it acts "
+                f"{load.name} = {size} against its stated sense ({stated}): it acts "
                 f"{other}; state it so in the scene ('{load.kind} {load.name} on {load.bar}: "
                 f"{other}')"
                 if load.kind == "couple"
-                else f"{load.name} = {number:.4g} against its stated direction: it acts the "
+                else f"{load.name} = {size} against its stated direction: it acts the "
                 "other way; state its direction reversed in the scene"
             )
         checks.append(Check(f"sense of {load.kind} {load.name}", holds, detail))

@@ -34,7 +34,7 @@ import sympy
 from dynsolve.dimensions import DimensionReport, check_dimensions
 from dynsolve.errors import Position, SpecError
 from dynsolve.expressions import to_sympy
-from dynsolve.format import pretty_unit
+from dynsolve.format import latex_unit, pretty_unit
 from dynsolve.modes.equation_mode import GivenInfo, Target, check_answers_in_find, givens_of
 from dynsolve.modes.oneline_events import EVENTS, QUANTITIES, find_event
 from dynsolve.names import latex_name, pretty
@@ -55,7 +55,7 @@ from dynsolve.shown import formula_latex, formula_text
 from dynsolve.spec.ast import EquationStmt, FindItem, Spec
 from dynsolve.spec.parser import iter_names
 from dynsolve.system import EquationSystem
-from dynsolve.units import Dim, natural_unit
+from dynsolve.units import Dim, System, natural_unit
 
 VARIABLES: dict[str, tuple[sympy.Symbol, Dim]] = {
     "t": (T, Dim.of("time")),
@@ -486,7 +486,9 @@ def _target(
             numeric = _after_a_stop(ref.function, symbols[argument], motion, numbers)
         if numeric is None and name not in motion.formulas:
             try:
-                numeric = _numerically(ref.function, variable, symbols[argument], motion, numbers)
+                numeric = _numerically(
+                    ref.function, variable, symbols[argument], motion, numbers, spec.system
+                )
             except MotionBlowsUp as blow_up:
                 end = real_value(symbols[argument], numbers[0])
                 raise SpecError(
@@ -850,9 +852,11 @@ def _numerically(
     at: sympy.Expr,
     motion: Motion,
     numbers: tuple[Mapping[sympy.Symbol, sympy.Expr], Mapping[str, sympy.Expr], list[Step]],
+    system: System,
 ) -> sympy.Expr | None:
     """x or v at a given time by integrating the motion numerically, when sympy could not
-    invert the relation that would give it as a formula; the step is recorded."""
+    invert the relation that would give it as a formula; the step is recorded, its value
+    with its unit in ``system`` (m/s, ft/s): a number, so no formula is shown."""
     from dynsolve.numbers import real_value
     from dynsolve.principles.rectilinear import integrate_numerically
 
@@ -876,8 +880,11 @@ def _numerically(
         f"{function}({at}) by integrating x' = v, v' = {motion.given} numerically from t₀ "
         f"(mpmath ODE solver): {why}"
     )
+    unit = natural_unit(_DIMS[function], system)
     shown = f"{float(value):.6g}"
-    result = Formula(f"{function}({at})", shown, sympy.latex(value), shown, sympy.latex(value))
+    result = Formula(
+        f"{function}({at})", "", "", f"{shown} {pretty_unit(unit)}", f"{shown}\\,{latex_unit(unit)}"
+    )
     steps.append(Step(0, (), (f"{function}({at})",), "numeric", (result,), (), how))
     return value
 

@@ -36,7 +36,7 @@ from dynsolve.results import Assumption, Check, EquationRow, ForceRow, FreeBody,
 from dynsolve.shown import formula_text
 from dynsolve.spec.ast import FindItem, Spec
 from dynsolve.system import EquationSystem
-from dynsolve.units import Dim, natural_unit, with_unit
+from dynsolve.units import Dim, InSystem, System, natural_unit, with_unit
 
 IMPENDING = 1e-9  # |F| within this fraction of μs N counts as impending slip, not slip
 
@@ -611,11 +611,14 @@ def cross_checks(
         if found is None:
             continue
         gap = abs(found - other) / max(abs(found), 1e-300)
+        dim = problem.formulation.unknowns.get(unknown, Dim())  # a speed or a rate of turn
         checks.append(
             Check(
                 f"second method: {what}",
                 gap <= SECOND_METHOD_AGREEMENT,
-                f"{how}: {other:.7g} (work–energy: {found:.7g}; relative difference {gap:.1e})",
+                f"{how}: {with_unit(other, dim, problem.spec.system, '.7g')} (work–energy: "
+                f"{with_unit(found, dim, problem.spec.system, '.7g')}; relative difference "
+                f"{gap:.1e})",
             )
         )
     return (
@@ -632,7 +635,7 @@ def _interval_checks(
     """Work and energy over each interval that impulse and momentum solved."""
     from dynsolve.principles.impulse_momentum import energy_check
 
-    formulation = problem.formulation
+    formulation, system = problem.formulation, problem.spec.system
     kinetic = {  # kinetic friction (a known μk N) on the instant's free bodies
         f.name
         for forces in formulation.forces.values()
@@ -644,7 +647,7 @@ def _interval_checks(
         for r in formulation.stages
     ]
     checks = (
-        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, state, kinetic)
+        energy_check(what, energy, values, SECOND_METHOD_AGREEMENT, system, state, kinetic)
         for what, energy, state, kinetic in intervals
         if energy is not None
     )
@@ -1313,10 +1316,16 @@ def _tip_conditions(found: SteepestLimit) -> tuple[sympy.Expr, ...]:
 
 
 def steepest_checks(
-    name: str, contact: str, found: SteepestLimit, at: Steepest, knowns: Mapping
+    name: str,
+    contact: str,
+    found: SteepestLimit,
+    at: Steepest,
+    knowns: Mapping,
+    system: System,
 ) -> tuple[Check, ...]:
     """The friction and (on a base) the tipping condition evaluated AT the steepest slope
-    found, not on the scene as written: |F| ≤ μs N and N within the base."""
+    found, not on the scene as written: |F| ≤ μs N and N within the base, in ``system``'s
+    units."""
     if at.angle is None:
         return ()
     values = {**knowns, found.phi: at.angle}
@@ -1332,7 +1341,8 @@ def steepest_checks(
             Check(
                 f"no slip at {contact} {where}",
                 holds,
-                f"|F| = {abs(F):.4g} {'≤' if holds else '>'} μs N = {mu * N:.4g}"
+                f"|F| = {with_unit(abs(F), 'force', system)} {'≤' if holds else '>'} "
+                f"μs N = {with_unit(mu * N, 'force', system)}"
                 + (": the limit, it is about to slip" if limit else ""),
             )
         )
@@ -1347,8 +1357,9 @@ def steepest_checks(
                 Check(
                     f"no tipping on base {contact} {where}",
                     holds,
-                    f"N_{contact} acts at x = {x:.4g} from G's line, "
-                    + (f"within [{lo:.4g}, {hi:.4g}]" if holds else f"outside [{lo:.4g}, {hi:.4g}]")
+                    f"N_{contact} acts at x = {with_unit(x, 'length', system)} from G's line, "
+                    + ("within" if holds else "outside")
+                    + f" [{lo:.4g}, {with_unit(hi, 'length', system)}]"
                     + (": at the edge, it is about to tip" if at.happens == "tips" else ""),
                 )
             )
@@ -1663,10 +1674,10 @@ def _assess(
         checks += chained  # a single travel: its state 1 is checked as an instant too
         cords = ()
     if scene.travels and not formulation.reactions:
-        events = tuple(_event_checks(formulation, substitution))
+        events = tuple(_event_checks(formulation, substitution, system))
         return _between_states(problem, substitution) + events + cords, slips
-    checks += _event_checks(formulation, substitution)
-    checks += _slides_kept(formulation, substitution)
+    checks += _event_checks(formulation, substitution, system)
+    checks += _slides_kept(formulation, substitution, system)
     sliding_until = {
         s.name
         for s in scene.supports
@@ -1854,7 +1865,7 @@ def _cord_checks(
 
 
 def _slides_kept(
-    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr], system: System
 ) -> list[Assumption]:
     """Each contact sliding at the start of an interval (impulse and momentum) slides to
     its end: a block that stops before it (friction alone would bring it back) fails. A
@@ -1865,21 +1876,24 @@ def _slides_kept(
     for name, (start, end) in formulation.interval_slips.items():
         first, last = real_value(start, substitution), real_value(end, substitution)
         if first is not None and last is not None and abs(first) > SENSE_TOLERANCE * abs(last):
-            checks.append(slide_kept(f"sliding at {name} through the interval", first, last, 1))
+            checks.append(
+                slide_kept(f"sliding at {name} through the interval", first, last, 1, system)
+            )
     return checks
 
 
 def _event_checks(
-    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr]
+    formulation: Formulation, substitution: Mapping[sympy.Symbol, sympy.Expr], system: System
 ) -> list[Assumption]:
-    """Each until event comes after the start: its time (or turn) is positive."""
+    """Each until event holds: it comes after the start (its time or turn is positive), a
+    cord is taut or a contact pushes where it starts; values in ``system``'s units."""
     checks = []
     for name, value, detail in formulation.events:
         number = real_value(value, substitution)
         if number is None:
             continue
         holds = number > 0
-        text = detail.format(value=number)
+        text = detail.format(value=InSystem(number, system))
         if not holds:
             text += ": it would have to happen before the start, so it never happens"
         checks.append(Assumption(name, holds, text))
@@ -1993,15 +2007,17 @@ def _declared_slide(
     v, a = _contact_motion(problem, support, substitution)
     if v is None:
         return None
+    system = problem.spec.system
     along = -support.friction_sense  # the slide's sense along the tangent
     over = problem.formulation.interval_slips.get(support.name)
     if a is None and over is not None and abs(v) <= SENSE_TOLERANCE:
-        return _slide_from_rest(support, along, real_value(over[1], substitution))
+        return _slide_from_rest(support, along, real_value(over[1], substitution), system)
+    v_P = with_unit(abs(v), "velocity", system)
     if along * v > SENSE_TOLERANCE:
-        return Assumption(name, True, f"its contact point slides that way (v_P = {abs(v):.4g})")
+        return Assumption(name, True, f"its contact point slides that way (v_P = {v_P})")
     if along * v < -SENSE_TOLERANCE:
         return Assumption(
-            name, False, f"its contact point moves against the stated slide (v_P = {abs(v):.4g})"
+            name, False, f"its contact point moves against the stated slide (v_P = {v_P})"
         )
     if a is None:
         return None
@@ -2016,18 +2032,22 @@ def _declared_slide(
         return Assumption(
             name,
             True,
-            f"from rest, the contact point accelerates that way at {abs(a):.4g} (no mu_s: "
+            f"from rest, the contact point accelerates that way at "
+            f"{with_unit(abs(a), 'acceleration', system)} (no mu_s: "
             "static friction is not checked)",
         )
     return Assumption(
         name,
         False,
         f"from rest, F = μk N opposing the slide would accelerate the contact point the other "
-        f"way ({abs(a):.4g}): it cannot start to slide; re-solved with no slip",
+        f"way ({with_unit(abs(a), 'acceleration', system)}): it cannot start to slide; "
+        "re-solved with no slip",
     )
 
 
-def _slide_from_rest(support: object, along: int, end: float | None) -> Assumption | None:
+def _slide_from_rest(
+    support: object, along: int, end: float | None, system: System
+) -> Assumption | None:
     """A slide stated from rest over an interval of constant forces (impulse and momentum):
     the contact point's slip at the end, ``end``, must be along the stated sense ``along``;
     kinetic friction that would drive it the other way is friction pushing, so the scene is
@@ -2050,14 +2070,16 @@ def _slide_from_rest(support: object, along: int, end: float | None) -> Assumpti
         return Assumption(
             name,
             True,
-            f"from rest, its contact point slides that way, at {abs(end):.4g} m/s at the end "
+            f"from rest, its contact point slides that way, at "
+            f"{with_unit(abs(end), 'velocity', system)} at the end "
             "of the interval (no mu_s: static friction is not checked)",
         )
     return Assumption(
         name,
         False,
         f"from rest, F = μk N opposing the slide would drive the contact point the other way "
-        f"({abs(end):.4g} m/s at the end of the interval): kinetic friction cannot push, so "
+        f"({with_unit(abs(end), 'velocity', system)} at the end of the interval): kinetic "
+        "friction cannot push, so "
         "it cannot start to slide; re-solved with no slip",
     )
 

@@ -36,7 +36,7 @@ from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import cross, dot
 from dynsolve.results import Assumption
 from dynsolve.system import Equation
-from dynsolve.units import Dim
+from dynsolve.units import Dim, with_unit
 
 ANGULAR_MOMENTUM = Dim(2, 1, -1)  # kg·m²/s, slug·ft²/s
 LINEAR_MOMENTUM = Dim(1, 1, -1)  # kg·m/s = N·s
@@ -204,12 +204,14 @@ def pinned_impact_checks(
     pin: str,
     checks: tuple[tuple[str, sympy.Expr], ...],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> list[Assumption]:
     """What a particle's impact on a pinned body assumes, checked against the solution:
     it strikes (closing along the line), separates or moves with the body after, and loses
     energy (T₁ − T₂ ≥ 0); a check whose value is unknown is not shown as passed.
     ``struck`` is (the particle, the pinned body); ``checks`` holds ("approach", …),
-    ("separation", …), ("lost", …), ("energy", T₁)."""
+    ("separation", …), ("lost", …), ("energy", T₁); every value with its unit in
+    ``system``."""
     A, B = struck
     found = dict(checks)
     result: list[Assumption] = []
@@ -217,13 +219,16 @@ def pinned_impact_checks(
     def value(key: str) -> float | None:
         return real_value(found[key], values) if key in found else None
 
+    def length(metres: float) -> str:
+        return with_unit(metres, "length", system)
+
     closing = value("approach")
     if closing is not None:
         result.append(
             Assumption(
                 f"approach in stage {k}",
                 closing > 0,
-                f"before the impact (v_{A} − v_P)·n = {closing:.4g}"
+                f"before the impact (v_{A} − v_P)·n = {with_unit(closing, 'velocity', system)}"
                 + (
                     " > 0"
                     if closing > 0
@@ -240,7 +245,7 @@ def pinned_impact_checks(
             Assumption(
                 f"separation in stage {k}",
                 holds,
-                f"after the impact (v_P − v_{A})·n = {shown:.4g}"
+                f"after the impact (v_P − v_{A})·n = {with_unit(shown, 'velocity', system)}"
                 + (" ≥ 0" if holds else f" < 0: {A} would pass through {B}"),
             )
         )
@@ -252,7 +257,8 @@ def pinned_impact_checks(
             Assumption(
                 f"energy lost in stage {k}",
                 holds,
-                f"T{k} − T{k + 1} = {0.0 if abs(lost) <= 1e-9 * scale else lost:.4g}"
+                f"T{k} − T{k + 1} = "
+                f"{with_unit(0.0 if abs(lost) <= 1e-9 * scale else lost, 'energy', system)}"
                 + (" ≥ 0" if holds else " < 0: the impact would create energy"),
             )
         )
@@ -264,8 +270,8 @@ def pinned_impact_checks(
                 f"{A} on {B} in stage {k}",
                 inside,
                 f"{A} strikes {B} where it is placed, within {B}'s reach from the pin {pin}: "
-                + ("|r_G| + half-size − |r_A| = " + f"{max(within, 0.0):.4g} ≥ 0" if inside else
-                   f"{-within:.4g} beyond it: place {A} where it strikes {B}"),
+                + ("|r_G| + half-size − |r_A| = " + f"{length(max(within, 0.0))} ≥ 0" if inside else
+                   f"{length(-within)} beyond it: place {A} where it strikes {B}"),
             )
         )  # fmt: skip
     else:
@@ -388,9 +394,11 @@ def spin_checks(
     event: Clutch | Reshape,
     checks: tuple[tuple[str, sympy.Expr], ...],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> list[Assumption]:
     """A clutch loses energy (T₁ − T₂ ≥ 0, checked); a change of inertia's energy is the
-    internal forces' work (shown, not checked: a diver tucking gains energy); each stated."""
+    internal forces' work (shown, not checked: a diver tucking gains energy); each stated,
+    with its unit in ``system``."""
     found = dict(checks)
     lost = real_value(found["lost"], values)
     energy = real_value(found["energy"], values)
@@ -404,7 +412,7 @@ def spin_checks(
                 Assumption(
                     f"energy lost in stage {k}",
                     holds,
-                    f"T{k} − T{k + 1} = {shown:.4g}"
+                    f"T{k} − T{k + 1} = {with_unit(shown, 'energy', system)}"
                     + (" ≥ 0 (the clutch slips until they turn as one)" if holds else " < 0"),
                 )
             )
@@ -422,7 +430,8 @@ def spin_checks(
             Assumption(
                 f"change of inertia in stage {k}",
                 True,
-                f"stated: internal forces only; T{k + 1} − T{k} = {-lost:.4g} is their work "
+                f"stated: internal forces only; T{k + 1} − T{k} = "
+                f"{with_unit(-lost, 'energy', system)} is their work "
                 f"(not checked: {event.body} may gain or lose energy)",
             )
         )

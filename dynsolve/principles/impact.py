@@ -243,8 +243,8 @@ def rebound_formulation(scene: Scene) -> Formulation:
             (
                 f"{name} strikes {point}",
                 tidy(v_P(v1, w1)),
-                f"before the impact {point} of {name} closes on the point at {{value:.4g}} "
-                "along the line",
+                f"before the impact {point} of {name} closes on the point at "
+                "{value:.4g velocity} along the line",
             ),
         ),
     )

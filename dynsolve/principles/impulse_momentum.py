@@ -32,7 +32,7 @@ from dynsolve.numbers import real_value, tidy
 from dynsolve.principles.newton_euler import Formulation, formulate, touches_at_rim
 from dynsolve.results import Check
 from dynsolve.system import Equation
-from dynsolve.units import Dim
+from dynsolve.units import Dim, with_unit
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 
@@ -284,6 +284,7 @@ def energy_check(
     energy: tuple[sympy.Expr, Mapping[str, sympy.Expr], sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
     agreement: float,
+    system: str,
     state: int = 1,
     kinetic: Collection[str] = (),
 ) -> Check | None:
@@ -292,12 +293,13 @@ def energy_check(
     remain). Kinetic friction (the forces named in ``kinetic``) opposes the slip of the
     point it acts on, so its work relative to the fixed surface is never positive: where
     it is, the slide assumed is wrong and the check fails, however well the sum agrees.
+    Every energy is shown with its unit in ``system`` (J, ft·lb).
 
     >>> import sympy
     >>> m = sympy.Symbol("m")
-    >>> energy_check("stage 2", (m * 8, {"F_C": -m * 8}, 0), {m: 2}, 1e-6).passed
+    >>> energy_check("stage 2", (m * 8, {"F_C": -m * 8}, 0), {m: 2}, 1e-6, "SI").passed
     True
-    >>> energy_check("", (0, {"P": -6, "F_C": 7}, 1), {}, 1e-6, kinetic={"F_C"}).passed
+    >>> energy_check("", (0, {"P": -6, "F_C": 7}, 1), {}, 1e-6, "FPS", kinetic={"F_C"}).passed
     False
     """
     T_1, works, T_2 = energy
@@ -305,17 +307,23 @@ def energy_check(
     if any(n is None for n in numbers):
         return None
     t_1, *u, t_2 = numbers
+
+    def energy(value: float) -> str:
+        return with_unit(value, "energy", system, ".7g")
+
     scale = max(abs(n) for n in numbers) or 1.0  # type: ignore[arg-type]
     gap = abs(t_1 + sum(u) - t_2) / scale  # type: ignore[operator]
-    terms = ", ".join(f"U_{n} = {v:.6g}" for n, v in zip(works, u, strict=True))
+    terms = ", ".join(
+        f"U_{n} = {with_unit(v, 'energy', system, '.6g')}" for n, v in zip(works, u, strict=True)
+    )
     pushing = [
-        f"U_{n} = {v:+.4g}"
+        f"U_{n} = {with_unit(v, 'energy', system, '+.4g')}"
         for n, v in zip(works, u, strict=True)
         if n in kinetic and v > 1e-9 * scale  # type: ignore[operator]
     ]
     detail = (
-        f"T{state} + ΣU = {t_1:.7g} + ({terms}) = {t_1 + sum(u):.7g}; "
-        f"T{state + 1} = {t_2:.7g}; "
+        f"T{state} + ΣU = {energy(t_1)} + ({terms}) = {energy(t_1 + sum(u))}; "
+        f"T{state + 1} = {energy(t_2)}; "
         f"relative difference {gap:.1e}"
     )
     if pushing:

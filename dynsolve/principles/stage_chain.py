@@ -52,7 +52,7 @@ from dynsolve.principles.newton_euler import (
 )
 from dynsolve.results import Assumption
 from dynsolve.system import Constraint, Equation
-from dynsolve.units import Dim, Measured, natural_unit, with_unit
+from dynsolve.units import Dim, InSystem, with_unit
 
 ZERO: Vec = (sympy.Integer(0), sympy.Integer(0))
 
@@ -132,7 +132,7 @@ def chain_formulation(
         for name, (symbol, axis) in found.reactions.items():
             reactions[f"{name}({k})"] = (names.get(symbol, symbol), axis)
         for what, force in chain.one_sided(found, k):
-            events.append((what, force.xreplace(names), f"{{value:.4g}} > 0 at state {k}"))
+            events.append((what, force.xreplace(names), f"{{value:.4g force}} > 0 at state {k}"))
 
     stages = stages_of(scene.events)
     first_stage = stages[0] if stages else None
@@ -1243,7 +1243,6 @@ def chain_assumptions(
     to its end (T + ΣU ≥ 0, or = 0 where it stops), and each impact's model is stated;
     every value with its unit in ``system``."""
     checks: list[Assumption] = []
-    force_unit = natural_unit(Dim.of("force"), system)
 
     def speed(value: float) -> str:
         return with_unit(value, "velocity", system)
@@ -1251,7 +1250,7 @@ def chain_assumptions(
     for what, force, detail in formulation.events:  # one-sided forces at asked instants
         value = real_value(force, values)
         if value is not None:
-            text = detail.format(value=Measured(value, force_unit))
+            text = detail.format(value=InSystem(value, system))
             if value <= 0:
                 text = text.replace(" > 0", " ≤ 0") + ": the assumption fails there"
             checks.append(Assumption(what, value > 0, text))
@@ -1261,19 +1260,21 @@ def chain_assumptions(
             checks += _interval_checks(record, values, system)
             continue
         if isinstance(event, Travel) and event.kind == "until":
-            checks += _event_checks(record, values, "")
+            checks += _event_checks(record, values, system, "")
             continue
         if isinstance(event, Clutch | Reshape):
             from dynsolve.principles.angular_momentum import spin_checks
 
-            checks += spin_checks(k, event, record.pinned, values)
+            checks += spin_checks(k, event, record.pinned, values, system)
             continue
         if isinstance(event, Impact) and record.pin:
             from dynsolve.principles.angular_momentum import pinned_impact_checks
 
             struck = (record.bodies[0], record.bodies[1])
             embeds = real_value(event.e, values) == 0
-            checks += pinned_impact_checks(k, struck, embeds, record.pin, record.pinned, values)
+            checks += pinned_impact_checks(
+                k, struck, embeds, record.pin, record.pinned, values, system
+            )
             continue
         if isinstance(event, Impact) and record.approach is not None:
             closing = real_value(record.approach, values)
@@ -1306,7 +1307,7 @@ def chain_assumptions(
             )
             continue
         if isinstance(event, Pivot) and event.normal is not None:
-            checks += _event_checks(record, values, ": it does not strike the point")
+            checks += _event_checks(record, values, system, ": it does not strike the point")
             checks.append(
                 Assumption(
                     f"impact at {event.name} in stage {k}",
@@ -1336,7 +1337,7 @@ def chain_assumptions(
                         "between the states is not computed",
                     )
                 )
-        checks += from_rest(record, values)[0]
+        checks += from_rest(record, values, system)[0]
         along = real_value(record.start_along, values) if record.start_along is not None else None
         if along is not None and along != 0:
             checks.append(
@@ -1378,12 +1379,13 @@ def chain_assumptions(
 
 
 def from_rest(
-    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr]
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr], system: str
 ) -> tuple[tuple[Assumption, ...], tuple[str, ...]]:
     """A travel that starts from rest on a rough contact: static friction must not be able
     to hold the body there (|F needed| ≤ μs N: it stays, the travel fails). Without μs,
     μk N ≤ μs N still decides where it holds the body; elsewhere that it slides is an
-    assumption NOT checked, returned as a warning (second item), never a pass."""
+    assumption NOT checked, returned as a warning (second item), never a pass; forces in
+    ``system``'s units."""
     event, k = record.stage.event, record.stage.number
     scene = record.scene
     if not isinstance(event, Travel) or event.kind in ("for", "until") or scene is None:
@@ -1424,6 +1426,7 @@ def from_rest(
             continue
         limit = mu_value * N
         held = abs(F) <= limit * (1 + 1e-9)
+        needed, most = with_unit(abs(F), "force", system), with_unit(limit, "force", system)
         start = f"at state {k} {event.body} is at rest on {C}: to hold it there static friction "
         if held:
             bound = "μs N" if support.mu_s is not None else "μk N ≤ μs N"
@@ -1431,7 +1434,7 @@ def from_rest(
                 Assumption(
                     name,
                     False,
-                    start + f"needs |F| = {abs(F):.4g} ≤ {bound} = {limit:.4g}: static friction "
+                    start + f"needs |F| = {needed} ≤ {bound} = {most}: static friction "
                     f"holds it, it stays at state {k} and does not travel",
                 )
             )
@@ -1440,13 +1443,13 @@ def from_rest(
                 Assumption(
                     name,
                     True,
-                    start + f"would need |F| = {abs(F):.4g} > μs N = {limit:.4g}: it cannot, "
+                    start + f"would need |F| = {needed} > μs N = {most}: it cannot, "
                     "the body slides",
                 )
             )
         else:
             warnings.append(
-                f"stage {k}: {start}would need |F| = {abs(F):.4g} > μk N = {limit:.4g}; with no "
+                f"stage {k}: {start}would need |F| = {needed} > μk N = {most}; with no "
                 f"mu_s given, that static friction cannot hold it (that it slides) is NOT checked"
             )
     return tuple(checks), tuple(warnings)
@@ -1480,14 +1483,15 @@ def _interval_checks(
         if not opposes:
             way = "along" if start > 0 else "against"
             detail = (
-                f"the contact point's slip at state {k} is {start:.4g} m/s ({way} the tangent): "
+                f"the contact point's slip at state {k} is "
+                f"{with_unit(start, 'velocity', system)} ({way} the tangent): "
                 + ("it does not slide" if start == 0 else "the friction assumed does not oppose it")
             )
             checks.append(Assumption(name, False, detail))
             continue
-        checks.append(slide_kept(name, start, end, k))
+        checks.append(slide_kept(name, start, end, k, system))
     return checks + _event_checks(
-        record, values, ": it would have to happen before the start, so it never happens"
+        record, values, system, ": it would have to happen before the start, so it never happens"
     )
 
 
@@ -1512,25 +1516,29 @@ def _no_approach(
     )
 
 
-def slide_kept(name: str, start: float, end: float, k: int) -> Assumption:
+def slide_kept(name: str, start: float, end: float, k: int, system: str) -> Assumption:
     """A contact's slip keeps its sign from state k to k + 1 (0 at the end allowed): kinetic
     friction opposes it throughout an interval of constant forces, else the body stopped
     sliding inside it and the interval's equation no longer holds.
 
-    >>> slide_kept("sliding at C", -3.0, 0.92, 1).holds  # a block stopped and came back
+    >>> slide_kept("sliding at C", -3.0, 0.92, 1, "SI").holds  # a block stopped and came back
     False
-    >>> slide_kept("sliding at C", 3.0, 0.0, 1).holds  # it stops just at the end
-    True
+    >>> kept = slide_kept("sliding at C", 3.0, 0.0, 1, "FPS")  # it stops just at the end
+    >>> kept.holds, kept.detail[:41]
+    (True, 'slip 3 ft/s at state 1, 0 ft/s at state 2')
     """
     scale = max(abs(start), abs(end)) or 1.0
     keeps = end * (1 if start > 0 else -1) >= -1e-9 * scale  # relative: a speed vs speeds
+    first = with_unit(start, "velocity", system)
     detail = (
-        f"slip {start:.4g} m/s at state {k}, {0.0 if abs(end) <= 1e-9 * scale else end:.4g} "
-        f"m/s at state {k + 1}: kinetic friction opposes it throughout"
+        f"slip {first} at state {k}, "
+        f"{with_unit(0.0 if abs(end) <= 1e-9 * scale else end, 'velocity', system)} "
+        f"at state {k + 1}: kinetic friction opposes it throughout"
     )
     if not keeps:
         detail = (
-            f"slip {start:.4g} m/s at state {k} but {end:.4g} m/s at state {k + 1}: it stops "
+            f"slip {first} at state {k} but {with_unit(end, 'velocity', system)} at state "
+            f"{k + 1}: it stops "
             "sliding before the interval ends, and friction does not push it back (state the "
             "end with ', until rolls' or ', stops')"
         )
@@ -1538,7 +1546,7 @@ def slide_kept(name: str, start: float, end: float, k: int) -> Assumption:
 
 
 def _event_checks(
-    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr], failed: str
+    record: StageRecord, values: Mapping[sympy.Symbol, sympy.Expr], system: str, failed: str
 ) -> list[Assumption]:
     """Each of a stage's events holds (a positive value): an end event after the start,
     a cord taut or a contact pushing where an until stage starts."""
@@ -1546,7 +1554,7 @@ def _event_checks(
     for what, value, detail in record.events:
         number = real_value(value, values)
         if number is not None:
-            text = detail.format(value=number) + (failed if number <= 0 else "")
+            text = detail.format(value=InSystem(number, system)) + (failed if number <= 0 else "")
             checks.append(Assumption(f"{what} in stage {record.stage.number}", number > 0, text))
     return checks
 

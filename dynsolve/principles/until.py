@@ -220,7 +220,7 @@ def circle_until(
         (
             f"{circle.what} {what} at the start",
             start_force,
-            f"{circle.force} = {{value:.4g}} > 0 at the start",
+            f"{circle.force} = {{value:.4g force}} > 0 at the start",
         ),
     )
     note = (

@@ -45,6 +45,7 @@ import sympy
 
 from dynsolve.dimensions import DimensionReport
 from dynsolve.errors import DimensionError, Position, SpecError
+from dynsolve.format import pretty_unit
 from dynsolve.format import quantity as format_quantity
 from dynsolve.modes.equation_mode import Target, check_answers_in_find, givens_of
 from dynsolve.modes.scene_mode import _row, _unit, _unused
@@ -419,7 +420,7 @@ def _state_1_note(
 ) -> tuple[str, str]:
     """State 1: at rest, or moving with its T1 as formula and value."""
     if travel.omega_1 is None:
-        return ("state 1", "at rest: T1 = 0")
+        return ("state 1", f"at rest: T1 = 0 {pretty_unit(natural_unit(ENERGY, spec.system, 'E'))}")
     shown = _plain(tidy(terms.T1))
     value = terms.T1.xreplace(dict(knowns))
     if not value.free_symbols:

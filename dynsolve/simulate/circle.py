@@ -31,6 +31,7 @@ import sympy
 from dynsolve.model.scene import Scene, Travel
 from dynsolve.numbers import real_value
 from dynsolve.results import Check
+from dynsolve.units import with_unit
 
 AGREEMENT = 1e-6  # relative
 RTOL, ATOL = 1e-12, 1e-14
@@ -104,8 +105,10 @@ def circle_check(
     answers: tuple[sympy.Expr, sympy.Expr],
     symbols: Mapping[str, sympy.Expr],
     values: Mapping[sympy.Symbol, sympy.Expr],
+    system: str,
 ) -> Check:
-    """The until event integrated and compared with the principle's (angle, speed)."""
+    """The until event integrated and compared with the principle's (angle, speed), the
+    speeds with their unit in ``system``."""
     try:
         angle, speed, why = circle_event(scene, travel, symbols, values)
         theta, v = (_numbers(values)(a) for a in answers)
@@ -116,8 +119,9 @@ def circle_check(
         return Check(name, False, how + f"{why}, where the principle finds the event")
     gap = max(abs(angle - theta) / max(abs(theta), 1e-300), abs(speed - v) / max(abs(v), 1e-300))
     detail = (
-        f"the event at {math.degrees(angle):.7g}° turned, speed {speed:.7g} (principle: "
-        f"{math.degrees(theta):.7g}°, {v:.7g}; relative {gap:.1e})"
+        f"the event at {math.degrees(angle):.7g}° turned, speed "
+        f"{with_unit(speed, 'velocity', system, '.7g')} (principle: {math.degrees(theta):.7g}°, "
+        f"{with_unit(v, 'velocity', system, '.7g')}; relative {gap:.1e})"
     )
     return Check(name, gap <= AGREEMENT, how + detail)
 

@@ -82,7 +82,7 @@ def simulate_leg(
     )
     try:
         if leg.travel.stops:
-            passed, detail = _stops(motion, run, q_end)
+            passed, detail = _stops(motion, run, q_end, unit)
         else:
             passed, detail = _reaches(motion, run, q_end, leg, values, length)
     except NotSimulable as exc:
@@ -244,7 +244,8 @@ def _gap(found: float, expected: float) -> float:
     return 0.0 if size == 0 else abs(found - expected) / size
 
 
-def _stops(motion: OneDof, run: Run, q_end: float) -> tuple[bool, str]:
+def _stops(motion: OneDof, run: Run, q_end: float, unit: str) -> tuple[bool, str]:
+    """Whether the run stops where the principle's end is (``unit``: q's, as shown)."""
     T1 = max(motion.kinetic(a, b) for a, b in zip(run.q, run.qd, strict=True))
     t, q, qd = float(run.t[-1]), float(run.q[-1]), float(run.qd[-1])
     if T1 <= 0:
@@ -253,7 +254,7 @@ def _stops(motion: OneDof, run: Run, q_end: float) -> tuple[bool, str]:
         left = motion.kinetic(q, qd) / T1
         passed = left <= AGREEMENT
         return passed, (
-            f"it reaches the end (q = {q_end:.7g}) at t = {t:.4g} s with T/T_max = "
+            f"it reaches the end (q = {q_end:.7g} {unit}) at t = {t:.4g} s with T/T_max = "
             f"{left:.1e} {'≤' if passed else '>'} {AGREEMENT:.0e} (the principle: at rest there)"
         )
     if run.stopped_by != "at rest":
@@ -264,7 +265,8 @@ def _stops(motion: OneDof, run: Run, q_end: float) -> tuple[bool, str]:
     short = abs(needed) / T1
     passed = short <= AGREEMENT
     return passed, (
-        f"it comes to rest at q = {q:.7g} (t = {t:.4g} s; principle: q = {q_end:.7g}, "
+        f"it comes to rest at q = {q:.7g} {unit} (t = {t:.4g} s; principle: q = {q_end:.7g} "
+        f"{unit}, "
         f"relative {abs(q - q_end) / q_end:.1e}); the work between the two, over the largest T "
         f"on the way, is {short:.1e} {'≤' if passed else '>'} {AGREEMENT:.0e}"
     )

@@ -105,7 +105,7 @@ def _checked(
         from dynsolve.simulate.circle import circle_check
 
         answers = (leg.turn, leg.speeds[leg.travel.body])
-        return circle_check(name, leg.scene, leg.travel, answers, symbols, values)
+        return circle_check(name, leg.scene, leg.travel, answers, symbols, values, system)
     if leg.travel.kind not in SIMULATED_KINDS:
         return Check.not_run(name, f"not simulated: a travel '{leg.travel.kind}' is not simulated")
     from dynsolve.simulate.crosscheck import simulate_leg
