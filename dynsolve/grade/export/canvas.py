@@ -21,8 +21,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from dynsolve.errors import Position
-from dynsolve.files import read_capped
-from dynsolve.grade.export.gradebook import MAX_BYTES, Total, number_text
+from dynsolve.grade.export.gradebook import Total, number_text, read_csv_text
 from dynsolve.grade.export.target import ExportError
 from dynsolve.safe_csv import csv_text
 
@@ -96,15 +95,7 @@ def check_assignment(name: str) -> None:
 def read_roster(path: Path) -> dict[str, dict[str, str]]:
     """A Canvas gradebook export as a roster: each student's ``ID``, ``SIS User ID`` and
     ``SIS Login ID`` → their identity cells (the ``Points Possible`` row is skipped)."""
-    raw = read_capped(path, MAX_BYTES)
-    where = Position(str(path), 1, 1)
-    if len(raw) > MAX_BYTES:
-        raise ExportError(f"{path} is over {MAX_BYTES} bytes", where)
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        raise ExportError(f"{path} is not UTF-8 text", where, "save it as UTF-8") from None
-    reader = csv.DictReader(io.StringIO(text, newline=""))
+    reader = csv.DictReader(io.StringIO(read_csv_text(path), newline=""))
     try:
         return _roster(path, reader)
     except csv.Error as error:

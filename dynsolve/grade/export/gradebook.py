@@ -42,17 +42,22 @@ class Total:
         return self.points / self.max_points * out_of if self.max_points else 0.0
 
 
-def read_gradebook(path: Path) -> list[Total]:
-    """Every row of a dynsolve gradebook CSV; a malformed file or row stops with its line."""
+def read_csv_text(path: Path) -> str:
+    """A CSV file's text (UTF-8, a byte-order mark dropped), at most :data:`MAX_BYTES`;
+    ExportError where it is larger or not UTF-8."""
     raw = read_capped(path, MAX_BYTES)
     where = Position(str(path), 1, 1)
     if len(raw) > MAX_BYTES:
         raise ExportError(f"{path} is over {MAX_BYTES} bytes", where)
     try:
-        text = raw.decode("utf-8-sig")
+        return raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise ExportError(f"{path} is not UTF-8 text", where, "save it as UTF-8") from None
-    reader = csv.reader(io.StringIO(text, newline=""))
+
+
+def read_gradebook(path: Path) -> list[Total]:
+    """Every row of a dynsolve gradebook CSV; a malformed file or row stops with its line."""
+    reader = csv.reader(io.StringIO(read_csv_text(path), newline=""))
     try:
         return _totals(path, ((reader.line_num, row) for row in reader))
     except csv.Error as error:
