@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import signal
 import threading
 import time
 from pathlib import Path
@@ -172,3 +173,37 @@ def test_the_spawn_start_method_of_macos_and_windows_works(monkeypatch: pytest.M
     assert '"T"' in outcome.text and "105.86" in outcome.text
     with pytest.raises(OverBudget, match="while counting sheep"):
         run(_burn_in_a_step, (60.0,), Budget(seconds=8))  # spawn imports sympy first
+
+
+def _spin(seconds: float) -> None:
+    end = time.process_time() + seconds
+    while time.process_time() < end:
+        pass
+
+
+@pytest.mark.skipif(not hasattr(signal, "setitimer"), reason="no setitimer here")
+def test_the_budget_never_raises_inside_a_gc_callback() -> None:
+    """CI failed once with 'Failed to process unraisable exception': the block's budget
+    expired while Python ran hypothesis's garbage-collection callback, so BudgetExceeded
+    was raised where nothing could catch it. It now waits for the next expiry (0.1 s of
+    CPU later), outside the callback, and the block still stops."""
+    import gc
+    import sys
+
+    unraisable: list[object] = []
+
+    def slow(phase: str, info: object) -> None:
+        if phase == "start":
+            _spin(0.3)  # the 0.05 s budget expires in here
+
+    previous = sys.unraisablehook
+    sys.unraisablehook = lambda args: unraisable.append(args.exc_type)
+    gc.callbacks.append(slow)
+    try:
+        with pytest.raises(BudgetExceeded), time_budget(0.05):
+            gc.collect()
+            _spin(2.0)  # the work after the collection is stopped
+    finally:
+        gc.callbacks.remove(slow)
+        sys.unraisablehook = previous
+    assert unraisable == []

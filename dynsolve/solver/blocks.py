@@ -22,6 +22,7 @@ knowns and earlier unknowns kept as symbols. Choosing among the candidates is
 
 from __future__ import annotations
 
+import gc
 import math
 import random
 import signal
@@ -33,6 +34,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
+from types import FrameType
 from typing import TypeVar
 
 import mpmath
@@ -174,9 +176,13 @@ def _alarm(seconds: float) -> Iterator[None]:
     brief symbolic attempt, or the numeric fallback) does not depend on the machine's load."""
     armed = [True]
 
-    def expire(signum: int, frame: object) -> None:
-        if armed[0]:  # again every REPEAT s until the block ends: a bare 'except:' in a
-            raise BudgetExceeded  # library may swallow one, and the work must not go on
+    def expire(signum: int, frame: FrameType | None) -> None:
+        # again every REPEAT s until the block ends: a bare 'except:' in a library may
+        # swallow one, and the work must not go on; not while Python runs a finaliser or
+        # a garbage-collection callback (an exception there is "unraisable": it is lost,
+        # and a test runner's hook fails on it), where the next expiry raises instead
+        if armed[0] and not in_finaliser(frame):
+            raise BudgetExceeded
 
     previous_handler = signal.signal(signal.SIGPROF, expire)
     previous_delay, previous_interval = signal.setitimer(signal.ITIMER_PROF, seconds, REPEAT)
@@ -192,6 +198,26 @@ def _alarm(seconds: float) -> Iterator[None]:
             signal.setitimer(signal.ITIMER_PROF, left, previous_interval)
 
 
+def in_finaliser(frame: FrameType | None, depth: int = 64) -> bool:
+    """Whether ``frame`` (or one of the ``depth`` frames that called it) runs a ``__del__``,
+    a garbage-collection callback or the unraisable-exception hook: code that Python calls
+    on its own, where an exception cannot reach the solve.
+
+    >>> import sys
+    >>> in_finaliser(sys._getframe())
+    False
+    """
+    hook = getattr(sys.unraisablehook, "func", sys.unraisablehook)  # functools.partial
+    codes = {getattr(getattr(c, "func", c), "__code__", None) for c in gc.callbacks}
+    codes.add(getattr(hook, "__code__", None))
+    codes.discard(None)
+    while frame is not None and depth > 0:
+        if frame.f_code.co_name == "__del__" or frame.f_code in codes:
+            return True
+        frame, depth = frame.f_back, depth - 1
+    return False
+
+
 @contextmanager
 def _cooperative(seconds: float) -> Iterator[None]:
     """The budget without signals (Windows, other threads): a profile hook checks the
@@ -199,8 +225,8 @@ def _cooperative(seconds: float) -> Iterator[None]:
     deadline = time.process_time() + seconds
     previous = sys.getprofile()
 
-    def check(frame: object, event: str, argument: object) -> None:
-        if event == "call" and time.process_time() > deadline:
+    def check(frame: FrameType, event: str, argument: object) -> None:
+        if event == "call" and time.process_time() > deadline and not in_finaliser(frame):
             sys.setprofile(previous)
             raise BudgetExceeded
 
