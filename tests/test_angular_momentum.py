@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner, Result
 
 from dynsolve.cli import app
+from dynsolve.pipeline import solve_text
 
 ROOT = Path(__file__).resolve().parent.parent
 BUNDLED = ROOT / "problems" / "angular_momentum"
@@ -451,3 +452,20 @@ def test_a_particle_carrying_another_into_a_pinned_body_is_refused(tmp_path: Pat
     result = run("solve", write(tmp_path, text))
     assert result.exit_code == 2, result.output
     assert "moves with bullet since a plastic impact" in result.output
+
+
+def test_a_strike_on_a_body_with_no_size_is_not_shown_as_checked() -> None:
+    """The disk given only its inertia has no rim to check the bullet's place against:
+    "bullet on disk" was shown ✓ with the words "stated, not checked". It is not run (–).
+    The answers are the rim problem's (I_O = ½ M r² = 1.25 kg·m² given directly):
+    ω₂ = m v₀ r/(I_O + m r²) = 10/1.2625 = 7.920792 rad/s."""
+    path = Path(__file__).parent.parent / "problems/angular_momentum/bullet_disk_rim.dyn"
+    text = path.read_text().replace(
+        "body disk: mass M, disk r, at (0, 0)", "body disk: mass M, inertia I_O, at (0, 0)"
+    )
+    text = text.replace("  r   = 0.5 m", "  I_O = 1.25 kg*m^2\n  r   = 0.5 m")
+    solution = solve_text(text, "no_size.dyn")
+    (placed,) = [a for a in solution.assumptions if a.name == "bullet on disk in stage 1"]
+    assert placed.status == "not_run"
+    omega = {a.name: float(a.value) for a in solution.answers}["omega_2"]
+    assert omega == pytest.approx(7.920792, rel=1e-6)

@@ -276,10 +276,9 @@ def pinned_impact_checks(
         )  # fmt: skip
     else:
         result.append(
-            Assumption(
+            Assumption.undecided(
                 f"{A} on {B} in stage {k}",
-                True,
-                f"stated, not checked ({B} has no size): {A} is placed where it strikes {B}",
+                f"{B} has no size to check it against: {A} is taken to strike {B} where placed",
             )
         )
     result.append(
